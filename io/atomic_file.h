@@ -1,0 +1,29 @@
+// Writing a file so that readers see the old file or the complete new one,
+// never a partial one: write to a temporary file in the same folder, fsync,
+// then rename over the target. A failed write leaves no temporary behind.
+#pragma once
+
+#include <string>
+
+namespace csgray {
+
+class AtomicFile {
+ public:
+  // The temporary's name keeps the target's extension, for writers that
+  // choose a format by extension.
+  explicit AtomicFile(std::string target);
+  ~AtomicFile();  // removes the temporary unless committed
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::string& tempPath() const { return temp_; }
+  // Flushes the temporary to disk and renames it over the target.
+  // Throws std::runtime_error naming the target.
+  void commit();
+
+ private:
+  std::string target_, temp_;
+  bool committed_ = false;
+};
+
+}  // namespace csgray

@@ -1,0 +1,17 @@
+// Image files through OpenImageIO, format by extension.
+#pragma once
+
+#include <string>
+
+namespace csgray {
+
+// Can an image be written to this path's format? Returns an empty string
+// if so, else why not.
+std::string imageFormatProblem(const std::string& path);
+
+// Writes linear-light RGB floats (row-major, top row first) atomically.
+// Float formats (EXR, HDR) keep linear values; others are sRGB-encoded.
+// Throws std::runtime_error naming the file.
+void writeImage(const std::string& path, int width, int height, const float* linearRgb);
+
+}  // namespace csgray

@@ -1,0 +1,38 @@
+// An n-ary boolean node: union, intersection or difference (the first
+// operand minus all others). Each node keeps its bounding box, skips
+// operands whose box the ray misses, and stops as soon as an intersection
+// or difference is empty.
+#pragma once
+
+#include <vector>
+
+#include "modeler/solid.h"
+
+namespace csgray {
+
+class Boolean : public Solid {
+ public:
+  enum class Op { Union, Intersection, Difference };
+
+  // Throws std::invalid_argument for an empty operand list.
+  Boolean(Op op, std::vector<SolidPtr> operands);
+
+  Op op() const { return op_; }
+  const Bounds& bounds() const override { return bounds_; }
+  void spans(const Ray& ray, SpanList& out) const override;
+  bool contains(const dvec3& p) const override;
+  std::span<const SolidPtr> children() const override { return operands_; }
+  std::string kind() const override;
+  SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+
+ private:
+  Op op_;
+  std::vector<SolidPtr> operands_;
+  Bounds bounds_;
+};
+
+SolidPtr unionOf(std::vector<SolidPtr> operands);
+SolidPtr intersectionOf(std::vector<SolidPtr> operands);
+SolidPtr differenceOf(std::vector<SolidPtr> operands);
+
+}  // namespace csgray

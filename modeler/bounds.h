@@ -1,0 +1,61 @@
+// Axis-aligned bounding box. An empty box has lo > hi; an unbounded solid
+// has infinite bounds on the axes where it extends forever.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "modeler/ray.h"
+
+namespace csgray {
+
+struct Bounds {
+  dvec3 lo{kInfinity};
+  dvec3 hi{-kInfinity};
+
+  static Bounds everything() { return {dvec3(-kInfinity), dvec3(kInfinity)}; }
+
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+  bool finite() const {
+    return !empty() && std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(lo.z) &&
+           std::isfinite(hi.x) && std::isfinite(hi.y) && std::isfinite(hi.z);
+  }
+  dvec3 center() const { return 0.5 * (lo + hi); }
+  dvec3 size() const { return hi - lo; }
+
+  void include(const dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  void include(const Bounds& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+  Bounds intersected(const Bounds& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
+  bool contains(const dvec3& p) const {
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+  }
+
+  // Slab test (Kay and Kajiya 1986): does the ray meet the box within
+  // [ray.tMin, ray.tMax]? Infinite extents and axis-parallel rays are handled
+  // because 0·inf never occurs: a zero direction gives ±inf slab distances.
+  bool hitBy(const Ray& ray) const {
+    double t0 = ray.tMin, t1 = ray.tMax;
+    for (int a = 0; a < 3; ++a) {
+      double near = (lo[a] - ray.origin[a]) * ray.invDir[a];
+      double far = (hi[a] - ray.origin[a]) * ray.invDir[a];
+      if (std::isnan(near) || std::isnan(far)) {
+        // Ray parallel to this slab and starting on one of its infinite planes.
+        if (ray.origin[a] < lo[a] || ray.origin[a] > hi[a]) return false;
+        continue;
+      }
+      if (near > far) std::swap(near, far);
+      t0 = std::max(t0, near);
+      t1 = std::min(t1, far);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
+};
+
+}  // namespace csgray

@@ -1,0 +1,57 @@
+#include "modeler/primitive.h"
+
+#include <cmath>
+
+namespace csgray {
+
+void Primitive::spans(const Ray& ray, SpanList& out) const {
+  out.clear();
+  if (frame_.isIdentity()) {
+    objectSpans(ray, out);
+  } else {
+    objectSpans(frame_.rayToObject(ray), out);
+  }
+}
+
+bool Primitive::contains(const dvec3& p) const {
+  return objectContains(frame_.isIdentity() ? p : frame_.pointToObject(p));
+}
+
+SolidPtr Primitive::withFrame(const Affine& worldFromObject) const {
+  std::shared_ptr<Primitive> copy = clone();
+  copy->frame_ = worldFromObject;
+  copy->updateBounds();
+  return copy;
+}
+
+SolidPtr Primitive::withMaterial(const MaterialPtr& material) const {
+  std::shared_ptr<Primitive> copy = clone();
+  copy->material_ = material;
+  return copy;
+}
+
+void Primitive::updateBounds() {
+  Bounds local = objectBounds();
+  if (local.empty()) {
+    bounds_ = local;
+    return;
+  }
+  if (!local.finite()) {
+    // An unbounded shape may reach anywhere once rotated.
+    bounds_ = frame_.isIdentity() ? local : Bounds::everything();
+    return;
+  }
+  // The box of the eight transformed corners, padded so that rounding in a
+  // leaf's own intersection never falls outside its box.
+  bounds_ = Bounds{};
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? local.hi.x : local.lo.x, i & 2 ? local.hi.y : local.lo.y,
+                 i & 4 ? local.hi.z : local.lo.z);
+    bounds_.include(frame_.pointToWorld(corner));
+  }
+  dvec3 pad = 1e-9 * (glm::abs(bounds_.lo) + glm::abs(bounds_.hi) + bounds_.size());
+  bounds_.lo -= pad;
+  bounds_.hi += pad;
+}
+
+}  // namespace csgray

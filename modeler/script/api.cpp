@@ -1,0 +1,543 @@
+#include "modeler/script/api.h"
+
+#include <cmath>
+#include <new>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "modeler/boolean.h"
+#include "modeler/primitives/box.h"
+#include "modeler/primitives/cylinder.h"
+#include "modeler/primitives/half_space.h"
+#include "modeler/primitives/quadric.h"
+#include "modeler/primitives/sphere.h"
+#include "modeler/script/lua_args.h"
+#include "modeler/script/sandbox.h"
+
+namespace csgray {
+
+namespace {
+
+// ---- C++ values held in Lua userdata ---------------------------------------
+
+template <class T>
+struct TypeName;
+template <>
+struct TypeName<SolidPtr> {
+  static constexpr const char* value = "csgray.solid";
+  static constexpr const char* shown = "solid";
+};
+template <>
+struct TypeName<CameraSpec> {
+  static constexpr const char* value = "csgray.camera";
+  static constexpr const char* shown = "camera";
+};
+template <>
+struct TypeName<PointLight> {
+  static constexpr const char* value = "csgray.light";
+  static constexpr const char* shown = "light";
+};
+template <>
+struct TypeName<Scene> {
+  static constexpr const char* value = "csgray.scene";
+  static constexpr const char* shown = "scene";
+};
+
+// Each userdata is charged against the script's memory cap by this much on
+// top of its own size, for what it holds on the C++ heap.
+constexpr std::size_t kHeapCharge = 256;
+
+template <class T>
+void pushValue(lua_State* L, T value) {
+  Sandbox::of(L).charge(L, kHeapCharge);
+  void* memory = lua_newuserdatauv(L, sizeof(T), 0);
+  new (memory) T(std::move(value));
+  luaL_setmetatable(L, TypeName<T>::value);
+}
+
+template <class T>
+T* toValue(lua_State* L, int index) {
+  return static_cast<T*>(luaL_testudata(L, index, TypeName<T>::value));
+}
+
+template <class T>
+const T& checkValue(lua_State* L, int index, const std::string& what) {
+  if (T* v = toValue<T>(L, index)) return *v;
+  throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + ", got " +
+                              luaL_typename(L, index));
+}
+
+template <class T>
+int destroyValue(lua_State* L) {
+  if (T* v = toValue<T>(L, 1)) v->~T();
+  return 0;
+}
+
+// Runs a binding and turns a C++ exception into a Lua error at the caller's
+// line. (Lua is built as C++ here, so Lua errors unwind as exceptions that
+// this does not catch, and destructors run either way.)
+template <int (*F)(lua_State*)>
+int guarded(lua_State* L) {
+  try {
+    return F(L);
+  } catch (const std::invalid_argument& e) {
+    return luaL_error(L, "%s", e.what());
+  } catch (const std::bad_alloc&) {
+    return luaL_error(L, "out of memory");
+  }
+}
+
+// ---- Argument shapes ------------------------------------------------------
+
+// A vector given as f(x, y, z), f{x, y, z} or f(s) for {s, s, s}.
+dvec3 vectorArgs(lua_State* L, int first, const std::string& what) {
+  int n = lua_gettop(L) - first + 1;
+  if (n == 3) {
+    return {toNumber(L, first, what + " x"), toNumber(L, first + 1, what + " y"),
+            toNumber(L, first + 2, what + " z")};
+  }
+  if (n == 1) return toVec3(L, first, what);
+  throw std::invalid_argument(what + ": expected x, y, z or {x, y, z}");
+}
+
+void pushSolid(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(solid)); }
+
+// A shape constructor: a table of named parameters, or a bare main value
+// (sphere(5), box{10, 20, 30}) that stands for the named one.
+LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
+  bool bare = lua_type(L, 1) == LUA_TNUMBER ||
+              (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0);
+  if (bare) {
+    lua_createtable(L, 0, 1);
+    lua_pushvalue(L, 1);
+    lua_setfield(L, -2, mainKey);
+    lua_replace(L, 1);
+  }
+  return LuaArgs(L, 1, function);
+}
+
+// center=true moves a shape whose object frame starts at the origin so that
+// its box is centred there.
+SolidPtr centred(const SolidPtr& solid, LuaArgs& args, const dvec3& offset) {
+  if (!args.boolean("center").value_or(false)) return solid;
+  return solid->transformed(Affine::translation(offset));
+}
+
+// ---- Primitives -------------------------------------------------------------
+
+// A radius from r= or d= (diameter), as in OpenSCAD.
+std::optional<double> radiusArg(LuaArgs& args, const char* r, const char* d) {
+  std::optional<double> radius = args.number(r);
+  std::optional<double> diameter = args.number(d);
+  if (radius && diameter)
+    throw std::invalid_argument(args.function() + ": give " + r + " or " + d + ", not both");
+  if (diameter) return *diameter / 2.0;
+  return radius;
+}
+
+int sphere(lua_State* L) {
+  LuaArgs args = shapeArgs(L, "sphere", "r");
+  std::optional<double> r = radiusArg(args, "r", "d");
+  args.finish();
+  if (!r) throw std::invalid_argument("sphere: needs r (radius) or d (diameter)");
+  pushSolid(L, Primitive::create<Sphere>(*r));
+  return 1;
+}
+
+int ellipsoid(lua_State* L) {
+  LuaArgs args = shapeArgs(L, "ellipsoid", "radii");
+  std::optional<dvec3> radii = args.vec3("radii");
+  args.finish();
+  if (!radii) throw std::invalid_argument("ellipsoid: needs radii={a, b, c}");
+  for (int i = 0; i < 3; ++i)
+    if (!((*radii)[i] > 0.0)) throw std::invalid_argument("ellipsoid: radii must be positive");
+  // A unit sphere under a non-uniform scale: exact, normals by inverse transpose.
+  pushSolid(L, Primitive::create<Sphere>(1.0)->transformed(Affine::scaling(*radii)));
+  return 1;
+}
+
+int box(lua_State* L) {
+  LuaArgs args = shapeArgs(L, "box", "size");
+  std::optional<dvec3> size = args.vec3("size");
+  if (!size) throw std::invalid_argument("box: needs size={x, y, z} (or a number for a cube)");
+  SolidPtr solid = centred(Primitive::create<Box>(*size), args, -0.5 * *size);
+  args.finish();
+  pushSolid(L, solid);
+  return 1;
+}
+
+SolidPtr cylinderFrom(LuaArgs& args, bool defaultR2IsR1) {
+  std::optional<double> h = args.number("h");
+  std::optional<double> r = radiusArg(args, "r", "d");
+  std::optional<double> r1 = radiusArg(args, "r1", "d1");
+  std::optional<double> r2 = radiusArg(args, "r2", "d2");
+  if (!h) throw std::invalid_argument(args.function() + ": needs h (height)");
+  if (r && (r1 || r2))
+    throw std::invalid_argument(args.function() + ": give r, or r1 and r2, not both");
+  double bottom = r ? *r : r1.value_or(-1.0);
+  if (bottom < 0.0 && !r1) throw std::invalid_argument(args.function() + ": needs r or r1");
+  double top = r ? (defaultR2IsR1 ? *r : 0.0) : r2.value_or(defaultR2IsR1 ? bottom : 0.0);
+  SolidPtr solid = Primitive::create<Cylinder>(bottom, top, *h);
+  return centred(solid, args, dvec3(0.0, 0.0, -0.5 * *h));
+}
+
+int cylinder(lua_State* L) {
+  LuaArgs args(L, 1, "cylinder");
+  SolidPtr solid = cylinderFrom(args, true);
+  args.finish();
+  pushSolid(L, solid);
+  return 1;
+}
+
+int cone(lua_State* L) {
+  LuaArgs args(L, 1, "cone");
+  SolidPtr solid = cylinderFrom(args, false);
+  args.finish();
+  pushSolid(L, solid);
+  return 1;
+}
+
+int halfSpace(lua_State* L) {
+  LuaArgs args(L, 1, "half_space");
+  std::optional<dvec3> normal = args.vec3("normal");
+  double offset = args.number("offset").value_or(0.0);
+  args.finish();
+  if (!normal) throw std::invalid_argument("half_space: needs normal={x, y, z}");
+  pushSolid(L, Primitive::create<HalfSpace>(*normal, offset));
+  return 1;
+}
+
+// A 4×4 matrix given as four rows of four numbers; with allowThreeRows the
+// last row may be left out (it is 0 0 0 1).
+glm::dmat4 matrixArg(lua_State* L, int index, const std::string& what, bool allowThreeRows) {
+  index = lua_absindex(L, index);
+  lua_Unsigned rows = lua_type(L, index) == LUA_TTABLE ? lua_rawlen(L, index) : 0;
+  if (rows != 4 && !(allowThreeRows && rows == 3))
+    throw std::invalid_argument(what + " must be a table of " +
+                                (allowThreeRows ? "3 or 4" : std::string("4")) +
+                                " rows of 4 numbers");
+  glm::dmat4 m(1.0);
+  for (lua_Unsigned r = 0; r < rows; ++r) {
+    lua_rawgeti(L, index, static_cast<lua_Integer>(r + 1));
+    if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 4)
+      throw std::invalid_argument(what + ": row " + std::to_string(r + 1) + " must have 4 numbers");
+    for (int c = 0; c < 4; ++c) {
+      lua_rawgeti(L, -1, c + 1);
+      m[c][r] = toNumber(L, -1, what + "[" + std::to_string(r + 1) + "][" + std::to_string(c + 1) + "]");
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  return m;
+}
+
+int quadric(lua_State* L) {
+  LuaArgs args(L, 1, "quadric");
+  if (!args.push("matrix")) throw std::invalid_argument("quadric: needs matrix={{...}, ...} (4×4)");
+  glm::dmat4 m = matrixArg(L, -1, "quadric: matrix", false);
+  lua_pop(L, 1);
+  args.finish();
+  pushSolid(L, Primitive::create<Quadric>(m));
+  return 1;
+}
+
+// ---- Booleans ---------------------------------------------------------------
+
+// Operands as f(a, b, c) or f{a, b, c}.
+std::vector<SolidPtr> operandArgs(lua_State* L, const std::string& function) {
+  std::vector<SolidPtr> operands;
+  int n = lua_gettop(L);
+  if (n == 1 && lua_type(L, 1) == LUA_TTABLE) {
+    lua_Unsigned count = lua_rawlen(L, 1);
+    for (lua_Unsigned i = 1; i <= count; ++i) {
+      lua_rawgeti(L, 1, static_cast<lua_Integer>(i));
+      operands.push_back(checkValue<SolidPtr>(L, -1, function + ": operand " + std::to_string(i)));
+      lua_pop(L, 1);
+    }
+  } else {
+    for (int i = 1; i <= n; ++i)
+      operands.push_back(checkValue<SolidPtr>(L, i, function + ": operand " + std::to_string(i)));
+  }
+  if (operands.empty()) throw std::invalid_argument(function + ": needs at least one solid");
+  return operands;
+}
+
+template <Boolean::Op op>
+int booleanOf(lua_State* L) {
+  const char* name = op == Boolean::Op::Union          ? "union"
+                     : op == Boolean::Op::Intersection ? "intersection"
+                                                       : "difference";
+  std::vector<SolidPtr> operands = operandArgs(L, name);
+  SolidPtr result = operands.size() == 1 ? operands[0]
+                                         : std::make_shared<Boolean>(op, std::move(operands));
+  pushSolid(L, result);
+  return 1;
+}
+
+// ---- Solid methods ------------------------------------------------------------
+
+const SolidPtr& self(lua_State* L) { return checkValue<SolidPtr>(L, 1, "method receiver (use ':')"); }
+
+int translate(lua_State* L) {
+  dvec3 offset = vectorArgs(L, 2, "translate");
+  pushSolid(L, self(L)->transformed(Affine::translation(offset)));
+  return 1;
+}
+
+int scale(lua_State* L) {
+  dvec3 factors = vectorArgs(L, 2, "scale");
+  pushSolid(L, self(L)->transformed(Affine::scaling(factors)));
+  return 1;
+}
+
+int mirror(lua_State* L) {
+  dvec3 normal = vectorArgs(L, 2, "mirror");
+  pushSolid(L, self(L)->transformed(Affine::mirror(normal)));
+  return 1;
+}
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// rotate(x, y, z) or rotate{x, y, z}: degrees about x, then y, then z
+// (OpenSCAD's rotate([x, y, z])); rotate{angle=a, axis={...}}: a degrees
+// about the axis.
+int rotate(lua_State* L) {
+  const SolidPtr& solid = self(L);
+  if (lua_gettop(L) == 2 && lua_type(L, 2) == LUA_TTABLE && lua_rawlen(L, 2) == 0) {
+    LuaArgs args(L, 2, "rotate");
+    std::optional<double> angle = args.number("angle");
+    std::optional<dvec3> axis = args.vec3("axis");
+    args.finish();
+    if (!angle || !axis) throw std::invalid_argument("rotate: needs angle= and axis=, or x, y, z");
+    pushSolid(L, solid->transformed(Affine::rotation(radians(*angle), *axis)));
+    return 1;
+  }
+  dvec3 angles = vectorArgs(L, 2, "rotate");
+  Affine r = Affine::rotation(radians(angles.x), {1, 0, 0})
+                 .then(Affine::rotation(radians(angles.y), {0, 1, 0}))
+                 .then(Affine::rotation(radians(angles.z), {0, 0, 1}));
+  pushSolid(L, solid->transformed(r));
+  return 1;
+}
+
+int transform(lua_State* L) {
+  glm::dmat4 m = matrixArg(L, 2, "transform", true);
+  pushSolid(L, self(L)->transformed(Affine::fromMatrix(m)));
+  return 1;
+}
+
+double unitArg(LuaArgs& args, const char* key, double fallback) {
+  double v = args.number(key).value_or(fallback);
+  if (v < 0.0 || v > 1.0) throw std::invalid_argument("material: " + std::string(key) + " must be in [0, 1]");
+  return v;
+}
+
+// material{color=, ambient=, diffuse=}: on a primitive it replaces the
+// material; on a boolean it goes to every primitive below without one.
+int material(lua_State* L) {
+  const SolidPtr& solid = self(L);
+  LuaArgs args(L, 2, "material");
+  auto m = std::make_shared<Material>();
+  m->color = args.vec3("color").value_or(m->color);
+  m->ambient = unitArg(args, "ambient", m->ambient);
+  m->diffuse = unitArg(args, "diffuse", m->diffuse);
+  args.finish();
+  for (int i = 0; i < 3; ++i)
+    if (m->color[i] < 0.0) throw std::invalid_argument("material: color components must be >= 0");
+  if (auto* p = dynamic_cast<const Primitive*>(solid.get())) {
+    pushSolid(L, p->withMaterial(m));
+  } else {
+    pushSolid(L, solid->withDefaultMaterial(m));
+  }
+  return 1;
+}
+
+void pushVec3(lua_State* L, const dvec3& v) {
+  lua_createtable(L, 3, 0);
+  for (int i = 0; i < 3; ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+}
+
+// bounds() returns two points, the low and the high corner.
+int bounds(lua_State* L) {
+  const Bounds& b = self(L)->bounds();
+  pushVec3(L, b.lo);
+  pushVec3(L, b.hi);
+  return 2;
+}
+
+int contains(lua_State* L) {
+  const SolidPtr& solid = self(L);
+  lua_pushboolean(L, solid->contains(vectorArgs(L, 2, "contains")));
+  return 1;
+}
+
+int solidToString(lua_State* L) {
+  const SolidPtr& solid = self(L);
+  TreeStats stats = treeStats(*solid);
+  std::ostringstream s;
+  s << "solid(" << solid->kind() << ", " << stats.primitives << " primitives)";
+  lua_pushstring(L, s.str().c_str());
+  return 1;
+}
+
+template <Boolean::Op op>
+int booleanOperator(lua_State* L) {
+  const char* symbol = op == Boolean::Op::Union ? "+" : op == Boolean::Op::Intersection ? "*" : "-";
+  std::string what = std::string("operand of '") + symbol + "'";
+  const SolidPtr& a = checkValue<SolidPtr>(L, 1, what);
+  const SolidPtr& b = checkValue<SolidPtr>(L, 2, what);
+  pushSolid(L, std::make_shared<Boolean>(op, std::vector<SolidPtr>{a, b}));
+  return 1;
+}
+
+// ---- Scene description ------------------------------------------------------
+
+int camera(lua_State* L) {
+  LuaArgs args(L, 1, "camera");
+  CameraSpec c;
+  c.eye = args.vec3("eye").value_or(c.eye);
+  c.lookAt = args.vec3("look_at").value_or(c.lookAt);
+  c.up = args.vec3("up").value_or(c.up);
+  c.fovDegrees = args.number("fov").value_or(c.fovDegrees);
+  args.finish();
+  if (!(c.fovDegrees > 0.0 && c.fovDegrees < 180.0))
+    throw std::invalid_argument("camera: fov must be between 0 and 180 degrees");
+  dvec3 view = c.lookAt - c.eye;
+  if (glm::length(view) == 0.0) throw std::invalid_argument("camera: eye and look_at are the same point");
+  if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
+    throw std::invalid_argument("camera: up must not be parallel to the view direction");
+  pushValue(L, c);
+  return 1;
+}
+
+int pointLight(lua_State* L) {
+  LuaArgs args(L, 1, "point_light");
+  PointLight light;
+  std::optional<dvec3> pos = args.vec3("pos");
+  light.color = args.vec3("color").value_or(light.color);
+  light.intensity = args.number("intensity").value_or(light.intensity);
+  args.finish();
+  if (!pos) throw std::invalid_argument("point_light: needs pos={x, y, z}");
+  light.position = *pos;
+  if (light.intensity < 0.0 || light.color.x < 0.0 || light.color.y < 0.0 || light.color.z < 0.0)
+    throw std::invalid_argument("point_light: color and intensity must be >= 0");
+  pushValue(L, light);
+  return 1;
+}
+
+// A single value of type T, or a list of them, under key.
+template <class T>
+std::vector<T> listArg(lua_State* L, LuaArgs& args, const char* key) {
+  std::vector<T> values;
+  if (!args.push(key)) return values;
+  std::string what = args.function() + ": " + key;
+  if (T* one = toValue<T>(L, -1)) {
+    values.push_back(*one);
+  } else if (lua_type(L, -1) == LUA_TTABLE) {
+    lua_Unsigned n = lua_rawlen(L, -1);
+    for (lua_Unsigned i = 1; i <= n; ++i) {
+      lua_rawgeti(L, -1, static_cast<lua_Integer>(i));
+      values.push_back(checkValue<T>(L, -1, what + "[" + std::to_string(i) + "]"));
+      lua_pop(L, 1);
+    }
+  } else {
+    throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + " or a list of them");
+  }
+  lua_pop(L, 1);
+  return values;
+}
+
+int scene(lua_State* L) {
+  LuaArgs args(L, 1, "scene");
+  Scene s;
+  s.objects = listArg<SolidPtr>(L, args, "objects");
+  s.lights = listArg<PointLight>(L, args, "lights");
+  if (args.push("camera")) {
+    s.camera = checkValue<CameraSpec>(L, -1, "scene: camera");
+    lua_pop(L, 1);
+  }
+  s.background = args.vec3("background").value_or(s.background);
+  args.finish();
+  if (s.objects.empty()) throw std::invalid_argument("scene: objects is empty");
+  pushValue(L, std::move(s));
+  return 1;
+}
+
+// ---- Registration -----------------------------------------------------------
+
+template <class T>
+void newMetatable(lua_State* L) {
+  luaL_newmetatable(L, TypeName<T>::value);
+  lua_pushcfunction(L, &destroyValue<T>);
+  lua_setfield(L, -2, "__gc");
+  lua_pushstring(L, TypeName<T>::shown);
+  lua_setfield(L, -2, "__name");
+}
+
+}  // namespace
+
+void registerScriptApi(lua_State* L) {
+  newMetatable<SolidPtr>(L);
+  static const luaL_Reg methods[] = {{"translate", guarded<translate>},
+                                     {"rotate", guarded<rotate>},
+                                     {"scale", guarded<scale>},
+                                     {"mirror", guarded<mirror>},
+                                     {"transform", guarded<transform>},
+                                     {"material", guarded<material>},
+                                     {"bounds", guarded<bounds>},
+                                     {"contains", guarded<contains>},
+                                     {nullptr, nullptr}};
+  luaL_newlib(L, methods);
+  lua_setfield(L, -2, "__index");
+  static const luaL_Reg operators[] = {{"__add", guarded<booleanOperator<Boolean::Op::Union>>},
+                                       {"__sub", guarded<booleanOperator<Boolean::Op::Difference>>},
+                                       {"__mul", guarded<booleanOperator<Boolean::Op::Intersection>>},
+                                       {"__tostring", guarded<solidToString>},
+                                       {nullptr, nullptr}};
+  luaL_setfuncs(L, operators, 0);
+  lua_pop(L, 1);
+  newMetatable<CameraSpec>(L);
+  lua_pop(L, 1);
+  newMetatable<PointLight>(L);
+  lua_pop(L, 1);
+  newMetatable<Scene>(L);
+  lua_pop(L, 1);
+
+  static const luaL_Reg globals[] = {
+      {"sphere", guarded<sphere>},
+      {"ellipsoid", guarded<ellipsoid>},
+      {"box", guarded<box>},
+      {"cylinder", guarded<cylinder>},
+      {"cone", guarded<cone>},
+      {"half_space", guarded<halfSpace>},
+      {"quadric", guarded<quadric>},
+      {"union", guarded<booleanOf<Boolean::Op::Union>>},
+      {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
+      {"difference", guarded<booleanOf<Boolean::Op::Difference>>},
+      {"camera", guarded<camera>},
+      {"point_light", guarded<pointLight>},
+      {"scene", guarded<scene>},
+  };
+  for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
+}
+
+Scene sceneFromValue(lua_State* L, int index) {
+  if (SolidPtr* solid = toValue<SolidPtr>(L, index)) {
+    Scene s;
+    s.objects.push_back(*solid);
+    return s;
+  }
+  if (Scene* s = toValue<Scene>(L, index)) return *s;
+  throw std::invalid_argument(std::string("the script must return a solid or scene{...}, not ") +
+                              luaL_typename(L, index));
+}
+
+}  // namespace csgray

@@ -1,0 +1,162 @@
+#include "modeler/script/sandbox.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace csgray {
+
+namespace {
+constexpr int kHookInterval = 10000;  // instructions between budget checks
+
+std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+}  // namespace
+
+Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
+  L_ = lua_newstate(&Sandbox::allocate, this);
+  if (!L_) throw ScriptError("cannot create a Lua state");
+  lua_sethook(L_, &Sandbox::countHook, LUA_MASKCOUNT, kHookInterval);
+
+  // Only libraries that compute; no io, os, package, debug or coroutine.
+  static const luaL_Reg libraries[] = {{LUA_GNAME, luaopen_base},
+                                       {LUA_STRLIBNAME, luaopen_string},
+                                       {LUA_TABLIBNAME, luaopen_table},
+                                       {LUA_MATHLIBNAME, luaopen_math},
+                                       {LUA_UTF8LIBNAME, luaopen_utf8}};
+  for (const luaL_Reg& lib : libraries) {
+    luaL_requiref(L_, lib.name, lib.func, 1);
+    lua_pop(L_, 1);
+  }
+  // Remove what loads code from files or strings, controls the collector,
+  // or writes warnings; string.dump makes binary chunks.
+  for (const char* name : {"dofile", "loadfile", "load", "require", "collectgarbage", "warn"}) {
+    lua_pushnil(L_);
+    lua_setglobal(L_, name);
+  }
+  lua_getglobal(L_, LUA_STRLIBNAME);
+  lua_pushnil(L_);
+  lua_setfield(L_, -2, "dump");
+  lua_pop(L_, 1);
+  // Protected calls that cannot swallow an abort; print goes to stderr so
+  // that standard output stays for csgray's own results.
+  lua_register(L_, "pcall", &Sandbox::safePcall);
+  lua_register(L_, "xpcall", &Sandbox::safeXpcall);
+  lua_register(L_, "print", &Sandbox::printToStderr);
+  // Reproducible scripts: the same random numbers on every run.
+  lua_getglobal(L_, LUA_MATHLIBNAME);
+  lua_getfield(L_, -1, "randomseed");
+  lua_pushinteger(L_, 42);
+  lua_call(L_, 1, 0);
+  lua_pop(L_, 1);
+}
+
+Sandbox::~Sandbox() {
+  if (L_) lua_close(L_);
+}
+
+Sandbox& Sandbox::of(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return *static_cast<Sandbox*>(ud);
+}
+
+void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize) {
+  auto* self = static_cast<Sandbox*>(ud);
+  std::size_t old = ptr ? oldSize : 0;  // oldSize is a type tag when ptr is null
+  if (newSize == 0) {
+    std::free(ptr);
+    self->used_ -= old;
+    return nullptr;
+  }
+  if (newSize > old && self->used_ - old + newSize > self->limits_.memoryBytes) {
+    if (self->abortReason_.empty())
+      self->abortReason_ = "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
+    return nullptr;  // Lua raises "not enough memory"
+  }
+  void* block = std::realloc(ptr, newSize);
+  if (block) self->used_ = self->used_ - old + newSize;
+  return block;
+}
+
+void Sandbox::charge(lua_State* L, std::size_t bytes) {
+  used_ += bytes;
+  if (used_ > limits_.memoryBytes)
+    abort(L, "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes), 1);
+}
+
+void Sandbox::abort(lua_State* L, const std::string& reason, int level) {
+  if (abortReason_.empty()) abortReason_ = reason;
+  luaL_where(L, level);
+  lua_pushstring(L, abortReason_.c_str());
+  lua_concat(L, 2);
+  lua_error(L);
+  std::abort();  // luaL_error does not return
+}
+
+void Sandbox::countHook(lua_State* L, lua_Debug*) {
+  Sandbox& self = of(L);
+  self.executed_ += kHookInterval;
+  if (self.executed_ > self.limits_.instructions || !self.abortReason_.empty()) {
+    // Level 0: inside a hook that is the Lua function being run.
+    self.abort(L,
+               "script exceeded the instruction budget of " +
+                   std::to_string(self.limits_.instructions) + " (endless loop?)",
+               0);
+  }
+}
+
+int Sandbox::finishProtectedCall(lua_State* L, int status, int base) {
+  if (!abortReason_.empty()) abort(L, abortReason_, 1);
+  lua_pushboolean(L, status == LUA_OK);
+  lua_insert(L, base);
+  return lua_gettop(L) - base + 1;
+}
+
+// pcall(f, ...): like Lua's, but an abort propagates.
+int Sandbox::safePcall(lua_State* L) {
+  luaL_checkany(L, 1);
+  int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
+  return of(L).finishProtectedCall(L, status, 1);
+}
+
+// xpcall(f, handler, ...): like Lua's, but an abort propagates.
+int Sandbox::safeXpcall(lua_State* L) {
+  int n = lua_gettop(L);
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lua_pushvalue(L, 1);  // f
+  lua_pushvalue(L, 2);  // handler
+  lua_replace(L, 1);    // handler at 1
+  lua_replace(L, 2);    // f at 2, arguments follow
+  int status = lua_pcall(L, n - 2, LUA_MULTRET, 1);
+  return of(L).finishProtectedCall(L, status, 2);
+}
+
+int Sandbox::printToStderr(lua_State* L) {
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    std::size_t len = 0;
+    const char* s = luaL_tolstring(L, i, &len);
+    if (i > 1) std::fputc('\t', stderr);
+    std::fwrite(s, 1, len, stderr);
+    lua_pop(L, 1);
+  }
+  std::fputc('\n', stderr);
+  return 0;
+}
+
+int Sandbox::run(const std::string& source, const std::string& chunkName) {
+  int base = lua_gettop(L_);
+  int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
+  if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
+  if (status != LUA_OK) {
+    std::string message = lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
+    lua_settop(L_, base);
+    // An abort raised as a memory error carries Lua's generic text; say why.
+    if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)
+      message = chunkName + ": " + abortReason_;
+    throw ScriptError(message);
+  }
+  return lua_gettop(L_) - base;
+}
+
+}  // namespace csgray

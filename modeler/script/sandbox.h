@@ -1,0 +1,55 @@
+// A Lua state that scripts cannot escape: only the base, string, table,
+// math and utf8 libraries, without anything that touches files, loads code
+// or inspects the VM. Memory and instructions are capped; once a cap is hit
+// the script is aborted, and pcall/xpcall cannot swallow that.
+#pragma once
+
+#include <lua.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "modeler/script/script.h"
+
+namespace csgray {
+
+class Sandbox {
+ public:
+  explicit Sandbox(const ScriptLimits& limits);
+  ~Sandbox();
+  Sandbox(const Sandbox&) = delete;
+  Sandbox& operator=(const Sandbox&) = delete;
+
+  lua_State* state() const { return L_; }
+  static Sandbox& of(lua_State* L);
+
+  // Counts memory held outside Lua (solids) against the memory cap.
+  // Raises a Lua error when the cap is exceeded.
+  void charge(lua_State* L, std::size_t bytes);
+
+  // Loads text (never binary) source and runs it; on success the results are
+  // on the stack. Throws ScriptError with "chunk:line: message".
+  int run(const std::string& source, const std::string& chunkName);
+
+  // Why the script was aborted, or empty.
+  const std::string& abortReason() const { return abortReason_; }
+
+ private:
+  static void* allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize);
+  static void countHook(lua_State* L, lua_Debug* ar);
+  static int safePcall(lua_State* L);
+  static int safeXpcall(lua_State* L);
+  static int printToStderr(lua_State* L);
+  // Raises the abort as a Lua error located at the given stack level.
+  [[noreturn]] void abort(lua_State* L, const std::string& reason, int level);
+  int finishProtectedCall(lua_State* L, int status, int base);
+
+  lua_State* L_ = nullptr;
+  ScriptLimits limits_;
+  std::size_t used_ = 0;
+  std::uint64_t executed_ = 0;
+  std::string abortReason_;
+};
+
+}  // namespace csgray

@@ -1,0 +1,40 @@
+// Runs a part script: sandboxed Lua 5.4 that returns a solid or a scene.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "modeler/scene.h"
+
+namespace csgray {
+
+// Resource caps that end a runaway script with a clear error.
+struct ScriptLimits {
+  std::size_t memoryBytes = std::size_t{1} << 30;  // Lua heap plus solids built
+  std::uint64_t instructions = 4'000'000'000;      // Lua VM instructions
+};
+
+struct ScriptOptions {
+  // Globals set before the script runs (-D name=value): numbers, true/false,
+  // or strings (quotes optional).
+  std::vector<std::pair<std::string, std::string>> defines;
+  ScriptLimits limits;
+};
+
+// A script that failed: the message names the file and line where known.
+class ScriptError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Runs the script file at path. Throws ScriptError.
+Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
+// Runs source text; chunkName is used in messages in place of a file name.
+Scene runScript(const std::string& source, const std::string& chunkName,
+                const ScriptOptions& options = {});
+
+}  // namespace csgray

@@ -1,0 +1,58 @@
+// A solid: a closed point set, possibly unbounded, that answers three
+// questions. It is an immutable value: transforms and materials return new
+// solids, so a script may reuse one part in many places.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "modeler/affine.h"
+#include "modeler/bounds.h"
+#include "modeler/material.h"
+#include "modeler/span_list.h"
+
+namespace csgray {
+
+class Solid;
+class Primitive;
+using SolidPtr = std::shared_ptr<const Solid>;
+
+class Solid : public std::enable_shared_from_this<Solid> {
+ public:
+  virtual ~Solid() = default;
+
+  // World-space box that holds the whole solid (conservative).
+  virtual const Bounds& bounds() const = 0;
+  // Spans of the ray inside the solid, written to out (cleared first).
+  // Spans lying wholly outside [ray.tMin, ray.tMax] may be left out; the
+  // others are reported whole, not clipped to the window.
+  virtual void spans(const Ray& ray, SpanList& out) const = 0;
+  // Is p in the closed point set (up to rounding on the surface)?
+  virtual bool contains(const dvec3& p) const = 0;
+
+  // Operands of a boolean node; none for a primitive.
+  virtual std::span<const SolidPtr> children() const { return {}; }
+  // A short description: "sphere", "union", ...
+  virtual std::string kind() const = 0;
+
+  // The same tree with every primitive p replaced by f(p).
+  using PrimitiveMap = std::function<SolidPtr(const Primitive&)>;
+  virtual SolidPtr mapPrimitives(const PrimitiveMap& f) const = 0;
+
+  // This solid moved by worldFromObject (applied after any transform it has).
+  SolidPtr transformed(const Affine& worldFromObject) const;
+  // This solid with the material given to every primitive that has none.
+  SolidPtr withDefaultMaterial(const MaterialPtr& material) const;
+};
+
+// Counts of a tree, for `csgray info`.
+struct TreeStats {
+  int primitives = 0;
+  int booleans = 0;
+};
+TreeStats treeStats(const Solid& solid);
+
+}  // namespace csgray

@@ -1,0 +1,25 @@
+#include "raytrace/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+namespace csgray {
+
+Camera::Camera(const CameraSpec& spec, int width, int height)
+    : eye_(spec.eye), width_(width), height_(height) {
+  forward_ = glm::normalize(spec.lookAt - spec.eye);
+  right_ = glm::normalize(glm::cross(forward_, spec.up));
+  up_ = glm::cross(right_, forward_);
+  halfWidth_ = std::tan(0.5 * spec.fovDegrees * std::numbers::pi / 180.0);
+  pixel_ = 2.0 * halfWidth_ / width;
+}
+
+Ray Camera::ray(double x, double y) const {
+  double u = (x - 0.5 * width_) * pixel_;
+  double v = (0.5 * height_ - y) * pixel_;
+  return Ray(eye_, glm::normalize(forward_ + u * right_ + v * up_));
+}
+
+}  // namespace csgray
