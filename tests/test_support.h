@@ -1,0 +1,91 @@
+// Shared checks for the test suites: the span-list invariants and the
+// agreement of spans with contains(), which every solid must satisfy.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "modeler/solid.h"
+
+namespace csgray::test {
+
+// A random unit vector, uniform on the sphere.
+inline dvec3 randomDirection(std::mt19937_64& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  dvec3 d;
+  do d = dvec3(n(rng), n(rng), n(rng));
+  while (glm::length(d) < 1e-6);
+  return glm::normalize(d);
+}
+
+// A random point in the box.
+inline dvec3 randomPoint(std::mt19937_64& rng, const Bounds& box) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  return box.lo + dvec3(u(rng), u(rng), u(rng)) * box.size();
+}
+
+// The spans of the whole line through the ray must be a valid span list,
+// and contains() must agree with them: the middle of every span is inside,
+// the middle of every gap between spans is outside. A line (tMin = -inf)
+// is used so that unbounded spans are tested too.
+inline void expectSpansAgreeWithContains(const Solid& solid, const Ray& line) {
+  SpanList spans;
+  solid.spans(line, spans);
+  ASSERT_TRUE(spans.valid());
+  auto midpoint = [](double a, double b) {
+    if (std::isinf(a) && std::isinf(b)) return 0.0;
+    if (std::isinf(a)) return b - 1.0 - std::abs(b);
+    if (std::isinf(b)) return a + 1.0 + std::abs(a);
+    return 0.5 * (a + b);
+  };
+  for (const Span& s : spans) {
+    if (s.length() < 1e-9) continue;
+    double t = midpoint(s.in.t, s.out.t);
+    EXPECT_TRUE(solid.contains(line.at(t))) << "span [" << s.in.t << ", " << s.out.t << "] t=" << t;
+  }
+  for (uint32_t i = 0; i <= spans.size(); ++i) {
+    double a = i == 0 ? -kInfinity : spans[i - 1].out.t;
+    double b = i == spans.size() ? kInfinity : spans[i].in.t;
+    if (b - a < 1e-9) continue;
+    double t = midpoint(a, b);
+    EXPECT_FALSE(solid.contains(line.at(t))) << "gap [" << a << ", " << b << "] t=" << t;
+  }
+}
+
+// Many random lines through points near the solid's bounds (or near the
+// origin for an unbounded solid).
+inline void expectSpansAgreeWithContainsOnRandomLines(const Solid& solid, int count = 2000,
+                                                      unsigned seed = 1) {
+  std::mt19937_64 rng(seed);
+  Bounds box = solid.bounds();
+  if (!box.finite()) box = Bounds{dvec3(-5.0), dvec3(5.0)};
+  dvec3 pad = 0.1 * box.size();
+  Bounds around{box.lo - pad, box.hi + pad};
+  for (int i = 0; i < count; ++i) {
+    Ray line(randomPoint(rng, around), randomDirection(rng), -kInfinity, kInfinity);
+    expectSpansAgreeWithContains(solid, line);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+// Volume from span lengths on a grid of parallel rays along z through the
+// box (the midpoint rule in x and y, exact along z).
+inline double gridVolume(const Solid& solid, const Bounds& box, int n) {
+  double dx = box.size().x / n, dy = box.size().y / n;
+  double volume = 0.0;
+  SpanList spans;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      dvec3 o(box.lo.x + (i + 0.5) * dx, box.lo.y + (j + 0.5) * dy, box.lo.z - 1.0);
+      Ray ray(o, dvec3(0, 0, 1), -kInfinity, kInfinity);
+      solid.spans(ray, spans);
+      volume += spans.lengthWithin(box.lo.z - 1.0, box.hi.z + 1.0) * dx * dy;
+    }
+  }
+  return volume;
+}
+
+}  // namespace csgray::test
