@@ -41,17 +41,13 @@ void Primitive::updateBounds() {
     bounds_ = frame_.isIdentity() ? local : Bounds::everything();
     return;
   }
-  // The box of the eight transformed corners, padded so that rounding in a
-  // leaf's own intersection never falls outside its box.
+  // The box of the eight transformed corners.
   bounds_ = Bounds{};
   for (int i = 0; i < 8; ++i) {
     dvec3 corner(i & 1 ? local.hi.x : local.lo.x, i & 2 ? local.hi.y : local.lo.y,
                  i & 4 ? local.hi.z : local.lo.z);
     bounds_.include(frame_.pointToWorld(corner));
   }
-  dvec3 pad = 1e-9 * (glm::abs(bounds_.lo) + glm::abs(bounds_.hi) + bounds_.size());
-  bounds_.lo -= pad;
-  bounds_.hi += pad;
 }
 
 }  // namespace csgray

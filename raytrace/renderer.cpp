@@ -100,11 +100,12 @@ dvec3 Renderer::shade(const Ray& ray, const SurfaceHit& hit) const {
   return color;
 }
 
-dvec3 Renderer::shadePixel(int x, int y) const {
-  Ray ray = camera_.ray(x + 0.5, y + 0.5);
+dvec3 Renderer::trace(const Ray& ray) const {
   std::optional<SurfaceHit> hit = firstHit(ray);
   return hit ? shade(ray, *hit) : scene_.background;
 }
+
+dvec3 Renderer::shadePixel(int x, int y) const { return trace(camera_.ray(x + 0.5, y + 0.5)); }
 
 Image Renderer::render() const {
   Image image(options_.width, options_.height);

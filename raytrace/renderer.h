@@ -30,8 +30,9 @@ class Renderer {
 
   Image render() const;
 
-  // One pixel's colour (exposed for tests).
+  // The colour of pixel (x, y), and the colour seen along any ray.
   dvec3 shadePixel(int x, int y) const;
+  dvec3 trace(const Ray& ray) const;
   std::optional<SurfaceHit> firstHit(const Ray& ray) const;
   // Is there solid anywhere on the open segment from..to?
   bool occluded(const dvec3& from, const dvec3& to) const;

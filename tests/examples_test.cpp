@@ -1,0 +1,57 @@
+// Every script in examples/ runs and renders: a small image that is not
+// all background and has only finite, non-negative colours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "modeler/script/script.h"
+#include "raytrace/renderer.h"
+
+namespace csgray {
+namespace {
+
+std::vector<std::string> exampleScripts() {
+  std::vector<std::string> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(CSGRAY_SOURCE_DIR "/examples"))
+    if (entry.path().extension() == ".lua") paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+class Example : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Example, Renders) {
+  Scene scene = runScriptFile(GetParam());
+  ASSERT_FALSE(scene.objects.empty());
+  Image image = Renderer(scene, {160, 120, 0}).render();
+  int notBackground = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      dvec3 c = image.at(x, y);
+      ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)) << x << "," << y;
+      ASSERT_TRUE(c.x >= 0 && c.y >= 0 && c.z >= 0) << x << "," << y;
+      notBackground += glm::any(glm::notEqual(c, glm::dvec3(glm::vec3(scene.background))));
+    }
+  }
+  // The part fills a good share of the frame.
+  EXPECT_GT(notBackground, image.width * image.height / 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, Example, ::testing::ValuesIn(exampleScripts()),
+                         [](const auto& info) {
+                           std::string name = std::filesystem::path(info.param).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+TEST(Examples, ShowcaseIsAmongThem) {
+  auto scripts = exampleScripts();
+  EXPECT_NE(std::find_if(scripts.begin(), scripts.end(),
+                         [](const std::string& p) { return p.ends_with("/showcase.lua"); }),
+            scripts.end());
+}
+
+}  // namespace
+}  // namespace csgray

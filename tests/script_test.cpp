@@ -1,0 +1,208 @@
+// The script front end: the API builds the solids it says, parameters are
+// checked, errors name the file and line, -D sets globals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "modeler/boolean.h"
+#include "modeler/primitive.h"
+#include "modeler/script/script.h"
+#include "test_support.h"
+
+namespace csgray {
+namespace {
+
+SolidPtr solidOf(const std::string& source, const ScriptOptions& options = {}) {
+  Scene scene = runScript(source, "part.lua", options);
+  EXPECT_EQ(scene.objects.size(), 1u);
+  return scene.objects.at(0);
+}
+
+std::string errorOf(const std::string& source, const ScriptOptions& options = {}) {
+  try {
+    runScript(source, "part.lua", options);
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(Script, SphereByRadiusOrDiameter) {
+  for (const char* source : {"return sphere{r=2}", "return sphere(2)", "return sphere{d=4}"}) {
+    SolidPtr s = solidOf(source);
+    EXPECT_EQ(s->bounds().hi.x, s->bounds().hi.x);
+    EXPECT_NEAR(s->bounds().hi.x, 2.0, 1e-6) << source;
+    EXPECT_TRUE(s->contains(dvec3(0, 0, 1.99)));
+    EXPECT_FALSE(s->contains(dvec3(0, 0, 2.01)));
+  }
+}
+
+TEST(Script, BoxFollowsOpenScadCube) {
+  SolidPtr corner = solidOf("return box{size={10, 20, 30}}");
+  EXPECT_TRUE(corner->contains(dvec3(9, 19, 29)));
+  EXPECT_FALSE(corner->contains(dvec3(-1, 1, 1)));
+  SolidPtr centred = solidOf("return box{size={10, 20, 30}, center=true}");
+  EXPECT_TRUE(centred->contains(dvec3(-4.9, -9.9, -14.9)));
+  EXPECT_FALSE(centred->contains(dvec3(5.1, 0, 0)));
+  SolidPtr cube = solidOf("return box(4)");
+  EXPECT_TRUE(cube->contains(dvec3(3.9)));
+}
+
+TEST(Script, CylinderAndCone) {
+  SolidPtr c = solidOf("return cylinder{r=2, h=5}");
+  EXPECT_TRUE(c->contains(dvec3(1.9, 0, 4.9)));
+  EXPECT_FALSE(c->contains(dvec3(0, 0, 5.1)));
+  SolidPtr centred = solidOf("return cylinder{d=4, h=6, center=true}");
+  EXPECT_TRUE(centred->contains(dvec3(0, 1.9, -2.9)));
+  SolidPtr cone = solidOf("return cone{r=2, h=4}");
+  EXPECT_TRUE(cone->contains(dvec3(0.9, 0, 2)));   // radius at z=2 is 1
+  EXPECT_FALSE(cone->contains(dvec3(1.1, 0, 2)));
+  SolidPtr frustum = solidOf("return cylinder{r1=2, r2=1, h=4}");
+  EXPECT_TRUE(frustum->contains(dvec3(1.4, 0, 2)));  // radius at z=2 is 1.5
+  EXPECT_FALSE(frustum->contains(dvec3(1.6, 0, 2)));
+}
+
+TEST(Script, EllipsoidHalfSpaceQuadric) {
+  SolidPtr e = solidOf("return ellipsoid{radii={3, 2, 1}}");
+  EXPECT_TRUE(e->contains(dvec3(2.9, 0, 0)));
+  EXPECT_FALSE(e->contains(dvec3(0, 2.1, 0)));
+  SolidPtr h = solidOf("return half_space{normal={0, 0, 1}, offset=2}");
+  EXPECT_TRUE(h->contains(dvec3(100, -100, 1.9)));
+  EXPECT_FALSE(h->contains(dvec3(0, 0, 2.1)));
+  // x² + y² + z² - 4 <= 0 as a quadric matrix.
+  SolidPtr q = solidOf("return quadric{matrix={{1,0,0,0},{0,1,0,0},{0,0,1,0},{0,0,0,-4}}}");
+  EXPECT_TRUE(q->contains(dvec3(0, 1.9, 0)));
+  EXPECT_FALSE(q->contains(dvec3(0, 2.1, 0)));
+}
+
+TEST(Script, BooleansAndOperators) {
+  const char* a = "local a, b = box{size=2}, sphere{r=1}:translate(2, 1, 1) ";
+  for (std::string op : {"a + b", "union(a, b)", "union{a, b}"}) {
+    SolidPtr s = solidOf(std::string(a) + "return " + op);
+    EXPECT_TRUE(s->contains(dvec3(0.5, 0.5, 0.5)));
+    EXPECT_TRUE(s->contains(dvec3(2.5, 1, 1)));
+  }
+  for (std::string op : {"a - b", "difference(a, b)"}) {
+    SolidPtr s = solidOf(std::string(a) + "return " + op);
+    EXPECT_TRUE(s->contains(dvec3(0.5, 0.5, 0.5)));
+    EXPECT_FALSE(s->contains(dvec3(1.5, 1, 1)));
+  }
+  for (std::string op : {"a * b", "intersection(a, b)"}) {
+    SolidPtr s = solidOf(std::string(a) + "return " + op);
+    EXPECT_FALSE(s->contains(dvec3(0.5, 0.5, 0.5)));
+    EXPECT_TRUE(s->contains(dvec3(1.5, 1, 1)));
+  }
+  SolidPtr nary = solidOf("return union(sphere(1), sphere(1):translate(3,0,0), sphere(1):translate(6,0,0))");
+  EXPECT_EQ(treeStats(*nary).primitives, 3);
+  EXPECT_EQ(treeStats(*nary).booleans, 1);
+}
+
+TEST(Script, TransformsCompose) {
+  // Rotate 90° about z, then translate: (1, 0, 0) goes to (0, 1, 0) + (10, 0, 0).
+  SolidPtr s = solidOf("return sphere(0.5):translate(1, 0, 0):rotate(0, 0, 90):translate{10, 0, 0}");
+  EXPECT_TRUE(s->contains(dvec3(10, 1, 0)));
+  EXPECT_FALSE(s->contains(dvec3(11, 0, 0)));
+  SolidPtr axis = solidOf("return box(1):rotate{angle=180, axis={0, 0, 1}}");
+  EXPECT_TRUE(axis->contains(dvec3(-0.5, -0.5, 0.5)));
+  SolidPtr mirrored = solidOf("return box(1):mirror(1, 0, 0)");
+  EXPECT_TRUE(mirrored->contains(dvec3(-0.5, 0.5, 0.5)));
+  SolidPtr scaled = solidOf("return sphere(1):scale(2, 1, 1)");
+  EXPECT_TRUE(scaled->contains(dvec3(1.9, 0, 0)));
+  EXPECT_FALSE(scaled->contains(dvec3(0, 1.1, 0)));
+  SolidPtr m = solidOf("return sphere(1):transform{{1,0,0,5},{0,1,0,0},{0,0,1,0}}");
+  EXPECT_TRUE(m->contains(dvec3(5.9, 0, 0)));
+}
+
+TEST(Script, MaterialGoesToPrimitivesWithoutOne) {
+  SolidPtr s = solidOf(R"(
+    local red = sphere(1):material{color={1, 0, 0}}
+    return (red + sphere(1):translate(3, 0, 0)):material{color={0, 0, 1}})");
+  auto* node = dynamic_cast<const Boolean*>(s.get());
+  ASSERT_NE(node, nullptr);
+  auto* first = dynamic_cast<const Primitive*>(node->children()[0].get());
+  auto* second = dynamic_cast<const Primitive*>(node->children()[1].get());
+  ASSERT_TRUE(first && second && first->material() && second->material());
+  EXPECT_EQ(first->material()->color, dvec3(1, 0, 0));
+  EXPECT_EQ(second->material()->color, dvec3(0, 0, 1));
+}
+
+TEST(Script, SceneWithCameraAndLights) {
+  Scene scene = runScript(R"(
+    return scene{
+      objects = {sphere(1), box(1)},
+      camera = camera{eye={0, -10, 0}, look_at={0, 0, 0}, fov=30},
+      lights = {point_light{pos={5, -5, 5}, color={1, 0.5, 0.25}, intensity=2}},
+      background = {0.1, 0.2, 0.3},
+    })",
+                          "scene.lua");
+  EXPECT_EQ(scene.objects.size(), 2u);
+  ASSERT_TRUE(scene.camera.has_value());
+  EXPECT_EQ(scene.camera->fovDegrees, 30.0);
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].intensity, 2.0);
+  EXPECT_EQ(scene.lights[0].color, dvec3(1, 0.5, 0.25));
+  EXPECT_EQ(scene.background, dvec3(0.1, 0.2, 0.3));
+}
+
+TEST(Script, DefinesSetGlobals) {
+  ScriptOptions options;
+  options.defines = {{"radius", "3"}, {"hollow", "true"}, {"label", "\"abc\""}};
+  SolidPtr s = solidOf(R"(
+    assert(label == "abc" and hollow == true)
+    return sphere(radius))",
+                       options);
+  EXPECT_NEAR(s->bounds().hi.x, 3.0, 1e-6);
+  options.defines = {{"not a name", "1"}};
+  EXPECT_NE(errorOf("return sphere(1)", options).find("not a valid Lua name"), std::string::npos);
+}
+
+// Every error names the file and the line of the call that failed.
+TEST(Script, ErrorsNameFileAndLine) {
+  struct Case {
+    const char* source;
+    const char* expected;
+  } cases[] = {
+      {"local a = 1\nreturn sphere{r=-1}", "part.lua:2: sphere: radius must be a positive"},
+      {"\n\nreturn sphere{r=0/0}", "part.lua:3: sphere: r must be finite"},
+      {"return box{size={1, 0, 1}}", "part.lua:1: box: size y must be a positive"},
+      {"return sphere{radius=1}", "part.lua:1: sphere: unknown parameter 'radius'"},
+      {"return cylinder{r=1}", "part.lua:1: cylinder: needs h"},
+      {"return box(1):scale(1, 0, 1)", "part.lua:1: transform is singular"},
+      {"return sphere(1) + 3", "part.lua:1: operand of '+' must be a solid, got number"},
+      {"return union()", "part.lua:1: union: needs at least one solid"},
+      {"return quadric{matrix={{1,2,0,0},{0,1,0,0},{0,0,1,0},{0,0,0,-1}}}",
+       "part.lua:1: quadric: matrix must be symmetric"},
+      {"return camera{eye={0,0,0}, look_at={0,0,0}}", "part.lua:1: camera: eye and look_at"},
+      {"x = = 1", "part.lua:1:"},
+      {"error('custom')", "part.lua:1: custom"},
+      {"local s = sphere(1)", "part.lua: the script returned nothing"},
+      {"return 42", "part.lua: the script must return a solid or scene{...}, not number"},
+      {"return scene{objects={}}", "part.lua:1: scene: objects is empty"},
+      {"return scene{objects={sphere(1)}, lights={42}}",
+       "part.lua:1: scene: lights[1] must be a light, got number"},
+  };
+  for (const Case& c : cases)
+    EXPECT_NE(errorOf(c.source).find(c.expected), std::string::npos)
+        << c.source << "\n  gave: " << errorOf(c.source);
+}
+
+TEST(Script, MissingFileIsAClearError) {
+  try {
+    runScriptFile("/nonexistent/part.lua");
+    FAIL() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/part.lua: cannot open script"),
+              std::string::npos);
+  }
+}
+
+TEST(Script, RandomNumbersAreReproducible) {
+  const char* source = "return sphere(1 + math.random())";
+  double a = solidOf(source)->bounds().hi.x;
+  double b = solidOf(source)->bounds().hi.x;
+  EXPECT_EQ(a, b);
+}
+
+}  // namespace
+}  // namespace csgray
