@@ -11,11 +11,11 @@ CSGRAY     := $(BUILD)/cli/csgray
 # Debian 12 packages the build and the tests need.
 PACKAGES := build-essential cmake pkg-config \
             libcgal-dev libopenmesh-dev libglm-dev libopenimageio-dev \
-            liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev
+            liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev time
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build run test clean
+.PHONY: all deps configure build run test bench clean
 
 all: build
 
@@ -46,6 +46,9 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	bench/run.sh $(CSGRAY)
 
 clean:
 	rm -rf $(BUILD) out

@@ -1,6 +1,5 @@
 // csgray: the command line over the modeler, ray tracer and io libraries.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -24,7 +23,8 @@ constexpr long kMaxPixels = 64L * 1024 * 1024;
 std::pair<int, int> parseSize(const std::string& text) {
   std::smatch m;
   if (!std::regex_match(text, m, std::regex(R"((\d{1,6})[xX](\d{1,6}))")))
-    throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 1024x768, got '" + text + "'");
+    throw CLI::ValidationError("--size",
+                               "expected WIDTHxHEIGHT, e.g. 1024x768, got '" + text + "'");
   int w = std::stoi(m[1]), h = std::stoi(m[2]);
   if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide || long(w) * h > kMaxPixels)
     throw CLI::ValidationError("--size", "image size " + text + " is out of range (1 to " +
@@ -34,7 +34,8 @@ std::pair<int, int> parseSize(const std::string& text) {
 }
 
 // -D name=value pairs.
-std::vector<std::pair<std::string, std::string>> parseDefines(const std::vector<std::string>& items) {
+std::vector<std::pair<std::string, std::string>> parseDefines(
+    const std::vector<std::string>& items) {
   std::vector<std::pair<std::string, std::string>> defines;
   for (const std::string& item : items) {
     size_t eq = item.find('=');
@@ -69,8 +70,8 @@ void printInfo(const std::string& script, const Scene& scene) {
   std::cout << "  objects:       " << scene.objects.size() << "\n"
             << "  primitives:    " << stats.primitives << "\n"
             << "  boolean nodes: " << stats.booleans << "\n"
-            << "  lights:        " << scene.lights.size() << (scene.lights.empty() ? " (default)" : "")
-            << "\n"
+            << "  lights:        " << scene.lights.size()
+            << (scene.lights.empty() ? " (default)" : "") << "\n"
             << "  camera:        " << (scene.camera ? "set" : "framed from bounds") << "\n";
 }
 
@@ -87,7 +88,9 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "Ray trace a part script to an image");
   render->add_option("script", script, "Lua part script")->required();
-  render->add_option("-o,--output", output, "Image file; its extension picks the format (.png, .exr, ...)")
+  render
+      ->add_option("-o,--output", output,
+                   "Image file; its extension picks the format (.png, .exr, ...)")
       ->required();
   render->add_option("--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
   render->add_option("--threads", threads, "Worker threads (0: all cores)")

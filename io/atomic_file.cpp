@@ -38,7 +38,8 @@ void AtomicFile::commit() {
   int syncError = errno;
   ::close(fd);
   if (!synced) throw failure(target_, std::strerror(syncError));
-  if (std::rename(temp_.c_str(), target_.c_str()) != 0) throw failure(target_, std::strerror(errno));
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0)
+    throw failure(target_, std::strerror(errno));
   committed_ = true;
   // Make the rename itself durable.
   std::filesystem::path folder = std::filesystem::path(target_).parent_path();

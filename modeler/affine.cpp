@@ -1,11 +1,10 @@
 #include "modeler/affine.h"
 
 #include <cmath>
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <stdexcept>
 
 namespace csgray {
 

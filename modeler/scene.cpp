@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
-
-#include <glm/geometric.hpp>
 
 namespace csgray {
 

@@ -5,7 +5,8 @@
 namespace csgray {
 
 SolidPtr Solid::transformed(const Affine& worldFromObject) const {
-  return mapPrimitives([&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
+  return mapPrimitives(
+      [&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
 }
 
 SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {

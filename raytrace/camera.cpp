@@ -1,9 +1,8 @@
 #include "raytrace/camera.h"
 
 #include <cmath>
-#include <numbers>
-
 #include <glm/geometric.hpp>
+#include <numbers>
 
 namespace csgray {
 

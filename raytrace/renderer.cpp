@@ -1,12 +1,12 @@
 #include "raytrace/renderer.h"
 
-#include <algorithm>
-#include <cmath>
-
-#include <glm/geometric.hpp>
 #include <oneapi/tbb/blocked_range2d.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 
 #include "modeler/primitive.h"
 

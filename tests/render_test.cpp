@@ -4,9 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
-
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include "modeler/primitives/box.h"
 #include "modeler/primitives/half_space.h"
@@ -62,7 +61,8 @@ TEST(Render, ImageHasRequestedSizeAndThreadCountDoesNotMatter) {
 // below it: the shadow is the disc of radius 10·tan(asin(1/8)) = 10/√63.
 TEST(Render, ShadowEdgeWhereSimilarTrianglesPutIt) {
   Scene scene;
-  scene.objects.push_back(Primitive::create<Sphere>(1.0)->transformed(Affine::translation({0, 0, 2})));
+  scene.objects.push_back(
+      Primitive::create<Sphere>(1.0)->transformed(Affine::translation({0, 0, 2})));
   scene.objects.push_back(
       Primitive::create<Box>(dvec3(20, 20, 1))->transformed(Affine::translation({-10, -10, -1})));
   scene.lights.push_back(PointLight{dvec3(0, 0, 10), dvec3(1.0), 1.0});

@@ -22,10 +22,11 @@ std::string errorOf(const std::string& source, const ScriptLimits& limits = {}) 
 }
 
 TEST(Sandbox, RemovedFunctionsAreNil) {
-  for (const char* name : {"io", "os", "package", "debug", "coroutine", "load", "loadfile", "dofile",
-                           "require", "collectgarbage", "string.dump", "loadstring", "module"}) {
-    std::string source = std::string("assert(") + name + " == nil, '" + name +
-                         " is reachable') return sphere(1)";
+  for (const char* name :
+       {"io", "os", "package", "debug", "coroutine", "load", "loadfile", "dofile", "require",
+        "collectgarbage", "string.dump", "loadstring", "module"}) {
+    std::string source =
+        std::string("assert(") + name + " == nil, '" + name + " is reachable') return sphere(1)";
     EXPECT_EQ(errorOf(source), "(no error)") << name;
   }
 }

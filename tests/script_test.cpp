@@ -1,5 +1,7 @@
 // The script front end: the API builds the solids it says, parameters are
 // checked, errors name the file and line, -D sets globals.
+#include "modeler/script/script.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 
 #include "modeler/boolean.h"
 #include "modeler/primitive.h"
-#include "modeler/script/script.h"
 #include "test_support.h"
 
 namespace csgray {
@@ -56,7 +57,7 @@ TEST(Script, CylinderAndCone) {
   SolidPtr centred = solidOf("return cylinder{d=4, h=6, center=true}");
   EXPECT_TRUE(centred->contains(dvec3(0, 1.9, -2.9)));
   SolidPtr cone = solidOf("return cone{r=2, h=4}");
-  EXPECT_TRUE(cone->contains(dvec3(0.9, 0, 2)));   // radius at z=2 is 1
+  EXPECT_TRUE(cone->contains(dvec3(0.9, 0, 2)));  // radius at z=2 is 1
   EXPECT_FALSE(cone->contains(dvec3(1.1, 0, 2)));
   SolidPtr frustum = solidOf("return cylinder{r1=2, r2=1, h=4}");
   EXPECT_TRUE(frustum->contains(dvec3(1.4, 0, 2)));  // radius at z=2 is 1.5
@@ -93,14 +94,16 @@ TEST(Script, BooleansAndOperators) {
     EXPECT_FALSE(s->contains(dvec3(0.5, 0.5, 0.5)));
     EXPECT_TRUE(s->contains(dvec3(1.5, 1, 1)));
   }
-  SolidPtr nary = solidOf("return union(sphere(1), sphere(1):translate(3,0,0), sphere(1):translate(6,0,0))");
+  SolidPtr nary =
+      solidOf("return union(sphere(1), sphere(1):translate(3,0,0), sphere(1):translate(6,0,0))");
   EXPECT_EQ(treeStats(*nary).primitives, 3);
   EXPECT_EQ(treeStats(*nary).booleans, 1);
 }
 
 TEST(Script, TransformsCompose) {
   // Rotate 90° about z, then translate: (1, 0, 0) goes to (0, 1, 0) + (10, 0, 0).
-  SolidPtr s = solidOf("return sphere(0.5):translate(1, 0, 0):rotate(0, 0, 90):translate{10, 0, 0}");
+  SolidPtr s =
+      solidOf("return sphere(0.5):translate(1, 0, 0):rotate(0, 0, 90):translate{10, 0, 0}");
   EXPECT_TRUE(s->contains(dvec3(10, 1, 0)));
   EXPECT_FALSE(s->contains(dvec3(11, 0, 0)));
   SolidPtr axis = solidOf("return box(1):rotate{angle=180, axis={0, 0, 1}}");

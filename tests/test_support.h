@@ -4,9 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include <glm/geometric.hpp>
+#include <random>
 
 #include "modeler/solid.h"
 

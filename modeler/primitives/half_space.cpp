@@ -1,8 +1,7 @@
 #include "modeler/primitives/half_space.h"
 
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
+#include <stdexcept>
 
 #include "modeler/primitives/check.h"
 
@@ -42,8 +41,10 @@ Bounds HalfSpace::objectBounds() const {
   Bounds b = Bounds::everything();
   for (int axis = 0; axis < 3; ++axis) {
     if (std::abs(normal_[axis]) != 1.0) continue;
-    if (normal_[axis] > 0.0) b.hi[axis] = offset_;
-    else b.lo[axis] = -offset_;
+    if (normal_[axis] > 0.0)
+      b.hi[axis] = offset_;
+    else
+      b.lo[axis] = -offset_;
   }
   return b;
 }

@@ -1,11 +1,10 @@
 #include "modeler/primitives/quadric.h"
 
 #include <cmath>
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <stdexcept>
 
 #include "modeler/quadratic.h"
 
@@ -15,7 +14,8 @@ Quadric::Quadric(const glm::dmat4& m) : m_(m) {
   bool zero = true;
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 4; ++r) {
-      if (!std::isfinite(m[c][r])) throw std::invalid_argument("quadric: matrix has a non-finite entry");
+      if (!std::isfinite(m[c][r]))
+        throw std::invalid_argument("quadric: matrix has a non-finite entry");
       if (m[c][r] != m[r][c]) throw std::invalid_argument("quadric: matrix must be symmetric");
       if (m[c][r] != 0.0) zero = false;
     }

@@ -1,9 +1,8 @@
 #include "modeler/primitives/sphere.h"
 
 #include <cmath>
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
+#include <stdexcept>
 
 #include "modeler/primitives/check.h"
 

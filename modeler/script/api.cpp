@@ -1,14 +1,13 @@
 #include "modeler/script/api.h"
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <new>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "modeler/boolean.h"
 #include "modeler/primitives/box.h"
@@ -110,8 +109,8 @@ void pushSolid(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(
 // A shape constructor: a table of named parameters, or a bare main value
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
 LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
-  bool bare = lua_type(L, 1) == LUA_TNUMBER ||
-              (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0);
+  bool bare =
+      lua_type(L, 1) == LUA_TNUMBER || (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0);
   if (bare) {
     lua_createtable(L, 0, 1);
     lua_pushvalue(L, 1);
@@ -228,7 +227,8 @@ glm::dmat4 matrixArg(lua_State* L, int index, const std::string& what, bool allo
       throw std::invalid_argument(what + ": row " + std::to_string(r + 1) + " must have 4 numbers");
     for (int c = 0; c < 4; ++c) {
       lua_rawgeti(L, -1, c + 1);
-      m[c][r] = toNumber(L, -1, what + "[" + std::to_string(r + 1) + "][" + std::to_string(c + 1) + "]");
+      m[c][r] =
+          toNumber(L, -1, what + "[" + std::to_string(r + 1) + "][" + std::to_string(c + 1) + "]");
       lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -273,15 +273,17 @@ int booleanOf(lua_State* L) {
                      : op == Boolean::Op::Intersection ? "intersection"
                                                        : "difference";
   std::vector<SolidPtr> operands = operandArgs(L, name);
-  SolidPtr result = operands.size() == 1 ? operands[0]
-                                         : std::make_shared<Boolean>(op, std::move(operands));
+  SolidPtr result =
+      operands.size() == 1 ? operands[0] : std::make_shared<Boolean>(op, std::move(operands));
   pushSolid(L, result);
   return 1;
 }
 
 // ---- Solid methods ------------------------------------------------------------
 
-const SolidPtr& self(lua_State* L) { return checkValue<SolidPtr>(L, 1, "method receiver (use ':')"); }
+const SolidPtr& self(lua_State* L) {
+  return checkValue<SolidPtr>(L, 1, "method receiver (use ':')");
+}
 
 int translate(lua_State* L) {
   dvec3 offset = vectorArgs(L, 2, "translate");
@@ -333,7 +335,8 @@ int transform(lua_State* L) {
 
 double unitArg(LuaArgs& args, const char* key, double fallback) {
   double v = args.number(key).value_or(fallback);
-  if (v < 0.0 || v > 1.0) throw std::invalid_argument("material: " + std::string(key) + " must be in [0, 1]");
+  if (v < 0.0 || v > 1.0)
+    throw std::invalid_argument("material: " + std::string(key) + " must be in [0, 1]");
   return v;
 }
 
@@ -411,7 +414,8 @@ int camera(lua_State* L) {
   if (!(c.fovDegrees > 0.0 && c.fovDegrees < 180.0))
     throw std::invalid_argument("camera: fov must be between 0 and 180 degrees");
   dvec3 view = c.lookAt - c.eye;
-  if (glm::length(view) == 0.0) throw std::invalid_argument("camera: eye and look_at are the same point");
+  if (glm::length(view) == 0.0)
+    throw std::invalid_argument("camera: eye and look_at are the same point");
   if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
     throw std::invalid_argument("camera: up must not be parallel to the view direction");
   pushValue(L, c);
@@ -497,11 +501,12 @@ void registerScriptApi(lua_State* L) {
                                      {nullptr, nullptr}};
   luaL_newlib(L, methods);
   lua_setfield(L, -2, "__index");
-  static const luaL_Reg operators[] = {{"__add", guarded<booleanOperator<Boolean::Op::Union>>},
-                                       {"__sub", guarded<booleanOperator<Boolean::Op::Difference>>},
-                                       {"__mul", guarded<booleanOperator<Boolean::Op::Intersection>>},
-                                       {"__tostring", guarded<solidToString>},
-                                       {nullptr, nullptr}};
+  static const luaL_Reg operators[] = {
+      {"__add", guarded<booleanOperator<Boolean::Op::Union>>},
+      {"__sub", guarded<booleanOperator<Boolean::Op::Difference>>},
+      {"__mul", guarded<booleanOperator<Boolean::Op::Intersection>>},
+      {"__tostring", guarded<solidToString>},
+      {nullptr, nullptr}};
   luaL_setfuncs(L, operators, 0);
   lua_pop(L, 1);
   newMetatable<CameraSpec>(L);

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <lua.hpp>
-
 #include <optional>
 #include <set>
 #include <string>

@@ -70,7 +70,8 @@ void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t ne
   }
   if (newSize > old && self->used_ - old + newSize > self->limits_.memoryBytes) {
     if (self->abortReason_.empty())
-      self->abortReason_ = "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
+      self->abortReason_ =
+          "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
     return nullptr;  // Lua raises "not enough memory"
   }
   void* block = std::realloc(ptr, newSize);
@@ -149,7 +150,8 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
   if (status != LUA_OK) {
-    std::string message = lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
+    std::string message =
+        lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
     lua_settop(L_, base);
     // An abort raised as a memory error carries Lua's generic text; say why.
     if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)

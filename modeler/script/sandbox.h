@@ -4,10 +4,9 @@
 // the script is aborted, and pcall/xpcall cannot swallow that.
 #pragma once
 
-#include <lua.hpp>
-
 #include <cstddef>
 #include <cstdint>
+#include <lua.hpp>
 #include <string>
 
 #include "modeler/script/script.h"

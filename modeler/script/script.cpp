@@ -29,7 +29,8 @@ void pushDefine(lua_State* L, const std::string& value) {
     }
   }
   std::string text = value;
-  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') && text.back() == text.front())
+  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') &&
+      text.back() == text.front())
     text = text.substr(1, text.size() - 2);
   lua_pushlstring(L, text.data(), text.size());
 }
@@ -43,7 +44,8 @@ bool isIdentifier(const std::string& name) {
 
 }  // namespace
 
-Scene runScript(const std::string& source, const std::string& chunkName, const ScriptOptions& options) {
+Scene runScript(const std::string& source, const std::string& chunkName,
+                const ScriptOptions& options) {
   Sandbox sandbox(options.limits);
   lua_State* L = sandbox.state();
   registerScriptApi(L);
@@ -55,7 +57,8 @@ Scene runScript(const std::string& source, const std::string& chunkName, const S
   }
   int results = sandbox.run(source, chunkName);
   if (results == 0)
-    throw ScriptError(chunkName + ": the script returned nothing; end it with 'return <solid>' or "
+    throw ScriptError(chunkName +
+                      ": the script returned nothing; end it with 'return <solid>' or "
                       "'return scene{...}'");
   try {
     return sceneFromValue(L, -results);
