@@ -22,8 +22,11 @@ std::runtime_error failure(const std::string& target, const std::string& what) {
 
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
   std::filesystem::path path(target_);
-  std::string name = "." + path.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
-                     std::to_string(counter++) + path.extension().string();
+  // Hidden, unique per process and call: ".name.tmp<pid>-<n>.ext".
+  std::string name(".");
+  name += path.stem().string();
+  name += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  name += path.extension().string();
   temp_ = (path.parent_path() / name).string();
 }
 

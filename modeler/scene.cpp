@@ -19,15 +19,27 @@ CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees) {
   if (!box.finite())
     throw std::invalid_argument(
         "cannot frame an unbounded solid: return scene{objects=..., camera=camera{...}}");
-  // The bounding sphere must fit in the narrower of the two view angles.
-  double radius = std::max(0.5 * glm::length(box.size()), 1e-9);
-  double halfH = 0.5 * fovDegrees * std::numbers::pi / 180.0;
-  double halfV = std::atan(std::tan(halfH) / aspect);
-  double distance = 1.05 * radius / std::sin(std::min(halfH, halfV));
   CameraSpec camera;
   camera.lookAt = box.center();
-  camera.eye = camera.lookAt + distance * glm::normalize(dvec3(0.55, -1.0, 0.75));
   camera.fovDegrees = fovDegrees;
+  // Look from the front, right and above; back off until every corner of
+  // the box is inside both view angles: a corner at (x, y) across and z
+  // along the view from the centre needs distance D with |x| <= tanH·(D + z)
+  // and |y| <= tanV·(D + z).
+  dvec3 forward = glm::normalize(dvec3(-0.55, 1.0, -0.75));
+  dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+  dvec3 up = glm::cross(right, forward);
+  double tanH = std::tan(0.5 * fovDegrees * std::numbers::pi / 180.0);
+  double tanV = tanH / aspect;
+  double distance = 0.5 * glm::length(box.size()) + 1e-9;  // eye outside the box
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                 i & 4 ? box.hi.z : box.lo.z);
+    dvec3 d = corner - camera.lookAt;
+    double x = glm::dot(d, right), y = glm::dot(d, up), z = glm::dot(d, forward);
+    distance = std::max({distance, std::abs(x) / tanH - z, std::abs(y) / tanV - z});
+  }
+  camera.eye = camera.lookAt - 1.08 * distance * forward;
   return camera;
 }
 
