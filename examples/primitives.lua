@@ -1,6 +1,6 @@
--- primitives.lua: every primitive of the script API in one row, each with
--- its own colour. The camera frames the row by itself: the script returns
--- a solid, not a scene.
+-- primitives.lua: every primitive of the script API on a 4 × 2 grid, each
+-- with its own colour. The camera frames the grid by itself: the script
+-- returns a solid, not a scene.
 
 local function colour(r, g, b) return {color={r, g, b}} end
 
@@ -18,6 +18,9 @@ local shapes = {
     * box{size={20, 20, 16}, center=true}):material(colour(0.8, 0.3, 0.6)),
 }
 
-local row = {}
-for i, s in ipairs(shapes) do row[i] = s:translate((i - 1) * 24, 0, 0) end
-return union(row)
+local grid = {}
+for i, s in ipairs(shapes) do
+  local column, row = (i - 1) % 4, (i - 1) // 4
+  grid[i] = s:translate(column * 24, -row * 24, 0)
+end
+return union(grid)

@@ -35,6 +35,12 @@ int quadraticSublevel(double a, double b, double c, Interval out[2]) {
     out[0] = {t0, t1};
     return 1;
   }
+  if (t0 == t1) {
+    // A double root with a < 0 (a line through a cone's apex, inside it):
+    // a·(t - t0)² <= 0 everywhere, not two intervals touching at t0.
+    out[0] = {-kInfinity, kInfinity};
+    return 1;
+  }
   out[0] = {-kInfinity, t0};
   out[1] = {t1, kInfinity};
   return 2;

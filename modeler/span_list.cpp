@@ -83,27 +83,25 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
     double t = std::min(ca.t(), cb.t());
     // A list whose last span ends at +inf has its final boundary at t = inf;
     // equal-t grouping still works because both compare equal.
-    bool movedA = false, movedB = false;
+    bool wasA = inA;
     Boundary lastA, lastB;
     while (!ca.done() && ca.t() == t) {
       lastA = ca.boundary();
       inA = !inA;
-      movedA = true;
       ++ca.index;
     }
     while (!cb.done() && cb.t() == t) {
       lastB = cb.boundary();
       if (op == Op::Difference) lastB.flip = !lastB.flip;
       inB = !inB;
-      movedB = true;
       ++cb.index;
     }
     bool now = combine(op, inA, inB);
     if (now == inside) continue;
-    // The boundary of the result is that of whichever operand changed; when
-    // both did at the same t, either is the same point, so prefer a.
-    const Boundary& here = movedA ? lastA : lastB;
-    (void)movedB;
+    // The boundary of the result is that of whichever operand changed state
+    // (a zero-length span of a at this t, a tangent ray, changes nothing);
+    // when both did at the same t, either is the same point, so prefer a.
+    const Boundary& here = inA != wasA ? lastA : lastB;
     if (now) {
       start = here;
     } else if (here.t > start.t) {
