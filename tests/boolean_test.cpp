@@ -24,12 +24,7 @@ namespace {
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::randomDirection;
 using test::randomPoint;
-
-SpanList spansOf(const Solid& solid, const Ray& ray) {
-  SpanList out;
-  solid.spans(ray, out);
-  return out;
-}
+using test::spansOf;
 
 SolidPtr sphereAt(double r, const dvec3& c) {
   return Primitive::create<Sphere>(r)->transformed(Affine::translation(c));

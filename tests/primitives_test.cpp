@@ -23,21 +23,11 @@ namespace {
 
 using test::expectSpansAgreeWithContains;
 using test::expectSpansAgreeWithContainsOnRandomLines;
+using test::expectVecNear;
 using test::randomDirection;
+using test::spansOf;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-SpanList spansOf(const Solid& solid, const Ray& ray) {
-  SpanList out;
-  solid.spans(ray, out);
-  return out;
-}
-
-void expectVecNear(const dvec3& actual, const dvec3& expected, double tol) {
-  EXPECT_NEAR(actual.x, expected.x, tol);
-  EXPECT_NEAR(actual.y, expected.y, tol);
-  EXPECT_NEAR(actual.z, expected.z, tol);
-}
 
 void expectBoundsNear(const Bounds& b, const dvec3& lo, const dvec3& hi, double tol = 1e-9) {
   expectVecNear(b.lo, lo, tol);

@@ -11,6 +11,19 @@
 
 namespace csgray::test {
 
+// The spans of a ray, as a value.
+inline SpanList spansOf(const Solid& solid, const Ray& ray) {
+  SpanList out;
+  solid.spans(ray, out);
+  return out;
+}
+
+inline void expectVecNear(const dvec3& actual, const dvec3& expected, double tol) {
+  EXPECT_NEAR(actual.x, expected.x, tol);
+  EXPECT_NEAR(actual.y, expected.y, tol);
+  EXPECT_NEAR(actual.z, expected.z, tol);
+}
+
 // A random unit vector, uniform on the sphere.
 inline dvec3 randomDirection(std::mt19937_64& rng) {
   std::normal_distribution<double> n(0.0, 1.0);

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 
@@ -23,23 +24,13 @@ namespace csgray {
 namespace {
 
 using test::expectSpansAgreeWithContainsOnRandomLines;
+using test::expectVecNear;
 using test::randomDirection;
 using test::randomPoint;
+using test::spansOf;
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-SpanList spansOf(const Solid& solid, const Ray& ray) {
-  SpanList out;
-  solid.spans(ray, out);
-  return out;
-}
-
-void expectVecNear(const dvec3& actual, const dvec3& expected, double tol) {
-  EXPECT_NEAR(actual.x, expected.x, tol);
-  EXPECT_NEAR(actual.y, expected.y, tol);
-  EXPECT_NEAR(actual.z, expected.z, tol);
-}
 
 void expectSameSpans(const SpanList& a, const SpanList& b, double tol) {
   ASSERT_EQ(a.size(), b.size());

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <glm/mat4x4.hpp>
+#include <numbers>
 
 #include "modeler/boolean.h"
 #include "modeler/primitives/box.h"
@@ -18,7 +19,7 @@
 namespace csgray {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 constexpr int kGrid = 400;
 constexpr double kTolerance = 0.005;  // relative
 
