@@ -15,7 +15,7 @@ namespace csgray {
 // Resource caps that end a runaway script with a clear error.
 struct ScriptLimits {
   std::size_t memoryBytes = std::size_t{1} << 30;  // Lua heap plus solids built
-  std::uint64_t instructions = 4'000'000'000;      // Lua VM instructions
+  std::uint64_t instructions = 1'000'000'000;      // Lua VM instructions, a few seconds
 };
 
 struct ScriptOptions {
