@@ -117,8 +117,8 @@ int main(int argc, char** argv) {
     if (*render) {
       auto [width, height] = parseSize(size);
       // Refuse an unwritable format before spending time on the render.
-      if (std::string problem = imageFormatProblem(output); !problem.empty())
-        throw std::runtime_error(output + ": " + problem);
+      if (std::string problem = imageOutputProblem(output); !problem.empty())
+        throw std::runtime_error("cannot write " + output + ": " + problem);
       auto start = std::chrono::steady_clock::now();
       Scene scene = runScriptFile(script, scriptOptions);
       RenderOptions options{width, height, threads};

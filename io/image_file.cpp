@@ -1,6 +1,7 @@
 #include "io/image_file.h"
 
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +27,13 @@ bool keepsFloat(const std::string& formatName) {
 
 }  // namespace
 
-std::string imageFormatProblem(const std::string& path) {
+std::string imageOutputProblem(const std::string& path) {
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error))
+    return "folder " + folder.string() + " does not exist";
+  if (::access(folder.c_str(), W_OK) != 0) return "folder " + folder.string() + " is not writable";
   std::string ext = std::filesystem::path(path).extension().string();
   if (ext.empty()) return "no file extension to tell the image format (use .png, .exr, ...)";
   auto out = OIIO::ImageOutput::create(path);

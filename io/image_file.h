@@ -5,9 +5,10 @@
 
 namespace csgray {
 
-// Can an image be written to this path's format? Returns an empty string
-// if so, else why not.
-std::string imageFormatProblem(const std::string& path);
+// Can an image be written to this path: a known format, an existing
+// writable folder? Returns an empty string if so, else why not; checked
+// before a render so that a long render is not lost at the end.
+std::string imageOutputProblem(const std::string& path);
 
 // Writes linear-light RGB floats (row-major, top row first) atomically.
 // Float formats (EXR, HDR) keep linear values; others are sRGB-encoded.

@@ -92,6 +92,7 @@ expect_failure "unknown format" "$work/out.xyz" render "$work/part.lua" -o "$wor
 expect_in_stderr "unknown format" "unknown image format '.xyz'"
 expect_failure "no extension" "$work/out" render "$work/part.lua" -o "$work/out"
 expect_failure "missing folder" "$work/no/such/out.png" render "$work/part.lua" -o "$work/no/such/out.png"
+expect_in_stderr "missing folder" "cannot write $work/no/such/out.png: folder $work/no/such does not exist"
 expect_failure "bad define" "$work/out.png" render "$work/part.lua" -o "$work/out.png" -D novalue
 
 # A failed render leaves an existing image untouched.

@@ -84,10 +84,10 @@ template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
   try {
     return F(L);
-  } catch (const std::invalid_argument& e) {
-    return luaL_error(L, "%s", e.what());
   } catch (const std::bad_alloc&) {
     return luaL_error(L, "out of memory");
+  } catch (const std::exception& e) {
+    return luaL_error(L, "%s", e.what());
   }
 }
 

@@ -53,10 +53,13 @@ void LuaArgs::finish() {
   while (lua_next(L_, index_)) {
     lua_pop(L_, 1);  // value
     std::string key = lua_type(L_, -1) == LUA_TSTRING ? lua_tostring(L_, -1) : "";
-    if (key.empty() || !used_.count(key)) {
-      std::string shown = key.empty() ? std::string("a positional value") : "'" + key + "'";
+    if (key.empty()) {
       lua_pop(L_, 1);
-      throw std::invalid_argument(function_ + ": unknown parameter " + shown);
+      throw std::invalid_argument(function_ + ": unexpected value without a name; use name=value");
+    }
+    if (!used_.count(key)) {
+      lua_pop(L_, 1);
+      throw std::invalid_argument(function_ + ": unknown parameter '" + key + "'");
     }
   }
 }
