@@ -80,6 +80,11 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
   bool inA = false, inB = false, inside = false;
   Boundary start;
   while (!ca.done() || !cb.done()) {
+    // Nothing later can be inside an intersection once either list has
+    // ended, nor inside a difference once a has.
+    if (!inside &&
+        (op == Op::Intersection ? ca.done() || cb.done() : op == Op::Difference && ca.done()))
+      break;
     double t = std::min(ca.t(), cb.t());
     // A list whose last span ends at +inf has its final boundary at t = inf;
     // equal-t grouping still works because both compare equal.
@@ -102,9 +107,11 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
     // (a zero-length span of a at this t, a tangent ray, changes nothing);
     // when both did at the same t, either is the same point, so prefer a.
     const Boundary& here = inA != wasA ? lastA : lastB;
+    // Boundaries at equal t were grouped, so a span that ends here started
+    // at a smaller t: the result has no zero-length spans.
     if (now) {
       start = here;
-    } else if (here.t > start.t) {
+    } else {
       out.push_back(start, here);
     }
     inside = now;
