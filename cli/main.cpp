@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "modeler/primitive.h"
 #include "modeler/script/script.h"
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
   std::string script, output, size = "800x600";
   std::vector<std::string> defineItems;
   int threads = 0;
+  double scriptTimeout = 60.0;
 
   CLI::App* render = app.add_subcommand("render", "Ray trace a part script to an image");
   render->add_option("script", script, "Lua part script")->required();
@@ -97,10 +99,16 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   render->add_option("-D", defineItems, "Set a script global before it runs: name=value");
+  render->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
 
   CLI::App* info = app.add_subcommand("info", "Print the bounds and tree size of a part script");
   info->add_option("script", script, "Lua part script")->required();
   info->add_option("-D", defineItems, "Set a script global before it runs: name=value");
+  info->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -114,13 +122,21 @@ int main(int argc, char** argv) {
   try {
     ScriptOptions scriptOptions;
     scriptOptions.defines = parseDefines(defineItems);
+    // Runs the script under the watchdog: nothing is written meanwhile.
+    auto runScript = [&] {
+      char limit[32];
+      std::snprintf(limit, sizeof limit, "%g", scriptTimeout);
+      Watchdog watchdog(scriptTimeout, script + ": the script did not finish within " + limit +
+                                           " s (--script-timeout)");
+      return runScriptFile(script, scriptOptions);
+    };
     if (*render) {
       auto [width, height] = parseSize(size);
       // Refuse an unwritable format before spending time on the render.
       if (std::string problem = imageOutputProblem(output); !problem.empty())
         throw std::runtime_error("cannot write " + output + ": " + problem);
       auto start = std::chrono::steady_clock::now();
-      Scene scene = runScriptFile(script, scriptOptions);
+      Scene scene = runScript();
       RenderOptions options{width, height, threads};
       Image image = Renderer(scene, options).render();
       writeImage(output, image.width, image.height, image.rgb.data());
@@ -128,7 +144,7 @@ int main(int argc, char** argv) {
       std::printf("csgray: wrote %s (%dx%d) in %.2f s\n", output.c_str(), width, height,
                   seconds.count());
     } else if (*info) {
-      printInfo(script, runScriptFile(script, scriptOptions));
+      printInfo(script, runScript());
     }
   } catch (const CLI::ValidationError& e) {
     std::cerr << "csgray: error: " << e.what() << "\n";

@@ -18,6 +18,9 @@ printf 'local a = box(1)\nlocal b = sphere{r=-2}\nreturn a - b\n' > "$work/bad.l
 printf 'return box(1):scale(0, 1, 1)\n' > "$work/singular.lua"
 printf 'while true do end\n' > "$work/loop.lua"
 printf 'return box(1) +\n' > "$work/syntax.lua"
+# Backtracking in C, where no Lua instruction is counted: only the
+# script time limit ends it.
+printf 'local s = string.rep("a", 200000)\nlocal found = s:find(".-.-.-.-b")\nreturn sphere(1)\n' > "$work/pattern.lua"
 
 # expect_failure NAME OUTPUT-FILE-OR-"" ARGS...: non-zero exit, exactly one
 # line on stderr that starts with "csgray: error:", and no output file.
@@ -78,6 +81,9 @@ expect_failure "syntax error" "$work/out.png" render "$work/syntax.lua" -o "$wor
 expect_in_stderr "syntax error" "syntax.lua:"
 expect_failure "endless loop" "$work/out.png" render "$work/loop.lua" -o "$work/out.png"
 expect_in_stderr "endless loop" "instruction budget"
+expect_failure "slow C call" "$work/out.png" render "$work/pattern.lua" -o "$work/out.png" --script-timeout 0.5
+expect_in_stderr "slow C call" "pattern.lua: the script did not finish within 0.5 s (--script-timeout)"
+expect_failure "negative timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout -1
 expect_failure "missing script" "$work/out.png" render "$work/nope.lua" -o "$work/out.png"
 expect_in_stderr "missing script" "nope.lua: cannot open script"
 expect_failure "unknown option" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --frobnicate
