@@ -44,6 +44,17 @@ TEST(Sandbox, BinaryChunksAreRefused) {
   EXPECT_NE(errorOf(binary).find("binary chunk"), std::string::npos) << errorOf(binary);
 }
 
+// A script that could reach __gc could destroy a solid still in use.
+TEST(Sandbox, MetatablesOfApiValuesAreLocked) {
+  EXPECT_EQ(errorOf(R"(
+    for _, v in ipairs{sphere(1), camera{}, point_light{pos={0, 0, 1}}, scene{objects={box(1)}}} do
+      assert(type(getmetatable(v)) == 'string', 'metatable reachable')
+      assert(not pcall(setmetatable, v, {}), 'setmetatable allowed')
+    end
+    return sphere(1))"),
+            "(no error)");
+}
+
 TEST(Sandbox, StringMetatableCannotReachDump) {
   EXPECT_EQ(errorOf("assert(('x').dump == nil) return sphere(1)"), "(no error)");
 }

@@ -484,6 +484,10 @@ void newMetatable(lua_State* L) {
   lua_setfield(L, -2, "__gc");
   lua_pushstring(L, TypeName<T>::shown);
   lua_setfield(L, -2, "__name");
+  // getmetatable() answers this string, so a script cannot reach __gc and
+  // destroy a value that is still in use.
+  lua_pushstring(L, TypeName<T>::value);
+  lua_setfield(L, -2, "__metatable");
 }
 
 }  // namespace
