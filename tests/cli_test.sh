@@ -74,7 +74,7 @@ else
 fi
 
 expect_failure "script error" "$work/out.png" render "$work/bad.lua" -o "$work/out.png"
-expect_in_stderr "script error" "bad.lua:2: sphere: radius must be a positive finite number"
+expect_in_stderr "script error" "bad.lua:2: sphere: r must be > 0 (got -2)"
 expect_failure "singular transform" "$work/out.png" render "$work/singular.lua" -o "$work/out.png"
 expect_in_stderr "singular transform" "singular.lua:1: transform is singular"
 expect_failure "syntax error" "$work/out.png" render "$work/syntax.lua" -o "$work/out.png"

@@ -166,7 +166,7 @@ TEST(Script, ErrorsNameFileAndLine) {
     const char* source;
     const char* expected;
   } cases[] = {
-      {"local a = 1\nreturn sphere{r=-1}", "part.lua:2: sphere: radius must be a positive"},
+      {"local a = 1\nreturn sphere{r=-1}", "part.lua:2: sphere: r must be > 0 (got -1)"},
       {"\n\nreturn sphere{r=0/0}", "part.lua:3: sphere: r must be finite"},
       {"return box{size={1, 0, 1}}", "part.lua:1: box: size y must be a positive"},
       {"return sphere{radius=1}", "part.lua:1: sphere: unknown parameter 'radius'"},

@@ -130,18 +130,27 @@ SolidPtr centred(const SolidPtr& solid, LuaArgs& args, const dvec3& offset) {
 // ---- Primitives -------------------------------------------------------------
 
 // A radius from r= or d= (diameter), as in OpenSCAD.
-std::optional<double> radiusArg(LuaArgs& args, const char* r, const char* d) {
+// Checked here, so that the message names the parameter the script used.
+std::optional<double> radiusArg(LuaArgs& args, const char* r, const char* d, bool zeroAllowed) {
   std::optional<double> radius = args.number(r);
   std::optional<double> diameter = args.number(d);
   if (radius && diameter)
     throw std::invalid_argument(args.function() + ": give " + r + " or " + d + ", not both");
+  const char* given = diameter ? d : r;
+  std::optional<double> value = diameter ? diameter : radius;
+  if (value && (*value < 0.0 || (*value == 0.0 && !zeroAllowed))) {
+    std::ostringstream msg;
+    msg << args.function() << ": " << given << " must be " << (zeroAllowed ? ">= 0" : "> 0")
+        << " (got " << *value << ")";
+    throw std::invalid_argument(msg.str());
+  }
   if (diameter) return *diameter / 2.0;
   return radius;
 }
 
 int sphere(lua_State* L) {
   LuaArgs args = shapeArgs(L, "sphere", "r");
-  std::optional<double> r = radiusArg(args, "r", "d");
+  std::optional<double> r = radiusArg(args, "r", "d", false);
   args.finish();
   if (!r) throw std::invalid_argument("sphere: needs r (radius) or d (diameter)");
   pushSolid(L, Primitive::create<Sphere>(*r));
@@ -172,9 +181,9 @@ int box(lua_State* L) {
 
 SolidPtr cylinderFrom(LuaArgs& args, bool defaultR2IsR1) {
   std::optional<double> h = args.number("h");
-  std::optional<double> r = radiusArg(args, "r", "d");
-  std::optional<double> r1 = radiusArg(args, "r1", "d1");
-  std::optional<double> r2 = radiusArg(args, "r2", "d2");
+  std::optional<double> r = radiusArg(args, "r", "d", false);
+  std::optional<double> r1 = radiusArg(args, "r1", "d1", true);
+  std::optional<double> r2 = radiusArg(args, "r2", "d2", true);
   if (!h) throw std::invalid_argument(args.function() + ": needs h (height)");
   if (r && (r1 || r2))
     throw std::invalid_argument(args.function() + ": give r, or r1 and r2, not both");
