@@ -55,6 +55,22 @@ TEST(Sandbox, MetatablesOfApiValuesAreLocked) {
             "(no error)");
 }
 
+// Finalizers run with hooks off (no instruction budget) and can resurrect
+// a collected solid; scripts get none.
+TEST(Sandbox, FinalizersAreRefused) {
+  for (const char* source : {
+           "setmetatable({}, {__gc=function() while true do end end}) return sphere(1)",
+           "local t = setmetatable({}, {__gc=function(t) saved = t.s end}) t.s = sphere(1) "
+           "return sphere(1)",
+       }) {
+    std::string e = errorOf(source);
+    EXPECT_NE(e.find("evil.lua:1: __gc metamethods are not available"), std::string::npos)
+        << source << "\n  gave: " << e;
+  }
+  EXPECT_EQ(errorOf("local t = setmetatable({}, {__index={x=1}}) assert(t.x == 1) return sphere(1)"),
+            "(no error)");
+}
+
 TEST(Sandbox, StringMetatableCannotReachDump) {
   EXPECT_EQ(errorOf("assert(('x').dump == nil) return sphere(1)"), "(no error)");
 }

@@ -42,6 +42,13 @@ Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
   lua_register(L_, "pcall", &Sandbox::safePcall);
   lua_register(L_, "xpcall", &Sandbox::safeXpcall);
   lua_register(L_, "print", &Sandbox::printToStderr);
+  // No finalizers for scripts: Lua runs __gc with hooks off, so a finalizer
+  // escapes the instruction budget, and it could hand a collected value
+  // back to the script. Lua marks a table for finalization only if its
+  // metatable has __gc when set, so checking here is enough.
+  lua_getglobal(L_, "setmetatable");
+  lua_pushcclosure(L_, &Sandbox::setmetatableWithoutGc, 1);
+  lua_setglobal(L_, "setmetatable");
   // Reproducible scripts: the same random numbers on every run.
   lua_getglobal(L_, LUA_MATHLIBNAME);
   lua_getfield(L_, -1, "randomseed");
@@ -130,6 +137,19 @@ int Sandbox::safeXpcall(lua_State* L) {
   lua_replace(L, 2);    // f at 2, arguments follow
   int status = lua_pcall(L, n - 2, LUA_MULTRET, 1);
   return of(L).finishProtectedCall(L, status, 2);
+}
+
+int Sandbox::setmetatableWithoutGc(lua_State* L) {
+  if (lua_type(L, 2) == LUA_TTABLE) {
+    lua_pushstring(L, "__gc");
+    if (lua_rawget(L, 2) != LUA_TNIL)
+      return luaL_error(L, "__gc metamethods are not available in the sandbox");
+    lua_pop(L, 1);
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));  // the original setmetatable
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
 }
 
 int Sandbox::printToStderr(lua_State* L) {
