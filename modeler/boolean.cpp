@@ -1,14 +1,42 @@
 #include "modeler/boolean.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace csgray {
 
-Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op), operands_(std::move(operands)) {
-  if (operands_.empty()) throw std::invalid_argument(kind() + ": needs at least one operand");
-  for (const SolidPtr& s : operands_)
+Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
+  if (operands.empty()) throw std::invalid_argument(kind() + ": needs at least one operand");
+  for (size_t i = 0; i < operands.size(); ++i) {
+    const SolidPtr& s = operands[i];
     if (!s) throw std::invalid_argument(kind() + ": operand is not a solid");
+    // Union and intersection are associative; a difference is so in its
+    // first operand: (a - b) - c = a - b - c.
+    auto* same = dynamic_cast<const Boolean*>(s.get());
+    bool splice = same && same->op_ == op_ && (op_ != Op::Difference || i == 0);
+    if (splice) {
+      operands_.insert(operands_.end(), same->operands_.begin(), same->operands_.end());
+    } else {
+      operands_.push_back(s);
+    }
+  }
+  primitives_ = 0;
+  booleans_ = 1;
+  for (const SolidPtr& s : operands_) {
+    primitives_ += s->primitiveCount();
+    booleans_ += s->booleanCount();
+    depth_ = std::max(depth_, s->depth() + 1);
+    // Checked per operand, before the sums could overflow.
+    if (primitives_ > kMaxPrimitives)
+      throw std::invalid_argument(kind() + ": the part would have more than " +
+                                  std::to_string(kMaxPrimitives) +
+                                  " primitives (counting each use of a shared part)");
+  }
+  if (depth_ > kMaxDepth)
+    throw std::invalid_argument(kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
+                                " levels; build long chains with union(list) or difference(a, list)");
   switch (op_) {
     case Op::Union:
       for (const SolidPtr& s : operands_) bounds_.include(s->bounds());

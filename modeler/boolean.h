@@ -14,7 +14,16 @@ class Boolean : public Solid {
  public:
   enum class Op { Union, Intersection, Difference };
 
-  // Throws std::invalid_argument for an empty operand list.
+  // Limits that keep rays and destructors off the end of the stack, and
+  // trees whose shared subtrees multiply out within reach.
+  static constexpr int kMaxDepth = 1000;
+  static constexpr std::size_t kMaxPrimitives = 1'000'000;
+
+  // A chain of the same operation is kept flat: (a - b) - c becomes
+  // a - b - c, and a union operand of a union is spliced in, so a script
+  // that drills holes one at a time in a loop builds a wide node, not a
+  // deep one. Throws std::invalid_argument for an empty operand list, a
+  // tree deeper than kMaxDepth or larger than kMaxPrimitives.
   Boolean(Op op, std::vector<SolidPtr> operands);
 
   Op op() const { return op_; }

@@ -17,18 +17,7 @@ SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
 }
 
 TreeStats treeStats(const Solid& solid) {
-  TreeStats stats;
-  if (solid.children().empty()) {
-    stats.primitives = 1;
-    return stats;
-  }
-  stats.booleans = 1;
-  for (const SolidPtr& child : solid.children()) {
-    TreeStats c = treeStats(*child);
-    stats.primitives += c.primitives;
-    stats.booleans += c.booleans;
-  }
-  return stats;
+  return TreeStats{solid.primitiveCount(), solid.booleanCount()};
 }
 
 }  // namespace csgray

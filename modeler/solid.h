@@ -42,16 +42,28 @@ class Solid : public std::enable_shared_from_this<Solid> {
   using PrimitiveMap = std::function<SolidPtr(const Primitive&)>;
   virtual SolidPtr mapPrimitives(const PrimitiveMap& f) const = 0;
 
+  // Size of the tree: primitives and boolean nodes below and including this
+  // one, counting a shared subtree once per use (as rays visit it), and the
+  // number of boolean levels.
+  std::size_t primitiveCount() const { return primitives_; }
+  std::size_t booleanCount() const { return booleans_; }
+  int depth() const { return depth_; }
+
   // This solid moved by worldFromObject (applied after any transform it has).
   SolidPtr transformed(const Affine& worldFromObject) const;
   // This solid with the material given to every primitive that has none.
   SolidPtr withDefaultMaterial(const MaterialPtr& material) const;
+
+ protected:
+  std::size_t primitives_ = 1;
+  std::size_t booleans_ = 0;
+  int depth_ = 0;
 };
 
 // Counts of a tree, for `csgray info`.
 struct TreeStats {
-  int primitives = 0;
-  int booleans = 0;
+  std::size_t primitives = 0;
+  std::size_t booleans = 0;
 };
 TreeStats treeStats(const Solid& solid);
 

@@ -191,6 +191,57 @@ TEST(Script, ErrorsNameFileAndLine) {
         << c.source << "\n  gave: " << errorOf(c.source);
 }
 
+// Drilling holes one at a time builds a flat node, not a 10 000-deep chain
+// that would overflow the stack when traced or destroyed.
+TEST(Script, ChainsOfOneOperationStayFlat) {
+  SolidPtr s = solidOf(R"(
+    local part = box{size={100, 100, 10}}
+    for i = 0, 99 do for j = 0, 99 do
+      part = part - cylinder{r=0.2, h=20}:translate(0.5 + i, 0.5 + j, -5)
+    end end
+    return part)");
+  EXPECT_EQ(s->depth(), 1);
+  EXPECT_EQ(treeStats(*s).primitives, 10001u);
+  EXPECT_FALSE(s->contains(dvec3(50.5, 50.5, 5)));
+  EXPECT_TRUE(s->contains(dvec3(50, 50, 5)));
+}
+
+TEST(Script, DeepAndExplodingTreesAreRefused) {
+  // Alternating operations cannot be flattened.
+  EXPECT_NE(errorOf("local a = sphere(1)\n"
+                    "for i = 1, 2000 do a = (a + sphere(1)) * box(5) end return a")
+                .find("boolean tree deeper than 1000 levels; build long chains"),
+            std::string::npos);
+  // A shared part used 2^40 times: the count multiplies out.
+  std::string e = errorOf("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
+  EXPECT_NE(e.find("part.lua:2: union: the part would have more than 1000000 primitives"),
+            std::string::npos)
+      << e;
+}
+
+TEST(Script, CollectedSolidsGiveBackTheirMemory) {
+  ScriptOptions options;
+  options.limits.memoryBytes = 64u << 20;
+  // 2 million solids in all, never more than one alive: far over the cap
+  // if collected solids were still counted.
+  EXPECT_NO_THROW(runScript("for i = 1, 2000000 do local s = sphere(1) end return sphere(1)",
+                            "churn.lua", options));
+  // A transform copies the tree: 100 copies of a 10 000-sphere part do not fit.
+  options.limits.memoryBytes = 256u << 20;
+  std::string e;
+  try {
+    runScript(R"(
+      local t = {} for i = 1, 10000 do t[i] = sphere(1):translate(i, 0, 0) end
+      local part, copies = union(t), {}
+      for i = 1, 100 do copies[i] = part:translate(0, i, 0) end
+      return union(copies))",
+              "copies.lua", options);
+  } catch (const ScriptError& error) {
+    e = error.what();
+  }
+  EXPECT_NE(e.find("script exceeded the memory limit of 256 MiB"), std::string::npos) << e;
+}
+
 TEST(Script, MissingFileIsAClearError) {
   try {
     runScriptFile("/nonexistent/part.lua");

@@ -129,8 +129,13 @@ void run(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
 
 std::string describe(const SpanList& list) {
   std::string s;
-  for (const Span& span : list)
-    s += "[" + std::to_string(span.in.t) + ", " + std::to_string(span.out.t) + "] ";
+  for (const Span& span : list) {
+    s += '[';
+    s += std::to_string(span.in.t);
+    s += ", ";
+    s += std::to_string(span.out.t);
+    s += "] ";
+  }
   return s.empty() ? "(empty)" : s;
 }
 

@@ -47,21 +47,28 @@ struct TypeName<Scene> {
   static constexpr const char* shown = "scene";
 };
 
-// Each userdata is charged against the script's memory cap by this much on
-// top of its own size, for what it holds on the C++ heap.
-constexpr std::size_t kHeapCharge = 256;
+// What a userdata holds on the C++ heap is charged against the script's
+// memory cap, and refunded when Lua collects it.
+constexpr std::size_t kBytesPerNode = 512;  // a primitive with its frame, or a boolean node
 
 template <class T>
-void pushValue(lua_State* L, T value) {
-  Sandbox::of(L).charge(L, kHeapCharge);
-  void* memory = lua_newuserdatauv(L, sizeof(T), 0);
-  new (memory) T(std::move(value));
+struct Held {
+  T value;
+  std::size_t charge;
+};
+
+template <class T>
+void pushValue(lua_State* L, T value, std::size_t charge = kBytesPerNode) {
+  Sandbox::of(L).charge(L, charge);
+  void* memory = lua_newuserdatauv(L, sizeof(Held<T>), 0);
+  new (memory) Held<T>{std::move(value), charge};
   luaL_setmetatable(L, TypeName<T>::value);
 }
 
 template <class T>
 T* toValue(lua_State* L, int index) {
-  return static_cast<T*>(luaL_testudata(L, index, TypeName<T>::value));
+  auto* held = static_cast<Held<T>*>(luaL_testudata(L, index, TypeName<T>::value));
+  return held ? &held->value : nullptr;
 }
 
 template <class T>
@@ -73,7 +80,10 @@ const T& checkValue(lua_State* L, int index, const std::string& what) {
 
 template <class T>
 int destroyValue(lua_State* L) {
-  if (T* v = toValue<T>(L, 1)) v->~T();
+  if (auto* held = static_cast<Held<T>*>(luaL_testudata(L, 1, TypeName<T>::value))) {
+    Sandbox::of(L).release(held->charge);
+    held->~Held<T>();
+  }
   return 0;
 }
 
@@ -104,7 +114,16 @@ dvec3 vectorArgs(lua_State* L, int first, const std::string& what) {
   throw std::invalid_argument(what + ": expected x, y, z or {x, y, z}");
 }
 
-void pushSolid(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(solid)); }
+// A solid that the call built afresh: a transform or material copies the
+// whole tree below it, so all of its nodes are charged.
+void pushSolid(lua_State* L, SolidPtr solid) {
+  TreeStats stats = treeStats(*solid);
+  std::size_t charge = (stats.primitives + stats.booleans) * kBytesPerNode;
+  pushValue<SolidPtr>(L, std::move(solid), charge);
+}
+
+// A new boolean node over existing solids: one node is new.
+void pushBoolean(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(solid)); }
 
 // A shape constructor: a table of named parameters, or a bare main value
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
@@ -406,7 +425,7 @@ int booleanOperator(lua_State* L) {
   std::string what = std::string("operand of '") + symbol + "'";
   const SolidPtr& a = checkValue<SolidPtr>(L, 1, what);
   const SolidPtr& b = checkValue<SolidPtr>(L, 2, what);
-  pushSolid(L, std::make_shared<Boolean>(op, std::vector<SolidPtr>{a, b}));
+  pushBoolean(L, std::make_shared<Boolean>(op, std::vector<SolidPtr>{a, b}));
   return 1;
 }
 

@@ -4,6 +4,7 @@
 // the script is aborted, and pcall/xpcall cannot swallow that.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <lua.hpp>
@@ -26,6 +27,8 @@ class Sandbox {
   // Counts memory held outside Lua (solids) against the memory cap.
   // Raises a Lua error when the cap is exceeded.
   void charge(lua_State* L, std::size_t bytes);
+  // Gives back what charge() counted, when the holder is collected.
+  void release(std::size_t bytes) { used_ -= std::min(bytes, used_); }
 
   // Loads text (never binary) source and runs it; on success the results are
   // on the stack. Throws ScriptError with "chunk:line: message".
