@@ -35,8 +35,9 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
                                   " primitives (counting each use of a shared part)");
   }
   if (depth_ > kMaxDepth)
-    throw std::invalid_argument(kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
-                                " levels; build long chains with union(list) or difference(a, list)");
+    throw std::invalid_argument(
+        kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
+        " levels; build long chains with union(list) or difference(a, list)");
   switch (op_) {
     case Op::Union:
       for (const SolidPtr& s : operands_) bounds_.include(s->bounds());

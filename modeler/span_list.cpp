@@ -70,6 +70,11 @@ struct Cursor {
   }
 };
 
+// Boundaries this close (relative to t) are one point: faces that coincide
+// in the model differ by rounding once each primitive has computed t in its
+// own frame. Far above that rounding (~1e-15), far below any feature.
+constexpr double kSameT = 1e-10;
+
 // Sweep both lists' boundaries in order of t, grouping equal t, and emit a
 // boundary wherever the combined inside/outside state changes. Grouping
 // makes the result regular: spans that touch merge, and spans that only
@@ -86,16 +91,16 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
         (op == Op::Intersection ? ca.done() || cb.done() : op == Op::Difference && ca.done()))
       break;
     double t = std::min(ca.t(), cb.t());
-    // A list whose last span ends at +inf has its final boundary at t = inf;
-    // equal-t grouping still works because both compare equal.
+    // Infinite boundaries group only with themselves (inf <= inf + inf).
+    double last = std::isinf(t) ? t : t + kSameT * std::abs(t);
     bool wasA = inA;
     Boundary lastA, lastB;
-    while (!ca.done() && ca.t() == t) {
+    while (!ca.done() && ca.t() <= last) {
       lastA = ca.boundary();
       inA = !inA;
       ++ca.index;
     }
-    while (!cb.done() && cb.t() == t) {
+    while (!cb.done() && cb.t() <= last) {
       lastB = cb.boundary();
       if (op == Op::Difference) lastB.flip = !lastB.flip;
       inB = !inB;
@@ -107,8 +112,8 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
     // (a zero-length span of a at this t, a tangent ray, changes nothing);
     // when both did at the same t, either is the same point, so prefer a.
     const Boundary& here = inA != wasA ? lastA : lastB;
-    // Boundaries at equal t were grouped, so a span that ends here started
-    // at a smaller t: the result has no zero-length spans.
+    // Boundaries at (nearly) equal t were grouped, so a span that ends here
+    // started clearly before: the result has no zero-length spans.
     if (now) {
       start = here;
     } else {

@@ -474,5 +474,34 @@ TEST(BooleanTree, RejectsEmptyOrNullOperands) {
   EXPECT_THROW(differenceOf({nullptr, a}), std::invalid_argument);
 }
 
+// Faces that coincide in the model must still coincide once rotated, when
+// each primitive computes its t in its own frame and rounds differently.
+TEST(BooleanSpans, CoincidentFacesStayRegularUnderRotation) {
+  Affine turn = Affine::rotation(0.3, glm::normalize(dvec3(1, 1.3, 1.7)));
+  auto a = Primitive::create<Box>(dvec3(0.3))->transformed(Affine::translation({0.1, 0.7, 0.2}));
+  auto b = Primitive::create<Box>(dvec3(0.3))->transformed(Affine::translation({0.4, 0.7, 0.2}));
+  SolidPtr touching = intersectionOf({a, b})->transformed(turn);
+  // A notch flush with the top face: the top must have no sliver left.
+  auto block = Primitive::create<Box>(dvec3(10));
+  auto notch = Primitive::create<Box>(dvec3(5))->transformed(Affine::translation({0, 0, 5}));
+  SolidPtr notched = differenceOf({block, notch})->transformed(turn);
+  std::mt19937_64 rng(7);
+  int slivers = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Lines through the shared face x = 0.4 of the touching boxes.
+    dvec3 p =
+        turn.pointToWorld(dvec3(0.4, 0.7 + 0.3 * (i % 97) / 97.0, 0.2 + 0.3 * (i % 89) / 89.0));
+    dvec3 dir = test::randomDirection(rng);
+    slivers += !spansOf(*touching, Ray(p - 5.0 * dir, dir, -kInfinity, kInfinity)).empty();
+    // Lines through the plane of the notch's side walls, x = 5 above z = 5.
+    dvec3 q =
+        turn.pointToWorld(dvec3(5.0, 0.5 + 9.0 * (i % 83) / 83.0, 5.0 + 5.0 * (i % 79) / 79.0));
+    dvec3 d = test::randomDirection(rng);
+    SpanList spans = spansOf(*notched, Ray(q - 20.0 * d, d, -kInfinity, kInfinity));
+    for (const Span& s : spans) slivers += s.length() < 1e-9;
+  }
+  EXPECT_EQ(slivers, 0);
+}
+
 }  // namespace
 }  // namespace csgray

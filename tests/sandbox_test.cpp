@@ -67,8 +67,9 @@ TEST(Sandbox, FinalizersAreRefused) {
     EXPECT_NE(e.find("evil.lua:1: __gc metamethods are not available"), std::string::npos)
         << source << "\n  gave: " << e;
   }
-  EXPECT_EQ(errorOf("local t = setmetatable({}, {__index={x=1}}) assert(t.x == 1) return sphere(1)"),
-            "(no error)");
+  EXPECT_EQ(
+      errorOf("local t = setmetatable({}, {__index={x=1}}) assert(t.x == 1) return sphere(1)"),
+      "(no error)");
 }
 
 TEST(Sandbox, StringMetatableCannotReachDump) {
