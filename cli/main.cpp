@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -78,6 +79,14 @@ void printInfo(const std::string& script, const Scene& scene) {
 
 }  // namespace
 
+// 0 (no limit) up to about eleven days; NaN is refused.
+const CLI::Validator timeoutRange(
+    [](const std::string& text) -> std::string {
+      double v = std::strtod(text.c_str(), nullptr);
+      return v >= 0.0 && v <= 1e6 ? "" : "must be a number of seconds from 0 to 1e6";
+    },
+    "SECONDS");
+
 int main(int argc, char** argv) {
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
   app.set_version_flag("--version", std::string(CSGRAY_VERSION));
@@ -100,14 +109,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   render->add_option("-D", defineItems, "Set a script global before it runs: name=value");
   render->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(timeoutRange)
       ->capture_default_str();
 
   CLI::App* info = app.add_subcommand("info", "Print the bounds and tree size of a part script");
   info->add_option("script", script, "Lua part script")->required();
   info->add_option("-D", defineItems, "Set a script global before it runs: name=value");
   info->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(timeoutRange)
       ->capture_default_str();
 
   try {
@@ -138,7 +147,13 @@ int main(int argc, char** argv) {
       auto start = std::chrono::steady_clock::now();
       Scene scene = runScript();
       RenderOptions options{width, height, threads};
-      Image image = Renderer(scene, options).render();
+      Image image = [&] {
+        try {
+          return Renderer(scene, options).render();
+        } catch (const std::invalid_argument& e) {  // e.g. nothing to frame
+          throw std::runtime_error(script + ": " + e.what());
+        }
+      }();
       writeImage(output, image.width, image.height, image.rgb.data());
       std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
       std::printf("csgray: wrote %s (%dx%d) in %.2f s\n", output.c_str(), width, height,
@@ -150,7 +165,10 @@ int main(int argc, char** argv) {
     std::cerr << "csgray: error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "csgray: error: " << e.what() << "\n";
+    std::string message = e.what();
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';  // one line, whatever a library said
+    std::cerr << "csgray: error: " << message << "\n";
     return 1;
   }
   return 0;

@@ -18,6 +18,9 @@ printf 'local a = box(1)\nlocal b = sphere{r=-2}\nreturn a - b\n' > "$work/bad.l
 printf 'return box(1):scale(0, 1, 1)\n' > "$work/singular.lua"
 printf 'while true do end\n' > "$work/loop.lua"
 printf 'return box(1) +\n' > "$work/syntax.lua"
+printf 'error({})\n' > "$work/table_error.lua"
+printf 'error("first\\nsecond")\n' > "$work/multiline.lua"
+printf 'return half_space{normal={0, 0, 1}}\n' > "$work/unbounded.lua"
 # Backtracking in C, where no Lua instruction is counted: only the
 # script time limit ends it.
 printf 'local s = string.rep("a", 200000)\nlocal found = s:find(".-.-.-.-b")\nreturn sphere(1)\n' > "$work/pattern.lua"
@@ -84,6 +87,14 @@ expect_in_stderr "endless loop" "instruction budget"
 expect_failure "slow C call" "$work/out.png" render "$work/pattern.lua" -o "$work/out.png" --script-timeout 0.5
 expect_in_stderr "slow C call" "pattern.lua: the script did not finish within 0.5 s (--script-timeout)"
 expect_failure "negative timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout -1
+expect_failure "table error" "$work/out.png" render "$work/table_error.lua" -o "$work/out.png"
+expect_in_stderr "table error" "table_error.lua: error(table) without a message"
+expect_failure "multi-line error" "$work/out.png" render "$work/multiline.lua" -o "$work/out.png"
+expect_in_stderr "multi-line error" "multiline.lua:1: first second"
+expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"
+expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
+expect_failure "NaN timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout nan
+expect_failure "huge timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout 1e10
 expect_failure "missing script" "$work/out.png" render "$work/nope.lua" -o "$work/out.png"
 expect_in_stderr "missing script" "nope.lua: cannot open script"
 expect_failure "unknown option" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --frobnicate

@@ -170,12 +170,19 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
   if (status != LUA_OK) {
-    std::string message =
-        lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
+    std::string message = lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
+                              ? lua_tostring(L_, -1)
+                              : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
     lua_settop(L_, base);
     // An abort raised as a memory error carries Lua's generic text; say why.
     if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)
-      message = chunkName + ": " + abortReason_;
+      message = abortReason_;
+    // Every message names the script, also those Lua gives without a
+    // position (binary chunks, C stack overflow, non-string errors).
+    if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
+    // One line: a message with line breaks of its own is folded.
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
     throw ScriptError(message);
   }
   return lua_gettop(L_) - base;
