@@ -171,6 +171,8 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"return box{size={1, 0, 1}}", "part.lua:1: box: size y must be a positive"},
       {"return sphere{radius=1}", "part.lua:1: sphere: unknown parameter 'radius'"},
       {"return camera{{0, 0, 0}, fov=30}", "part.lua:1: camera: unexpected value without a name"},
+      {"return box{1, 2, 3, center=true}", "part.lua:1: box: unexpected value without a name"},
+      {"math.randomseed()", "part.lua:1: math.randomseed needs a seed"},
       {"return cylinder{r=1}", "part.lua:1: cylinder: needs h"},
       {"return box(1):scale(1, 0, 1)", "part.lua:1: transform is singular"},
       {"return sphere(1) + 3", "part.lua:1: operand of '+' must be a solid, got number"},

@@ -125,11 +125,23 @@ void pushSolid(lua_State* L, SolidPtr solid) {
 // A new boolean node over existing solids: one node is new.
 void pushBoolean(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(solid)); }
 
+bool hasStringKey(lua_State* L, int index) {
+  lua_pushnil(L);
+  while (lua_next(L, index)) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      lua_pop(L, 1);
+      return true;
+    }
+  }
+  return false;
+}
+
 // A shape constructor: a table of named parameters, or a bare main value
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
 LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
-  bool bare =
-      lua_type(L, 1) == LUA_TNUMBER || (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0);
+  bool bare = lua_type(L, 1) == LUA_TNUMBER ||
+              (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0 && !hasStringKey(L, 1));
   if (bare) {
     lua_createtable(L, 0, 1);
     lua_pushvalue(L, 1);

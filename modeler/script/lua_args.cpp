@@ -11,6 +11,8 @@ LuaArgs::LuaArgs(lua_State* L, int index, std::string function)
   if (type != LUA_TTABLE && type != LUA_TNIL && type != LUA_TNONE)
     throw std::invalid_argument(function_ + ": expected a table of named parameters, got " +
                                 luaL_typename(L, index_));
+  if (type == LUA_TTABLE && lua_rawlen(L, index_) > 0)
+    throw std::invalid_argument(function_ + ": unexpected value without a name; use name=value");
 }
 
 bool LuaArgs::push(const char* key) {

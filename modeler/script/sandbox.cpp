@@ -52,8 +52,12 @@ Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
   // Reproducible scripts: the same random numbers on every run.
   lua_getglobal(L_, LUA_MATHLIBNAME);
   lua_getfield(L_, -1, "randomseed");
+  lua_pushvalue(L_, -1);
   lua_pushinteger(L_, 42);
   lua_call(L_, 1, 0);
+  // randomseed() without a seed would take one from the clock.
+  lua_pushcclosure(L_, &Sandbox::seededRandomseed, 1);
+  lua_setfield(L_, -2, "randomseed");
   lua_pop(L_, 1);
 }
 
@@ -139,6 +143,16 @@ int Sandbox::safeXpcall(lua_State* L) {
   return of(L).finishProtectedCall(L, status, 2);
 }
 
+int Sandbox::seededRandomseed(lua_State* L) {
+  if (lua_isnoneornil(L, 1))
+    return luaL_error(L,
+                      "math.randomseed needs a seed here, so that every run builds the same part");
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 int Sandbox::setmetatableWithoutGc(lua_State* L) {
   if (lua_type(L, 2) == LUA_TTABLE) {
     lua_pushstring(L, "__gc");
@@ -170,9 +184,10 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
   if (status != LUA_OK) {
-    std::string message = lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
-                              ? lua_tostring(L_, -1)
-                              : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
+    std::string message =
+        lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
+            ? lua_tostring(L_, -1)
+            : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
     lua_settop(L_, base);
     // An abort raised as a memory error carries Lua's generic text; say why.
     if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)

@@ -44,6 +44,7 @@ class Sandbox {
   static int safeXpcall(lua_State* L);
   static int printToStderr(lua_State* L);
   static int setmetatableWithoutGc(lua_State* L);
+  static int seededRandomseed(lua_State* L);
   // Raises the abort as a Lua error located at the given stack level.
   [[noreturn]] void abort(lua_State* L, const std::string& reason, int level);
   int finishProtectedCall(lua_State* L, int status, int base);
