@@ -143,14 +143,22 @@ int Sandbox::safeXpcall(lua_State* L) {
   return of(L).finishProtectedCall(L, status, 2);
 }
 
-int Sandbox::seededRandomseed(lua_State* L) {
-  if (lua_isnoneornil(L, 1))
-    return luaL_error(L,
-                      "math.randomseed needs a seed here, so that every run builds the same part");
+namespace {
+// Calls the function a wrapper closes over (upvalue 1: the original
+// setmetatable or randomseed) with the wrapper's arguments.
+int callWrapped(lua_State* L) {
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_insert(L, 1);
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
+}
+}  // namespace
+
+int Sandbox::seededRandomseed(lua_State* L) {
+  if (lua_isnoneornil(L, 1))
+    return luaL_error(L,
+                      "math.randomseed needs a seed here, so that every run builds the same part");
+  return callWrapped(L);
 }
 
 int Sandbox::setmetatableWithoutGc(lua_State* L) {
@@ -160,10 +168,7 @@ int Sandbox::setmetatableWithoutGc(lua_State* L) {
       return luaL_error(L, "__gc metamethods are not available in the sandbox");
     lua_pop(L, 1);
   }
-  lua_pushvalue(L, lua_upvalueindex(1));  // the original setmetatable
-  lua_insert(L, 1);
-  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-  return lua_gettop(L);
+  return callWrapped(L);
 }
 
 int Sandbox::printToStderr(lua_State* L) {
