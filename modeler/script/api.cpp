@@ -122,8 +122,12 @@ void pushSolid(lua_State* L, SolidPtr solid) {
   pushValue<SolidPtr>(L, std::move(solid), charge);
 }
 
-// A new boolean node over existing solids: one node is new.
-void pushBoolean(lua_State* L, SolidPtr solid) { pushValue<SolidPtr>(L, std::move(solid)); }
+// A new boolean node over existing solids: one node is new, with its list
+// of operands.
+void pushBoolean(lua_State* L, SolidPtr solid) {
+  std::size_t charge = kBytesPerNode + solid->children().size() * sizeof(SolidPtr);
+  pushValue<SolidPtr>(L, std::move(solid), charge);
+}
 
 bool hasStringKey(lua_State* L, int index) {
   lua_pushnil(L);

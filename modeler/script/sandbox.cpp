@@ -91,6 +91,14 @@ void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t ne
 }
 
 void Sandbox::charge(lua_State* L, std::size_t bytes) {
+  // Lua's collector paces itself by Lua's own allocations and does not see
+  // what solids hold; a step per mebibyte charged lets it free dead solids
+  // (and refund them) before they add up to the cap.
+  sinceCollectorStep_ += bytes;
+  if (sinceCollectorStep_ >= (std::size_t{1} << 20)) {
+    lua_gc(L, LUA_GCSTEP, static_cast<int>(sinceCollectorStep_ >> 10));
+    sinceCollectorStep_ = 0;
+  }
   used_ += bytes;
   if (used_ > limits_.memoryBytes)
     abort(L, "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes), 1);

@@ -52,6 +52,7 @@ class Sandbox {
   lua_State* L_ = nullptr;
   ScriptLimits limits_;
   std::size_t used_ = 0;
+  std::size_t sinceCollectorStep_ = 0;
   std::uint64_t executed_ = 0;
   std::string abortReason_;
 };
