@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -142,6 +143,9 @@ int main(int argc, char** argv) {
     if (*render) {
       auto [width, height] = parseSize(size);
       // Refuse an unwritable format before spending time on the render.
+      std::error_code same;
+      if (std::filesystem::equivalent(script, output, same))
+        throw std::runtime_error("cannot write " + output + ": it is the script itself");
       if (std::string problem = imageOutputProblem(output); !problem.empty())
         throw std::runtime_error("cannot write " + output + ": " + problem);
       auto start = std::chrono::steady_clock::now();

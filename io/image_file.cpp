@@ -34,6 +34,7 @@ std::string imageOutputProblem(const std::string& path) {
   if (!std::filesystem::is_directory(folder, error))
     return "folder " + folder.string() + " does not exist";
   if (::access(folder.c_str(), W_OK) != 0) return "folder " + folder.string() + " is not writable";
+  if (std::filesystem::is_directory(path, error)) return "it is a folder";
   std::string ext = std::filesystem::path(path).extension().string();
   if (ext.empty()) return "no file extension to tell the image format (use .png, .exr, ...)";
   auto out = OIIO::ImageOutput::create(path);

@@ -95,6 +95,25 @@ expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounde
 expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
 expect_failure "NaN timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout nan
 expect_failure "huge timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout 1e10
+expect_failure "output is a folder" "" render "$work/part.lua" -o "$work"
+mkdir -p "$work/dir.png"
+expect_failure "output is a folder named like an image" "" render "$work/part.lua" -o "$work/dir.png"
+cp "$work/part.lua" "$work/copy.lua"
+expect_failure "output is the script" "" render "$work/copy.lua" -o "$work/copy.lua"
+if cmp -s "$work/part.lua" "$work/copy.lua"; then pass; else fail "the script was overwritten"; fi
+expect_failure "script is a folder" "$work/out.png" render "$work" -o "$work/out.png"
+expect_in_stderr "script is a folder" "is a folder, not a script"
+expect_failure "endless script file" "$work/out.png" info /dev/zero
+expect_in_stderr "endless script file" "/dev/zero: script is larger than 16 MiB"
+expect_failure "define overflows" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
+expect_failure "define shadows the API" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D sphere=3
+expect_in_stderr "define shadows the API" "'sphere' is a built-in name"
+expect_failure "define is a keyword" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D end=3
+printf '#!/usr/bin/env csgray\nreturn sphere(1)\n' > "$work/shebang.lua"
+printf '\xef\xbb\xbf#!/usr/bin/env csgray\nreturn sphere{r=-1}\n' > "$work/bom.lua"
+if "$csgray" info "$work/shebang.lua" >/dev/null 2>&1; then pass; else fail "a #! first line is refused"; fi
+expect_failure "BOM and shebang keep line numbers" "" info "$work/bom.lua"
+expect_in_stderr "BOM and shebang keep line numbers" "bom.lua:2: sphere: r must be > 0"
 expect_failure "missing script" "$work/out.png" render "$work/nope.lua" -o "$work/out.png"
 expect_in_stderr "missing script" "nope.lua: cannot open script"
 expect_failure "unknown option" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --frobnicate

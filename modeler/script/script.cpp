@@ -1,9 +1,12 @@
 #include "modeler/script/script.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "modeler/script/api.h"
@@ -14,7 +17,7 @@ namespace csgray {
 namespace {
 
 // -D values: numbers, true/false, or strings with optional quotes.
-void pushDefine(lua_State* L, const std::string& value) {
+void pushDefine(lua_State* L, const std::string& name, const std::string& value) {
   if (value == "true" || value == "false") {
     lua_pushboolean(L, value == "true");
     return;
@@ -23,7 +26,9 @@ void pushDefine(lua_State* L, const std::string& value) {
     char* end = nullptr;
     errno = 0;
     double number = std::strtod(value.c_str(), &end);
-    if (*end == '\0' && errno == 0) {
+    if (*end == '\0') {
+      if (errno != 0 || !std::isfinite(number))
+        throw ScriptError("-D " + name + "=" + value + ": not a finite number");
       lua_pushnumber(L, number);
       return;
     }
@@ -35,7 +40,15 @@ void pushDefine(lua_State* L, const std::string& value) {
   lua_pushlstring(L, text.data(), text.size());
 }
 
+constexpr std::size_t kMaxScriptBytes = std::size_t{16} << 20;
+
+// A Lua name that is not a keyword.
 bool isIdentifier(const std::string& name) {
+  static const std::set<std::string> keywords = {
+      "and",      "break",  "do",   "else", "elseif", "end",  "false", "for",
+      "function", "goto",   "if",   "in",   "local",  "nil",  "not",   "or",
+      "repeat",   "return", "then", "true", "until",  "while"};
+  if (keywords.count(name)) return false;
   if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
   for (char c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
@@ -52,7 +65,10 @@ Scene runScript(const std::string& source, const std::string& chunkName,
   for (const auto& [name, value] : options.defines) {
     if (!isIdentifier(name))
       throw ScriptError("-D " + name + "=...: '" + name + "' is not a valid Lua name");
-    pushDefine(L, value);
+    bool builtIn = lua_getglobal(L, name.c_str()) != LUA_TNIL;
+    lua_pop(L, 1);
+    if (builtIn) throw ScriptError("-D " + name + "=...: '" + name + "' is a built-in name");
+    pushDefine(L, name, value);
     lua_setglobal(L, name.c_str());
   }
   int results = sandbox.run(source, chunkName);
@@ -68,12 +84,25 @@ Scene runScript(const std::string& source, const std::string& chunkName,
 }
 
 Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw ScriptError(path + ": is a folder, not a script");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw ScriptError(path + ": cannot open script: " + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
+  // Read at most kMaxScriptBytes + 1 bytes: /dev/zero is not a script.
+  std::string text(kMaxScriptBytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (file.bad()) throw ScriptError(path + ": cannot read script");
-  return runScript(text.str(), path, options);
+  text.resize(static_cast<std::size_t>(file.gcount()));
+  if (text.size() > kMaxScriptBytes)
+    throw ScriptError(path + ": script is larger than " + std::to_string(kMaxScriptBytes >> 20) +
+                      " MiB");
+  // A UTF-8 byte-order mark, and a first line "#!..." (as lua itself allows);
+  // the line is kept empty so that line numbers stay right.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  if (text.starts_with("#"))
+    text.erase(0, text.find('\n') == std::string::npos ? text.size() : text.find('\n'));
+  return runScript(text, path, options);
 }
 
 }  // namespace csgray
