@@ -1,6 +1,8 @@
 // csgray: the command line over the modeler, ray tracer and io libraries.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/progress.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "modeler/primitive.h"
@@ -73,9 +76,43 @@ void printInfo(const std::string& script, const Scene& scene) {
   std::cout << "  objects:       " << scene.objects.size() << "\n"
             << "  primitives:    " << stats.primitives << "\n"
             << "  boolean nodes: " << stats.booleans << "\n"
+            << "  surfaces:      " << scene.surfaces.size() << "\n"
             << "  lights:        " << scene.lights.size()
             << (scene.lights.empty() ? " (default)" : "") << "\n"
             << "  camera:        " << (scene.camera ? "set" : "framed from bounds") << "\n";
+}
+
+// The names of the AOV images beside the colour image: out.png gives
+// out.depth.png and out.normal.png.
+std::string aovPath(const std::string& output, const std::string& aov) {
+  std::filesystem::path p(output);
+  return (p.parent_path() / (p.stem().string() + "." + aov + p.extension().string())).string();
+}
+
+bool keepsFloat(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+}
+
+// Depth and normal images. Float formats keep the values (depth in model
+// units, +inf where nothing was hit; normals in [-1, 1]); 8-bit formats get
+// a picture of them: depth as nearest / depth (white at the nearest
+// surface, black where nothing was hit), normals as (n + 1) / 2.
+void writeAov(const std::string& path, Image image, bool isDepth) {
+  if (!keepsFloat(path)) {
+    if (isDepth) {
+      // nearest / depth: 1 at the nearest surface, fading with distance,
+      // so an infinite floor does not squeeze the part into one grey.
+      float nearest = INFINITY;
+      for (float v : image.rgb)
+        if (v > 0.0f) nearest = std::min(nearest, v);
+      for (float& v : image.rgb) v = v > 0.0f && std::isfinite(v) ? nearest / v : 0.0f;
+    } else {
+      for (float& v : image.rgb) v = v == 0.0f ? 0.0f : 0.5f * (v + 1.0f);
+    }
+  }
+  writeImage(path, image.width, image.height, image.rgb.data(), ImageData::Values);
 }
 
 }  // namespace
@@ -95,7 +132,9 @@ int main(int argc, char** argv) {
 
   std::string script, output, size = "800x600";
   std::vector<std::string> defineItems;
-  int threads = 0;
+  int threads = 0, samples = 1;
+  bool adaptive = false;
+  std::vector<std::string> aovs;
   double scriptTimeout = 60.0;
 
   CLI::App* render = app.add_subcommand("render", "Ray trace a part script to an image");
@@ -108,6 +147,16 @@ int main(int argc, char** argv) {
   render->add_option("--threads", threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  render->add_option("--samples", samples, "Rays per pixel, jittered (antialiasing)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  render->add_flag("--adaptive", adaptive,
+                   "Spend the --samples only on pixels at edges; others get one ray");
+  render
+      ->add_option("--aov", aovs,
+                   "Also write depth and/or normal images beside the output: depth,normal")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"depth", "normal"}));
   render->add_option("-D", defineItems, "Set a script global before it runs: name=value");
   render->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
       ->check(timeoutRange)
@@ -132,6 +181,7 @@ int main(int argc, char** argv) {
   try {
     ScriptOptions scriptOptions;
     scriptOptions.defines = parseDefines(defineItems);
+    scriptOptions.loadImage = readTextureImage;
     // Runs the script under the watchdog: nothing is written meanwhile.
     auto runScript = [&] {
       char limit[32];
@@ -146,18 +196,38 @@ int main(int argc, char** argv) {
       std::error_code same;
       if (std::filesystem::equivalent(script, output, same))
         throw std::runtime_error("cannot write " + output + ": it is the script itself");
-      if (std::string problem = imageOutputProblem(output); !problem.empty())
-        throw std::runtime_error("cannot write " + output + ": " + problem);
+      if (adaptive && samples < 2)
+        throw CLI::ValidationError("--adaptive", "needs --samples of 2 or more to spend");
+      bool depthAov = std::count(aovs.begin(), aovs.end(), "depth") > 0;
+      bool normalAov = std::count(aovs.begin(), aovs.end(), "normal") > 0;
+      std::vector<std::string> outputs{output};
+      if (depthAov) outputs.push_back(aovPath(output, "depth"));
+      if (normalAov) outputs.push_back(aovPath(output, "normal"));
+      for (const std::string& path : outputs)
+        if (std::string problem = imageOutputProblem(path); !problem.empty())
+          throw std::runtime_error("cannot write " + path + ": " + problem);
       auto start = std::chrono::steady_clock::now();
       Scene scene = runScript();
-      RenderOptions options{width, height, threads};
-      Image image = [&] {
+      RenderResult result = [&] {
+        ProgressBar bar("rendering");
+        RenderOptions options;
+        options.width = width;
+        options.height = height;
+        options.threads = threads;
+        options.samples = samples;
+        options.adaptive = adaptive;
+        options.depthAov = depthAov;
+        options.normalAov = normalAov;
+        options.progress = [&bar](double done) { bar.update(done); };
         try {
-          return Renderer(scene, options).render();
+          return Renderer(scene, options).renderAll();
         } catch (const std::invalid_argument& e) {  // e.g. nothing to frame
           throw std::runtime_error(script + ": " + e.what());
         }
       }();
+      if (depthAov) writeAov(aovPath(output, "depth"), result.depth, true);
+      if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false);
+      const Image& image = result.color;
       writeImage(output, image.width, image.height, image.rgb.data());
       std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
       std::printf("csgray: wrote %s (%dx%d) in %.2f s\n", output.c_str(), width, height,

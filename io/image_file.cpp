@@ -21,6 +21,19 @@ float encodeSrgb(float linear) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+// Its inverse, sRGB code value to linear light (IEC 61966-2-1).
+float decodeSrgb(float encoded) {
+  float v = std::clamp(encoded, 0.0f, 1.0f);
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+// OIIO's error texts may run over several lines; errors here are one line.
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "unknown error" : text;
+}
+
 bool keepsFloat(const std::string& formatName) {
   return formatName == "openexr" || formatName == "hdr" || formatName == "pfm";
 }
@@ -45,15 +58,16 @@ std::string imageOutputProblem(const std::string& path) {
   return "";
 }
 
-void writeImage(const std::string& path, int width, int height, const float* linearRgb) {
+void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data) {
   AtomicFile file(path);
   auto out = OIIO::ImageOutput::create(file.tempPath());
   if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
   bool linear = keepsFloat(out->format_name());
   OIIO::ImageSpec spec(width, height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", linear ? "linear" : "sRGB");
-  std::vector<float> pixels(linearRgb, linearRgb + static_cast<size_t>(width) * height * 3);
-  if (!linear)
+  bool encode = !linear && data == ImageData::LinearColor;
+  spec.attribute("oiio:ColorSpace", encode ? "sRGB" : "linear");
+  std::vector<float> pixels(rgb, rgb + static_cast<size_t>(width) * height * 3);
+  if (encode)
     for (float& v : pixels) v = encodeSrgb(v);
   if (!out->open(file.tempPath(), spec) ||
       !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
@@ -61,6 +75,58 @@ void writeImage(const std::string& path, int width, int height, const float* lin
     throw std::runtime_error("cannot write " + path + ": " + (why.empty() ? "write failed" : why));
   }
   file.commit();
+}
+
+TextureImage readTextureImage(const std::string& path) {
+  auto fail = [&](const std::string& why) {
+    return std::runtime_error("cannot read texture image " + path + ": " + why);
+  };
+  std::error_code error;
+  if (!std::filesystem::exists(path, error) && !error) throw fail("no such file");
+  if (std::filesystem::is_directory(path, error)) throw fail("it is a folder");
+  // Colours as stored: without this, OIIO multiplies them by alpha on
+  // reading (PNG, TIFF, ...), which would darken translucent texels.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) throw fail(oneLine(OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  // Bounded so that a bad or hostile file cannot ask for gigabytes.
+  constexpr int kMaxSide = 16384;
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw fail("the image is empty");
+  if (spec.width > kMaxSide || spec.height > kMaxSide)
+    throw fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+               " pixels, more than " + std::to_string(kMaxSide) + " a side");
+  if (spec.depth > 1 || spec.deep) throw fail("volume and deep images are not textures");
+  // Channels 0..2 as RGB, or channel 0 as grey (also for grey + alpha).
+  int channels = spec.nchannels >= 3 ? 3 : 1;
+  bool floatData = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                   spec.format.basetype == OIIO::TypeDesc::HALF ||
+                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+  TextureImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
+  image.rgb.resize(pixels * 3);
+  // Read into the front of the buffer (packed, channels per pixel) and, for
+  // grey, spread from the back so that no value is overwritten before use.
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+    throw fail(oneLine(in->geterror()));
+  in->close();
+  if (channels == 1)
+    for (std::size_t i = pixels; i-- > 0;) {
+      float grey = image.rgb[i];
+      for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = grey;
+    }
+  for (float& v : image.rgb) {
+    // Integer formats hold sRGB code values (as writeImage writes them);
+    // a NaN or infinity in a float file would spread through a render.
+    if (!floatData)
+      v = decodeSrgb(v);
+    else if (!std::isfinite(v))
+      v = 0.0f;
+  }
+  return image;
 }
 
 }  // namespace csgray

@@ -27,6 +27,7 @@ SolidPtr Primitive::withFrame(const Affine& worldFromObject) const {
 SolidPtr Primitive::withMaterial(const MaterialPtr& material) const {
   std::shared_ptr<Primitive> copy = clone();
   copy->material_ = material;
+  copy->textureFromObject_ = frame_;
   return copy;
 }
 

@@ -35,6 +35,14 @@ class Primitive : public Solid {
   dvec3 normal(const dvec3& worldPoint, int face) const {
     return frame_.normalToWorld(objectNormal(frame_.pointToObject(worldPoint), face));
   }
+  // Texture space is the world as it was when the material was given, so a
+  // texture stays on the part when the part is moved afterwards.
+  dvec3 texturePoint(const dvec3& worldPoint) const {
+    return textureFromObject_.pointToWorld(frame_.pointToObject(worldPoint));
+  }
+  dvec3 textureNormal(const dvec3& worldPoint, int face) const {
+    return textureFromObject_.normalToWorld(objectNormal(frame_.pointToObject(worldPoint), face));
+  }
 
  protected:
   // Spans of a ray given in object space; boundaries name this primitive.
@@ -54,6 +62,7 @@ class Primitive : public Solid {
 
   Affine frame_;
   MaterialPtr material_;
+  Affine textureFromObject_;  // the frame when the material was given
   Bounds bounds_;
 };
 

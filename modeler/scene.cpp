@@ -11,6 +11,9 @@ namespace csgray {
 Bounds Scene::bounds() const {
   Bounds b;
   for (const SolidPtr& s : objects) b.include(s->bounds());
+  // An infinite plane is a floor or a wall, not part of what to frame.
+  for (const SurfacePtr& s : surfaces)
+    if (s->bounds().finite()) b.include(s->bounds());
   return b;
 }
 
@@ -43,12 +46,12 @@ CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees) {
   return camera;
 }
 
-PointLight defaultLight(const CameraSpec& camera) {
+Light defaultLight(const CameraSpec& camera) {
   dvec3 view = camera.lookAt - camera.eye;
   dvec3 right = glm::normalize(glm::cross(view, camera.up));
   dvec3 up = glm::normalize(glm::cross(right, view));
   double d = glm::length(view);
-  PointLight light;
+  Light light;
   light.position = camera.eye + d * (0.6 * up - 0.4 * right) - 0.2 * view;
   return light;
 }

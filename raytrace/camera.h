@@ -1,6 +1,7 @@
-// The pinhole camera of seed 001, 2.1.1: rays from the eye through the
-// centres of square pixels on a screen whose width spans the horizontal
-// view angle.
+// The cameras: the pinhole camera of seed 001, 2.1.1 (rays from the eye
+// through the centres of square pixels on a screen whose width spans the
+// horizontal view angle), and an orthographic camera whose parallel rays
+// start on a screen through the eye, orthoWidth wide.
 #pragma once
 
 #include "modeler/scene.h"
@@ -16,12 +17,13 @@ class Camera {
   Ray ray(double x, double y) const;
 
   const dvec3& eye() const { return eye_; }
+  const dvec3& forward() const { return forward_; }
 
  private:
   dvec3 eye_, forward_, right_, up_;
-  double halfWidth_;  // tan(fov / 2): screen half-width at unit distance
-  double pixel_;      // screen size of one pixel at unit distance
+  double pixel_;  // screen size of one pixel: at unit distance, or in model units if orthographic
   int width_, height_;
+  bool orthographic_;
 };
 
 }  // namespace csgray

@@ -5,24 +5,39 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
 
 #include "modeler/primitive.h"
+#include "raytrace/optics.h"
+#include "raytrace/sampler.h"
 
 namespace csgray {
 
 namespace {
 
+const Material kDefaultMaterial;
+
+const Material& materialOf(const MaterialPtr& m) { return m ? *m : kDefaultMaterial; }
+
+// The material of a boundary; a boundary at infinity (no primitive) is opaque.
 const Material& materialOf(const Boundary& b) {
-  static const Material fallback;
-  const MaterialPtr& m = b.primitive->material();
-  return m ? *m : fallback;
+  return b.primitive ? materialOf(b.primitive->material()) : kDefaultMaterial;
 }
 
+double largest(const dvec3& c) { return std::max({c.x, c.y, c.z}); }
+
 CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
-  if (scene.camera) return *scene.camera;
-  return frameBounds(scene.bounds(), double(options.width) / options.height);
+  CameraSpec camera = scene.camera
+                          ? *scene.camera
+                          : frameBounds(scene.bounds(), double(options.width) / options.height);
+  // An orthographic camera without a width shows the whole scene.
+  if (camera.orthographic && !(camera.orthoWidth > 0.0)) {
+    Bounds b = scene.bounds();
+    camera.orthoWidth = b.finite() ? 1.1 * glm::length(b.size()) : 10.0;
+  }
+  return camera;
 }
 
 // A length that stands for the scene's size, to scale the surface offset.
@@ -35,6 +50,38 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
 
 }  // namespace
 
+Media Media::entered(int solid, double index) const {
+  Media m = *this;
+  if (m.count == kMax) {  // deeper nesting than any part needs: forget the outermost
+    std::copy(m.object + 1, m.object + kMax, m.object);
+    std::copy(m.ior + 1, m.ior + kMax, m.ior);
+    --m.count;
+  }
+  m.object[m.count] = solid;
+  m.ior[m.count] = index;
+  ++m.count;
+  return m;
+}
+
+Media Media::left(int solid) const {
+  Media m;
+  for (int i = 0; i < count; ++i) {
+    if (object[i] == solid) continue;
+    m.object[m.count] = object[i];
+    m.ior[m.count] = ior[i];
+    ++m.count;
+  }
+  return m;
+}
+
+// Where a ray meets a surface, with what the shading needs.
+struct Renderer::ShadingPoint {
+  dvec3 point;
+  dvec3 normal;  // unit, facing the incoming ray
+  const Material* material;
+  dvec3 color;  // the material's colour or texture here
+};
+
 Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
@@ -43,84 +90,254 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       lights_(scene.lights) {
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
   scale_ = sceneScale(scene, cameraSpec_);
+  // A camera inside a solid looks out of it: the solid's index holds
+  // until its rays leave it. The boundary where the view ray leaves tells
+  // which leaf, and so which material, the eye is in.
+  SpanList spans;
+  Ray view(cameraSpec_.eye, camera_.forward());
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!scene.objects[i]->contains(cameraSpec_.eye)) continue;
+    scene.objects[i]->spans(view, spans);
+    for (const Span& s : spans)
+      if (s.in.t <= 0.0 && s.out.t >= 0.0)
+        cameraMedia_ = cameraMedia_.entered(int(i), materialOf(s.out).ior);
+  }
 }
 
 std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
   std::optional<SurfaceHit> best;
   SpanList spans;
-  for (const SolidPtr& object : scene_.objects) {
-    if (!object->bounds().hitBy(ray)) continue;
-    object->spans(ray, spans);
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    const Solid& object = *scene_.objects[i];
+    if (!object.bounds().hitBy(ray)) continue;
+    object.spans(ray, spans);
     // The first boundary beyond tMin: an entry, or an exit when the ray
     // starts inside the solid.
     for (const Span& s : spans) {
-      const Boundary* b = s.in.t > ray.tMin ? &s.in : s.out.t > ray.tMin ? &s.out : nullptr;
+      bool entering = s.in.t > ray.tMin;
+      const Boundary* b = entering ? &s.in : s.out.t > ray.tMin ? &s.out : nullptr;
       if (!b) continue;
-      if (b->primitive && (!best || b->t < best->t)) best = SurfaceHit{b->t, *b};
+      if (b->primitive && (!best || b->t < best->t))
+        best = SurfaceHit{b->t, *b, nullptr, int(i), entering};
       break;
     }
+  }
+  for (const SurfacePtr& surface : scene_.surfaces) {
+    if (!surface->bounds().hitBy(ray)) continue;
+    std::optional<double> t = surface->hit(ray);
+    if (t && (!best || *t < best->t)) best = SurfaceHit{*t, Boundary{}, surface.get(), -1, true};
   }
   return best;
 }
 
-bool Renderer::occluded(const dvec3& from, const dvec3& to) const {
+dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   Ray ray(from, to - from, 0.0, 1.0);
+  dvec3 pass(1.0);
   SpanList spans;
   for (const SolidPtr& object : scene_.objects) {
     if (!object->bounds().hitBy(ray)) continue;
     object->spans(ray, spans);
-    for (const Span& s : spans)
-      if (s.out.t > 0.0 && s.in.t < 1.0) return true;
+    for (const Span& s : spans) {
+      if (s.out.t <= 0.0 || s.in.t >= 1.0) continue;
+      // A stretch inside the solid: its material is the one of the face
+      // where the light enters it (or leaves, if the segment starts inside).
+      const Material& m = materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
+      if (m.transparency <= 0.0) return dvec3(0.0);
+      pass *= m.transparency * m.filter;
+    }
   }
-  return false;
+  for (const SurfacePtr& surface : scene_.surfaces) {
+    if (!surface->bounds().hitBy(ray) || !surface->hit(ray)) continue;
+    const Material& m = materialOf(surface->material());
+    if (m.transparency <= 0.0) return dvec3(0.0);
+    pass *= m.transparency * m.filter;
+  }
+  return pass;
 }
 
-dvec3 Renderer::shade(const Ray& ray, const SurfaceHit& hit) const {
-  const Boundary& b = hit.boundary;
-  const Material& m = materialOf(b);
-  dvec3 p = ray.at(hit.t);
-  dvec3 n = b.primitive->normal(p, b.face);
-  if (b.flip) n = -n;
-  // Light the side the viewer sees.
-  if (glm::dot(n, ray.dir) > 0.0) n = -n;
+dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rng) const {
+  const Material& m = *sp.material;
   // Start shadow rays just off the surface: far above the rounding of a hit
   // point (~1e-16 relative), far below any feature a part could have.
-  dvec3 origin = p + (1e-9 * (scale_ + glm::length(p))) * n;
-
-  // I = Koh·O + Σ Kod·O·Fᵢ·(lᵢ·n) over the lights that a shadow ray reaches
-  // (seed 001, 2.2.1 and 2.3; seed 000, 17.4.2).
-  dvec3 color = m.ambient * m.color;
-  for (const PointLight& light : lights_) {
-    dvec3 toLight = light.position - p;
-    double cosine = glm::dot(n, glm::normalize(toLight));
-    if (cosine <= 0.0) continue;
-    if (occluded(origin, light.position)) continue;
-    color += m.diffuse * cosine * light.intensity * light.color * m.color;
+  dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  // I = Koh·O + Σ Fᵢ·(Kod·O·cos α + r·cos^f β) over the light that shadow
+  // rays let through (seed 001, 2.2.1, 2.2.2 and 2.3; seed 000, 17.4.2).
+  dvec3 color = m.ambient * sp.color;
+  for (const Light& light : lights_) {
+    for (int i = 0, n = light.sampleCount(); i < n; ++i) {
+      double u = rng.next(), v = rng.next();
+      dvec3 s = light.samplePoint(i, u, v, sp.point);
+      dvec3 l = glm::normalize(s - sp.point);
+      double cosAlpha = glm::dot(sp.normal, l);
+      if (cosAlpha <= 0.0) continue;
+      dvec3 radiance = light.radianceAt(sp.point, s);
+      if (largest(radiance) <= 0.0) continue;
+      dvec3 pass = transmittance(origin, s);
+      if (largest(pass) <= 0.0) continue;
+      double highlight = 0.0;
+      if (m.specular > 0.0) {
+        double cosBeta = glm::dot(reflect(-l, sp.normal), -viewDir);
+        if (cosBeta > 0.0) highlight = m.specular * std::pow(cosBeta, m.shininess);
+      }
+      color += radiance * pass * (m.diffuse * cosAlpha * sp.color + highlight);
+    }
   }
   return color;
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {
-  std::optional<SurfaceHit> hit = firstHit(ray);
-  return hit ? shade(ray, *hit) : scene_.background;
+  Sampler rng(0, 0);
+  return trace(ray, 0, 1.0, cameraMedia_, rng);
 }
 
-dvec3 Renderer::shadePixel(int x, int y) const { return trace(camera_.ray(x + 0.5, y + 0.5)); }
+dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& media,
+                      Sampler& rng) const {
+  std::optional<SurfaceHit> hit = firstHit(ray);
+  if (!hit) return scene_.background;
 
-Image Renderer::render() const {
-  Image image(options_.width, options_.height);
-  auto tile = [&](const tbb::blocked_range2d<int>& r) {
-    for (int y = r.rows().begin(); y < r.rows().end(); ++y)
-      for (int x = r.cols().begin(); x < r.cols().end(); ++x) image.set(x, y, shadePixel(x, y));
-  };
-  tbb::blocked_range2d<int> all(0, options_.height, 16, 0, options_.width, 16);
-  if (options_.threads > 0) {
-    tbb::task_arena arena(options_.threads);
-    arena.execute([&] { tbb::parallel_for(all, tile); });
+  ShadingPoint sp;
+  sp.point = ray.at(hit->t);
+  if (hit->surface) {
+    const Surface& s = *hit->surface;
+    sp.material = &materialOf(s.material());
+    sp.normal = s.normal();
+    sp.color = sp.material->colorAt(s.texturePoint(sp.point), s.textureNormal());
   } else {
-    tbb::parallel_for(all, tile);
+    const Boundary& b = hit->boundary;
+    sp.material = &materialOf(b);
+    sp.normal = b.primitive->normal(sp.point, b.face);
+    if (b.flip) sp.normal = -sp.normal;
+    sp.color = sp.material->colorAt(b.primitive->texturePoint(sp.point),
+                                    b.primitive->textureNormal(sp.point, b.face));
   }
-  return image;
+  if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
+  const Material& m = *sp.material;
+
+  // The media beyond the surface: the span list says whether the ray
+  // enters or leaves the solid; an open surface encloses nothing.
+  Media beyond = hit->surface    ? media
+                 : hit->entering ? media.entered(hit->object, m.ior)
+                                 : media.left(hit->object);
+  double n1 = media.current(), n2 = beyond.current();
+
+  // Inside a transparent solid the ray sees the light beyond the face it
+  // leaves by: the stretch was dimmed and tinted where the ray entered.
+  bool leaving = !hit->surface && !hit->entering && m.transparency > 0.0;
+  double kr = leaving ? 0.0 : m.reflection;
+  double kt = leaving ? 1.0 : m.transparency;
+  dvec3 tint = leaving ? dvec3(1.0) : m.filter;
+  dvec3 color = leaving ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, rng);
+
+  std::optional<dvec3> through = ray.dir;
+  if (kt > 0.0 && n1 != n2) {
+    through = refract(ray.dir, sp.normal, n1, n2);
+    if (!through) {  // total internal reflection: all of it is mirrored
+      kr += kt;
+      kt = 0.0;
+    } else if (m.fresnel) {
+      double r = fresnelReflectance(glm::dot(ray.dir, sp.normal), n1, n2);
+      kr += kt * r;
+      kt *= 1.0 - r;
+    }
+  }
+
+  double offset = 1e-9 * (scale_ + glm::length(sp.point));
+  bool deeper = depth < scene_.limits.maxDepth;
+  if (kr > 0.0 && deeper && weight * kr >= scene_.limits.minWeight) {
+    Ray mirrored(sp.point + offset * sp.normal, reflect(ray.dir, sp.normal));
+    color += kr * trace(mirrored, depth + 1, weight * kr, media, rng);
+  }
+  double kTinted = kt * largest(tint);
+  if (kt > 0.0 && deeper && weight * kTinted >= scene_.limits.minWeight) {
+    Ray onward(sp.point - offset * sp.normal, *through);
+    color += kt * tint * trace(onward, depth + 1, weight * kTinted, beyond, rng);
+  }
+  return color;
+}
+
+dvec3 Renderer::pixel(int x, int y, int samples, Sampler& rng) const {
+  if (samples <= 1) return trace(camera_.ray(x + 0.5, y + 0.5), 0, 1.0, cameraMedia_, rng);
+  // Jittered supersampling: one random point in each cell of a k × k grid
+  // over the pixel; samples beyond k² fall anywhere in it.
+  int k = int(std::sqrt(double(samples)));
+  dvec3 sum(0.0);
+  for (int i = 0; i < samples; ++i) {
+    double u = rng.next(), v = rng.next();
+    if (i < k * k) u = (i % k + u) / k, v = (i / k + v) / k;
+    sum += trace(camera_.ray(x + u, y + v), 0, 1.0, cameraMedia_, rng);
+  }
+  return sum / double(samples);
+}
+
+RenderResult Renderer::renderAll() const {
+  const int w = options_.width, h = options_.height;
+  RenderResult result;
+  result.color = Image(w, h);
+  if (options_.depthAov) result.depth = Image(w, h);
+  if (options_.normalAov) result.normal = Image(w, h);
+  bool refine = options_.adaptive && options_.samples > 1;
+  const double rows = double(h) * (refine ? 2 : 1);
+  std::atomic<int> rowsDone = 0;
+
+  auto forEachTile = [&](auto&& work) {
+    auto tile = [&](const tbb::blocked_range2d<int>& r) {
+      for (int y = r.rows().begin(); y < r.rows().end(); ++y)
+        for (int x = r.cols().begin(); x < r.cols().end(); ++x) work(x, y);
+      if (options_.progress) {
+        // Count a tile's rows in proportion to its width.
+        int done = rowsDone.fetch_add(int(r.rows().size()) * int(r.cols().size()));
+        options_.progress((done + r.rows().size() * r.cols().size()) / (rows * w));
+      }
+    };
+    tbb::blocked_range2d<int> all(0, h, 16, 0, w, 16);
+    if (options_.threads > 0) {
+      tbb::task_arena arena(options_.threads);
+      arena.execute([&] { tbb::parallel_for(all, tile); });
+    } else {
+      tbb::parallel_for(all, tile);
+    }
+  };
+
+  forEachTile([&](int x, int y) {
+    Sampler rng(x, y);
+    result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, rng));
+    if (!options_.depthAov && !options_.normalAov) return;
+    Ray ray = camera_.ray(x + 0.5, y + 0.5);
+    std::optional<SurfaceHit> hit = firstHit(ray);
+    if (options_.depthAov)
+      result.depth.set(x, y,
+                       dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
+    if (options_.normalAov && hit) {
+      dvec3 p = ray.at(hit->t);
+      dvec3 n = hit->surface ? hit->surface->normal()
+                             : hit->boundary.primitive->normal(p, hit->boundary.face);
+      result.normal.set(x, y, glm::dot(n, ray.dir) > 0.0 ? -n : n);
+    }
+  });
+
+  if (refine) {
+    // Adaptive antialiasing: where a pixel differs from any of its eight
+    // neighbours by more than the threshold, it lies on an edge (of a
+    // silhouette, shadow or texture) and gets the full sample count.
+    Image first = result.color;
+    auto differs = [&](int x, int y) {
+      dvec3 c = first.at(x, y);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+          dvec3 d = glm::abs(glm::min(first.at(nx, ny), 1.0) - glm::min(c, 1.0));
+          if (largest(d) > options_.adaptiveThreshold) return true;
+        }
+      return false;
+    };
+    forEachTile([&](int x, int y) {
+      if (!differs(x, y)) return;
+      Sampler rng(x, y, 1);
+      result.color.set(x, y, pixel(x, y, options_.samples, rng));
+    });
+  }
+  return result;
 }
 
 }  // namespace csgray

@@ -1,8 +1,11 @@
-// Whitted-style ray tracing of a scene (seed 000, 17.1): a primary ray
-// through each pixel, the first boundary of the span lists is shaded with
-// ambient and Lambert terms from each light that a shadow ray reaches.
+// Whitted-style recursive ray tracing of a scene (seed 000, 17.1): a primary
+// ray through each pixel; at the first surface, ambient, Lambert and Phong
+// terms from every light that shadow rays reach (dimmed, not blocked, by
+// transparent solids), plus the colours of the mirrored and the refracted
+// ray, traced the same way up to a depth and weight limit.
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "modeler/scene.h"
@@ -10,17 +13,59 @@
 #include "raytrace/image.h"
 
 namespace csgray {
+class Sampler;
+}
+
+namespace csgray {
 
 struct RenderOptions {
-  int width = 800;
-  int height = 600;
-  int threads = 0;  // 0: all cores
+  RenderOptions(int w = 800, int h = 600, int threadCount = 0)
+      : width(w), height(h), threads(threadCount) {}
+
+  int width;
+  int height;
+  int threads;  // 0: all cores
+  // Rays per pixel, jittered within the pixel on a stratified grid.
+  int samples = 1;
+  // Spend the samples only on pixels whose colour differs from a
+  // neighbour's by more than adaptiveThreshold (edges); others keep one.
+  bool adaptive = false;
+  double adaptiveThreshold = 0.02;
+  // Also produce depth and normal images (arbitrary output values).
+  bool depthAov = false;
+  bool normalAov = false;
+  // Called from worker threads with the share of the image done, in [0, 1].
+  std::function<void(double)> progress;
 };
 
-// The first surface a ray meets at t > ray.tMin.
+// What the renderer makes: the colour image, and the AOVs asked for. Depth
+// is the distance from the eye along the view direction to the surface a
+// pixel's centre ray meets first (+inf where it meets nothing); normal the
+// unit normal there, facing the eye (0 where it meets nothing).
+struct RenderResult {
+  Image color, depth, normal;
+};
+
+// A ray's first surface: a boundary of a solid's spans, or an open surface.
 struct SurfaceHit {
   double t;
-  Boundary boundary;
+  Boundary boundary;                 // a solid's; primitive is null for an open surface
+  const Surface* surface = nullptr;  // an open surface's
+  int object = -1;                   // index of the solid in scene.objects
+  bool entering = true;              // the ray enters the solid here (a span's start)
+};
+
+// The media a ray is in: the solids it has entered, innermost (last
+// entered) on top, each with its index of refraction.
+struct Media {
+  static constexpr int kMax = 8;
+  int count = 0;
+  int object[kMax];
+  double ior[kMax];
+
+  double current() const { return count ? ior[count - 1] : 1.0; }
+  Media entered(int solid, double index) const;
+  Media left(int solid) const;
 };
 
 class Renderer {
@@ -28,25 +73,33 @@ class Renderer {
   // Scenes without camera or lights get the defaults of scene.h.
   Renderer(const Scene& scene, const RenderOptions& options);
 
-  Image render() const;
+  Image render() const { return renderAll().color; }
+  RenderResult renderAll() const;
 
-  // The colour of pixel (x, y), and the colour seen along any ray.
-  dvec3 shadePixel(int x, int y) const;
+  // The colour seen along a ray from the camera's medium.
   dvec3 trace(const Ray& ray) const;
   std::optional<SurfaceHit> firstHit(const Ray& ray) const;
-  // Is there solid anywhere on the open segment from..to?
-  bool occluded(const dvec3& from, const dvec3& to) const;
+  // The share of light that passes from one point to another: 0 where
+  // something opaque lies between, the transparency and filter colour of
+  // each stretch of a transparent solid (and each transparent surface)
+  // on the way multiplied otherwise. Rays are not bent on the way.
+  dvec3 transmittance(const dvec3& from, const dvec3& to) const;
 
   const CameraSpec& camera() const { return cameraSpec_; }
+  const std::vector<Light>& lights() const { return lights_; }
 
  private:
-  dvec3 shade(const Ray& ray, const SurfaceHit& hit) const;
+  struct ShadingPoint;
+  dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, Sampler& rng) const;
+  dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rng) const;
+  dvec3 pixel(int x, int y, int samples, Sampler& rng) const;
 
   const Scene& scene_;
   RenderOptions options_;
   CameraSpec cameraSpec_;
   Camera camera_;
-  std::vector<PointLight> lights_;
+  std::vector<Light> lights_;
+  Media cameraMedia_;
   double scale_;  // a length for the size of the scene
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "io/image_file.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
 
@@ -22,7 +23,9 @@ std::vector<std::string> exampleScripts() {
 class Example : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Example, Renders) {
-  Scene scene = runScriptFile(GetParam());
+  ScriptOptions options;
+  options.loadImage = readTextureImage;
+  Scene scene = runScriptFile(GetParam(), options);
   ASSERT_FALSE(scene.objects.empty());
   Image image = Renderer(scene, {160, 120, 0}).render();
   int notBackground = 0;

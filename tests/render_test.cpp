@@ -65,14 +65,16 @@ TEST(Render, ShadowEdgeWhereSimilarTrianglesPutIt) {
       Primitive::create<Sphere>(1.0)->transformed(Affine::translation({0, 0, 2})));
   scene.objects.push_back(
       Primitive::create<Box>(dvec3(20, 20, 1))->transformed(Affine::translation({-10, -10, -1})));
-  scene.lights.push_back(PointLight{dvec3(0, 0, 10), dvec3(1.0), 1.0});
+  scene.lights.push_back(Light{Light::Kind::Point, dvec3(0, 0, 10)});
   scene.camera = CameraSpec{dvec3(0, -12, 8), dvec3(0), dvec3(0, 0, 1), 40.0};
   Renderer renderer(scene, {100, 100, 1});
   double radius = 10.0 / std::sqrt(63.0);
   for (double angle = 0.0; angle < 2 * kPi; angle += 0.3) {
     dvec3 dir(std::cos(angle), std::sin(angle), 0.0);
-    EXPECT_TRUE(renderer.occluded((radius - 1e-3) * dir, scene.lights[0].position)) << angle;
-    EXPECT_FALSE(renderer.occluded((radius + 1e-3) * dir, scene.lights[0].position)) << angle;
+    EXPECT_EQ(renderer.transmittance((radius - 1e-3) * dir, scene.lights[0].position), dvec3(0.0))
+        << angle;
+    EXPECT_EQ(renderer.transmittance((radius + 1e-3) * dir, scene.lights[0].position), dvec3(1.0))
+        << angle;
   }
   // Seen by the camera: a floor point in the shadow shows only the ambient
   // term, one just outside it the full Lambert term (light straight above).
@@ -92,7 +94,7 @@ TEST(Render, ShadowEdgeWhereSimilarTrianglesPutIt) {
 TEST(Render, LambertFollowsCosine) {
   Scene scene;
   scene.objects.push_back(Primitive::create<Sphere>(1.0));
-  scene.lights.push_back(PointLight{dvec3(0, 0, 1e7), dvec3(1.0), 1.0});
+  scene.lights.push_back(Light{Light::Kind::Point, dvec3(0, 0, 1e7)});
   scene.camera = CameraSpec{dvec3(0, -10, 0), dvec3(0), dvec3(0, 0, 1), 30.0};
   Renderer renderer(scene, {10, 10, 1});
   Material m;

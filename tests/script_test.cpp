@@ -183,7 +183,7 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"x = = 1", "part.lua:1:"},
       {"error('custom')", "part.lua:1: custom"},
       {"local s = sphere(1)", "part.lua: the script returned nothing"},
-      {"return 42", "part.lua: the script must return a solid or scene{...}, not number"},
+      {"return 42", "part.lua: the script must return a solid, a surface or scene{...}, not number"},
       {"return scene{objects={}}", "part.lua:1: scene: objects is empty"},
       {"return scene{objects={sphere(1)}, lights={42}}",
        "part.lua:1: scene: lights[1] must be a light, got number"},

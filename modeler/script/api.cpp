@@ -16,90 +16,12 @@
 #include "modeler/primitives/quadric.h"
 #include "modeler/primitives/sphere.h"
 #include "modeler/script/lua_args.h"
+#include "modeler/script/lua_values.h"
 #include "modeler/script/sandbox.h"
 
 namespace csgray {
 
 namespace {
-
-// ---- C++ values held in Lua userdata ---------------------------------------
-
-template <class T>
-struct TypeName;
-template <>
-struct TypeName<SolidPtr> {
-  static constexpr const char* value = "csgray.solid";
-  static constexpr const char* shown = "solid";
-};
-template <>
-struct TypeName<CameraSpec> {
-  static constexpr const char* value = "csgray.camera";
-  static constexpr const char* shown = "camera";
-};
-template <>
-struct TypeName<PointLight> {
-  static constexpr const char* value = "csgray.light";
-  static constexpr const char* shown = "light";
-};
-template <>
-struct TypeName<Scene> {
-  static constexpr const char* value = "csgray.scene";
-  static constexpr const char* shown = "scene";
-};
-
-// What a userdata holds on the C++ heap is charged against the script's
-// memory cap, and refunded when Lua collects it.
-constexpr std::size_t kBytesPerNode = 512;  // a primitive with its frame, or a boolean node
-
-template <class T>
-struct Held {
-  T value;
-  std::size_t charge;
-};
-
-template <class T>
-void pushValue(lua_State* L, T value, std::size_t charge = kBytesPerNode) {
-  Sandbox::of(L).charge(L, charge);
-  void* memory = lua_newuserdatauv(L, sizeof(Held<T>), 0);
-  new (memory) Held<T>{std::move(value), charge};
-  luaL_setmetatable(L, TypeName<T>::value);
-}
-
-template <class T>
-T* toValue(lua_State* L, int index) {
-  auto* held = static_cast<Held<T>*>(luaL_testudata(L, index, TypeName<T>::value));
-  return held ? &held->value : nullptr;
-}
-
-template <class T>
-const T& checkValue(lua_State* L, int index, const std::string& what) {
-  if (T* v = toValue<T>(L, index)) return *v;
-  throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + ", got " +
-                              luaL_typename(L, index));
-}
-
-template <class T>
-int destroyValue(lua_State* L) {
-  if (auto* held = static_cast<Held<T>*>(luaL_testudata(L, 1, TypeName<T>::value))) {
-    Sandbox::of(L).release(held->charge);
-    held->~Held<T>();
-  }
-  return 0;
-}
-
-// Runs a binding and turns a C++ exception into a Lua error at the caller's
-// line. (Lua is built as C++ here, so Lua errors unwind as exceptions that
-// this does not catch, and destructors run either way.)
-template <int (*F)(lua_State*)>
-int guarded(lua_State* L) {
-  try {
-    return F(L);
-  } catch (const std::bad_alloc&) {
-    return luaL_error(L, "out of memory");
-  } catch (const std::exception& e) {
-    return luaL_error(L, "%s", e.what());
-  }
-}
 
 // ---- Argument shapes ------------------------------------------------------
 
@@ -112,21 +34,6 @@ dvec3 vectorArgs(lua_State* L, int first, const std::string& what) {
   }
   if (n == 1) return toVec3(L, first, what);
   throw std::invalid_argument(what + ": expected x, y, z or {x, y, z}");
-}
-
-// A solid that the call built afresh: a transform or material copies the
-// whole tree below it, so all of its nodes are charged.
-void pushSolid(lua_State* L, SolidPtr solid) {
-  TreeStats stats = treeStats(*solid);
-  std::size_t charge = (stats.primitives + stats.booleans) * kBytesPerNode;
-  pushValue<SolidPtr>(L, std::move(solid), charge);
-}
-
-// A new boolean node over existing solids: one node is new, with its list
-// of operands.
-void pushBoolean(lua_State* L, SolidPtr solid) {
-  std::size_t charge = kBytesPerNode + solid->children().size() * sizeof(SolidPtr);
-  pushValue<SolidPtr>(L, std::move(solid), charge);
 }
 
 bool hasStringKey(lua_State* L, int index) {
@@ -329,21 +236,30 @@ const SolidPtr& self(lua_State* L) {
   return checkValue<SolidPtr>(L, 1, "method receiver (use ':')");
 }
 
+// The receiver moved: a solid or an open surface.
+void pushTransformed(lua_State* L, const Affine& worldFromObject) {
+  if (SurfacePtr* surface = toValue<SurfacePtr>(L, 1)) {
+    pushValue<SurfacePtr>(L, (*surface)->transformed(worldFromObject));
+    return;
+  }
+  pushSolid(L, self(L)->transformed(worldFromObject));
+}
+
 int translate(lua_State* L) {
   dvec3 offset = vectorArgs(L, 2, "translate");
-  pushSolid(L, self(L)->transformed(Affine::translation(offset)));
+  pushTransformed(L, Affine::translation(offset));
   return 1;
 }
 
 int scale(lua_State* L) {
   dvec3 factors = vectorArgs(L, 2, "scale");
-  pushSolid(L, self(L)->transformed(Affine::scaling(factors)));
+  pushTransformed(L, Affine::scaling(factors));
   return 1;
 }
 
 int mirror(lua_State* L) {
   dvec3 normal = vectorArgs(L, 2, "mirror");
-  pushSolid(L, self(L)->transformed(Affine::mirror(normal)));
+  pushTransformed(L, Affine::mirror(normal));
   return 1;
 }
 
@@ -353,54 +269,26 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 // (OpenSCAD's rotate([x, y, z])); rotate{angle=a, axis={...}}: a degrees
 // about the axis.
 int rotate(lua_State* L) {
-  const SolidPtr& solid = self(L);
   if (lua_gettop(L) == 2 && lua_type(L, 2) == LUA_TTABLE && lua_rawlen(L, 2) == 0) {
     LuaArgs args(L, 2, "rotate");
     std::optional<double> angle = args.number("angle");
     std::optional<dvec3> axis = args.vec3("axis");
     args.finish();
     if (!angle || !axis) throw std::invalid_argument("rotate: needs angle= and axis=, or x, y, z");
-    pushSolid(L, solid->transformed(Affine::rotation(radians(*angle), *axis)));
+    pushTransformed(L, Affine::rotation(radians(*angle), *axis));
     return 1;
   }
   dvec3 angles = vectorArgs(L, 2, "rotate");
   Affine r = Affine::rotation(radians(angles.x), {1, 0, 0})
                  .then(Affine::rotation(radians(angles.y), {0, 1, 0}))
                  .then(Affine::rotation(radians(angles.z), {0, 0, 1}));
-  pushSolid(L, solid->transformed(r));
+  pushTransformed(L, r);
   return 1;
 }
 
 int transform(lua_State* L) {
   glm::dmat4 m = matrixArg(L, 2, "transform", true);
-  pushSolid(L, self(L)->transformed(Affine::fromMatrix(m)));
-  return 1;
-}
-
-double unitArg(LuaArgs& args, const char* key, double fallback) {
-  double v = args.number(key).value_or(fallback);
-  if (v < 0.0 || v > 1.0)
-    throw std::invalid_argument("material: " + std::string(key) + " must be in [0, 1]");
-  return v;
-}
-
-// material{color=, ambient=, diffuse=}: on a primitive it replaces the
-// material; on a boolean it goes to every primitive below without one.
-int material(lua_State* L) {
-  const SolidPtr& solid = self(L);
-  LuaArgs args(L, 2, "material");
-  auto m = std::make_shared<Material>();
-  m->color = args.vec3("color").value_or(m->color);
-  m->ambient = unitArg(args, "ambient", m->ambient);
-  m->diffuse = unitArg(args, "diffuse", m->diffuse);
-  args.finish();
-  for (int i = 0; i < 3; ++i)
-    if (m->color[i] < 0.0) throw std::invalid_argument("material: color components must be >= 0");
-  if (auto* p = dynamic_cast<const Primitive*>(solid.get())) {
-    pushSolid(L, p->withMaterial(m));
-  } else {
-    pushSolid(L, solid->withDefaultMaterial(m));
-  }
+  pushTransformed(L, Affine::fromMatrix(m));
   return 1;
 }
 
@@ -445,109 +333,36 @@ int booleanOperator(lua_State* L) {
   return 1;
 }
 
-// ---- Scene description ------------------------------------------------------
-
-int camera(lua_State* L) {
-  LuaArgs args(L, 1, "camera");
-  CameraSpec c;
-  c.eye = args.vec3("eye").value_or(c.eye);
-  c.lookAt = args.vec3("look_at").value_or(c.lookAt);
-  c.up = args.vec3("up").value_or(c.up);
-  c.fovDegrees = args.number("fov").value_or(c.fovDegrees);
-  args.finish();
-  if (!(c.fovDegrees > 0.0 && c.fovDegrees < 180.0))
-    throw std::invalid_argument("camera: fov must be between 0 and 180 degrees");
-  dvec3 view = c.lookAt - c.eye;
-  if (glm::length(view) == 0.0)
-    throw std::invalid_argument("camera: eye and look_at are the same point");
-  if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
-    throw std::invalid_argument("camera: up must not be parallel to the view direction");
-  pushValue(L, c);
-  return 1;
-}
-
-int pointLight(lua_State* L) {
-  LuaArgs args(L, 1, "point_light");
-  PointLight light;
-  std::optional<dvec3> pos = args.vec3("pos");
-  light.color = args.vec3("color").value_or(light.color);
-  light.intensity = args.number("intensity").value_or(light.intensity);
-  args.finish();
-  if (!pos) throw std::invalid_argument("point_light: needs pos={x, y, z}");
-  light.position = *pos;
-  if (light.intensity < 0.0 || light.color.x < 0.0 || light.color.y < 0.0 || light.color.z < 0.0)
-    throw std::invalid_argument("point_light: color and intensity must be >= 0");
-  pushValue(L, light);
-  return 1;
-}
-
-// A single value of type T, or a list of them, under key.
-template <class T>
-std::vector<T> listArg(lua_State* L, LuaArgs& args, const char* key) {
-  std::vector<T> values;
-  if (!args.push(key)) return values;
-  std::string what = args.function() + ": " + key;
-  if (T* one = toValue<T>(L, -1)) {
-    values.push_back(*one);
-  } else if (lua_type(L, -1) == LUA_TTABLE) {
-    lua_Unsigned n = lua_rawlen(L, -1);
-    for (lua_Unsigned i = 1; i <= n; ++i) {
-      lua_rawgeti(L, -1, static_cast<lua_Integer>(i));
-      values.push_back(checkValue<T>(L, -1, what + "[" + std::to_string(i) + "]"));
-      lua_pop(L, 1);
-    }
-  } else {
-    throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + " or a list of them");
-  }
-  lua_pop(L, 1);
-  return values;
-}
-
-int scene(lua_State* L) {
-  LuaArgs args(L, 1, "scene");
-  Scene s;
-  s.objects = listArg<SolidPtr>(L, args, "objects");
-  s.lights = listArg<PointLight>(L, args, "lights");
-  if (args.push("camera")) {
-    s.camera = checkValue<CameraSpec>(L, -1, "scene: camera");
-    lua_pop(L, 1);
-  }
-  s.background = args.vec3("background").value_or(s.background);
-  args.finish();
-  if (s.objects.empty()) throw std::invalid_argument("scene: objects is empty");
-  pushValue(L, std::move(s));
-  return 1;
-}
-
 // ---- Registration -----------------------------------------------------------
-
-template <class T>
-void newMetatable(lua_State* L) {
-  luaL_newmetatable(L, TypeName<T>::value);
-  lua_pushcfunction(L, &destroyValue<T>);
-  lua_setfield(L, -2, "__gc");
-  lua_pushstring(L, TypeName<T>::shown);
-  lua_setfield(L, -2, "__name");
-  // getmetatable() answers this string, so a script cannot reach __gc and
-  // destroy a value that is still in use.
-  lua_pushstring(L, TypeName<T>::value);
-  lua_setfield(L, -2, "__metatable");
-}
 
 }  // namespace
 
-void registerScriptApi(lua_State* L) {
+namespace {
+const char* const kOptionsKey = "csgray.options";
+}
+
+const ScriptOptions& scriptOptionsOf(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, kOptionsKey);
+  const auto* options = static_cast<const ScriptOptions*>(lua_touserdata(L, -1));
+  lua_pop(L, 1);
+  return *options;
+}
+
+void registerScriptApi(lua_State* L, const ScriptOptions& options) {
+  lua_pushlightuserdata(L, const_cast<ScriptOptions*>(&options));
+  lua_setfield(L, LUA_REGISTRYINDEX, kOptionsKey);
+  // Transforms apply to solids and open surfaces alike.
+  static const luaL_Reg transforms[] = {
+      {"translate", guarded<translate>}, {"rotate", guarded<rotate>},
+      {"scale", guarded<scale>},         {"mirror", guarded<mirror>},
+      {"transform", guarded<transform>}, {nullptr, nullptr}};
   newMetatable<SolidPtr>(L);
-  static const luaL_Reg methods[] = {{"translate", guarded<translate>},
-                                     {"rotate", guarded<rotate>},
-                                     {"scale", guarded<scale>},
-                                     {"mirror", guarded<mirror>},
-                                     {"transform", guarded<transform>},
-                                     {"material", guarded<material>},
+  static const luaL_Reg methods[] = {{"material", guarded<solidMaterial>},
                                      {"bounds", guarded<bounds>},
                                      {"contains", guarded<contains>},
                                      {nullptr, nullptr}};
   luaL_newlib(L, methods);
+  luaL_setfuncs(L, transforms, 0);
   lua_setfield(L, -2, "__index");
   static const luaL_Reg operators[] = {
       {"__add", guarded<booleanOperator<Boolean::Op::Union>>},
@@ -556,12 +371,6 @@ void registerScriptApi(lua_State* L) {
       {"__tostring", guarded<solidToString>},
       {nullptr, nullptr}};
   luaL_setfuncs(L, operators, 0);
-  lua_pop(L, 1);
-  newMetatable<CameraSpec>(L);
-  lua_pop(L, 1);
-  newMetatable<PointLight>(L);
-  lua_pop(L, 1);
-  newMetatable<Scene>(L);
   lua_pop(L, 1);
 
   static const luaL_Reg globals[] = {
@@ -575,22 +384,9 @@ void registerScriptApi(lua_State* L) {
       {"union", guarded<booleanOf<Boolean::Op::Union>>},
       {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},
-      {"camera", guarded<camera>},
-      {"point_light", guarded<pointLight>},
-      {"scene", guarded<scene>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
-}
-
-Scene sceneFromValue(lua_State* L, int index) {
-  if (SolidPtr* solid = toValue<SolidPtr>(L, index)) {
-    Scene s;
-    s.objects.push_back(*solid);
-    return s;
-  }
-  if (Scene* s = toValue<Scene>(L, index)) return *s;
-  throw std::invalid_argument(std::string("the script must return a solid or scene{...}, not ") +
-                              luaL_typename(L, index));
+  registerSceneApi(L, transforms);
 }
 
 }  // namespace csgray

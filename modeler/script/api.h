@@ -5,14 +5,24 @@
 #include <lua.hpp>
 
 #include "modeler/scene.h"
+#include "modeler/script/script.h"
 
 namespace csgray {
 
-// Registers the API's globals and metatables in a sandboxed state.
-void registerScriptApi(lua_State* L);
+// Registers the API's globals and metatables in a sandboxed state. The
+// options must outlive the script's run.
+void registerScriptApi(lua_State* L, const ScriptOptions& options);
+// The options registerScriptApi was given.
+const ScriptOptions& scriptOptionsOf(lua_State* L);
+
+// The part of the API in api_scene.cpp: materials, textures, lights, open
+// surfaces (which take the given transform methods), camera and scene.
+void registerSceneApi(lua_State* L, const luaL_Reg* transformMethods);
+// s:material{...} on a solid.
+int solidMaterial(lua_State* L);
 
 // Turns the script's return value at index into a scene. Throws
-// std::invalid_argument if it is neither a solid nor a scene.
+// std::invalid_argument if it is not a solid, a surface or a scene.
 Scene sceneFromValue(lua_State* L, int index);
 
 }  // namespace csgray

@@ -49,6 +49,18 @@ std::optional<bool> LuaArgs::boolean(const char* key) {
   return v;
 }
 
+std::optional<std::string> LuaArgs::string(const char* key) {
+  if (!push(key)) return std::nullopt;
+  if (lua_type(L_, -1) != LUA_TSTRING)
+    throw std::invalid_argument(function_ + ": " + key + " must be a string, got " +
+                                luaL_typename(L_, -1));
+  std::size_t length = 0;
+  const char* text = lua_tolstring(L_, -1, &length);
+  std::string v(text, length);
+  lua_pop(L_, 1);
+  return v;
+}
+
 void LuaArgs::finish() {
   if (lua_type(L_, index_) != LUA_TTABLE) return;
   lua_pushnil(L_);

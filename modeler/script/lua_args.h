@@ -20,6 +20,7 @@ class LuaArgs {
   std::optional<double> number(const char* key);
   std::optional<dvec3> vec3(const char* key);
   std::optional<bool> boolean(const char* key);
+  std::optional<std::string> string(const char* key);
   // True if the key is present; leaves its value on top of the stack.
   bool push(const char* key);
   // Throws if the table has a key that no getter asked for.

@@ -61,7 +61,7 @@ Scene runScript(const std::string& source, const std::string& chunkName,
                 const ScriptOptions& options) {
   Sandbox sandbox(options.limits);
   lua_State* L = sandbox.state();
-  registerScriptApi(L);
+  registerScriptApi(L, options);
   for (const auto& [name, value] : options.defines) {
     if (!isIdentifier(name))
       throw ScriptError("-D " + name + "=...: '" + name + "' is not a valid Lua name");
@@ -102,7 +102,10 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
   if (text.starts_with("#"))
     text.erase(0, text.find('\n') == std::string::npos ? text.size() : text.find('\n'));
-  return runScript(text, path, options);
+  ScriptOptions withFolder = options;
+  withFolder.folder = std::filesystem::path(path).parent_path().string();
+  if (withFolder.folder.empty()) withFolder.folder = ".";
+  return runScript(text, path, withFolder);
 }
 
 }  // namespace csgray

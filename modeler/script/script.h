@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -23,6 +24,12 @@ struct ScriptOptions {
   // or strings (quotes optional).
   std::vector<std::pair<std::string, std::string>> defines;
   ScriptLimits limits;
+  // The folder that file names in the script (image textures) are relative
+  // to, and may not leave; runScriptFile sets it to the script's folder.
+  std::string folder = ".";
+  // Reads an image file for image_texture{}; without it, image textures
+  // are an error. (The modeler does not read images itself: io/ does.)
+  std::function<TextureImage(const std::string& path)> loadImage;
 };
 
 // A script that failed: the message names the file and line where known.
