@@ -91,12 +91,13 @@ TextureImage readTextureImage(const std::string& path) {
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) throw fail(oneLine(OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
-  // Bounded so that a bad or hostile file cannot ask for gigabytes.
-  constexpr int kMaxSide = 16384;
+  // Bounded before anything is read, so that a bad or hostile file cannot
+  // ask for gigabytes: 4096 × 4096 RGB floats are 192 MiB.
+  constexpr long kMaxPixels = 4096L * 4096;
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw fail("the image is empty");
-  if (spec.width > kMaxSide || spec.height > kMaxSide)
+  if (long(spec.width) * spec.height > kMaxPixels)
     throw fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-               " pixels, more than " + std::to_string(kMaxSide) + " a side");
+               " pixels, more than a texture may have (" + std::to_string(kMaxPixels) + ")");
   if (spec.depth > 1 || spec.deep) throw fail("volume and deep images are not textures");
   // Channels 0..2 as RGB, or channel 0 as grey (also for grey + alpha).
   int channels = spec.nchannels >= 3 ? 3 : 1;

@@ -201,14 +201,18 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     const Surface& s = *hit->surface;
     sp.material = &materialOf(s.material());
     sp.normal = s.normal();
-    sp.color = sp.material->colorAt(s.texturePoint(sp.point), s.textureNormal());
+    sp.color = sp.material->texture
+                   ? sp.material->texture->colorAt(s.texturePoint(sp.point), s.textureNormal())
+                   : sp.material->color;
   } else {
     const Boundary& b = hit->boundary;
     sp.material = &materialOf(b);
     sp.normal = b.primitive->normal(sp.point, b.face);
     if (b.flip) sp.normal = -sp.normal;
-    sp.color = sp.material->colorAt(b.primitive->texturePoint(sp.point),
-                                    b.primitive->textureNormal(sp.point, b.face));
+    sp.color = sp.material->texture
+                   ? sp.material->texture->colorAt(b.primitive->texturePoint(sp.point),
+                                                   b.primitive->textureNormal(sp.point, b.face))
+                   : sp.material->color;
   }
   if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
   const Material& m = *sp.material;
