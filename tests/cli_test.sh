@@ -149,5 +149,159 @@ if ls -A "$work" | grep -q '\.tmp'; then fail "temporary files left: $(ls -A "$w
 if "$csgray" render "$source_dir/examples/showcase.lua" -o "$work/showcase.png" --size 80x60 >/dev/null 2>&1 &&
    [ -s "$work/showcase.png" ]; then pass; else fail "showcase"; fi
 
+# expect_exit CODE NAME OUTPUT-FILE-OR-"" ARGS...: as expect_failure, and the
+# exit code must be CODE (1: the script, scene or output failed; 2: the
+# command line is wrong).
+expect_exit() {
+  local want=$1 name=$2 output=$3
+  shift 3
+  "$csgray" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$?
+  local lines
+  lines=$(wc -l <"$work/stderr")
+  if [ $code -ne "$want" ]; then
+    fail "$name: exit code $code, expected $want"; cat "$work/stderr"
+  elif [ "$lines" -ne 1 ] || ! grep -q '^csgray: error: ' "$work/stderr"; then
+    fail "$name: stderr is not one 'csgray: error:' line:"; cat "$work/stderr"
+  elif [ -n "$output" ] && [ -e "$output" ]; then
+    fail "$name: left $output behind"
+  else
+    pass
+  fi
+}
+
+# Width and height of a PNG from its IHDR chunk, as "WxH".
+png_size() {
+  local b
+  read -r -a b < <(od -An -v -tu1 -j16 -N8 "$1")
+  echo "$(((b[0] << 24) | (b[1] << 16) | (b[2] << 8) | b[3]))x$(((b[4] << 24) | (b[5] << 16) | (b[6] << 8) | b[7]))"
+}
+is_png() { [ "$(od -An -tx1 -N8 "$1" | tr -d ' \n')" = 89504e470d0a1a0a ]; }
+
+# The pixel types of the channels of an EXR file (its "channels" attribute),
+# as little-endian hex words: 02000000 is FLOAT, 01000000 HALF, 00000000 UINT.
+exr_pixel_types() {
+  local hex rest types=""
+  hex=$(head -c 4096 "$1" | od -An -v -tx1 | tr -d ' \n')
+  rest=${hex#*6368616e6e656c730063686c69737400}  # "channels\0chlist\0"
+  [ "$rest" != "$hex" ] || return 1
+  rest=${rest:8}  # the attribute's size
+  # Each channel: its name, \0, the pixel type (4 bytes), pLinear and 3
+  # reserved bytes, x and y sampling (4 bytes each); a \0 ends the list.
+  while [ -n "$rest" ] && [ "${rest:0:2}" != 00 ]; do
+    while [ -n "$rest" ] && [ "${rest:0:2}" != 00 ]; do rest=${rest:2}; done
+    types="$types ${rest:2:8}"
+    rest=${rest:34}
+  done
+  echo "${types# }"
+}
+
+csgray_abs=$(cd "$(dirname "$csgray")" && pwd)/$(basename "$csgray")
+source_abs=$(cd "$source_dir" && pwd)
+
+# --samples is 1 to 1024; --adaptive needs samples to spend; --aov knows
+# depth and normal. A wrong command line is exit code 2.
+expect_exit 2 "zero samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --samples 0
+expect_exit 2 "too many samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --samples 2000
+expect_exit 2 "adaptive without samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --adaptive
+expect_in_stderr "adaptive without samples" "--samples"
+expect_exit 2 "adaptive with one sample" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --adaptive --samples 1
+expect_exit 2 "unknown aov" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --aov foo
+expect_exit 2 "unknown aov in a list" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --aov depth,foo
+if [ -e "$work/out.depth.png" ] || [ -e "$work/out.normal.png" ]; then fail "a refused --aov left files"; else pass; fi
+# The bounds are allowed, and adaptive sampling renders.
+if "$csgray" render "$work/part.lua" -o "$work/samples.png" --size 16x12 --samples 1024 >/dev/null 2>&1 &&
+   [ -s "$work/samples.png" ]; then pass; else fail "--samples 1024"; fi
+if "$csgray" render "$work/part.lua" -o "$work/adaptive.png" --size 32x24 --samples 4 --adaptive \
+     >/dev/null 2>"$work/stderr" && [ "$(png_size "$work/adaptive.png")" = 32x24 ]; then
+  pass
+else
+  fail "--adaptive --samples 4"; cat "$work/stderr"
+fi
+
+# --aov depth,normal writes NAME.depth.EXT and NAME.normal.EXT beside NAME.EXT.
+mkdir "$work/aov"
+if "$csgray" render "$work/part.lua" -o "$work/aov/part.png" --size 32x24 --aov depth,normal \
+     >"$work/stdout" 2>"$work/stderr"; then
+  for f in part.png part.depth.png part.normal.png; do
+    if is_png "$work/aov/$f" && [ "$(png_size "$work/aov/$f")" = 32x24 ]; then
+      pass
+    else
+      fail "--aov: $f is not a 32x24 PNG"
+    fi
+  done
+  if [ "$(ls -A "$work/aov" | wc -l)" -eq 3 ]; then pass; else fail "--aov wrote: $(ls -A "$work/aov")"; fi
+else
+  fail "--aov depth,normal"; cat "$work/stderr"
+fi
+# One of them only; the plain render at the top wrote none.
+mkdir "$work/aov1"
+"$csgray" render "$work/part.lua" -o "$work/aov1/part.png" --size 16x12 --aov normal >/dev/null 2>&1
+if [ "$(ls "$work/aov1" | tr '\n' ' ')" = "part.normal.png part.png " ]; then
+  pass
+else
+  fail "--aov normal wrote: $(ls "$work/aov1" | tr '\n' ' ')"
+fi
+if [ -e "$work/part.depth.png" ] || [ -e "$work/part.normal.png" ]; then
+  fail "a render without --aov wrote AOV images"
+else
+  pass
+fi
+# EXR keeps floating point: every channel of the depth image is FLOAT.
+mkdir "$work/exr"
+if "$csgray" render "$work/part.lua" -o "$work/exr/part.exr" --size 16x12 --aov depth,normal >/dev/null 2>&1 &&
+   [ -s "$work/exr/part.exr" ] && [ -s "$work/exr/part.normal.exr" ] &&
+   [ "$(exr_pixel_types "$work/exr/part.depth.exr")" = "02000000 02000000 02000000" ]; then
+  pass
+else
+  fail "--aov with .exr: depth channels are '$(exr_pixel_types "$work/exr/part.depth.exr" 2>&1)'; files: $(ls "$work/exr")"
+fi
+# A failing script with --aov leaves no file at all.
+mkdir "$work/aovfail"
+expect_exit 1 "failing script with --aov" "$work/aovfail/out.png" render "$work/bad.lua" \
+  -o "$work/aovfail/out.png" --aov depth,normal
+if [ -z "$(ls -A "$work/aovfail")" ]; then pass; else fail "failing --aov render left: $(ls -A "$work/aovfail")"; fi
+
+# Standard error is not a terminal here: a render that takes over a second
+# (when the bar would show) prints no progress bar; stderr stays empty.
+printf '%s\n' 'return scene{' \
+  '  objects = {sphere{r=1}:material{reflection=0.5}, plane{}:material{color=marble{}}},' \
+  '  camera = camera{eye={0, -5, 2}, look_at={0, 0, 0}},' \
+  '  lights = {sphere_light{pos={2, -2, 5}, r=1, samples=1024}},' \
+  '}' > "$work/slow.lua"
+if "$csgray" render "$work/slow.lua" -o "$work/slow.png" --size 64x48 --threads 1 --samples 4 \
+     >"$work/stdout" 2>"$work/stderr" && [ -s "$work/slow.png" ]; then
+  if [ -s "$work/stderr" ]; then fail "progress written to a pipe:"; od -c "$work/stderr" | head -5; else pass; fi
+  seconds=$(sed -n 's/.* in \([0-9.]*\) s$/\1/p' "$work/stdout")
+  case "$seconds" in 0.*) echo "note: the progress check rendered in $seconds s, under the bar's 1 s";; esac
+else
+  fail "slow render"; cat "$work/stderr"
+fi
+
+# image_texture: a missing file is exit 1 and one line naming it; a file
+# outside the script's folder is refused.
+printf 'local a = box(1)\nreturn a:material{color=image_texture{file="nope.png"}}\n' > "$work/tex_missing.lua"
+expect_exit 1 "missing texture image" "$work/out.png" render "$work/tex_missing.lua" -o "$work/out.png"
+expect_in_stderr "missing texture image" "tex_missing.lua:2: "
+expect_in_stderr "missing texture image" "nope.png"
+mkdir "$work/scripts"
+printf 'return box(1):material{color=image_texture{file="../part.png"}}\n' > "$work/scripts/escape.lua"
+expect_exit 1 "texture outside the folder" "$work/out.png" render "$work/scripts/escape.lua" -o "$work/out.png"
+expect_in_stderr "texture outside the folder" "escape.lua:1: image_texture: file ../part.png is outside the script's folder"
+
+# Texture files are relative to the script, not to the working directory.
+if (cd "$work" && "$csgray_abs" render "$source_abs/examples/textured_box.lua" -o textured.png --size 40x30 \
+      >/dev/null 2>"$work/stderr") && [ -s "$work/textured.png" ]; then
+  pass
+else
+  fail "textured_box.lua from another folder"; cat "$work/stderr"
+fi
+if (cd "$source_abs/examples/textures" && "$csgray_abs" render ../textured_box.lua -o "$work/textured2.png" \
+      --size 40x30 >/dev/null 2>"$work/stderr") && [ -s "$work/textured2.png" ]; then
+  pass
+else
+  fail "textured_box.lua by a relative path from a subfolder"; cat "$work/stderr"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -73,13 +73,19 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 // pattern in that order.
 void pushTexture(lua_State* L, LuaArgs& args, std::shared_ptr<Texture> texture) {
   Affine placement;
-  if (std::optional<dvec3> s = args.vec3("scale")) placement = Affine::scaling(*s);
-  if (std::optional<dvec3> r = args.vec3("rotate"))
-    placement = placement.then(Affine::rotation(radians(r->x), {1, 0, 0}))
-                    .then(Affine::rotation(radians(r->y), {0, 1, 0}))
-                    .then(Affine::rotation(radians(r->z), {0, 0, 1}));
-  if (std::optional<dvec3> t = args.vec3("translate"))
-    placement = placement.then(Affine::translation(*t));
+  try {
+    if (std::optional<dvec3> s = args.vec3("scale")) placement = Affine::scaling(*s);
+    if (std::optional<dvec3> r = args.vec3("rotate"))
+      placement = placement.then(Affine::rotation(radians(r->x), {1, 0, 0}))
+                      .then(Affine::rotation(radians(r->y), {0, 1, 0}))
+                      .then(Affine::rotation(radians(r->z), {0, 0, 1}));
+    if (std::optional<dvec3> t = args.vec3("translate"))
+      placement = placement.then(Affine::translation(*t));
+  } catch (const std::invalid_argument& e) {  // a zero scale: name the texture
+    std::string what = e.what();
+    if (what.starts_with(args.function())) throw;
+    throw std::invalid_argument(args.function() + ": " + what);
+  }
   args.finish();
   texture->setPlacement(placement);
   pushValue<TexturePtr>(L, std::move(texture));
@@ -154,7 +160,8 @@ int noise(lua_State* L) {
   dvec3 a = kind == NoiseKind::Wood ? dvec3(0.55, 0.33, 0.16) : dvec3(0.9, 0.9, 0.88);
   dvec3 b = kind == NoiseKind::Wood ? dvec3(0.3, 0.16, 0.07) : dvec3(0.2, 0.2, 0.25);
   auto [colorA, colorB] = colorPair(L, args, a, b);
-  double octaves = args.number("octaves").value_or(6.0);
+  // Plain Perlin noise is one octave; the others sum octaves.
+  double octaves = kind == NoiseKind::Perlin ? 1.0 : args.number("octaves").value_or(6.0);
   if (octaves != std::floor(octaves) || octaves < 1 || octaves > 16)
     throw std::invalid_argument(std::string(name) +
                                 ": octaves must be a whole number from 1 to 16");
