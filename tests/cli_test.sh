@@ -278,6 +278,17 @@ else
   fail "slow render"; cat "$work/stderr"
 fi
 
+# The same render on a terminal (a pty from script(1), util-linux) shows the
+# bar once the first second has passed, and clears it at the end.
+if command -v script >/dev/null; then
+  script -qec "'$csgray' render '$work/slow.lua' -o '$work/slow.png' --size 64x48 --threads 1 --samples 4" \
+    /dev/null >"$work/tty" 2>&1
+  case "$seconds" in
+    0.*) echo "note: the render took $seconds s, under the bar's 1 s: the terminal check is skipped";;
+    *) if grep -q "rendering \[#*\.*\] *[0-9]*%" "$work/tty"; then pass; else fail "no progress bar on a terminal"; od -c "$work/tty" | head -5; fi;;
+  esac
+fi
+
 # image_texture: a missing file is exit 1 and one line naming it; a file
 # outside the script's folder is refused.
 printf 'local a = box(1)\nreturn a:material{color=image_texture{file="nope.png"}}\n' > "$work/tex_missing.lua"
