@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <regex>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "cli/progress.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
+#include "io/image_plugin.h"
 #include "modeler/primitive.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
@@ -87,6 +89,12 @@ void printInfo(const std::string& script, const Scene& scene) {
 std::string aovPath(const std::string& output, const std::string& aov) {
   std::filesystem::path p(output);
   return (p.parent_path() / (p.stem().string() + "." + aov + p.extension().string())).string();
+}
+
+bool endsWithPng(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
 }
 
 bool keepsFloat(const std::string& path) {
@@ -207,6 +215,10 @@ int main(int argc, char** argv) {
         if (std::string problem = imageOutputProblem(path); !problem.empty())
           throw std::runtime_error("cannot write " + path + ": " + problem);
       auto start = std::chrono::steady_clock::now();
+      // Formats other than PNG go through OpenImageIO, whose many libraries
+      // load on another thread while the script runs and the image renders.
+      std::optional<ImagePluginPreload> preload;
+      if (!endsWithPng(output)) preload.emplace();
       Scene scene = runScript();
       RenderResult result = [&] {
         ProgressBar bar("rendering");

@@ -1,44 +1,58 @@
 #include "io/image_file.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cmath>
+#include <array>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/image_plugin.h"
+#include "io/png_file.h"
+#include "io/srgb.h"
 
 namespace csgray {
 
 namespace {
 
-// The sRGB transfer function (IEC 61966-2-1).
-float encodeSrgb(float linear) {
-  float v = std::clamp(linear, 0.0f, 1.0f);
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
-// Its inverse, sRGB code value to linear light (IEC 61966-2-1).
-float decodeSrgb(float encoded) {
-  float v = std::clamp(encoded, 0.0f, 1.0f);
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-// OIIO's error texts may run over several lines; errors here are one line.
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text.empty() ? "unknown error" : text;
-}
-
-bool keepsFloat(const std::string& formatName) {
-  return formatName == "openexr" || formatName == "hdr" || formatName == "pfm";
+bool isPng(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".png";
 }
 
 }  // namespace
+
+std::uint8_t srgbByte(float linear) {
+  // steps[k]: the linear value where the code goes from k to k + 1, the
+  // decoding of the midpoint (k + 0.5) / 255 between the two codes. A
+  // table over [0, 1] in 4096 buckets gives the code at each bucket's start;
+  // codes are at least 1/4096 apart in linear light except in the darkest
+  // tenth, so the scan from there takes a step or two.
+  static const std::array<float, 256> steps = [] {
+    std::array<float, 256> s;
+    for (int k = 0; k < 255; ++k) s[k] = decodeSrgb((float(k) + 0.5f) / 255.0f);
+    s[255] = 2.0f;  // above every clamped value: the scan stops at 255
+    return s;
+  }();
+  static const std::array<std::uint8_t, 4097> start = [] {
+    std::array<std::uint8_t, 4097> c;
+    for (int i = 0; i <= 4096; ++i)
+      c[i] = std::uint8_t(std::upper_bound(steps.begin(), steps.begin() + 255, i / 4096.0f) -
+                          steps.begin());
+    return c;
+  }();
+  if (!(linear > 0.0f)) return 0;  // also NaN
+  float v = std::min(linear, 1.0f);
+  int code = start[int(v * 4096.0f)];
+  while (v > steps[code]) ++code;
+  return std::uint8_t(code);
+}
 
 std::string imageOutputProblem(const std::string& path) {
   std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -48,86 +62,32 @@ std::string imageOutputProblem(const std::string& path) {
     return "folder " + folder.string() + " does not exist";
   if (::access(folder.c_str(), W_OK) != 0) return "folder " + folder.string() + " is not writable";
   if (std::filesystem::is_directory(path, error)) return "it is a folder";
-  std::string ext = std::filesystem::path(path).extension().string();
-  if (ext.empty()) return "no file extension to tell the image format (use .png, .exr, ...)";
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    (void)OIIO::geterror();
-    return "unknown image format '" + ext + "'";
-  }
-  return "";
+  if (std::filesystem::path(path).extension().empty())
+    return "no file extension to tell the image format (use .png, .exr, ...)";
+  if (isPng(path)) return "";
+  return imagePlugin().outputProblem(path);
 }
 
 void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data) {
   AtomicFile file(path);
-  auto out = OIIO::ImageOutput::create(file.tempPath());
-  if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-  bool linear = keepsFloat(out->format_name());
-  OIIO::ImageSpec spec(width, height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  bool encode = !linear && data == ImageData::LinearColor;
-  spec.attribute("oiio:ColorSpace", encode ? "sRGB" : "linear");
-  std::vector<float> pixels(rgb, rgb + static_cast<size_t>(width) * height * 3);
-  if (encode)
-    for (float& v : pixels) v = encodeSrgb(v);
-  if (!out->open(file.tempPath(), spec) ||
-      !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
-    std::string why = out->geterror();
-    throw std::runtime_error("cannot write " + path + ": " + (why.empty() ? "write failed" : why));
+  if (!isPng(path)) {
+    imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
+    file.commit();
+    return;
   }
+  std::vector<std::uint8_t> bytes(std::size_t(width) * height * 3);
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    bytes[i] = data == ImageData::LinearColor
+                   ? srgbByte(rgb[i])
+                   : std::uint8_t(std::lround(255.0f * std::clamp(rgb[i], 0.0f, 1.0f)));
+  std::string png = encodePng(width, height, bytes.data());
+  std::ofstream out(file.tempPath(), std::ios::binary);
+  out.write(png.data(), std::streamsize(png.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path + ": write failed");
   file.commit();
 }
 
-TextureImage readTextureImage(const std::string& path) {
-  auto fail = [&](const std::string& why) {
-    return std::runtime_error("cannot read texture image " + path + ": " + why);
-  };
-  std::error_code error;
-  if (!std::filesystem::exists(path, error) && !error) throw fail("no such file");
-  if (std::filesystem::is_directory(path, error)) throw fail("it is a folder");
-  // Colours as stored: without this, OIIO multiplies them by alpha on
-  // reading (PNG, TIFF, ...), which would darken translucent texels.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw fail(oneLine(OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
-  // Bounded before anything is read, so that a bad or hostile file cannot
-  // ask for gigabytes: 4096 × 4096 RGB floats are 192 MiB.
-  constexpr long kMaxPixels = 4096L * 4096;
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw fail("the image is empty");
-  if (long(spec.width) * spec.height > kMaxPixels)
-    throw fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-               " pixels, more than a texture may have (" + std::to_string(kMaxPixels) + ")");
-  if (spec.depth > 1 || spec.deep) throw fail("volume and deep images are not textures");
-  // Channels 0..2 as RGB, or channel 0 as grey (also for grey + alpha).
-  int channels = spec.nchannels >= 3 ? 3 : 1;
-  bool floatData = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                   spec.format.basetype == OIIO::TypeDesc::HALF ||
-                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-  TextureImage image;
-  image.width = spec.width;
-  image.height = spec.height;
-  std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
-  image.rgb.resize(pixels * 3);
-  // Read into the front of the buffer (packed, channels per pixel) and, for
-  // grey, spread from the back so that no value is overwritten before use.
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.rgb.data()))
-    throw fail(oneLine(in->geterror()));
-  in->close();
-  if (channels == 1)
-    for (std::size_t i = pixels; i-- > 0;) {
-      float grey = image.rgb[i];
-      for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = grey;
-    }
-  for (float& v : image.rgb) {
-    // Integer formats hold sRGB code values (as writeImage writes them);
-    // a NaN or infinity in a float file would spread through a render.
-    if (!floatData)
-      v = decodeSrgb(v);
-    else if (!std::isfinite(v))
-      v = 0.0f;
-  }
-  return image;
-}
+TextureImage readTextureImage(const std::string& path) { return imagePlugin().read(path); }
 
 }  // namespace csgray

@@ -50,6 +50,13 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
       bounds_ = operands_[0]->bounds();
       break;
   }
+  if (op_ != Op::Intersection && operands_.size() - firstInBvh() > kBvhOperands) {
+    std::vector<Bounds> boxes;
+    boxes.reserve(operands_.size() - firstInBvh());
+    for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
+      boxes.push_back(operands_[i]->bounds());
+    bvh_ = Bvh(boxes);
+  }
 }
 
 std::string Boolean::kind() const {
@@ -67,50 +74,94 @@ std::string Boolean::kind() const {
 void Boolean::spans(const Ray& ray, SpanList& out) const {
   out.clear();
   if (!bounds_.hitBy(ray)) return;
-  // Fold the operands into out, merging through a scratch list.
-  SpanList operand, merged;
-  bool first = true;
-  for (const SolidPtr& s : operands_) {
-    bool hit = s->bounds().hitBy(ray);
-    if (!hit) {
-      if (op_ == Op::Union) continue;
-      if (op_ == Op::Intersection || first) {
+  // The result so far is *result; each operand's spans are merged into the
+  // other list and the two swap roles, so nothing is copied per operand.
+  SpanList operand, spare;
+  SpanList* result = &out;
+  SpanList* other = &spare;
+  auto fold = [&](const SpanList& in) {
+    switch (op_) {
+      case Op::Union:
+        unite(*result, in, *other);
+        break;
+      case Op::Intersection:
+        intersect(*result, in, *other);
+        break;
+      case Op::Difference:
+        subtract(*result, in, *other);
+        break;
+    }
+    std::swap(result, other);
+  };
+  auto finish = [&] {
+    if (result != &out) out = *result;
+  };
+
+  if (op_ == Op::Union) {
+    auto add = [&](const Solid& s, const Ray& r) {
+      if (result->empty()) {
+        s.spans(r, *result);
+        return;
+      }
+      s.spans(r, operand);
+      if (!operand.empty()) fold(operand);
+    };
+    if (bvh_.empty()) {
+      for (const SolidPtr& s : operands_)
+        if (s->bounds().hitBy(ray)) add(*s, ray);
+    } else {
+      double tMax = ray.tMax;
+      bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
+        add(*operands_[i], ray);
+        return true;
+      });
+    }
+    finish();
+    return;
+  }
+
+  // Intersection and difference: the result lies within the first
+  // operand's spans, so the others are asked only about the stretch from
+  // its first boundary to its last (a window that shrinks as the result
+  // does), and the fold stops once the result is empty.
+  const Solid& first = *operands_[0];
+  if (!first.bounds().hitBy(ray)) return;
+  first.spans(ray, out);
+  Ray window = ray;
+  auto narrow = [&] {
+    if (result->empty()) return false;
+    window.tMin = std::max(ray.tMin, result->front().in.t);
+    window.tMax = std::min(ray.tMax, result->back().out.t);
+    return true;
+  };
+  if (!narrow()) return;
+  if (op_ == Op::Intersection) {
+    for (std::size_t i = 1; i < operands_.size(); ++i) {
+      const Solid& s = *operands_[i];
+      if (!s.bounds().hitBy(window)) {
         out.clear();
         return;
       }
-      continue;  // a subtracted operand that the ray misses removes nothing
+      s.spans(window, operand);
+      fold(operand);
+      if (!narrow()) break;
     }
-    if (first) {
-      s->spans(ray, out);
-      first = false;
-    } else {
-      s->spans(ray, operand);
-      if (operand.empty()) {
-        if (op_ == Op::Intersection) {
-          out.clear();
-          return;
-        }
-        continue;
-      }
-      if (out.empty() && op_ == Op::Union) {
-        out = operand;
-        continue;
-      }
-      switch (op_) {
-        case Op::Union:
-          unite(out, operand, merged);
-          break;
-        case Op::Intersection:
-          intersect(out, operand, merged);
-          break;
-        case Op::Difference:
-          subtract(out, operand, merged);
-          break;
-      }
-      out = merged;
-    }
-    if (out.empty() && op_ != Op::Union) return;
+    finish();
+    return;
   }
+  auto cut = [&](const Solid& s) {
+    s.spans(window, operand);
+    if (!operand.empty()) fold(operand);
+    return narrow();
+  };
+  if (bvh_.empty()) {
+    for (std::size_t i = 1; i < operands_.size(); ++i)
+      if (operands_[i]->bounds().hitBy(window) && !cut(*operands_[i])) break;
+  } else {
+    bvh_.traverse(window, window.tMax,
+                  [&](std::uint32_t i, double) { return cut(*operands_[i + 1]); });
+  }
+  finish();
 }
 
 bool Boolean::contains(const dvec3& p) const {

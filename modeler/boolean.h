@@ -1,11 +1,15 @@
 // An n-ary boolean node: union, intersection or difference (the first
 // operand minus all others). Each node keeps its bounding box, skips
 // operands whose box the ray misses, and stops as soon as an intersection
-// or difference is empty.
+// or difference is empty. A node with many operands keeps a BVH over them
+// (over the subtracted ones, for a difference), so that a ray visits only
+// the operands it can hit; the operands that cut the first are asked only
+// about the stretch of the ray where the first has spans.
 #pragma once
 
 #include <vector>
 
+#include "modeler/bvh.h"
 #include "modeler/solid.h"
 
 namespace csgray {
@@ -18,6 +22,8 @@ class Boolean : public Solid {
   // trees whose shared subtrees multiply out within reach.
   static constexpr int kMaxDepth = 1000;
   static constexpr std::size_t kMaxPrimitives = 1'000'000;
+  // Nodes with more operands than this keep a BVH over them.
+  static constexpr std::size_t kBvhOperands = 4;
 
   // A chain of the same operation is kept flat: (a - b) - c becomes
   // a - b - c, and a union operand of a union is spliced in, so a script
@@ -35,9 +41,13 @@ class Boolean : public Solid {
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
 
  private:
+  // Operands from this index on are found through the BVH.
+  std::size_t firstInBvh() const { return op_ == Op::Difference ? 1 : 0; }
+
   Op op_;
   std::vector<SolidPtr> operands_;
   Bounds bounds_;
+  Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
 };
 
 SolidPtr unionOf(std::vector<SolidPtr> operands);

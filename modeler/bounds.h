@@ -37,26 +37,24 @@ struct Bounds {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
   }
 
-  // Slab test (Kay and Kajiya 1986): does the ray meet the box within
-  // [ray.tMin, ray.tMax]? Infinite extents and axis-parallel rays are handled
-  // because 0·inf never occurs: a zero direction gives ±inf slab distances.
-  bool hitBy(const Ray& ray) const {
-    double t0 = ray.tMin, t1 = ray.tMax;
+  // Slab test (Kay and Kajiya 1986): where the ray enters the box within
+  // [t0, t1] (t0 itself if it starts inside), or +inf if it misses. A ray
+  // parallel to a slab has 1/dir = ±inf: outside the slab both distances are
+  // infinities of one sign and the test fails; on one of its planes 0·inf
+  // gives NaN, which the comparisons below ignore, so the ray counts as
+  // within that slab. Infinite extents work the same way.
+  double entry(const Ray& ray, double t0, double t1) const {
     for (int a = 0; a < 3; ++a) {
       double near = (lo[a] - ray.origin[a]) * ray.invDir[a];
       double far = (hi[a] - ray.origin[a]) * ray.invDir[a];
-      if (std::isnan(near) || std::isnan(far)) {
-        // Ray parallel to this slab and starting on one of its infinite planes.
-        if (ray.origin[a] < lo[a] || ray.origin[a] > hi[a]) return false;
-        continue;
-      }
       if (near > far) std::swap(near, far);
-      t0 = std::max(t0, near);
-      t1 = std::min(t1, far);
-      if (t0 > t1) return false;
+      t0 = near > t0 ? near : t0;
+      t1 = far < t1 ? far : t1;
     }
-    return true;
+    return t0 <= t1 ? t0 : kInfinity;
   }
+  // Does the ray meet the box within [ray.tMin, ray.tMax]?
+  bool hitBy(const Ray& ray) const { return entry(ray, ray.tMin, ray.tMax) != kInfinity; }
 };
 
 }  // namespace csgray

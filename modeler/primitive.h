@@ -54,7 +54,7 @@ class Primitive : public Solid {
   virtual std::shared_ptr<Primitive> clone() const = 0;
 
   Boundary boundary(double t, int face = 0) const {
-    return Boundary{t, this, static_cast<std::uint8_t>(face), false};
+    return Boundary{t, this, static_cast<decltype(Boundary::face)>(face), false};
   }
 
  private:

@@ -27,8 +27,10 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // World-space box that holds the whole solid (conservative).
   virtual const Bounds& bounds() const = 0;
   // Spans of the ray inside the solid, written to out (cleared first).
-  // Spans lying wholly outside [ray.tMin, ray.tMax] may be left out; the
-  // others are reported whole, not clipped to the window.
+  // They are exact within [ray.tMin, ray.tMax]; outside it a span may be
+  // left out, or end at a boundary other than the solid's (a union whose
+  // operand lies wholly before the window starts its span later), so only
+  // boundaries within the window are answers.
   virtual void spans(const Ray& ray, SpanList& out) const = 0;
   // Is p in the closed point set (up to rounding on the surface)?
   virtual bool contains(const dvec3& p) const = 0;

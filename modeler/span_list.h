@@ -18,8 +18,8 @@ class Primitive;
 struct Boundary {
   double t = 0.0;
   const Primitive* primitive = nullptr;
-  std::uint8_t face = 0;  // primitive-specific face index (box side, cylinder cap, ...)
-  bool flip = false;      // the surface of a subtracted solid faces the other way
+  std::uint32_t face = 0;  // primitive-specific face index (box side, cylinder cap, plane, ...)
+  bool flip = false;       // the surface of a subtracted solid faces the other way
 };
 
 struct Span {
@@ -61,9 +61,14 @@ class SpanList {
  private:
   void grow();
 
-  Span inline_[kInline];
+  // Inline storage left uninitialised: a list is made for every ray and
+  // every boolean node, and only its first size_ spans are ever read.
+  union Storage {
+    Storage() {}
+    Span spans[kInline];
+  } inline_;
   std::unique_ptr<Span[]> heap_;
-  Span* data_ = inline_;
+  Span* data_ = inline_.spans;
   std::uint32_t size_ = 0;
   std::uint32_t capacity_ = kInline;
 };

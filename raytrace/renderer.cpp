@@ -84,6 +84,12 @@ struct Renderer::ShadingPoint {
 
 Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     : scene_(scene),
+      bvh_([&] {
+        std::vector<Bounds> boxes;
+        for (const SolidPtr& s : scene.objects) boxes.push_back(s->bounds());
+        for (const SurfacePtr& s : scene.surfaces) boxes.push_back(s->bounds());
+        return Bvh(boxes);
+      }()),
       options_(options),
       cameraSpec_(cameraFor(scene, options)),
       camera_(cameraSpec_, options.width, options.height),
@@ -107,26 +113,29 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
 std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
   std::optional<SurfaceHit> best;
   SpanList spans;
-  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-    const Solid& object = *scene_.objects[i];
-    if (!object.bounds().hitBy(ray)) continue;
-    object.spans(ray, spans);
+  const std::uint32_t solids = std::uint32_t(scene_.objects.size());
+  double tMax = ray.tMax;
+  bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
+    if (i >= solids) {
+      const Surface& surface = *scene_.surfaces[i - solids];
+      std::optional<double> t = surface.hit(ray);
+      if (t && *t < tMax) best = SurfaceHit{*t, Boundary{}, &surface, -1, true}, tMax = *t;
+      return true;
+    }
     // The first boundary beyond tMin: an entry, or an exit when the ray
-    // starts inside the solid.
+    // starts inside the solid. Nothing beyond the best so far matters.
+    Ray window(ray.origin, ray.dir, ray.tMin, tMax);
+    scene_.objects[i]->spans(window, spans);
     for (const Span& s : spans) {
       bool entering = s.in.t > ray.tMin;
       const Boundary* b = entering ? &s.in : s.out.t > ray.tMin ? &s.out : nullptr;
       if (!b) continue;
-      if (b->primitive && (!best || b->t < best->t))
-        best = SurfaceHit{b->t, *b, nullptr, int(i), entering};
+      if (b->primitive && b->t < tMax)
+        best = SurfaceHit{b->t, *b, nullptr, int(i), entering}, tMax = b->t;
       break;
     }
-  }
-  for (const SurfacePtr& surface : scene_.surfaces) {
-    if (!surface->bounds().hitBy(ray)) continue;
-    std::optional<double> t = surface->hit(ray);
-    if (t && (!best || *t < best->t)) best = SurfaceHit{*t, Boundary{}, surface.get(), -1, true};
-  }
+    return true;
+  });
   return best;
 }
 
@@ -134,24 +143,28 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   Ray ray(from, to - from, 0.0, 1.0);
   dvec3 pass(1.0);
   SpanList spans;
-  for (const SolidPtr& object : scene_.objects) {
-    if (!object->bounds().hitBy(ray)) continue;
-    object->spans(ray, spans);
+  const std::uint32_t solids = std::uint32_t(scene_.objects.size());
+  double tMax = 1.0;
+  // Each stretch inside a transparent solid or surface dims the light;
+  // anything opaque ends the search.
+  auto dim = [&](const Material& m) {
+    pass *= m.transparency * m.filter;
+    return m.transparency > 0.0;
+  };
+  bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
+    if (i >= solids) {
+      const Surface& surface = *scene_.surfaces[i - solids];
+      return !surface.hit(ray) || dim(materialOf(surface.material()));
+    }
+    scene_.objects[i]->spans(ray, spans);
     for (const Span& s : spans) {
       if (s.out.t <= 0.0 || s.in.t >= 1.0) continue;
       // A stretch inside the solid: its material is the one of the face
       // where the light enters it (or leaves, if the segment starts inside).
-      const Material& m = materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
-      if (m.transparency <= 0.0) return dvec3(0.0);
-      pass *= m.transparency * m.filter;
+      if (!dim(materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out))) return false;
     }
-  }
-  for (const SurfacePtr& surface : scene_.surfaces) {
-    if (!surface->bounds().hitBy(ray) || !surface->hit(ray)) continue;
-    const Material& m = materialOf(surface->material());
-    if (m.transparency <= 0.0) return dvec3(0.0);
-    pass *= m.transparency * m.filter;
-  }
+    return true;
+  });
   return pass;
 }
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 
+#include "modeler/bvh.h"
 #include "modeler/scene.h"
 #include "raytrace/camera.h"
 #include "raytrace/image.h"
@@ -95,6 +96,8 @@ class Renderer {
   dvec3 pixel(int x, int y, int samples, Sampler& rng) const;
 
   const Scene& scene_;
+  // Over the objects (items 0 .. n−1) and then the surfaces.
+  Bvh bvh_;
   RenderOptions options_;
   CameraSpec cameraSpec_;
   Camera camera_;

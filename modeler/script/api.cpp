@@ -15,6 +15,7 @@
 #include "modeler/primitives/half_space.h"
 #include "modeler/primitives/quadric.h"
 #include "modeler/primitives/sphere.h"
+#include "modeler/primitives/torus.h"
 #include "modeler/script/lua_args.h"
 #include "modeler/script/lua_values.h"
 #include "modeler/script/sandbox.h"
@@ -159,6 +160,28 @@ int halfSpace(lua_State* L) {
   args.finish();
   if (!normal) throw std::invalid_argument("half_space: needs normal={x, y, z}");
   pushSolid(L, Primitive::create<HalfSpace>(*normal, offset));
+  return 1;
+}
+
+// torus{R=, r=}: about the z axis in the xy plane; R from the axis to the
+// centre of the tube, r the tube's radius. Any R >= 0 is a solid.
+int torus(lua_State* L) {
+  LuaArgs args(L, 1, "torus");
+  std::optional<double> major = args.number("R");
+  std::optional<double> minor = args.number("r");
+  args.finish();
+  if (!major || !minor)
+    throw std::invalid_argument("torus: needs R (major radius) and r (tube radius)");
+  auto check = [](const char* name, double value, bool zeroAllowed) {
+    if (value > 0.0 || (zeroAllowed && value == 0.0)) return;
+    std::ostringstream msg;
+    msg << "torus: " << name << " must be " << (zeroAllowed ? ">= 0" : "> 0") << " (got " << value
+        << ")";
+    throw std::invalid_argument(msg.str());
+  };
+  check("R", *major, true);
+  check("r", *minor, false);
+  pushSolid(L, Primitive::create<Torus>(*major, *minor));
   return 1;
 }
 
@@ -381,12 +404,16 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
       {"cone", guarded<cone>},
       {"half_space", guarded<halfSpace>},
       {"quadric", guarded<quadric>},
+      {"torus", guarded<torus>},
       {"union", guarded<booleanOf<Boolean::Op::Union>>},
       {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
   registerSceneApi(L, transforms);
+  registerQuadricApi(L);
+  registerConvexApi(L);
+  registerMeshApi(L);
 }
 
 }  // namespace csgray

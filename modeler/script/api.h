@@ -18,6 +18,12 @@ const ScriptOptions& scriptOptionsOf(lua_State* L);
 // The part of the API in api_scene.cpp: materials, textures, lights, open
 // surfaces (which take the given transform methods), camera and scene.
 void registerSceneApi(lua_State* L, const luaL_Reg* transformMethods);
+// Shape families, each in its own file: the named quadrics of seed 000's
+// table 17.1 and clip (api_quadrics.cpp), convex polyhedra and the Platonic
+// solids (api_convex.cpp), polyhedra from points and faces (api_mesh.cpp).
+void registerQuadricApi(lua_State* L);
+void registerConvexApi(lua_State* L);
+void registerMeshApi(lua_State* L);
 // s:material{...} on a solid.
 int solidMaterial(lua_State* L);
 

@@ -1,0 +1,121 @@
+// The part of csgray that reads and writes images through OpenImageIO,
+// built as a module that image_plugin.cpp loads only when an image format
+// other than PNG is written, or a texture read: Debian's OpenImageIO pulls
+// in about 260 shared libraries, whose loading would otherwise cost every
+// run ~0.2 s and ~100 MB before any work.
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "io/image_plugin.h"
+#include "io/srgb.h"
+
+namespace csgray {
+
+namespace {
+
+// OIIO's error texts may run over several lines; errors here are one line.
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "unknown error" : text;
+}
+
+bool keepsFloat(const std::string& formatName) {
+  return formatName == "openexr" || formatName == "hdr" || formatName == "pfm";
+}
+
+std::string outputProblem(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    (void)OIIO::geterror();
+    return "unknown image format '" + ext + "'";
+  }
+  return "";
+}
+
+void write(const std::string& tempPath, const std::string& path, int width, int height,
+           const float* rgb, ImageData data) {
+  auto out = OIIO::ImageOutput::create(tempPath);
+  if (!out) throw std::runtime_error("cannot write " + path + ": " + oneLine(OIIO::geterror()));
+  bool linear = keepsFloat(out->format_name());
+  OIIO::ImageSpec spec(width, height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  bool encode = !linear && data == ImageData::LinearColor;
+  spec.attribute("oiio:ColorSpace", encode ? "sRGB" : "linear");
+  std::vector<float> pixels(rgb, rgb + static_cast<size_t>(width) * height * 3);
+  if (encode)
+    for (float& v : pixels) v = encodeSrgb(v);
+  if (!out->open(tempPath, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
+      !out->close()) {
+    std::string why = out->geterror();
+    throw std::runtime_error("cannot write " + path + ": " + (why.empty() ? "write failed" : why));
+  }
+}
+
+TextureImage read(const std::string& path) {
+  auto fail = [&](const std::string& why) {
+    return std::runtime_error("cannot read texture image " + path + ": " + why);
+  };
+  std::error_code error;
+  if (!std::filesystem::exists(path, error) && !error) throw fail("no such file");
+  if (std::filesystem::is_directory(path, error)) throw fail("it is a folder");
+  // Colours as stored: without this, OIIO multiplies them by alpha on
+  // reading (PNG, TIFF, ...), which would darken translucent texels.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) throw fail(oneLine(OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  // Bounded before anything is read, so that a bad or hostile file cannot
+  // ask for gigabytes: 4096 × 4096 RGB floats are 192 MiB.
+  constexpr long kMaxPixels = 4096L * 4096;
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw fail("the image is empty");
+  if (long(spec.width) * spec.height > kMaxPixels)
+    throw fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+               " pixels, more than a texture may have (" + std::to_string(kMaxPixels) + ")");
+  if (spec.depth > 1 || spec.deep) throw fail("volume and deep images are not textures");
+  // Channels 0..2 as RGB, or channel 0 as grey (also for grey + alpha).
+  int channels = spec.nchannels >= 3 ? 3 : 1;
+  bool floatData = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                   spec.format.basetype == OIIO::TypeDesc::HALF ||
+                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+  TextureImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
+  image.rgb.resize(pixels * 3);
+  // Read into the front of the buffer (packed, channels per pixel) and, for
+  // grey, spread from the back so that no value is overwritten before use.
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+    throw fail(oneLine(in->geterror()));
+  in->close();
+  if (channels == 1)
+    for (std::size_t i = pixels; i-- > 0;) {
+      float grey = image.rgb[i];
+      for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = grey;
+    }
+  for (float& v : image.rgb) {
+    // Integer formats hold sRGB code values (as writeImage writes them);
+    // a NaN or infinity in a float file would spread through a render.
+    if (!floatData)
+      v = decodeSrgb(v);
+    else if (!std::isfinite(v))
+      v = 0.0f;
+  }
+  return image;
+}
+
+}  // namespace
+
+}  // namespace csgray
+
+extern "C" __attribute__((visibility("default"))) const csgray::ImagePlugin* csgray_image_plugin() {
+  static const csgray::ImagePlugin plugin{csgray::outputProblem, csgray::write, csgray::read};
+  return &plugin;
+}

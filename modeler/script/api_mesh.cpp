@@ -1,0 +1,111 @@
+// polyhedron{points=..., faces=...}: OpenSCAD's polyhedron, a closed
+// triangle mesh from points and faces (docs/script.md, Polyhedron).
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "modeler/primitives/mesh_solid.h"
+#include "modeler/script/api.h"
+#include "modeler/script/lua_args.h"
+#include "modeler/script/lua_values.h"
+#include "modeler/script/sandbox.h"
+
+namespace csgray {
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) {
+  throw std::invalid_argument("polyhedron: " + message);
+}
+
+// The length of a list, or an error naming what it should have been.
+lua_Unsigned listLength(lua_State* L, int index, const std::string& what,
+                        const std::string& expected) {
+  if (lua_type(L, index) != LUA_TTABLE)
+    refuse(what + " must be " + expected + ", got " + luaL_typename(L, index));
+  return lua_rawlen(L, index);
+}
+
+// points={{x, y, z}, ...}; point i of the script's list is point i − 1 of
+// the faces, as in OpenSCAD.
+std::vector<dvec3> readPoints(lua_State* L, int index) {
+  index = lua_absindex(L, index);
+  lua_Unsigned n = listLength(L, index, "points", "a list of points {{x, y, z}, ...}");
+  std::vector<dvec3> points;
+  points.reserve(n);
+  for (lua_Unsigned i = 0; i < n; ++i) {
+    std::string what = "point " + std::to_string(i);
+    lua_rawgeti(L, index, lua_Integer(i + 1));
+    if (listLength(L, -1, what, "a list of three numbers {x, y, z}") != 3)
+      refuse(what + " must be a list of three numbers {x, y, z}");
+    dvec3 p;
+    for (int k = 0; k < 3; ++k) {
+      lua_rawgeti(L, -1, k + 1);
+      // toNumber refuses NaN and infinities, naming the coordinate.
+      p[k] = toNumber(L, -1, "polyhedron: " + what + ": " + "xyz"[k]);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// faces={{i, j, k, ...}, ...} of point indices from 0.
+std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index) {
+  index = lua_absindex(L, index);
+  lua_Unsigned n =
+      listLength(L, index, "faces", "a list of faces {{i, j, k}, ...} (point indices from 0)");
+  std::vector<std::vector<std::int64_t>> faces(n);
+  for (lua_Unsigned f = 0; f < n; ++f) {
+    std::string what = "face " + std::to_string(f);
+    lua_rawgeti(L, index, lua_Integer(f + 1));
+    lua_Unsigned count = listLength(L, -1, what, "a list of point indices {i, j, k, ...}");
+    faces[f].reserve(count);
+    for (lua_Unsigned k = 0; k < count; ++k) {
+      lua_rawgeti(L, -1, lua_Integer(k + 1));
+      int isInteger = 0;
+      lua_Integer v = lua_tointegerx(L, -1, &isInteger);
+      if (lua_type(L, -1) != LUA_TNUMBER || !isInteger) {
+        std::string value = lua_type(L, -1) == LUA_TNUMBER
+                                ? std::string(lua_tostring(L, -1))
+                                : std::string("a ") + luaL_typename(L, -1);
+        refuse(what + ": " + value + " is not a point index (an integer from 0)");
+      }
+      lua_pop(L, 1);
+      faces[f].push_back(std::int64_t(v));
+    }
+    lua_pop(L, 1);
+  }
+  return faces;
+}
+
+int polyhedron(lua_State* L) {
+  LuaArgs args(L, 1, "polyhedron");
+  if (!args.push("points")) refuse("needs points={{x, y, z}, ...}");
+  std::vector<dvec3> points = readPoints(L, -1);
+  lua_pop(L, 1);
+  if (!args.push("faces"))
+    refuse("needs faces={{i, j, k}, ...} (point indices from 0, clockwise seen from outside)");
+  std::vector<std::vector<std::int64_t>> faces = readFaces(L, -1);
+  lua_pop(L, 1);
+  // OpenSCAD's hint for its preview renderer; rays need none.
+  args.number("convexity");
+  args.finish();
+  auto mesh = Primitive::create<MeshSolid>(points, faces);
+  // The mesh is charged once for the rest of the run, not with the value
+  // returned here: transformed copies share it and may outlive that value,
+  // so refunding it when the value is collected would let a loop keep many
+  // meshes uncharged.
+  Sandbox::of(L).charge(L, mesh->memoryBytes());
+  pushSolid(L, mesh);
+  return 1;
+}
+
+}  // namespace
+
+void registerMeshApi(lua_State* L) { lua_register(L, "polyhedron", guarded<polyhedron>); }
+
+}  // namespace csgray

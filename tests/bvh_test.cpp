@@ -1,0 +1,250 @@
+// The bounding volume hierarchy: it visits exactly the items whose boxes a
+// ray meets, and boolean nodes that traverse it give the same span lists
+// as the plain fold of every operand's spans, on random rays and windows.
+#include "modeler/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "modeler/boolean.h"
+#include "modeler/primitives/box.h"
+#include "modeler/primitives/cylinder.h"
+#include "modeler/primitives/half_space.h"
+#include "modeler/primitives/sphere.h"
+#include "raytrace/renderer.h"
+#include "test_support.h"
+
+namespace csgray {
+namespace {
+
+using test::randomDirection;
+using test::randomPoint;
+
+const Bounds kWorld{dvec3(-10.0), dvec3(10.0)};
+
+std::vector<Bounds> randomBoxes(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> size(0.01, 2.0);
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < n; ++i) {
+    dvec3 lo = randomPoint(rng, kWorld);
+    boxes.push_back({lo, lo + dvec3(size(rng), size(rng), size(rng))});
+  }
+  return boxes;
+}
+
+Ray randomRay(std::mt19937_64& rng) {
+  return Ray(randomPoint(rng, Bounds{dvec3(-15.0), dvec3(15.0)}), randomDirection(rng));
+}
+
+TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesTheRayMeets) {
+  std::mt19937_64 rng(1);
+  for (int n : {1, 2, 3, 7, 64, 1000}) {
+    std::vector<Bounds> boxes = randomBoxes(rng, n);
+    boxes.push_back(Bounds{});              // empty: never visited
+    boxes.push_back(Bounds::everything());  // unbounded: always visited
+    boxes.push_back({dvec3(0, 0, -kInfinity), dvec3(1, 1, kInfinity)});  // unbounded on z
+    Bvh bvh(boxes);
+    for (int r = 0; r < 300; ++r) {
+      Ray ray = randomRay(rng);
+      ray.tMin = r % 3 == 0 ? -kInfinity : 0.0;
+      ray.tMax = r % 5 == 0 ? 12.0 : kInfinity;
+      std::set<std::uint32_t> expected, visited;
+      for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (boxes[i].finite() && boxEntry(boxes[i], ray, ray.tMin, ray.tMax) != kInfinity)
+          expected.insert(i);
+      double tMax = ray.tMax;
+      bvh.traverse(ray, tMax, [&](std::uint32_t item, double) {
+        EXPECT_TRUE(visited.insert(item).second) << "item " << item << " visited twice";
+        return true;
+      });
+      EXPECT_TRUE(visited.count(std::uint32_t(n + 1))) << "the unbounded item is always visited";
+      EXPECT_FALSE(visited.count(std::uint32_t(n))) << "the empty box is never visited";
+      visited.erase(std::uint32_t(n + 1));
+      visited.erase(std::uint32_t(n + 2));
+      ASSERT_EQ(visited, expected) << "n = " << n << ", ray " << r;
+    }
+  }
+}
+
+TEST(Bvh, PruningByTMaxFindsTheNearestBox) {
+  std::mt19937_64 rng(2);
+  std::vector<Bounds> boxes = randomBoxes(rng, 500);
+  Bvh bvh(boxes);
+  for (int r = 0; r < 500; ++r) {
+    Ray ray = randomRay(rng);
+    double nearest = kInfinity;
+    for (const Bounds& b : boxes) nearest = std::min(nearest, boxEntry(b, ray, 0.0, kInfinity));
+    double tMax = kInfinity, found = kInfinity;
+    bvh.traverse(ray, tMax, [&](std::uint32_t item, double) {
+      double t = boxEntry(boxes[item], ray, 0.0, tMax);
+      EXPECT_LE(t, tMax);
+      found = std::min(found, t);
+      tMax = found;  // like a first-hit query: nothing beyond the best
+      return true;
+    });
+    ASSERT_EQ(found, nearest) << "ray " << r;
+  }
+}
+
+TEST(Bvh, IdenticalCentresStillMakeSmallLeaves) {
+  // SAH cannot split boxes with one centre; the build halves them anyway.
+  std::vector<Bounds> boxes(1000, Bounds{dvec3(0.0), dvec3(1.0)});
+  Bvh bvh(boxes);
+  int visited = 0;
+  double tMax = kInfinity;
+  bvh.traverse(Ray(dvec3(0.5, 0.5, -5), dvec3(0, 0, 1)), tMax, [&](std::uint32_t, double) {
+    ++visited;
+    return true;
+  });
+  EXPECT_EQ(visited, 1000);
+  EXPECT_GT(bvh.memoryBytes(), 1000 * sizeof(Bounds));
+}
+
+// Random solids: spheres, boxes, cylinders, and now and then a half-space.
+std::vector<SolidPtr> randomSolids(std::mt19937_64& rng, int n, bool withHalfSpaces) {
+  std::uniform_real_distribution<double> u(0.2, 1.5);
+  std::vector<SolidPtr> solids;
+  for (int i = 0; i < n; ++i) {
+    Affine at = Affine::translation(randomPoint(rng, Bounds{dvec3(-8.0), dvec3(8.0)}));
+    switch (i % 3) {
+      case 0:
+        solids.push_back(Primitive::create<Sphere>(u(rng))->transformed(at));
+        break;
+      case 1:
+        solids.push_back(Primitive::create<Box>(dvec3(u(rng), u(rng), u(rng)))->transformed(at));
+        break;
+      default:
+        solids.push_back(Primitive::create<Cylinder>(u(rng), u(rng), u(rng))->transformed(at));
+    }
+    if (withHalfSpaces && i % 50 == 25)
+      solids.push_back(Primitive::create<HalfSpace>(randomDirection(rng), u(rng)));
+  }
+  return solids;
+}
+
+// The plain fold over every operand, without boxes, BVH or windows.
+SpanList referenceSpans(Boolean::Op op, const std::vector<SolidPtr>& operands, const Ray& line) {
+  SpanList out, operand, merged;
+  operands[0]->spans(line, out);
+  for (std::size_t i = 1; i < operands.size(); ++i) {
+    operands[i]->spans(line, operand);
+    if (op == Boolean::Op::Union) unite(out, operand, merged);
+    if (op == Boolean::Op::Difference) subtract(out, operand, merged);
+    if (op == Boolean::Op::Intersection) intersect(out, operand, merged);
+    out = merged;
+  }
+  return out;
+}
+
+// Within [t0, t1] the two span lists are the same: the same stretches, and
+// the same boundaries (t, primitive, flip) wherever a boundary lies inside
+// the window. (Outside a window a span may end elsewhere: see solid.h.)
+void expectSameWithin(const SpanList& actual, const SpanList& expected, double t0, double t1) {
+  auto clipped = [&](const SpanList& list) {
+    std::vector<Span> kept;
+    for (Span s : list) {
+      if (s.out.t < t0 || s.in.t > t1) continue;
+      if (s.in.t < t0) s.in = Boundary{t0};
+      if (s.out.t > t1) s.out = Boundary{t1};
+      kept.push_back(s);
+    }
+    return kept;
+  };
+  std::vector<Span> a = clipped(actual), e = clipped(expected);
+  ASSERT_EQ(a.size(), e.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (auto [x, y] : {std::pair{a[i].in, e[i].in}, std::pair{a[i].out, e[i].out}}) {
+      EXPECT_EQ(x.t, y.t);
+      EXPECT_EQ(x.primitive, y.primitive);
+      EXPECT_EQ(x.flip, y.flip);
+    }
+  }
+}
+
+TEST(BooleanBvh, SpansEqualThePlainFoldOnRandomRays) {
+  std::mt19937_64 rng(3);
+  for (Boolean::Op op : {Boolean::Op::Union, Boolean::Op::Difference}) {
+    for (int n : {3, 6, 40, 400}) {
+      std::vector<SolidPtr> operands = randomSolids(rng, n, op == Boolean::Op::Union);
+      if (op == Boolean::Op::Difference)  // a big first operand, many cutters
+        operands.insert(
+            operands.begin(),
+            Primitive::create<Box>(dvec3(14.0))->transformed(Affine::translation(dvec3(-7.0))));
+      Boolean node(op, operands);
+      for (int r = 0; r < 400; ++r) {
+        Ray ray = randomRay(rng);
+        Ray line(ray.origin, ray.dir, -kInfinity, kInfinity);
+        SpanList expected = referenceSpans(op, operands, line);
+        // The whole line, and a window that starts or ends inside solids.
+        SpanList actual;
+        node.spans(line, actual);
+        ASSERT_TRUE(actual.valid());
+        expectSameWithin(actual, expected, -kInfinity, kInfinity);
+        Ray window(ray.origin, ray.dir, 3.0, 15.0);
+        node.spans(window, actual);
+        ASSERT_TRUE(actual.valid());
+        expectSameWithin(actual, expected, 3.0, 15.0);
+        if (::testing::Test::HasFailure())
+          FAIL() << "op " << int(op) << ", n = " << n << ", ray " << r;
+      }
+    }
+  }
+}
+
+TEST(BooleanBvh, IntersectionWindowsEqualThePlainFold) {
+  std::mt19937_64 rng(4);
+  std::vector<SolidPtr> operands;
+  for (int i = 0; i < 8; ++i)
+    operands.push_back(Primitive::create<Sphere>(6.0)->transformed(
+        Affine::translation(randomPoint(rng, Bounds{dvec3(-1.5), dvec3(1.5)}))));
+  Boolean node(Boolean::Op::Intersection, operands);
+  for (int r = 0; r < 1000; ++r) {
+    Ray ray = randomRay(rng);
+    Ray line(ray.origin, ray.dir, -kInfinity, kInfinity);
+    SpanList actual;
+    node.spans(line, actual);
+    expectSameWithin(actual, referenceSpans(Boolean::Op::Intersection, operands, line), -kInfinity,
+                     kInfinity);
+  }
+}
+
+// The renderer's BVH over the scene's objects finds the nearest surface
+// that testing every object finds.
+TEST(SceneBvh, FirstHitIsTheNearestOfAllObjects) {
+  std::mt19937_64 rng(5);
+  Scene scene;
+  scene.objects = randomSolids(rng, 300, false);
+  scene.surfaces.push_back(Surface::plane(dvec3(0, 0, -9), dvec3(0, 0, 1)));
+  scene.camera = CameraSpec{dvec3(0, -30, 0), dvec3(0), dvec3(0, 0, 1), 45.0};
+  Renderer renderer(scene, {16, 16, 1});
+  for (int r = 0; r < 2000; ++r) {
+    Ray ray = randomRay(rng);
+    double nearest = kInfinity;
+    for (const SolidPtr& s : scene.objects) {
+      SpanList spans;
+      s->spans(ray, spans);
+      for (const Span& span : spans) {
+        double t = span.in.t > ray.tMin ? span.in.t : span.out.t;
+        if (t > ray.tMin) {
+          nearest = std::min(nearest, t);
+          break;
+        }
+      }
+    }
+    if (std::optional<double> t = scene.surfaces[0]->hit(ray)) nearest = std::min(nearest, *t);
+    std::optional<SurfaceHit> hit = renderer.firstHit(ray);
+    if (nearest == kInfinity) {
+      EXPECT_FALSE(hit) << "ray " << r;
+    } else {
+      ASSERT_TRUE(hit) << "ray " << r;
+      EXPECT_EQ(hit->t, nearest) << "ray " << r;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace csgray
