@@ -16,7 +16,7 @@ end
 local plate = box{size={100, 100, 10}}
 local part = difference(union(plate, union(spheres)), union(holes))
 return scene{
-  objects = {part:material{color={0.8, 0.6, 0.3}}},
+  objects = {part:material{color={0.8, 0.6, 0.3}, specular=0.4, shininess=30}},
   camera = camera{eye={50, -90, 110}, look_at={50, 50, 0}, up={0, 0, 1}, fov=45},
   lights = {point_light{pos={150, -100, 200}, intensity=1},
             point_light{pos={-50, -50, 150}, intensity=0.5}},

@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   std::string script, output, size = "800x600";
   std::vector<std::string> defineItems;
   int threads = 0, samples = 1;
-  bool adaptive = false;
+  bool adaptive = false, stats = false;
   std::vector<std::string> aovs;
   double scriptTimeout = 60.0;
 
@@ -158,6 +158,8 @@ int main(int argc, char** argv) {
   render->add_option("--samples", samples, "Rays per pixel, jittered (antialiasing)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  render->add_flag("--stats", stats,
+                   "Print the time of each stage and the rays traced per second to stderr");
   render->add_flag("--adaptive", adaptive,
                    "Spend the --samples only on pixels at edges; others get one ray");
   render
@@ -220,6 +222,8 @@ int main(int argc, char** argv) {
       std::optional<ImagePluginPreload> preload;
       if (!endsWithPng(output)) preload.emplace();
       Scene scene = runScript();
+      using Clock = std::chrono::steady_clock;
+      Clock::time_point scripted = Clock::now(), built, traced;
       RenderResult result = [&] {
         ProgressBar bar("rendering");
         RenderOptions options;
@@ -232,7 +236,11 @@ int main(int argc, char** argv) {
         options.normalAov = normalAov;
         options.progress = [&bar](double done) { bar.update(done); };
         try {
-          return Renderer(scene, options).renderAll();
+          Renderer renderer(scene, options);
+          built = Clock::now();
+          RenderResult r = renderer.renderAll();
+          traced = Clock::now();
+          return r;
         } catch (const std::invalid_argument& e) {  // e.g. nothing to frame
           throw std::runtime_error(script + ": " + e.what());
         }
@@ -241,7 +249,23 @@ int main(int argc, char** argv) {
       if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false);
       const Image& image = result.color;
       writeImage(output, image.width, image.height, image.rgb.data());
-      std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+      if (stats) {
+        auto secs = [](Clock::time_point a, Clock::time_point b) {
+          return std::chrono::duration<double>(b - a).count();
+        };
+        double trace = secs(built, traced);
+        const RayCounts& rays = result.rays;
+        std::fprintf(stderr,
+                     "csgray: stages: script %.3f s, build %.3f s, trace %.3f s, write %.3f s\n"
+                     "csgray: rays: %llu primary (%.2f M/s), %llu shadow (%.2f M/s), %llu "
+                     "secondary; %.2f M rays/s in all\n",
+                     secs(start, scripted), secs(scripted, built), trace,
+                     secs(traced, Clock::now()), (unsigned long long)rays.primary,
+                     rays.primary / trace * 1e-6, (unsigned long long)rays.shadow,
+                     rays.shadow / trace * 1e-6, (unsigned long long)rays.secondary,
+                     (rays.primary + rays.shadow + rays.secondary) / trace * 1e-6);
+      }
+      std::chrono::duration<double> seconds = Clock::now() - start;
       std::printf("csgray: wrote %s (%dx%d) in %.2f s\n", output.c_str(), width, height,
                   seconds.count());
     } else if (*info) {

@@ -35,10 +35,11 @@ class Affine {
 
   dvec3 pointToObject(const dvec3& p) const { return dvec3(objectFromWorld_ * glm::dvec4(p, 1.0)); }
   dvec3 pointToWorld(const dvec3& p) const { return dvec3(worldFromObject_ * glm::dvec4(p, 1.0)); }
-  // A ray in the object frame with the same parameter t: dir is not renormalised.
+  // A ray in the object frame with the same parameter t: dir is not
+  // renormalised, and 1/dir is not computed (Ray::withoutInverse).
   Ray rayToObject(const Ray& r) const {
-    return Ray(pointToObject(r.origin), dvec3(objectFromWorld_ * glm::dvec4(r.dir, 0.0)), r.tMin,
-               r.tMax);
+    return Ray::withoutInverse(pointToObject(r.origin),
+                               dvec3(objectFromWorld_ * glm::dvec4(r.dir, 0.0)), r.tMin, r.tMax);
   }
   // Object-frame normal (any length) to a unit world-frame normal.
   dvec3 normalToWorld(const dvec3& n) const;

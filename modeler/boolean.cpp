@@ -50,13 +50,23 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
       bounds_ = operands_[0]->bounds();
       break;
   }
-  if (op_ != Op::Intersection && operands_.size() - firstInBvh() > kBvhOperands) {
+}
+
+const Bvh& Boolean::bvh() const {
+  std::call_once(bvhBuilt_, [this] {
+    if (op_ == Op::Intersection || operands_.size() - firstInBvh() <= kBvhOperands) return;
     std::vector<Bounds> boxes;
     boxes.reserve(operands_.size() - firstInBvh());
     for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
       boxes.push_back(operands_[i]->bounds());
     bvh_ = Bvh(boxes);
-  }
+  });
+  return bvh_;
+}
+
+void Boolean::prepare() const {
+  bvh();
+  for (const SolidPtr& s : operands_) s->prepare();
 }
 
 std::string Boolean::kind() const {
@@ -106,12 +116,12 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
       s.spans(r, operand);
       if (!operand.empty()) fold(operand);
     };
-    if (bvh_.empty()) {
+    if (const Bvh& tree = bvh(); tree.empty()) {
       for (const SolidPtr& s : operands_)
         if (s->bounds().hitBy(ray)) add(*s, ray);
     } else {
       double tMax = ray.tMax;
-      bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
+      tree.traverse(ray, tMax, [&](std::uint32_t i, double) {
         add(*operands_[i], ray);
         return true;
       });
@@ -154,11 +164,11 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
     if (!operand.empty()) fold(operand);
     return narrow();
   };
-  if (bvh_.empty()) {
+  if (const Bvh& tree = bvh(); tree.empty()) {
     for (std::size_t i = 1; i < operands_.size(); ++i)
       if (operands_[i]->bounds().hitBy(window) && !cut(*operands_[i])) break;
   } else {
-    bvh_.traverse(window, window.tMax,
+    tree.traverse(window, window.tMax,
                   [&](std::uint32_t i, double) { return cut(*operands_[i + 1]); });
   }
   finish();

@@ -7,6 +7,7 @@
 // about the stretch of the ray where the first has spans.
 #pragma once
 
+#include <mutex>
 #include <vector>
 
 #include "modeler/bvh.h"
@@ -39,6 +40,7 @@ class Boolean : public Solid {
   std::span<const SolidPtr> children() const override { return operands_; }
   std::string kind() const override;
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+  void prepare() const override;
 
  private:
   // Operands from this index on are found through the BVH.
@@ -47,7 +49,11 @@ class Boolean : public Solid {
   Op op_;
   std::vector<SolidPtr> operands_;
   Bounds bounds_;
-  Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
+  // Built on first use (or by prepare), so that the intermediate nodes of a
+  // script that adds operands one at a time never build one.
+  const Bvh& bvh() const;
+  mutable std::once_flag bvhBuilt_;
+  mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
 };
 
 SolidPtr unionOf(std::vector<SolidPtr> operands);

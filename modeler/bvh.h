@@ -33,8 +33,8 @@ class Bvh {
   }
 
   // Calls visit(item, tEnter) for every item whose box the ray meets within
-  // [ray.tMin, tMax], nearer boxes first (unbounded items first of all,
-  // with tEnter = ray.tMin). visit may lower tMax to prune boxes beyond it,
+  // [ray.tMin, tMax], depth first with the nearer child first (unbounded
+  // items first of all, with tEnter = ray.tMin). visit may lower tMax to prune boxes beyond it,
   // and returns false to stop the traversal. No allocation.
   template <class Visit>
   void traverse(const Ray& ray, double& tMax, Visit&& visit) const;
@@ -60,14 +60,16 @@ template <class Visit>
 void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
   for (std::uint32_t item : unbounded_)
     if (!visit(item, ray.tMin)) return;
-  if (nodes_.empty() || boxEntry(nodes_[0].box, ray, ray.tMin, tMax) == kInfinity) return;
+  if (nodes_.empty()) return;
+  double rootEntry = boxEntry(nodes_[0].box, ray, ray.tMin, tMax);
+  if (rootEntry == kInfinity) return;
   struct Entry {
     std::uint32_t node;
     double t;
   };
   Entry stack[kMaxDepth * 2];
   int top = 0;
-  stack[top++] = {0, ray.tMin};
+  stack[top++] = {0, rootEntry};
   while (top > 0) {
     Entry e = stack[--top];
     if (e.t > tMax) continue;  // pruned since it was pushed

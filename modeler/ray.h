@@ -23,6 +23,19 @@ struct Ray {
   Ray(const dvec3& o, const dvec3& d, double t0 = 0.0, double t1 = kInfinity)
       : origin(o), dir(d), invDir(1.0 / d.x, 1.0 / d.y, 1.0 / d.z), tMin(t0), tMax(t1) {}
 
+  // A ray without 1/dir (NaN), for the object-space rays of primitives,
+  // which need no slab test: three divisions saved per primitive per ray.
+  // A box test against it counts every box as hit.
+  static Ray withoutInverse(const dvec3& o, const dvec3& d, double t0, double t1) {
+    Ray r;
+    r.origin = o;
+    r.dir = d;
+    r.invDir = dvec3(std::numeric_limits<double>::quiet_NaN());
+    r.tMin = t0;
+    r.tMax = t1;
+    return r;
+  }
+
   dvec3 at(double t) const { return origin + t * dir; }
 };
 

@@ -35,6 +35,10 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // Is p in the closed point set (up to rounding on the surface)?
   virtual bool contains(const dvec3& p) const = 0;
 
+  // Builds what spans() would otherwise build on first use (a boolean
+  // node's BVH), so that a renderer can do it before its threads start.
+  virtual void prepare() const {}
+
   // Operands of a boolean node; none for a primitive.
   virtual std::span<const SolidPtr> children() const { return {}; }
   // A short description: "sphere", "union", ...

@@ -15,6 +15,12 @@
 
 namespace csgray {
 
+// What one pixel's rays share: their random numbers and the ray counts.
+struct TraceContext {
+  Sampler rng;
+  RayCounts counts{};
+};
+
 namespace {
 
 const Material kDefaultMaterial;
@@ -95,6 +101,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       camera_(cameraSpec_, options.width, options.height),
       lights_(scene.lights) {
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
+  for (const SolidPtr& s : scene.objects) s->prepare();
   scale_ = sceneScale(scene, cameraSpec_);
   // A camera inside a solid looks out of it: the solid's index holds
   // until its rays leave it. The boundary where the view ray leaves tells
@@ -168,7 +175,7 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   return pass;
 }
 
-dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rng) const {
+dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const {
   const Material& m = *sp.material;
   // Start shadow rays just off the surface: far above the rounding of a hit
   // point (~1e-16 relative), far below any feature a part could have.
@@ -178,13 +185,14 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rn
   dvec3 color = m.ambient * sp.color;
   for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {
-      double u = rng.next(), v = rng.next();
+      double u = ctx.rng.next(), v = ctx.rng.next();
       dvec3 s = light.samplePoint(i, u, v, sp.point);
       dvec3 l = glm::normalize(s - sp.point);
       double cosAlpha = glm::dot(sp.normal, l);
       if (cosAlpha <= 0.0) continue;
       dvec3 radiance = light.radianceAt(sp.point, s);
       if (largest(radiance) <= 0.0) continue;
+      ++ctx.counts.shadow;
       dvec3 pass = transmittance(origin, s);
       if (largest(pass) <= 0.0) continue;
       double highlight = 0.0;
@@ -199,12 +207,13 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rn
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {
-  Sampler rng(0, 0);
-  return trace(ray, 0, 1.0, cameraMedia_, rng);
+  TraceContext ctx{Sampler(0, 0)};
+  return trace(ray, 0, 1.0, cameraMedia_, ctx);
 }
 
 dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& media,
-                      Sampler& rng) const {
+                      TraceContext& ctx) const {
+  ++(depth == 0 ? ctx.counts.primary : ctx.counts.secondary);
   std::optional<SurfaceHit> hit = firstHit(ray);
   if (!hit) return scene_.background;
 
@@ -243,7 +252,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   double kr = leaving ? 0.0 : m.reflection;
   double kt = leaving ? 1.0 : m.transparency;
   dvec3 tint = leaving ? dvec3(1.0) : m.filter;
-  dvec3 color = leaving ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, rng);
+  dvec3 color = leaving ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, ctx);
 
   std::optional<dvec3> through = ray.dir;
   if (kt > 0.0 && n1 != n2) {
@@ -262,26 +271,26 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   bool deeper = depth < scene_.limits.maxDepth;
   if (kr > 0.0 && deeper && weight * kr >= scene_.limits.minWeight) {
     Ray mirrored(sp.point + offset * sp.normal, reflect(ray.dir, sp.normal));
-    color += kr * trace(mirrored, depth + 1, weight * kr, media, rng);
+    color += kr * trace(mirrored, depth + 1, weight * kr, media, ctx);
   }
   double kTinted = kt * largest(tint);
   if (kt > 0.0 && deeper && weight * kTinted >= scene_.limits.minWeight) {
     Ray onward(sp.point - offset * sp.normal, *through);
-    color += kt * tint * trace(onward, depth + 1, weight * kTinted, beyond, rng);
+    color += kt * tint * trace(onward, depth + 1, weight * kTinted, beyond, ctx);
   }
   return color;
 }
 
-dvec3 Renderer::pixel(int x, int y, int samples, Sampler& rng) const {
-  if (samples <= 1) return trace(camera_.ray(x + 0.5, y + 0.5), 0, 1.0, cameraMedia_, rng);
+dvec3 Renderer::pixel(int x, int y, int samples, TraceContext& ctx) const {
+  if (samples <= 1) return trace(camera_.ray(x + 0.5, y + 0.5), 0, 1.0, cameraMedia_, ctx);
   // Jittered supersampling: one random point in each cell of a k × k grid
   // over the pixel; samples beyond k² fall anywhere in it.
   int k = int(std::sqrt(double(samples)));
   dvec3 sum(0.0);
   for (int i = 0; i < samples; ++i) {
-    double u = rng.next(), v = rng.next();
+    double u = ctx.rng.next(), v = ctx.rng.next();
     if (i < k * k) u = (i % k + u) / k, v = (i / k + v) / k;
-    sum += trace(camera_.ray(x + u, y + v), 0, 1.0, cameraMedia_, rng);
+    sum += trace(camera_.ray(x + u, y + v), 0, 1.0, cameraMedia_, ctx);
   }
   return sum / double(samples);
 }
@@ -295,11 +304,18 @@ RenderResult Renderer::renderAll() const {
   bool refine = options_.adaptive && options_.samples > 1;
   const double rows = double(h) * (refine ? 2 : 1);
   std::atomic<int> rowsDone = 0;
+  std::atomic<std::uint64_t> primary = 0, shadow = 0, secondary = 0;
 
+  // Runs work(x, y, counts) for every pixel, tiles in parallel; the rays a
+  // tile traced are added up once per tile.
   auto forEachTile = [&](auto&& work) {
     auto tile = [&](const tbb::blocked_range2d<int>& r) {
+      RayCounts counts;
       for (int y = r.rows().begin(); y < r.rows().end(); ++y)
-        for (int x = r.cols().begin(); x < r.cols().end(); ++x) work(x, y);
+        for (int x = r.cols().begin(); x < r.cols().end(); ++x) work(x, y, counts);
+      primary += counts.primary;
+      shadow += counts.shadow;
+      secondary += counts.secondary;
       if (options_.progress) {
         // Count a tile's rows in proportion to its width.
         int done = rowsDone.fetch_add(int(r.rows().size()) * int(r.cols().size()));
@@ -315,9 +331,15 @@ RenderResult Renderer::renderAll() const {
     }
   };
 
-  forEachTile([&](int x, int y) {
-    Sampler rng(x, y);
-    result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, rng));
+  auto add = [](RayCounts& sum, const RayCounts& more) {
+    sum.primary += more.primary;
+    sum.shadow += more.shadow;
+    sum.secondary += more.secondary;
+  };
+  forEachTile([&](int x, int y, RayCounts& counts) {
+    TraceContext ctx{Sampler(x, y)};
+    result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, ctx));
+    add(counts, ctx.counts);
     if (!options_.depthAov && !options_.normalAov) return;
     Ray ray = camera_.ray(x + 0.5, y + 0.5);
     std::optional<SurfaceHit> hit = firstHit(ray);
@@ -348,12 +370,14 @@ RenderResult Renderer::renderAll() const {
         }
       return false;
     };
-    forEachTile([&](int x, int y) {
+    forEachTile([&](int x, int y, RayCounts& counts) {
       if (!differs(x, y)) return;
-      Sampler rng(x, y, 1);
-      result.color.set(x, y, pixel(x, y, options_.samples, rng));
+      TraceContext ctx{Sampler(x, y, 1)};
+      result.color.set(x, y, pixel(x, y, options_.samples, ctx));
+      add(counts, ctx.counts);
     });
   }
+  result.rays = RayCounts{primary, shadow, secondary};
   return result;
 }
 

@@ -5,6 +5,7 @@
 // ray, traced the same way up to a depth and weight limit.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -15,7 +16,8 @@
 
 namespace csgray {
 class Sampler;
-}
+struct TraceContext;
+}  // namespace csgray
 
 namespace csgray {
 
@@ -43,8 +45,15 @@ struct RenderOptions {
 // is the distance from the eye along the view direction to the surface a
 // pixel's centre ray meets first (+inf where it meets nothing); normal the
 // unit normal there, facing the eye (0 where it meets nothing).
+// How many rays a render traced: through pixels, to lights, and mirrored or
+// refracted.
+struct RayCounts {
+  std::uint64_t primary = 0, shadow = 0, secondary = 0;
+};
+
 struct RenderResult {
   Image color, depth, normal;
+  RayCounts rays;
 };
 
 // A ray's first surface: a boundary of a solid's spans, or an open surface.
@@ -91,9 +100,10 @@ class Renderer {
 
  private:
   struct ShadingPoint;
-  dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, Sampler& rng) const;
-  dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, Sampler& rng) const;
-  dvec3 pixel(int x, int y, int samples, Sampler& rng) const;
+  dvec3 trace(const Ray& ray, int depth, double weight, const Media& media,
+              TraceContext& ctx) const;
+  dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
+  dvec3 pixel(int x, int y, int samples, TraceContext& ctx) const;
 
   const Scene& scene_;
   // Over the objects (items 0 .. n−1) and then the surfaces.

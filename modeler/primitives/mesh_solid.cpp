@@ -164,6 +164,14 @@ constexpr double kSameT = 1e-10;
 // perturbation makes them correct anyway).
 const dvec3 kProbeDirection = glm::normalize(dvec3(0.2718281828, 0.3141592654, 0.8660254038));
 
+// A ray the crossing test can take: finite, with a direction.
+bool usable(const Ray& ray) {
+  auto finite = [](const dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
+  return finite(ray.origin) && finite(ray.dir) && ray.dir != dvec3(0.0);
+}
+
 struct Crossing {
   double t;
   std::uint32_t triangle;
@@ -289,11 +297,17 @@ void checkEdges(const std::vector<std::vector<std::uint32_t>>& faces) {
       std::size_t count = e - g;
       std::string bad;
       if (count > 2) {
+        std::string list;
+        std::size_t shown = std::min<std::size_t>(count, 6);
+        for (std::size_t k = 0; k < shown; ++k)
+          list += (k == 0                             ? ""
+                   : k + 1 == shown && shown == count ? " and "
+                                                      : ", ") +
+                  std::to_string(uses[g + k].face);
+        if (shown < count) list += ", ...";
         bad = "non-manifold edge " + std::to_string(lo) + "–" + std::to_string(hi) +
-              ": it is used by " + std::to_string(count) + " faces (faces " +
-              std::to_string(uses[g].face) + ", " + std::to_string(uses[g + 1].face) + " and " +
-              std::to_string(uses[g + 2].face) + (count > 3 ? ", ...)" : ")") +
-              "; every edge must join exactly two faces";
+              ": it is used by " + std::to_string(count) + " faces (faces " + list +
+              "); every edge must join exactly two faces";
       } else if (count == 2 && uses[g].forward == uses[g + 1].forward) {
         bad = "inconsistent orientation: edge " + name(first.forward) +
               " is used twice in the same direction (faces " + std::to_string(uses[g].face) +
@@ -494,15 +508,18 @@ std::size_t MeshSolid::memoryBytes() const {
 }
 
 void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
-  if (ray.dir == dvec3(0.0)) return;
-  // All crossings of the whole line, so that spans that begin before tMin
-  // or end after tMax are reported whole. Reused per thread: no allocation
-  // per ray once it has grown to the mesh's depth complexity.
+  // (A NaN would also break the sort below.)
+  if (!usable(ray)) return;
+  // Spans need only be exact within the window (solid.h). A line leaves
+  // the closed mesh as often as it enters it, so the winding number at
+  // tMin is minus the sum of the crossings from tMin on: the line before
+  // the window is never traversed. The scratch list is reused per thread:
+  // no allocation per ray once it has grown to the mesh's depth complexity.
   thread_local std::vector<Crossing> crossings;
   crossings.clear();
-  Ray line(ray.origin, ray.dir, -kInfinity, kInfinity);
-  mesh_->forEachCrossing(line, [&](std::uint32_t tri, double t, int sign) {
-    crossings.push_back({t, tri, sign});
+  Ray half(ray.origin, ray.dir, ray.tMin, kInfinity);
+  mesh_->forEachCrossing(half, [&](std::uint32_t tri, double t, int sign) {
+    if (t >= ray.tMin) crossings.push_back({t, tri, sign});
   });
   if (crossings.empty()) return;
   std::sort(crossings.begin(), crossings.end(),
@@ -513,8 +530,11 @@ void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
   // nothing and spans stay disjoint with in < out.
   auto boundary = [&](const Crossing& c) { return Boundary{c.t, this, c.triangle, false}; };
   int winding = 0;
-  bool inside = false;
-  Boundary start;
+  for (const Crossing& c : crossings) winding -= c.sign;
+  bool inside = winding > 0;
+  // Inside at tMin: the span began before the window, where it is not an
+  // answer; it is reported from −∞, as for an unbounded solid.
+  Boundary start{-kInfinity, nullptr, 0, false};
   for (std::size_t i = 0; i < crossings.size();) {
     double last = crossings[i].t + kSameT * std::abs(crossings[i].t);
     const Crossing *entry = nullptr, *exit = nullptr;
@@ -527,10 +547,10 @@ void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
     bool now = winding > 0;
     if (now == inside) continue;
     if (now) {
+      if (entry->t > ray.tMax) break;  // the rest is beyond the window
       start = boundary(*entry);
     } else {
-      Boundary end = boundary(*exit);
-      if (end.t >= ray.tMin && start.t <= ray.tMax) out.push_back(start, end);
+      out.push_back(start, boundary(*exit));
     }
     inside = now;
   }
@@ -541,6 +561,7 @@ void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
 bool MeshSolid::objectContains(const dvec3& p) const {
   // The winding number at p: crossings of a ray from p, each exit counting
   // +1 and each entry −1 (Jordan's theorem, with orientation).
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
   int winding = 0;
   Ray probe(p, kProbeDirection, 0.0, kInfinity);
   mesh_->forEachCrossing(probe, [&](std::uint32_t, double t, int sign) {

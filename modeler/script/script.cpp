@@ -89,11 +89,13 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
     throw ScriptError(path + ": is a folder, not a script");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw ScriptError(path + ": cannot open script: " + std::strerror(errno));
-  // Read at most kMaxScriptBytes + 1 bytes: /dev/zero is not a script.
-  std::string text(kMaxScriptBytes + 1, '\0');
-  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  // Read at most kMaxScriptBytes + 1 bytes, a block at a time (a script is
+  // usually a few kilobytes): /dev/zero is not a script.
+  std::string text;
+  char block[1 << 16];
+  while (text.size() <= kMaxScriptBytes && file.read(block, sizeof block).gcount() > 0)
+    text.append(block, static_cast<std::size_t>(file.gcount()));
   if (file.bad()) throw ScriptError(path + ": cannot read script");
-  text.resize(static_cast<std::size_t>(file.gcount()));
   if (text.size() > kMaxScriptBytes)
     throw ScriptError(path + ": script is larger than " + std::to_string(kMaxScriptBytes >> 20) +
                       " MiB");
