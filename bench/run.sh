@@ -1,25 +1,51 @@
 #!/usr/bin/env bash
 # Benchmarks: render plate(N) (bench/plate.lua) at 1024x768 on one and on
-# all threads; print a Markdown table of wall time and peak memory, with
-# the machine and date, for docs/performance.md. Wall time includes start-up
-# and the script, as a user sees it. Compare ratios within one run: the
-# machines are shared and noisy.
+# all threads; print Markdown tables of wall time, peak memory, the stages
+# (script, build, trace, write) and rays per second, with the machine and
+# date, for docs/performance.md. Wall time includes start-up and the script,
+# as a user sees it. Compare ratios within one run: the machines are shared
+# and noisy, so each figure is the best of RUNS runs (default 3).
 set -euo pipefail
 csgray=${1:-build/cli/csgray}
 sizes=${SIZES:-"8 16 32 64"}
+runs=${RUNS:-3}
+threads_all=$(nproc)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u +%Y-%m-%d)"
 echo
-echo "| scene | threads | wall time (s) | peak memory (MB) |"
-echo "|---|---:|---:|---:|"
+echo "| scene | threads | wall (s) | peak memory (MB) | script (s) | build (s) | trace (s) | write (s) | primary rays/s | shadow rays/s |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+declare -A wall
 for n in $sizes; do
-  for threads in 1 $(nproc); do
-    /usr/bin/time -f "%e %M" -o "$out/time" \
-      "$csgray" render bench/plate.lua -D n="$n" -o "$out/plate.png" --size 1024x768 \
-      --threads "$threads" >/dev/null
-    read -r seconds kilobytes <"$out/time"
-    printf '| plate(%s) | %s | %s | %d |\n' "$n" "$threads" "$seconds" $((kilobytes / 1024))
+  for threads in 1 "$threads_all"; do
+    best=""
+    for ((r = 0; r < runs; r++)); do
+      /usr/bin/time -f "%e %M" -o "$out/time" \
+        "$csgray" render bench/plate.lua -D n="$n" -o "$out/plate.png" --size 1024x768 \
+        --threads "$threads" --stats >/dev/null 2>"$out/stats"
+      read -r seconds kilobytes <"$out/time"
+      if [ -z "$best" ] || awk -v a="$seconds" -v b="$best" 'BEGIN {exit !(a < b)}'; then
+        best=$seconds
+        stages=$(sed -n 's/.*script \([0-9.]*\) s, build \([0-9.]*\) s, trace \([0-9.]*\) s, write \([0-9.]*\) s/\1 \2 \3 \4/p' "$out/stats")
+        rates=$(sed -n 's/.*primary (\([0-9.]*\) M\/s).*shadow (\([0-9.]*\) M\/s).*/\1 \2/p' "$out/stats")
+        memory=$((kilobytes / 1024))
+      fi
+    done
+    read -r script build trace write <<<"$stages"
+    read -r primary shadow <<<"$rates"
+    wall[$n,$threads]=$best
+    printf '| plate(%s) | %s | %s | %d | %s | %s | %s | %s | %s M | %s M |\n' "$n" "$threads" "$best" \
+      "$memory" "$script" "$build" "$trace" "$write" "$primary" "$shadow"
   done
+done
+echo
+first=${sizes%% *}
+last=${sizes##* }
+awk -v a="${wall[$last,1]}" -v b="${wall[$first,1]}" -v n="$last" -v m="$first" \
+  'BEGIN {printf "plate(%s) / plate(%s) on one thread: %.2f×\n", n, m, a / b}'
+for n in $sizes; do
+  awk -v a="${wall[$n,1]}" -v b="${wall[$n,$threads_all]}" -v n="$n" -v t="$threads_all" \
+    'BEGIN {printf "plate(%s): %s threads are %.2f× faster than one\n", n, t, a / b}'
 done

@@ -28,30 +28,17 @@ bool isPng(const std::string& path) {
 
 }  // namespace
 
-std::uint8_t srgbByte(float linear) {
-  // steps[k]: the linear value where the code goes from k to k + 1, the
-  // decoding of the midpoint (k + 0.5) / 255 between the two codes. A
-  // table over [0, 1] in 4096 buckets gives the code at each bucket's start;
+SrgbEncoder::SrgbEncoder() {
+  // steps_[k]: the linear value where the code goes from k to k + 1, the
+  // decoding of the midpoint (k + 0.5) / 255 between the two codes. start_
+  // over [0, 1] in 4096 buckets gives the code at each bucket's start;
   // codes are at least 1/4096 apart in linear light except in the darkest
   // tenth, so the scan from there takes a step or two.
-  static const std::array<float, 256> steps = [] {
-    std::array<float, 256> s;
-    for (int k = 0; k < 255; ++k) s[k] = decodeSrgb((float(k) + 0.5f) / 255.0f);
-    s[255] = 2.0f;  // above every clamped value: the scan stops at 255
-    return s;
-  }();
-  static const std::array<std::uint8_t, 4097> start = [] {
-    std::array<std::uint8_t, 4097> c;
-    for (int i = 0; i <= 4096; ++i)
-      c[i] = std::uint8_t(std::upper_bound(steps.begin(), steps.begin() + 255, i / 4096.0f) -
-                          steps.begin());
-    return c;
-  }();
-  if (!(linear > 0.0f)) return 0;  // also NaN
-  float v = std::min(linear, 1.0f);
-  int code = start[int(v * 4096.0f)];
-  while (v > steps[code]) ++code;
-  return std::uint8_t(code);
+  for (int k = 0; k < 255; ++k) steps_[k] = decodeSrgb((float(k) + 0.5f) / 255.0f);
+  steps_[255] = 2.0f;  // above every clamped value: the scan stops at 255
+  for (int i = 0; i <= 4096; ++i)
+    start_[i] = std::uint8_t(std::upper_bound(steps_.begin(), steps_.begin() + 255, i / 4096.0f) -
+                             steps_.begin());
 }
 
 std::string imageOutputProblem(const std::string& path) {
@@ -76,9 +63,10 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
     return;
   }
   std::vector<std::uint8_t> bytes(std::size_t(width) * height * 3);
+  static const SrgbEncoder srgb;
   for (std::size_t i = 0; i < bytes.size(); ++i)
     bytes[i] = data == ImageData::LinearColor
-                   ? srgbByte(rgb[i])
+                   ? srgb(rgb[i])
                    : std::uint8_t(std::lround(255.0f * std::clamp(rgb[i], 0.0f, 1.0f)));
   std::string png = encodePng(width, height, bytes.data());
   std::ofstream out(file.tempPath(), std::ios::binary);

@@ -37,12 +37,20 @@ std::string encodePng(int width, int height, const std::uint8_t* rgb) {
     for (std::size_t i = 0; i < stride; ++i)
       out[i + 1] = std::uint8_t(row[i] - (i >= 3 ? row[i - 3] : 0));
   }
-  uLongf size = compressBound(uLong(filtered.size()));
-  std::string compressed(size, '\0');
-  if (compress2(reinterpret_cast<Bytef*>(compressed.data()), &size, filtered.data(),
-                uLong(filtered.size()), Z_BEST_SPEED) != Z_OK)
+  // zlib's fastest level: a render's PNG is written once and viewed, so
+  // time matters more than the last few percent of size.
+  z_stream z{};
+  if (deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
     throw std::runtime_error("PNG compression failed");
-  compressed.resize(size);
+  std::string compressed(deflateBound(&z, uLong(filtered.size())), '\0');
+  z.next_in = filtered.data();
+  z.avail_in = uInt(filtered.size());
+  z.next_out = reinterpret_cast<Bytef*>(compressed.data());
+  z.avail_out = uInt(compressed.size());
+  int status = deflate(&z, Z_FINISH);
+  compressed.resize(z.total_out);
+  deflateEnd(&z);
+  if (status != Z_STREAM_END) throw std::runtime_error("PNG compression failed");
 
   std::string header;
   putBigEndian(header, std::uint32_t(width));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -18,9 +19,23 @@ inline float decodeSrgb(float encoded) {
   return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
-// The 8-bit code of a linear value, rounded as round(255 · encodeSrgb(v))
-// but without a pow per value: the linear values where the code steps up
-// are computed once, and a value's code is found by binary search.
-std::uint8_t srgbByte(float linear);
+// The 8-bit code of a linear value, round(255 · encodeSrgb(v)), without a
+// pow per value: the linear values where the code steps up are computed
+// once, and a value's code is looked up from a table and a short scan.
+class SrgbEncoder {
+ public:
+  SrgbEncoder();
+  std::uint8_t operator()(float linear) const {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    float v = std::min(linear, 1.0f);
+    int code = start_[int(v * 4096.0f)];
+    while (v > steps_[code]) ++code;
+    return std::uint8_t(code);
+  }
+
+ private:
+  std::array<float, 256> steps_;
+  std::array<std::uint8_t, 4097> start_;
+};
 
 }  // namespace csgray

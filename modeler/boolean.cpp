@@ -134,8 +134,9 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
   // operand's spans, so the others are asked only about the stretch from
   // its first boundary to its last (a window that shrinks as the result
   // does), and the fold stops once the result is empty.
+  // (A difference's box is its first operand's, tested above.)
   const Solid& first = *operands_[0];
-  if (!first.bounds().hitBy(ray)) return;
+  if (op_ == Op::Intersection && !first.bounds().hitBy(ray)) return;
   first.spans(ray, out);
   Ray window = ray;
   auto narrow = [&] {

@@ -9,7 +9,9 @@ namespace csgray {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kLeafSize = 2;
+// One item a leaf: an inner node tests both children's boxes at once
+// (Bvh::childEntries), so an item's box is tested there, never in a leaf.
+constexpr std::uint32_t kLeafSize = 1;
 // Cost of visiting a node relative to testing an item (an item is a whole
 // solid or a triangle, so it costs several box tests).
 constexpr double kTraversalCost = 0.5;
@@ -34,29 +36,45 @@ Bvh::Bvh(std::span<const Bounds> boxes) {
     centres[i] = boxes[i].center();
   }
   if (items_.empty()) return;
+  // The boxes of the nodes are needed while building; traversal keeps
+  // only each inner node's pair of child boxes.
+  std::vector<Bounds> nodeBoxes;
   nodes_.reserve(2 * items_.size());
+  nodeBoxes.reserve(2 * items_.size());
   nodes_.push_back({});
-  build(0, boxes, centres, 0, std::uint32_t(items_.size()), 0);
-  itemBoxes_.reserve(items_.size());
-  for (std::uint32_t item : items_) itemBoxes_.push_back(boxes[item]);
+  nodeBoxes.push_back({});
+  build(0, boxes, centres, nodeBoxes, 0, std::uint32_t(items_.size()), 0);
+  rootBox_ = nodeBoxes[0];
+  children_.resize(nodes_.size());
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (nodes_[n].count > 0) continue;
+    for (int child = 0; child < 2; ++child) {
+      const Bounds& b = nodeBoxes[nodes_[n].start + child];
+      for (int a = 0; a < 3; ++a) {
+        children_[n].lo[a][child] = b.lo[a];
+        children_[n].hi[a][child] = b.hi[a];
+      }
+    }
+  }
 }
 
 void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
-                const std::vector<dvec3>& centres, std::uint32_t begin, std::uint32_t end,
-                int depth) {
+                const std::vector<dvec3>& centres, std::vector<Bounds>& nodeBoxes,
+                std::uint32_t begin, std::uint32_t end, int depth) {
   Bounds box, centreBox;
   for (std::uint32_t i = begin; i < end; ++i) {
     box.include(boxes[items_[i]]);
     centreBox.include(centres[items_[i]]);
   }
-  nodes_[node] = {box, begin, end - begin};
+  nodes_[node] = {begin, end - begin};
+  nodeBoxes[node] = box;
   std::uint32_t n = end - begin;
   if (n <= kLeafSize || depth + 1 >= kMaxDepth) return;
 
   // Binned SAH: the cost of a split is A(left)·n(left) + A(right)·n(right)
   // over A(node), plus the traversal; the best plane over three axes and
-  // kBins − 1 candidate planes each wins if it beats a leaf.
-  double bestCost = n, leafCost = n;
+  // kBins − 1 candidate planes; the cheapest wins.
+  double bestCost = kInfinity;
   int bestAxis = -1, bestBin = 0;
   for (int axis = 0; axis < 3; ++axis) {
     double lo = centreBox.lo[axis], extent = centreBox.hi[axis] - lo;
@@ -95,7 +113,7 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
     }
   }
   std::uint32_t mid;
-  if (bestAxis >= 0 && bestCost < leafCost) {
+  if (bestAxis >= 0) {
     double lo = centreBox.lo[bestAxis], extent = centreBox.hi[bestAxis] - lo;
     auto right =
         std::partition(items_.begin() + begin, items_.begin() + end, [&](std::uint32_t item) {
@@ -103,20 +121,19 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
                  bestBin;
         });
     mid = std::uint32_t(right - items_.begin());
-  } else if (n > 4 * kLeafSize) {
-    // Boxes that SAH cannot separate (all centres alike): split in the
-    // middle anyway, so that a leaf stays small.
-    mid = begin + n / 2;
   } else {
-    return;
+    // Boxes that SAH cannot separate (all centres alike): split in the
+    // middle anyway, so that leaves stay single.
+    mid = begin + n / 2;
   }
   std::uint32_t left = std::uint32_t(nodes_.size());
   nodes_.push_back({});
   nodes_.push_back({});
+  nodeBoxes.resize(nodes_.size());
   nodes_[node].start = left;
   nodes_[node].count = 0;
-  build(left, boxes, centres, begin, mid, depth + 1);
-  build(left + 1, boxes, centres, mid, end, depth + 1);
+  build(left, boxes, centres, nodeBoxes, begin, mid, depth + 1);
+  build(left + 1, boxes, centres, nodeBoxes, mid, end, depth + 1);
 }
 
 }  // namespace csgray

@@ -9,6 +9,11 @@
 #include <cstdint>
 #include <span>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <cmath>
 
 #include "modeler/bounds.h"
 
@@ -28,8 +33,9 @@ class Bvh {
 
   bool empty() const { return nodes_.empty() && unbounded_.empty(); }
   std::size_t memoryBytes() const {
-    return nodes_.capacity() * sizeof(Node) + items_.capacity() * sizeof(std::uint32_t) +
-           itemBoxes_.capacity() * sizeof(Bounds) + unbounded_.capacity() * sizeof(std::uint32_t);
+    return nodes_.capacity() * sizeof(Node) + children_.capacity() * sizeof(ChildBoxes) +
+           items_.capacity() * sizeof(std::uint32_t) +
+           unbounded_.capacity() * sizeof(std::uint32_t);
   }
 
   // Calls visit(item, tEnter) for every item whose box the ray meets within
@@ -41,18 +47,27 @@ class Bvh {
 
  private:
   struct Node {
-    Bounds box;
     std::uint32_t start;  // leaf: first entry in items_; inner: index of the left child
     std::uint32_t count;  // leaf: number of items; inner: 0 (right child is start + 1)
   };
+  // An inner node's two child boxes, axis by axis, so that both are tested
+  // at once: lo[axis][child], hi[axis][child].
+  struct ChildBoxes {
+    alignas(16) double lo[3][2];
+    alignas(16) double hi[3][2];
+  };
+  // Where the ray enters each child of an inner node (+inf: missed).
+  static void childEntries(const ChildBoxes& c, const Ray& ray, const bool negative[3], double tMin,
+                           double tMax, double t[2]);
   static constexpr int kMaxDepth = 64;
 
   void build(std::uint32_t node, std::span<const Bounds> boxes, const std::vector<dvec3>& centres,
-             std::uint32_t begin, std::uint32_t end, int depth);
+             std::vector<Bounds>& nodeBoxes, std::uint32_t begin, std::uint32_t end, int depth);
 
   std::vector<Node> nodes_;
+  std::vector<ChildBoxes> children_;  // per node; used for inner nodes
   std::vector<std::uint32_t> items_;  // in leaf order
-  std::vector<Bounds> itemBoxes_;     // the boxes of items_, in the same order
+  Bounds rootBox_;
   std::vector<std::uint32_t> unbounded_;
 };
 
@@ -61,13 +76,17 @@ void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
   for (std::uint32_t item : unbounded_)
     if (!visit(item, ray.tMin)) return;
   if (nodes_.empty()) return;
-  double rootEntry = boxEntry(nodes_[0].box, ray, ray.tMin, tMax);
+  double rootEntry = boxEntry(rootBox_, ray, ray.tMin, tMax);
   if (rootEntry == kInfinity) return;
   struct Entry {
     std::uint32_t node;
     double t;
   };
   Entry stack[kMaxDepth * 2];
+  // Which face of a slab the ray meets first: the low one unless it runs
+  // towards negative coordinates.
+  const bool negative[3] = {std::signbit(ray.invDir.x), std::signbit(ray.invDir.y),
+                            std::signbit(ray.invDir.z)};
   int top = 0;
   stack[top++] = {0, rootEntry};
   while (top > 0) {
@@ -75,21 +94,54 @@ void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
     if (e.t > tMax) continue;  // pruned since it was pushed
     const Node& node = nodes_[e.node];
     if (node.count > 0) {
-      for (std::uint32_t i = node.start; i < node.start + node.count; ++i) {
-        // A leaf of one item has the item's box; of several, each is tested.
-        double t = node.count == 1 ? e.t : boxEntry(itemBoxes_[i], ray, ray.tMin, tMax);
-        if (t != kInfinity && !visit(items_[i], t)) return;
-      }
+      // A leaf holds one item, whose box is the leaf's (only a tree cut off
+      // at kMaxDepth has larger leaves: their items are all visited).
+      for (std::uint32_t i = node.start; i < node.start + node.count; ++i)
+        if (!visit(items_[i], e.t)) return;
       continue;
     }
     std::uint32_t left = node.start, right = node.start + 1;
-    double tl = boxEntry(nodes_[left].box, ray, ray.tMin, tMax);
-    double tr = boxEntry(nodes_[right].box, ray, ray.tMin, tMax);
+    double t[2];
+    childEntries(children_[e.node], ray, negative, ray.tMin, tMax, t);
+    double tl = t[0], tr = t[1];
     // Push the farther child first, so the nearer one is visited first.
     if (tl > tr) std::swap(left, right), std::swap(tl, tr);
     if (tr != kInfinity) stack[top++] = {right, tr};
     if (tl != kInfinity) stack[top++] = {left, tl};
   }
+}
+
+inline void Bvh::childEntries(const ChildBoxes& c, const Ray& ray, const bool negative[3],
+                              double tMin, double tMax, double t[2]) {
+  // The slab test with the near and far planes chosen by the ray's
+  // direction, so no swap is needed. A ray parallel to a slab and on one of
+  // its planes gives NaN (0·inf); max and min below then keep the other
+  // operand, so the ray counts as within that slab (as in Bounds::entry).
+#if defined(__SSE2__)
+  __m128d t0 = _mm_set1_pd(tMin), t1 = _mm_set1_pd(tMax);
+  for (int a = 0; a < 3; ++a) {
+    __m128d o = _mm_set1_pd(ray.origin[a]), inv = _mm_set1_pd(ray.invDir[a]);
+    __m128d lo = _mm_load_pd(c.lo[a]), hi = _mm_load_pd(c.hi[a]);
+    __m128d near = _mm_mul_pd(_mm_sub_pd(negative[a] ? hi : lo, o), inv);
+    __m128d far = _mm_mul_pd(_mm_sub_pd(negative[a] ? lo : hi, o), inv);
+    t0 = _mm_max_pd(near, t0);  // NaN near: keeps t0
+    t1 = _mm_min_pd(far, t1);   // NaN far: keeps t1
+  }
+  __m128d hit = _mm_cmple_pd(t0, t1);
+  __m128d entry = _mm_or_pd(_mm_and_pd(hit, t0), _mm_andnot_pd(hit, _mm_set1_pd(kInfinity)));
+  _mm_storeu_pd(t, entry);
+#else
+  for (int i = 0; i < 2; ++i) {
+    double t0 = tMin, t1 = tMax;
+    for (int a = 0; a < 3; ++a) {
+      double near = ((negative[a] ? c.hi : c.lo)[a][i] - ray.origin[a]) * ray.invDir[a];
+      double far = ((negative[a] ? c.lo : c.hi)[a][i] - ray.origin[a]) * ray.invDir[a];
+      t0 = near > t0 ? near : t0;
+      t1 = far < t1 ? far : t1;
+    }
+    t[i] = t0 <= t1 ? t0 : kInfinity;
+  }
+#endif
 }
 
 }  // namespace csgray

@@ -131,8 +131,13 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
     }
     // The first boundary beyond tMin: an entry, or an exit when the ray
     // starts inside the solid. Nothing beyond the best so far matters.
-    Ray window(ray.origin, ray.dir, ray.tMin, tMax);
-    scene_.objects[i]->spans(window, spans);
+    if (tMax == ray.tMax) {
+      scene_.objects[i]->spans(ray, spans);
+    } else {
+      Ray window = ray;
+      window.tMax = tMax;
+      scene_.objects[i]->spans(window, spans);
+    }
     for (const Span& s : spans) {
       bool entering = s.in.t > ray.tMin;
       const Boundary* b = entering ? &s.in : s.out.t > ray.tMin ? &s.out : nullptr;
