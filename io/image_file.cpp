@@ -29,16 +29,18 @@ bool isPng(const std::string& path) {
 }  // namespace
 
 SrgbEncoder::SrgbEncoder() {
-  // steps_[k]: the linear value where the code goes from k to k + 1, the
-  // decoding of the midpoint (k + 0.5) / 255 between the two codes. start_
-  // over [0, 1] in 4096 buckets gives the code at each bucket's start;
-  // codes are at least 1/4096 apart in linear light except in the darkest
-  // tenth, so the scan from there takes a step or two.
+  // The step from code k to k + 1 is the decoding of the midpoint
+  // (k + 0.5) / 255 between the two codes.
   for (int k = 0; k < 255; ++k) steps_[k] = decodeSrgb((float(k) + 0.5f) / 255.0f);
-  steps_[255] = 2.0f;  // above every clamped value: the scan stops at 255
-  for (int i = 0; i <= 4096; ++i)
-    start_[i] = std::uint8_t(std::upper_bound(steps_.begin(), steps_.begin() + 255, i / 4096.0f) -
-                             steps_.begin());
+  steps_[255] = 2.0f;  // above every clamped value
+  // The code at each bucket's start: the number of steps at or below it,
+  // found in one sweep since both rise together.
+  int code = 0;
+  for (int i = 0; i < 65536; ++i) {
+    float v = float(i) / 65535.0f;
+    while (v > steps_[code]) ++code;
+    start_[i] = std::uint8_t(code);
+  }
 }
 
 std::string imageOutputProblem(const std::string& path) {

@@ -20,22 +20,22 @@ inline float decodeSrgb(float encoded) {
 }
 
 // The 8-bit code of a linear value, round(255 · encodeSrgb(v)), without a
-// pow per value: the linear values where the code steps up are computed
-// once, and a value's code is looked up from a table and a short scan.
+// pow per value: a table over [0, 1] in 65536 buckets gives the code at each
+// bucket's start, and since codes lie more than a bucket apart in linear
+// light, one comparison with the next step finishes the job.
 class SrgbEncoder {
  public:
   SrgbEncoder();
   std::uint8_t operator()(float linear) const {
     if (!(linear > 0.0f)) return 0;  // also NaN
     float v = std::min(linear, 1.0f);
-    int code = start_[int(v * 4096.0f)];
-    while (v > steps_[code]) ++code;
-    return std::uint8_t(code);
+    int code = start_[int(v * 65535.0f)];
+    return std::uint8_t(v > steps_[code] ? code + 1 : code);
   }
 
  private:
-  std::array<float, 256> steps_;
-  std::array<std::uint8_t, 4097> start_;
+  std::array<float, 256> steps_;  // steps_[k]: where the code goes from k to k + 1
+  std::array<std::uint8_t, 65536> start_;
 };
 
 }  // namespace csgray

@@ -13,7 +13,8 @@ Affine::Affine(const glm::dmat4& worldFromObject)
       objectFromWorld_(glm::inverse(worldFromObject)),
       // Normals transform with the inverse transpose of the linear part.
       normalFromObject_(glm::transpose(glm::dmat3(objectFromWorld_))),
-      identity_(worldFromObject == glm::dmat4(1.0)) {}
+      identity_(worldFromObject == glm::dmat4(1.0)),
+      translation_(glm::dmat3(worldFromObject) == glm::dmat3(1.0)) {}
 
 Affine Affine::fromMatrix(const glm::dmat4& m) {
   for (int c = 0; c < 4; ++c)
@@ -62,7 +63,7 @@ Affine Affine::then(const Affine& outer) const {
 }
 
 dvec3 Affine::normalToWorld(const dvec3& n) const {
-  return glm::normalize(identity_ ? n : normalFromObject_ * n);
+  return glm::normalize(translation_ ? n : normalFromObject_ * n);
 }
 
 }  // namespace csgray

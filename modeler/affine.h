@@ -32,12 +32,17 @@ class Affine {
   const glm::dmat4& worldFromObject() const { return worldFromObject_; }
   const glm::dmat4& objectFromWorld() const { return objectFromWorld_; }
   bool isIdentity() const { return identity_; }
+  // A pure translation (the usual frame of a placed feature): rays keep
+  // their direction, normals are unchanged.
+  bool isTranslation() const { return translation_; }
 
   dvec3 pointToObject(const dvec3& p) const { return dvec3(objectFromWorld_ * glm::dvec4(p, 1.0)); }
   dvec3 pointToWorld(const dvec3& p) const { return dvec3(worldFromObject_ * glm::dvec4(p, 1.0)); }
   // A ray in the object frame with the same parameter t: dir is not
   // renormalised, and 1/dir is not computed (Ray::withoutInverse).
   Ray rayToObject(const Ray& r) const {
+    if (translation_)
+      return Ray::withoutInverse(r.origin + dvec3(objectFromWorld_[3]), r.dir, r.tMin, r.tMax);
     return Ray::withoutInverse(pointToObject(r.origin),
                                dvec3(objectFromWorld_ * glm::dvec4(r.dir, 0.0)), r.tMin, r.tMax);
   }
@@ -51,6 +56,7 @@ class Affine {
   glm::dmat4 objectFromWorld_{1.0};
   glm::dmat3 normalFromObject_{1.0};
   bool identity_ = true;
+  bool translation_ = true;
 };
 
 }  // namespace csgray

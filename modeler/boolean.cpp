@@ -83,7 +83,8 @@ std::string Boolean::kind() const {
 
 void Boolean::spans(const Ray& ray, SpanList& out) const {
   out.clear();
-  if (!bounds_.hitBy(ray)) return;
+  // (A union with a BVH tests its box as the BVH's root.)
+  if ((op_ != Op::Union || bvh().empty()) && !bounds_.hitBy(ray)) return;
   // The result so far is *result; each operand's spans are merged into the
   // other list and the two swap roles, so nothing is copied per operand.
   SpanList operand, spare;
