@@ -43,6 +43,7 @@ std::atomic<long> gAllocations{0};
 namespace csgray {
 namespace {
 
+using test::expectAgreementOnLinesThrough;
 using test::expectSpansAgreeWithContains;
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::expectVecNear;
@@ -183,38 +184,6 @@ void expectSameSpans(const Solid& actual, const Solid& expected, const Ray& ray,
   for (std::size_t i = 0; i < a.size(); ++i) {
     EXPECT_NEAR(a[i].first, e[i].first, tol);
     EXPECT_NEAR(a[i].second, e[i].second, tol);
-  }
-}
-
-bool member(const SpanList& spans, double t) {
-  for (const Span& s : spans)
-    if (s.in.t <= t && t <= s.out.t) return true;
-  return false;
-}
-
-// Lines exactly through p (a vertex, a point of an edge): valid spans, and
-// contains() agrees with them on both sides of p and inside every span
-// and gap.
-void expectAgreementOnLinesThrough(const Solid& solid, const dvec3& p, int count = 200,
-                                   unsigned seed = 3) {
-  std::mt19937_64 rng(seed);
-  for (int i = 0; i < count; ++i) {
-    Ray line(p, randomDirection(rng), -kInfinity, kInfinity);
-    SpanList spans = spansOf(solid, line);
-    ASSERT_TRUE(spans.valid());
-    std::vector<double> probes = {-3.0, -1.0, -0.25, 0.25, 1.0, 3.0};
-    for (uint32_t k = 0; k < spans.size(); ++k) {
-      probes.push_back(0.5 * (spans[k].in.t + spans[k].out.t));
-      if (k > 0) probes.push_back(0.5 * (spans[k - 1].out.t + spans[k].in.t));
-    }
-    for (double t : probes) {
-      bool nearEnd = false;
-      for (const Span& s : spans)
-        nearEnd = nearEnd || std::abs(t - s.in.t) < 1e-9 || std::abs(t - s.out.t) < 1e-9;
-      if (nearEnd) continue;
-      EXPECT_EQ(solid.contains(line.at(t)), member(spans, t)) << "t=" << t;
-    }
-    if (::testing::Test::HasFailure()) return;
   }
 }
 

@@ -101,4 +101,40 @@ inline double gridVolume(const Solid& solid, const Bounds& box, int n) {
   return volume;
 }
 
+// Is t inside one of the spans (ends included)?
+inline bool member(const SpanList& spans, double t) {
+  for (const Span& s : spans)
+    if (s.in.t <= t && t <= s.out.t) return true;
+  return false;
+}
+
+// Lines whose origin is exactly the special point p (an apex, a point of a
+// rim, a corner), where the surface is not smooth. The spans must be a valid
+// list, and contains() must agree with them at probes on both sides of p
+// and in the middle of every span and gap, away from span ends.
+inline void expectAgreementOnLinesThrough(const Solid& solid, const dvec3& p, int count = 500,
+                                          unsigned seed = 3) {
+  std::mt19937_64 rng(seed);
+  for (int i = 0; i < count; ++i) {
+    Ray line(p, randomDirection(rng), -kInfinity, kInfinity);
+    SpanList spans = spansOf(solid, line);
+    ASSERT_TRUE(spans.valid());
+    std::vector<double> probes = {-3.0, -1.0, -0.25, 0.25, 1.0, 3.0};
+    for (uint32_t k = 0; k < spans.size(); ++k) {
+      if (std::isfinite(spans[k].length()))
+        probes.push_back(0.5 * (spans[k].in.t + spans[k].out.t));
+      if (k > 0) probes.push_back(0.5 * (spans[k - 1].out.t + spans[k].in.t));
+    }
+    for (double t : probes) {
+      bool nearEnd = false;
+      for (const Span& s : spans)
+        nearEnd = nearEnd || std::abs(t - s.in.t) < 1e-9 || std::abs(t - s.out.t) < 1e-9;
+      if (nearEnd) continue;
+      EXPECT_EQ(solid.contains(line.at(t)), member(spans, t))
+          << "t=" << t << " dir=(" << line.dir.x << ", " << line.dir.y << ", " << line.dir.z << ")";
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
 }  // namespace csgray::test

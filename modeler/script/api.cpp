@@ -37,18 +37,6 @@ dvec3 vectorArgs(lua_State* L, int first, const std::string& what) {
   throw std::invalid_argument(what + ": expected x, y, z or {x, y, z}");
 }
 
-bool hasStringKey(lua_State* L, int index) {
-  lua_pushnil(L);
-  while (lua_next(L, index)) {
-    lua_pop(L, 1);
-    if (lua_type(L, -1) == LUA_TSTRING) {
-      lua_pop(L, 1);
-      return true;
-    }
-  }
-  return false;
-}
-
 // A shape constructor: a table of named parameters, or a bare main value
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
 LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {

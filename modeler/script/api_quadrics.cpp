@@ -164,18 +164,6 @@ CSGRAY_NAMED_QUADRIC(parabolic_cylinder, parabolicCylinderMatrix)
 
 // ---- clip -----------------------------------------------------------------------
 
-bool hasStringKey(lua_State* L, int index) {
-  lua_pushnil(L);
-  while (lua_next(L, index)) {
-    lua_pop(L, 1);
-    if (lua_type(L, -1) == LUA_TSTRING) {
-      lua_pop(L, 1);
-      return true;
-    }
-  }
-  return false;
-}
-
 // The box {lo=, hi=} at stack index 2.
 SolidPtr clipBox(lua_State* L) {
   LuaArgs args(L, 2, "clip");

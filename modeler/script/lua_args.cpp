@@ -78,6 +78,19 @@ void LuaArgs::finish() {
   }
 }
 
+// Does the table at index have a string key (a named parameter)?
+bool hasStringKey(lua_State* L, int index) {
+  lua_pushnil(L);
+  while (lua_next(L, index)) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      lua_pop(L, 1);
+      return true;
+    }
+  }
+  return false;
+}
+
 double toNumber(lua_State* L, int index, const std::string& what) {
   int isNumber = 0;
   double v = lua_tonumberx(L, index, &isNumber);

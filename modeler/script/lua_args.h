@@ -35,6 +35,9 @@ class LuaArgs {
   std::set<std::string> used_;
 };
 
+// Does the table at index have a key that is a string (a named parameter)?
+bool hasStringKey(lua_State* L, int index);
+
 // Values at a stack index, with errors that name what was expected.
 double toNumber(lua_State* L, int index, const std::string& what);
 dvec3 toVec3(lua_State* L, int index, const std::string& what);
