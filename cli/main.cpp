@@ -10,6 +10,7 @@
 #include <optional>
 #include <regex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/progress.h"
@@ -107,7 +108,7 @@ bool keepsFloat(const std::string& path) {
 // units, +inf where nothing was hit; normals in [-1, 1]); 8-bit formats get
 // a picture of them: depth as nearest / depth (white at the nearest
 // surface, black where nothing was hit), normals as (n + 1) / 2.
-void writeAov(const std::string& path, Image image, bool isDepth) {
+void writeAov(const std::string& path, Image image, bool isDepth, int threads) {
   if (!keepsFloat(path)) {
     if (isDepth) {
       // nearest / depth: 1 at the nearest surface, fading with distance,
@@ -120,7 +121,7 @@ void writeAov(const std::string& path, Image image, bool isDepth) {
       for (float& v : image.rgb) v = v == 0.0f ? 0.0f : 0.5f * (v + 1.0f);
     }
   }
-  writeImage(path, image.width, image.height, image.rgb.data(), ImageData::Values);
+  writeImage(path, image.width, image.height, image.rgb.data(), ImageData::Values, threads);
 }
 
 }  // namespace
@@ -221,7 +222,20 @@ int main(int argc, char** argv) {
       // load on another thread while the script runs and the image renders.
       std::optional<ImagePluginPreload> preload;
       if (!endsWithPng(output)) preload.emplace();
-      Scene scene = runScript();
+      // The render's worker threads start while the script runs.
+      const int workers =
+          threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+      std::thread warmUp;
+      if (workers > 1) warmUp = std::thread([workers] { startRenderThreads(workers); });
+      Scene scene = [&] {
+        struct Join {
+          std::thread& t;
+          ~Join() {
+            if (t.joinable()) t.join();
+          }
+        } join{warmUp};
+        return runScript();
+      }();
       using Clock = std::chrono::steady_clock;
       Clock::time_point scripted = Clock::now(), built, traced;
       RenderResult result = [&] {
@@ -245,10 +259,11 @@ int main(int argc, char** argv) {
           throw std::runtime_error(script + ": " + e.what());
         }
       }();
-      if (depthAov) writeAov(aovPath(output, "depth"), result.depth, true);
-      if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false);
+      if (depthAov) writeAov(aovPath(output, "depth"), result.depth, true, workers);
+      if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false, workers);
       const Image& image = result.color;
-      writeImage(output, image.width, image.height, image.rgb.data());
+      writeImage(output, image.width, image.height, image.rgb.data(), ImageData::LinearColor,
+                 workers);
       if (stats) {
         auto secs = [](Clock::time_point a, Clock::time_point b) {
           return std::chrono::duration<double>(b - a).count();

@@ -57,20 +57,24 @@ std::string imageOutputProblem(const std::string& path) {
   return imagePlugin().outputProblem(path);
 }
 
-void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data) {
+void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data,
+                int threads) {
   AtomicFile file(path);
   if (!isPng(path)) {
     imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
     file.commit();
     return;
   }
-  std::vector<std::uint8_t> bytes(std::size_t(width) * height * 3);
   static const SrgbEncoder srgb;
-  for (std::size_t i = 0; i < bytes.size(); ++i)
-    bytes[i] = data == ImageData::LinearColor
-                   ? srgb(rgb[i])
-                   : std::uint8_t(std::lround(255.0f * std::clamp(rgb[i], 0.0f, 1.0f)));
-  std::string png = encodePng(width, height, bytes.data());
+  const std::size_t stride = std::size_t(width) * 3;
+  auto row = [&](int y, std::uint8_t* out) {
+    const float* in = rgb + std::size_t(y) * stride;
+    for (std::size_t i = 0; i < stride; ++i)
+      out[i] = data == ImageData::LinearColor
+                   ? srgb(in[i])
+                   : std::uint8_t(std::lround(255.0f * std::clamp(in[i], 0.0f, 1.0f)));
+  };
+  std::string png = encodePng(width, height, row, threads);
   std::ofstream out(file.tempPath(), std::ios::binary);
   out.write(png.data(), std::streamsize(png.size()));
   out.close();

@@ -17,10 +17,11 @@ std::string imageOutputProblem(const std::string& path);
 enum class ImageData { LinearColor, Values };
 
 // Writes RGB floats (row-major, top row first) atomically. Float formats
-// (EXR, HDR) keep the values; others store colours sRGB-encoded.
-// Throws std::runtime_error naming the file.
+// (EXR, HDR) keep the values; others store colours sRGB-encoded. PNG files
+// are encoded on up to `threads` threads. Throws std::runtime_error naming
+// the file.
 void writeImage(const std::string& path, int width, int height, const float* rgb,
-                ImageData data = ImageData::LinearColor);
+                ImageData data = ImageData::LinearColor, int threads = 1);
 
 // Reads an image for a texture as linear RGB floats: grey is replicated,
 // alpha dropped; 8- and 16-bit integer formats are sRGB-decoded, float

@@ -56,6 +56,11 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
 
 }  // namespace
 
+void startRenderThreads(int threads) {
+  tbb::task_arena arena(threads);
+  arena.execute([&] { tbb::parallel_for(0, threads, [](int) {}); });
+}
+
 Media Media::entered(int solid, double index) const {
   Media m = *this;
   if (m.count == kMax) {  // deeper nesting than any part needs: forget the outermost

@@ -78,6 +78,11 @@ struct Media {
   Media left(int solid) const;
 };
 
+// Starts the worker threads that a render on this many threads uses, so
+// that a render that follows does not wait for them (they take a few
+// milliseconds to start).
+void startRenderThreads(int threads);
+
 class Renderer {
  public:
   // Scenes without camera or lights get the defaults of scene.h.
