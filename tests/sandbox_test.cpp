@@ -83,6 +83,20 @@ ScriptLimits smallLimits() {
   return limits;
 }
 
+// Memory that solids hold, charged by a library call, stops the script
+// with the line of that call: the abort's message still fits, however far
+// the charge would have gone past the cap.
+TEST(Sandbox, MemoryLimitNamesTheLineOfTheCall) {
+  std::string e = errorOf(
+      "local s = sphere(1)\n"
+      "for i = 1, 12 do s = s + s:translate(1, 0, 0) end\n"
+      "local t = {}\n"
+      "for i = 1, 1000 do t[i] = s:translate(i, 0, 0) end\n"
+      "return s",
+      smallLimits());
+  EXPECT_EQ(e, "evil.lua:4: script exceeded the memory limit of 64 MiB");
+}
+
 TEST(Sandbox, EndlessLoopEnds) {
   auto start = std::chrono::steady_clock::now();
   std::string e = errorOf("local x = 0\nwhile true do x = x + 1 end", smallLimits());

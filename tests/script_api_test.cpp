@@ -458,6 +458,19 @@ TEST_F(ImageTextureFiles, FilesOutsideTheFolderAreRefused) {
   }
 }
 
+// A NUL byte would cut the name short at the file system ("in.png\0/../x"
+// opens in.png) and in messages: refused, in one whole line.
+TEST_F(ImageTextureFiles, ANulInTheNameIsRefused) {
+  for (const char* name : {"in.png\\0/../../x.png", "../x.png\\0", "missing\\0.png"}) {
+    loaded_.clear();
+    std::string e = errorOf(std::string("return box(1):material{color=image_texture{file=\"") +
+                                name + "\"}}",
+                            options_);
+    EXPECT_EQ(e, "part.lua:1: image_texture: file name contains a NUL byte") << name;
+    EXPECT_TRUE(loaded_.empty()) << name << " was read: " << loaded_.at(0);
+  }
+}
+
 TEST_F(ImageTextureFiles, AMissingFileIsAnErrorNamingIt) {
   std::string e = errorOf(source("missing.png"), options_);
   EXPECT_NE(e.find("part.lua:1: "), std::string::npos) << e;
@@ -901,6 +914,42 @@ TEST(ScriptScene, LimitsLandInTheScene) {
   expectError("return scene{objects=sphere(1), maxdepth=3}",
               "part.lua:1: scene: unknown parameter 'maxdepth'");
   expectError("return scene{}", "part.lua:1: scene: objects is empty");
+}
+
+// The lists of a scene are copied into it: a list of millions of references
+// to one light or part is charged against the memory cap and the limit on
+// primitives, and stops there with the line of the call, not after
+// gigabytes were allocated outside the cap.
+TEST(ScriptScene, HugeListsAreCharged) {
+  ScriptOptions options;
+  options.limits.memoryBytes = 64u << 20;
+  // 1 000 000 lights of about 180 bytes each: 170 MiB.
+  std::string e = errorOf(
+      "local l, t = point_light{pos={0, 0, 10}}, {}\n"
+      "for i = 1, 1000000 do t[i] = l end\n"
+      "return scene{objects=sphere(1), lights=t}",
+      options);
+  EXPECT_EQ(e, "part.lua:3: script exceeded the memory limit of 64 MiB");
+  EXPECT_EQ(errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
+                    "for i = 1, 1000 do t[i] = l end\n"
+                    "return scene{objects=sphere(1), lights=t}",
+                    options),
+            "(no error)");
+  // 600 000 uses of a part of two primitives: more than 1 000 000.
+  expectError(
+      "local s, t = sphere(1) + box(1), {}\n"
+      "for i = 1, 600000 do t[i] = s end\n"
+      "return scene{objects=t}",
+      "part.lua:3: scene: objects[500001]: the scene would have more than 1000000 primitives");
+  // A scene that fails (a bad entry, caught by pcall) gives its charge back.
+  options.limits.memoryBytes = 16u << 20;
+  EXPECT_EQ(errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
+                    "for i = 1, 20000 do t[i] = l end\n"
+                    "t[#t + 1] = 5\n"
+                    "for i = 1, 100 do assert(not pcall(scene, {objects=sphere(1), lights=t})) end\n"
+                    "return sphere(1)",
+                    options),
+            "(no error)");
 }
 
 }  // namespace

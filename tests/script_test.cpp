@@ -94,6 +94,25 @@ TEST(Script, BooleansAndOperators) {
     EXPECT_FALSE(s->contains(dvec3(0.5, 0.5, 0.5)));
     EXPECT_TRUE(s->contains(dvec3(1.5, 1, 1)));
   }
+  // An operand may be a list of solids: difference(a, holes), as the
+  // message about deep boolean trees recommends.
+  for (std::string op : {"difference(a, {b})", "difference(a, {b}, {})", "difference(a, b, {})"}) {
+    SolidPtr s = solidOf(std::string(a) + "return " + op);
+    EXPECT_TRUE(s->contains(dvec3(0.5, 0.5, 0.5))) << op;
+    EXPECT_FALSE(s->contains(dvec3(1.5, 1, 1))) << op;
+  }
+  SolidPtr holes = solidOf(
+      "local holes = {}\n"
+      "for i = 1, 5 do holes[i] = sphere(0.1):translate(i, 0, 0) end\n"
+      "return union(sphere(0.1), holes)");
+  EXPECT_EQ(treeStats(*holes).primitives, 6);
+  EXPECT_EQ(treeStats(*holes).booleans, 1);
+  EXPECT_NE(errorOf("return difference(box(1), {sphere(1), 3})")
+                .find("part.lua:1: difference: operand 2[2] must be a solid, got number"),
+            std::string::npos);
+  EXPECT_NE(errorOf("return union{box(1), {sphere(1)}}")
+                .find("part.lua:1: union: operand 2 must be a solid, got table"),
+            std::string::npos);
   SolidPtr nary =
       solidOf("return union(sphere(1), sphere(1):translate(3,0,0), sphere(1):translate(6,0,0))");
   EXPECT_EQ(treeStats(*nary).primitives, 3);

@@ -210,20 +210,39 @@ int quadric(lua_State* L) {
 
 // ---- Booleans ---------------------------------------------------------------
 
-// Operands as f(a, b, c) or f{a, b, c}.
+// Operands as f(a, b, c) or f{a, b, c}; an operand may also be a list of
+// solids, as in difference(a, holes) (the form that boolean.cpp's message
+// about deep trees recommends).
 std::vector<SolidPtr> operandArgs(lua_State* L, const std::string& function) {
   std::vector<SolidPtr> operands;
+  // The value at index: a solid, or a list of solids (one level).
+  auto take = [&](int index, const std::string& what) {
+    if (lua_type(L, index) != LUA_TTABLE) {
+      operands.push_back(checkValue<SolidPtr>(L, index, what));
+      return;
+    }
+    index = lua_absindex(L, index);
+    lua_Unsigned count = lua_rawlen(L, index);
+    for (lua_Unsigned i = 1; i <= count; ++i) {
+      lua_rawgeti(L, index, static_cast<lua_Integer>(i));
+      operands.push_back(checkValue<SolidPtr>(L, -1, what + "[" + std::to_string(i) + "]"));
+      lua_pop(L, 1);
+    }
+  };
   int n = lua_gettop(L);
   if (n == 1 && lua_type(L, 1) == LUA_TTABLE) {
     lua_Unsigned count = lua_rawlen(L, 1);
     for (lua_Unsigned i = 1; i <= count; ++i) {
       lua_rawgeti(L, 1, static_cast<lua_Integer>(i));
-      operands.push_back(checkValue<SolidPtr>(L, -1, function + ": operand " + std::to_string(i)));
+      std::string what = function + ": operand " + std::to_string(i);
+      if (lua_type(L, -1) == LUA_TTABLE)  // f{a, {b, c}}: no deeper
+        operands.push_back(checkValue<SolidPtr>(L, -1, what));
+      else
+        take(-1, what);
       lua_pop(L, 1);
     }
   } else {
-    for (int i = 1; i <= n; ++i)
-      operands.push_back(checkValue<SolidPtr>(L, i, function + ": operand " + std::to_string(i)));
+    for (int i = 1; i <= n; ++i) take(i, function + ": operand " + std::to_string(i));
   }
   if (operands.empty()) throw std::invalid_argument(function + ": needs at least one solid");
   return operands;

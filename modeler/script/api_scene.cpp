@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "modeler/boolean.h"
 #include "modeler/primitive.h"
 #include "modeler/script/api.h"
 #include "modeler/script/lua_args.h"
@@ -112,6 +113,10 @@ std::string scriptFile(lua_State* L, const std::string& function, const std::str
   namespace fs = std::filesystem;
   const ScriptOptions& options = scriptOptionsOf(L);
   if (name.empty()) throw std::invalid_argument(function + ": file is empty");
+  // The file system would stop at a NUL byte: "a.png\0/../../x" would open
+  // a.png, and messages would be cut short there.
+  if (name.find('\0') != std::string::npos)
+    throw std::invalid_argument(function + ": file name contains a NUL byte");
   fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
   fs::path file = fs::weakly_canonical(folder / fs::path(name));
   auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
@@ -436,17 +441,63 @@ void forEachListed(lua_State* L, LuaArgs& args, const char* key, F f) {
   lua_pop(L, 1);
 }
 
+// Memory a call charges while it builds a value, given back when the call
+// ends (the value is then charged as a whole by pushValue), also when it
+// fails.
+class PendingCharge {
+ public:
+  explicit PendingCharge(lua_State* L) : L_(L) {}
+  ~PendingCharge() { Sandbox::of(L_).release(bytes_); }
+  PendingCharge(const PendingCharge&) = delete;
+  PendingCharge& operator=(const PendingCharge&) = delete;
+  void add(std::size_t bytes) {
+    bytes_ += bytes;
+    Sandbox::of(L_).charge(L_, bytes);
+  }
+  // Gives the charge back and returns it, for pushValue to charge again.
+  std::size_t settle() {
+    std::size_t b = bytes_;
+    Sandbox::of(L_).release(b);
+    bytes_ = 0;
+    return b;
+  }
+
+ private:
+  lua_State* L_;
+  std::size_t bytes_ = 0;
+};
+
 int scene(lua_State* L) {
   LuaArgs args(L, 1, "scene");
   Scene s;
+  // The lists are copied into the scene: charged as they grow, so that a
+  // list of millions of references to one light or part stops at the
+  // memory limit instead of exhausting the machine. The objects are drawn
+  // together, so they share the limit on primitives of a part.
+  PendingCharge pending(L);
+  std::size_t primitives = 0;
+  auto count = [&](std::size_t n, const std::string& what) {
+    primitives += n;
+    if (primitives > Boolean::kMaxPrimitives)
+      throw std::invalid_argument(what + ": the scene would have more than " +
+                                  std::to_string(Boolean::kMaxPrimitives) +
+                                  " primitives and surfaces (counting each use of a shared part)");
+  };
   // Objects: solids and open surfaces, alone or in a list.
   forEachListed(L, args, "objects", [&](const std::string& what) {
-    if (SurfacePtr* surface = toValue<SurfacePtr>(L, -1))
+    if (SurfacePtr* surface = toValue<SurfacePtr>(L, -1)) {
+      count(1, what);
+      pending.add(sizeof(SurfacePtr));
       s.surfaces.push_back(*surface);
-    else
-      s.objects.push_back(checkValue<SolidPtr>(L, -1, what + " (a solid or surface)"));
+    } else {
+      const SolidPtr& solid = checkValue<SolidPtr>(L, -1, what + " (a solid or surface)");
+      count(solid->primitiveCount(), what);
+      pending.add(sizeof(SolidPtr));
+      s.objects.push_back(solid);
+    }
   });
   forEachListed(L, args, "lights", [&](const std::string& what) {
+    pending.add(sizeof(Light));
     s.lights.push_back(checkValue<Light>(L, -1, what));
   });
   if (args.push("camera")) {
@@ -462,7 +513,7 @@ int scene(lua_State* L) {
   args.finish();
   if (s.objects.empty() && s.surfaces.empty())
     throw std::invalid_argument("scene: objects is empty");
-  pushValue(L, std::move(s));
+  pushValue(L, std::move(s), kBytesPerNode + pending.settle());
   return 1;
 }
 

@@ -79,7 +79,10 @@ void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t ne
     self->used_ -= old;
     return nullptr;
   }
-  if (newSize > old && self->used_ - old + newSize > self->limits_.memoryBytes) {
+  // While an abort builds its message ("file:line: reason"), a little room
+  // past the cap, so that the message keeps its line.
+  std::size_t cap = self->limits_.memoryBytes + (self->aborting_ ? kAbortReserve : 0);
+  if (newSize > old && self->used_ - old + newSize > cap) {
     if (self->abortReason_.empty())
       self->abortReason_ =
           "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
@@ -99,13 +102,16 @@ void Sandbox::charge(lua_State* L, std::size_t bytes) {
     lua_gc(L, LUA_GCSTEP, static_cast<int>(sinceCollectorStep_ >> 10));
     sinceCollectorStep_ = 0;
   }
-  used_ += bytes;
-  if (used_ > limits_.memoryBytes)
+  // Checked before counting, so that used_ stays within the cap and the
+  // abort's message fits in the allocator's reserve.
+  if (bytes > limits_.memoryBytes - std::min(used_, limits_.memoryBytes))
     abort(L, "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes), 1);
+  used_ += bytes;
 }
 
 void Sandbox::abort(lua_State* L, const std::string& reason, int level) {
   if (abortReason_.empty()) abortReason_ = reason;
+  aborting_ = true;  // the script is over: pcall cannot catch an abort
   luaL_where(L, level);
   lua_pushstring(L, abortReason_.c_str());
   lua_concat(L, 2);

@@ -55,6 +55,10 @@ class Sandbox {
   std::size_t sinceCollectorStep_ = 0;
   std::uint64_t executed_ = 0;
   std::string abortReason_;
+  // Set once the script is being aborted: the allocator then allows
+  // kAbortReserve bytes past the cap for the error message.
+  bool aborting_ = false;
+  static constexpr std::size_t kAbortReserve = std::size_t{1} << 20;
 };
 
 }  // namespace csgray
