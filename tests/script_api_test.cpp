@@ -463,9 +463,9 @@ TEST_F(ImageTextureFiles, FilesOutsideTheFolderAreRefused) {
 TEST_F(ImageTextureFiles, ANulInTheNameIsRefused) {
   for (const char* name : {"in.png\\0/../../x.png", "../x.png\\0", "missing\\0.png"}) {
     loaded_.clear();
-    std::string e = errorOf(std::string("return box(1):material{color=image_texture{file=\"") +
-                                name + "\"}}",
-                            options_);
+    std::string e =
+        errorOf(std::string("return box(1):material{color=image_texture{file=\"") + name + "\"}}",
+                options_);
     EXPECT_EQ(e, "part.lua:1: image_texture: file name contains a NUL byte") << name;
     EXPECT_TRUE(loaded_.empty()) << name << " was read: " << loaded_.at(0);
   }
@@ -943,13 +943,14 @@ TEST(ScriptScene, HugeListsAreCharged) {
       "part.lua:3: scene: objects[500001]: the scene would have more than 1000000 primitives");
   // A scene that fails (a bad entry, caught by pcall) gives its charge back.
   options.limits.memoryBytes = 16u << 20;
-  EXPECT_EQ(errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
-                    "for i = 1, 20000 do t[i] = l end\n"
-                    "t[#t + 1] = 5\n"
-                    "for i = 1, 100 do assert(not pcall(scene, {objects=sphere(1), lights=t})) end\n"
-                    "return sphere(1)",
-                    options),
-            "(no error)");
+  EXPECT_EQ(
+      errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
+              "for i = 1, 20000 do t[i] = l end\n"
+              "t[#t + 1] = 5\n"
+              "for i = 1, 100 do assert(not pcall(scene, {objects=sphere(1), lights=t})) end\n"
+              "return sphere(1)",
+              options),
+      "(no error)");
 }
 
 }  // namespace
