@@ -49,3 +49,31 @@ for n in $sizes; do
   awk -v a="${wall[$n,1]}" -v b="${wall[$n,$threads_all]}" -v n="$n" -v t="$threads_all" \
     'BEGIN {printf "plate(%s): %s threads are %.2f× faster than one\n", n, t, a / b}'
 done
+
+# Export: plate(N) as a binary STL at the default tolerance. The export
+# checks the mesh with CGAL (closed, manifold, outward, no self-intersections)
+# before writing, so a written file is a valid one.
+echo
+echo "| export | wall (s) | peak memory (MB) | script (s) | mesh (s) | check (s) | write (s) | triangles | booleans | valid |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+for n in ${EXPORT_SIZES:-"8 16 32"}; do
+  best=""
+  for ((r = 0; r < runs; r++)); do
+    valid=yes
+    /usr/bin/time -f "%e %M" -o "$out/time" \
+      "$csgray" export bench/plate.lua -D n="$n" -o "$out/plate.stl" --stats \
+      >"$out/stdout" 2>"$out/stats" || valid="no: $(tail -1 "$out/stats")"
+    read -r seconds kilobytes <"$out/time"
+    if [ -z "$best" ] || awk -v a="$seconds" -v b="$best" 'BEGIN {exit !(a < b)}'; then
+      best=$seconds
+      stages=$(sed -n 's/.*script \([0-9.]*\) s, mesh \([0-9.]*\) s, check \([0-9.]*\) s, write \([0-9.]*\) s/\1 \2 \3 \4/p' "$out/stats")
+      triangles=$(sed -n 's/.*(\([0-9]*\) triangles.*/\1/p' "$out/stdout")
+      booleans=$(sed -n 's/.*tessellated, \([0-9]*\) booleans.*/\1/p' "$out/stats")
+      memory=$((kilobytes / 1024))
+      verdict=$valid
+    fi
+  done
+  read -r script mesh check write <<<"${stages:-- - - -}"
+  printf '| plate(%s) | %s | %d | %s | %s | %s | %s | %s | %s | %s |\n' "$n" "$best" "$memory" \
+    "$script" "$mesh" "$check" "$write" "${triangles:--}" "${booleans:--}" "$verdict"
+done

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/export_command.h"
 #include "cli/progress.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
@@ -145,6 +146,7 @@ int main(int argc, char** argv) {
   bool adaptive = false, stats = false;
   std::vector<std::string> aovs;
   double scriptTimeout = 60.0;
+  ExportOptions exportOptions;
 
   CLI::App* render = app.add_subcommand("render", "Ray trace a part script to an image");
   render->add_option("script", script, "Lua part script")->required();
@@ -170,6 +172,27 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"depth", "normal"}));
   render->add_option("-D", defineItems, "Set a script global before it runs: name=value");
   render->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
+      ->check(timeoutRange)
+      ->capture_default_str();
+
+  CLI::App* exporter =
+      app.add_subcommand("export", "Write a part script's solids as a closed, printable mesh");
+  exporter->add_option("script", script, "Lua part script")->required();
+  exporter
+      ->add_option("-o,--output", exportOptions.output,
+                   "Mesh file; its extension picks the format (.stl, .obj, .off, .ply, .3mf)")
+      ->required();
+  exporter
+      ->add_option("--tolerance", exportOptions.tolerance,
+                   "Largest distance of the mesh from the exact surface, in model units")
+      ->check(CLI::Range(1e-6, 1e3))
+      ->capture_default_str();
+  exporter->add_flag("--ascii", exportOptions.ascii, "Write STL and PLY as text");
+  exporter->add_flag("--stats", exportOptions.stats,
+                     "Print the time of each stage and the booleans done to stderr");
+  exporter->add_option("-D", defineItems, "Set a script global before it runs: name=value");
+  exporter
+      ->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
       ->check(timeoutRange)
       ->capture_default_str();
 
@@ -283,6 +306,13 @@ int main(int argc, char** argv) {
       std::chrono::duration<double> seconds = Clock::now() - start;
       std::printf("csgray: wrote %s (%dx%d) in %.2f s\n", output.c_str(), width, height,
                   seconds.count());
+    } else if (*exporter) {
+      exportOptions.script = script;
+      checkExportOutput(exportOptions);
+      auto start = std::chrono::steady_clock::now();
+      Scene scene = runScript();
+      exportScene(scene, exportOptions,
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     } else if (*info) {
       printInfo(script, runScript());
     }

@@ -20,6 +20,17 @@ std::runtime_error failure(const std::string& target, const std::string& what) {
 }
 }  // namespace
 
+std::string outputPathProblem(const std::string& path) {
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error))
+    return "folder " + folder.string() + " does not exist";
+  if (::access(folder.c_str(), W_OK) != 0) return "folder " + folder.string() + " is not writable";
+  if (std::filesystem::is_directory(path, error)) return "it is a folder";
+  return "";
+}
+
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
   std::filesystem::path path(target_);
   // Hidden, unique per process and call: ".name.tmp<pid>-<n>.ext".

@@ -7,6 +7,11 @@
 
 namespace csgray {
 
+// Why a file cannot be written at path (its folder is missing or not
+// writable, or the path is a folder), or "" when it can: checked before
+// the work that makes the file, so that a typo costs no time.
+std::string outputPathProblem(const std::string& path);
+
 class AtomicFile {
  public:
   // The temporary's name keeps the target's extension, for writers that

@@ -44,13 +44,7 @@ SrgbEncoder::SrgbEncoder() {
 }
 
 std::string imageOutputProblem(const std::string& path) {
-  std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty()) folder = ".";
-  std::error_code error;
-  if (!std::filesystem::is_directory(folder, error))
-    return "folder " + folder.string() + " does not exist";
-  if (::access(folder.c_str(), W_OK) != 0) return "folder " + folder.string() + " is not writable";
-  if (std::filesystem::is_directory(path, error)) return "it is a folder";
+  if (std::string problem = outputPathProblem(path); !problem.empty()) return problem;
   if (std::filesystem::path(path).extension().empty())
     return "no file extension to tell the image format (use .png, .exr, ...)";
   if (isPng(path)) return "";

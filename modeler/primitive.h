@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "modeler/solid.h"
+#include "modeler/triangle_mesh.h"
 
 namespace csgray {
 
@@ -31,6 +32,15 @@ class Primitive : public Solid {
   SolidPtr withFrame(const Affine& worldFromObject) const;
   SolidPtr withMaterial(const MaterialPtr& material) const;
 
+  // A closed, outward-oriented triangle mesh of the primitive in world space
+  // whose surface lies within `tolerance` (model units) of the exact one.
+  // An unbounded primitive is meshed where it meets `region` (a finite world
+  // box) and closed by faces outside that box, so that intersecting the mesh
+  // with a solid inside the region gives that solid's part of it. Throws
+  // std::invalid_argument (naming kind()) when the mesh would be too large
+  // or cannot be a 2-manifold.
+  TriangleMesh tessellate(double tolerance, const Bounds& region) const;
+
   // Unit outward normal in world space at a world point on the given face.
   dvec3 normal(const dvec3& worldPoint, int face) const {
     return frame_.normalToWorld(objectNormal(frame_.pointToObject(worldPoint), face));
@@ -52,6 +62,9 @@ class Primitive : public Solid {
   virtual dvec3 objectNormal(const dvec3& p, int face) const = 0;
   virtual Bounds objectBounds() const = 0;
   virtual std::shared_ptr<Primitive> clone() const = 0;
+  // tessellate() in object space: the tolerance divided by the frame's
+  // largest stretch, and the box of the region's corners in the frame.
+  virtual TriangleMesh objectTessellate(double tolerance, const Bounds& region) const;
 
   Boundary boundary(double t, int face = 0) const {
     return Boundary{t, this, static_cast<decltype(Boundary::face)>(face), false};

@@ -1,10 +1,13 @@
 #include "modeler/primitives/cylinder.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "modeler/primitives/check.h"
 #include "modeler/quadratic.h"
+#include "modeler/tessellation.h"
 
 namespace csgray {
 
@@ -68,6 +71,22 @@ dvec3 Cylinder::objectNormal(const dvec3& p, int face) const {
 Bounds Cylinder::objectBounds() const {
   double r = std::max(r1_, r2_);
   return {dvec3(-r, -r, 0.0), dvec3(r, r, height_)};
+}
+
+// The profile axis → bottom rim → top rim → axis, turned: the caps are fans
+// about their centres and a cone's apex is a pole. The profile is straight,
+// so by revolveProfile's bound the whole tolerance goes to the rims' chords
+// (the larger rim's sagitta bounds every point of the side). Caps and the
+// side's generators are exact; the mesh lies inside, the solid being convex.
+TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
+  requireTolerance(kind(), tolerance);
+  int segments = arcSegments(std::max(r1_, r2_), 2.0 * std::numbers::pi, tolerance);
+  requireTriangleBudget(kind(), revolvedTriangles(3, segments), tolerance);
+  std::vector<glm::dvec2> profile = {{0.0, 0.0}};
+  if (r1_ > 0.0) profile.emplace_back(r1_, 0.0);
+  if (r2_ > 0.0) profile.emplace_back(r2_, height_);
+  profile.emplace_back(0.0, height_);
+  return revolveProfile(profile, segments, false);
 }
 
 }  // namespace csgray

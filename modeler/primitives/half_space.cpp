@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "modeler/primitives/check.h"
+#include "modeler/tessellation.h"
 
 namespace csgray {
 
@@ -47,6 +48,25 @@ Bounds HalfSpace::objectBounds() const {
       b.lo[axis] = -offset_;
   }
   return b;
+}
+
+// The region's box, grown by a margin, cut by the plane: exact, and every
+// face but the plane's lies outside the region. A region wholly inside the
+// half-space gives that box, one wholly outside gives nothing.
+TriangleMesh HalfSpace::objectTessellate(double tolerance, const Bounds& region) const {
+  requireTolerance(kind(), tolerance);
+  requireFiniteRegion(kind(), region);
+  if (region.empty()) return {};
+  bool anyInside = false, anyOutside = false;
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? region.hi.x : region.lo.x, i & 2 ? region.hi.y : region.lo.y,
+                 i & 4 ? region.hi.z : region.lo.z);
+    (glm::dot(normal_, corner) <= offset_ ? anyInside : anyOutside) = true;
+  }
+  if (!anyInside) return {};
+  std::vector<BoundingPlane> planes;
+  if (anyOutside) planes.push_back({normal_, offset_});
+  return convexPolytopeMesh(planes, regionWithMargin(region, tolerance));
 }
 
 }  // namespace csgray

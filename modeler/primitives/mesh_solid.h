@@ -62,6 +62,7 @@ class MeshSolid : public Primitive {
   // The outward normal of triangle `face`.
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
   std::shared_ptr<Primitive> clone() const override { return std::make_shared<MeshSolid>(*this); }
 
  private:

@@ -17,6 +17,7 @@ class Sphere : public Primitive {
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
   std::shared_ptr<Primitive> clone() const override { return std::make_shared<Sphere>(*this); }
 
  private:

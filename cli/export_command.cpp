@@ -1,0 +1,64 @@
+#include "cli/export_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "io/atomic_file.h"
+#include "mesh/mesh_boolean.h"
+#include "mesh/mesh_writer.h"
+#include "modeler/boolean.h"
+
+namespace csgray {
+
+void checkExportOutput(const ExportOptions& options) {
+  meshFormatFor(options.output);  // throws for an unknown extension
+  std::error_code same;
+  if (std::filesystem::equivalent(options.script, options.output, same))
+    throw std::runtime_error("cannot write " + options.output + ": it is the script itself");
+  if (std::string problem = outputPathProblem(options.output); !problem.empty())
+    throw std::runtime_error("cannot write " + options.output + ": " + problem);
+}
+
+void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  if (scene.objects.empty())
+    throw std::runtime_error(options.script +
+                             ": there is no solid to export (open surfaces cannot be printed)");
+  if (!scene.surfaces.empty())
+    std::fprintf(stderr, "csgray: warning: %s: %zu open surface%s not exported: only solids are\n",
+                 options.script.c_str(), scene.surfaces.size(),
+                 scene.surfaces.size() == 1 ? " is" : "s are");
+  const SolidPtr part = scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
+
+  const MeshFormat format = meshFormatFor(options.output);
+  MeshBooleanStats counts;
+  PartMesh mesh = [&] {
+    try {
+      return meshOfSolid(*part, options.tolerance, storesFloats(format, options.ascii), &counts);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(options.script + ": " + e.what());
+    }
+  }();
+  if (mesh.mesh.empty()) throw std::runtime_error(options.script + ": the part is empty");
+  const auto evaluated = Clock::now();
+  writeMeshFile(options.output, mesh, options.ascii);
+  const auto written = Clock::now();
+
+  auto secs = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  if (options.stats)
+    std::fprintf(stderr,
+                 "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
+                 "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one%s\n",
+                 scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
+                 secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges,
+                 counts.exact ? "; evaluated again with exact constructions" : "");
+  std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
+              mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));
+}
+
+}  // namespace csgray

@@ -1,0 +1,29 @@
+// csgray export: a part script's solids as a closed, printable mesh file.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "modeler/scene.h"
+
+namespace csgray {
+
+struct ExportOptions {
+  std::string script;  // for messages
+  std::string output;  // its extension picks the format
+  double tolerance = 0.01;
+  bool ascii = false;  // text STL and PLY
+  bool stats = false;  // stage times on stderr
+};
+
+// Throws std::runtime_error when the output cannot be written (checked
+// before the script runs, so that a typo costs no time).
+void checkExportOutput(const ExportOptions& options);
+
+// Evaluates the scene's solids (their union, when there are several) on
+// meshes, checks the result with CGAL and writes it. Prints one line on
+// success; throws std::exception with a one-line message otherwise, and
+// leaves any old output file as it was.
+void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds);
+
+}  // namespace csgray

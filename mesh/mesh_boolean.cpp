@@ -1,0 +1,359 @@
+#include "mesh/mesh_boolean.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "mesh/mesh_validity.h"
+#include "modeler/boolean.h"
+#include "modeler/primitive.h"
+
+namespace csgray {
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
+// The result, rounded to what a file holds.
+using RoundedMesh = CGAL::Surface_mesh<Inexact::Point_3>;
+
+constexpr const char* kTag = "f:material";
+
+template <class Mesh>
+auto tagsOf(Mesh& mesh) {
+  return mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kTag, 0).first;
+}
+template <class Mesh>
+auto tagsOf(const Mesh& mesh) {
+  return const_cast<Mesh&>(mesh)
+      .template property_map<typename Mesh::Face_index, std::uint32_t>(kTag)
+      .first;
+}
+
+// A corefinement cuts faces into triangles and copies faces from one mesh
+// into the other; each new face keeps the material tag it came from.
+template <class Mesh>
+struct TagVisitor : PMP::Corefinement::Default_visitor<Mesh> {
+  using Face = typename Mesh::Face_index;
+  std::uint32_t splitTag = 0;
+  void before_subface_creations(Face split, Mesh& mesh) { splitTag = tagsOf(mesh)[split]; }
+  void after_subface_created(Face created, Mesh& mesh) { tagsOf(mesh)[created] = splitTag; }
+  void after_face_copy(Face from, const Mesh& source, Face to, Mesh& target) {
+    tagsOf(target)[to] = tagsOf(source)[from];
+  }
+};
+
+// Closed boxes, so that operands that touch are corefined, not joined.
+bool overlap(const Bounds& a, const Bounds& b) {
+  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y ||
+           a.hi.z < b.lo.z || b.hi.z < a.lo.z);
+}
+
+// A corefinement that CGAL could not make a 2-manifold, or (with inexact
+// constructions) a result that rounding spoiled: the exact kernel's turn.
+struct CorefinementFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Evaluates the tree with the kernel K: exact constructions (Epeck) make
+// a corefinement's new points exact, so the next boolean in a chain sees
+// them where they are; inexact ones (Epick, exact predicates) round them,
+// which is much faster and almost always harmless, and is checked after
+// (CGAL's manual, PMP, "Corefinement and Boolean Operations").
+template <class K>
+class Evaluator {
+ public:
+  using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
+  using Face = typename Mesh::Face_index;
+  using Vertex = typename Mesh::Vertex_index;
+
+  // Part of the tree, evaluated: a mesh and the box of its points.
+  struct Piece {
+    Mesh mesh;
+    Bounds box;
+    bool empty() const { return mesh.number_of_faces() == 0; }
+  };
+
+  Evaluator(double tolerance, MeshBooleanStats& stats) : tolerance_(tolerance), stats_(stats) {}
+
+  // A mesh M with M ∩ region = solid ∩ region; M may reach past the region
+  // (an unbounded primitive is meshed within a larger box), which the
+  // operations above it cut away.
+  Piece evaluate(const Solid& solid, const Bounds& outer) {
+    const Bounds region = outer.intersected(solid.bounds());
+    if (region.empty()) return {};
+    if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) return leaf(*primitive, region);
+    auto* node = dynamic_cast<const Boolean*>(&solid);
+    if (!node) throw std::logic_error("meshOfSolid: unknown solid " + solid.kind());
+    std::span<const SolidPtr> operands = node->children();
+    switch (node->op()) {
+      case Boolean::Op::Union: {
+        std::vector<Piece> pieces;
+        for (const SolidPtr& s : operands) pieces.push_back(evaluate(*s, region));
+        return unite(std::move(pieces));
+      }
+      case Boolean::Op::Intersection: {
+        std::vector<Piece> pieces;
+        for (const SolidPtr& s : operands) {
+          pieces.push_back(evaluate(*s, region));
+          if (pieces.back().empty()) return {};
+        }
+        return balanced(std::move(pieces), Boolean::Op::Intersection);
+      }
+      case Boolean::Op::Difference: {
+        Piece minuend = evaluate(*operands[0], region);
+        if (minuend.empty()) return minuend;
+        // Whatever is cut away is cut from the minuend's mesh, which may
+        // reach past the region: the cutters are meshed over all of it.
+        std::vector<Piece> cutters;
+        for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
+        Piece cut = unite(std::move(cutters));
+        if (cut.empty() || !overlap(minuend.box, cut.box)) return minuend;
+        corefine(minuend, cut, Boolean::Op::Difference);
+        return minuend;
+      }
+    }
+    return {};
+  }
+
+  std::vector<MaterialPtr> materials;
+
+ private:
+  std::uint32_t tagOf(const MaterialPtr& material) {
+    auto [it, added] = tags_.try_emplace(material.get(), std::uint32_t(materials.size()));
+    if (added) materials.push_back(material);
+    return it->second;
+  }
+
+  Piece leaf(const Primitive& primitive, const Bounds& region) {
+    ++stats_.primitives;
+    TriangleMesh triangles = primitive.tessellate(tolerance_, region);
+    Piece piece;
+    if (triangles.empty()) return piece;
+    Mesh& mesh = piece.mesh;
+    mesh.reserve(triangles.points.size(), triangles.size() * 3 / 2, triangles.size());
+    for (const dvec3& p : triangles.points) mesh.add_vertex(typename K::Point_3(p.x, p.y, p.z));
+    auto tags = tagsOf(mesh);
+    const std::uint32_t tag = tagOf(primitive.material());
+    for (const TriangleMesh::Triangle& t : triangles.triangles) {
+      Face f = mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2]));
+      if (f == Mesh::null_face())
+        throw std::logic_error(primitive.kind() + ": its tessellation is not a 2-manifold");
+      tags[f] = tag;
+    }
+    piece.box = triangles.bounds();
+    return piece;
+  }
+
+  // Adds b's shells to a: their boxes are apart, so no face of one meets
+  // the other.
+  void join(Piece& a, Piece& b) {
+    tagsOf(b.mesh);
+    a.mesh.join(b.mesh);
+    a.box.include(b.box);
+    ++stats_.merges;
+  }
+
+  // Pieces whose boxes are pairwise apart are joined into one group; the
+  // groups are then united pairwise in a balanced order, so that no mesh
+  // is corefined more than log₂(groups) times.
+  Piece unite(std::vector<Piece> pieces) {
+    std::vector<Piece> groups;
+    std::vector<std::vector<Bounds>> members;
+    for (Piece& piece : pieces) {
+      if (piece.empty()) continue;
+      std::size_t g = 0;
+      while (g < groups.size() &&
+             std::any_of(members[g].begin(), members[g].end(),
+                         [&](const Bounds& b) { return overlap(b, piece.box); }))
+        ++g;
+      if (g == groups.size()) {
+        groups.push_back(std::move(piece));
+        members.push_back({groups.back().box});
+      } else {
+        members[g].push_back(piece.box);
+        join(groups[g], piece);
+      }
+    }
+    return balanced(std::move(groups), Boolean::Op::Union);
+  }
+
+  Piece balanced(std::vector<Piece> pieces, Boolean::Op op) {
+    if (pieces.empty()) return {};
+    while (pieces.size() > 1) {
+      std::vector<Piece> next;
+      for (std::size_t i = 0; i + 1 < pieces.size(); i += 2) {
+        Piece& a = pieces[i];
+        Piece& b = pieces[i + 1];
+        if (!overlap(a.box, b.box)) {
+          if (op == Boolean::Op::Intersection) return {};
+          join(a, b);
+        } else {
+          corefine(a, b, op);
+          if (a.empty() && op == Boolean::Op::Intersection) return {};
+        }
+        next.push_back(std::move(a));
+      }
+      if (pieces.size() % 2) next.push_back(std::move(pieces.back()));
+      pieces = std::move(next);
+    }
+    return std::move(pieces[0]);
+  }
+
+  // a = a op b, in place.
+  void corefine(Piece& a, Piece& b, Boolean::Op op) {
+    ++stats_.corefinements;
+    tagsOf(a.mesh);
+    tagsOf(b.mesh);
+    TagVisitor<Mesh> visitor;
+    auto np = CGAL::parameters::visitor(visitor);
+    bool ok = false;
+    const char* name = "";
+    switch (op) {
+      case Boolean::Op::Union:
+        ok = PMP::corefine_and_compute_union(a.mesh, b.mesh, a.mesh, np);
+        name = "union";
+        break;
+      case Boolean::Op::Intersection:
+        ok = PMP::corefine_and_compute_intersection(a.mesh, b.mesh, a.mesh, np);
+        name = "intersection";
+        break;
+      case Boolean::Op::Difference:
+        ok = PMP::corefine_and_compute_difference(a.mesh, b.mesh, a.mesh, np);
+        name = "difference";
+        break;
+    }
+    if (!ok) {
+      Bounds where = a.box.intersected(b.box);
+      char at[160];
+      std::snprintf(at, sizeof at, "(%g, %g, %g)..(%g, %g, %g)", where.lo.x, where.lo.y, where.lo.z,
+                    where.hi.x, where.hi.y, where.hi.z);
+      throw CorefinementFailed(std::string("the ") + name + " of two operands within " + at +
+                               " is not a 2-manifold: they touch along an edge or at a point; "
+                               "move one a little, or let them overlap");
+    }
+    CGAL::Bbox_3 box = PMP::bbox(a.mesh);
+    a.box = a.empty() ? Bounds{}
+                      : Bounds{dvec3(box.xmin(), box.ymin(), box.zmin()),
+                               dvec3(box.xmax(), box.ymax(), box.zmax())};
+  }
+
+  double tolerance_;
+  MeshBooleanStats& stats_;
+  std::unordered_map<const Material*, std::uint32_t> tags_;
+};
+
+// The evaluated mesh with its points rounded to doubles (or floats), tags
+// kept.
+template <class Mesh>
+RoundedMesh roundedCopy(const Mesh& exact, bool floats) {
+  RoundedMesh rounded;
+  rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
+  std::vector<RoundedMesh::Vertex_index> vertex(exact.number_of_vertices() +
+                                                exact.number_of_removed_vertices());
+  auto round = [floats](const auto& x) {
+    double d = CGAL::to_double(x);
+    return floats ? double(float(d)) : d;
+  };
+  for (auto v : exact.vertices()) {
+    const auto& p = exact.point(v);
+    vertex[v] = rounded.add_vertex({round(p.x()), round(p.y()), round(p.z())});
+  }
+  auto tags = tagsOf(rounded);
+  auto exactTags = tagsOf(exact);
+  for (auto f : exact.faces()) {
+    std::array<RoundedMesh::Vertex_index, 3> t;
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(exact.halfedge(f), exact)) {
+      if (k == 3) throw std::logic_error("meshOfSolid: a face of the result is not a triangle");
+      t[k++] = vertex[v];
+    }
+    RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
+    if (g == RoundedMesh::null_face())
+      throw std::logic_error("meshOfSolid: the result is not a 2-manifold");
+    tags[g] = exactTags[f];
+  }
+  return rounded;
+}
+
+// Evaluates the solid with kernel K and rounds the result; null materials
+// list and an empty mesh for an empty part.
+template <class K>
+PartMesh evaluateWith(const Solid& solid, const Bounds& box, double tolerance, bool floats,
+                      MeshBooleanStats& stats) {
+  Evaluator<K> evaluator(tolerance, stats);
+  auto piece = evaluator.evaluate(solid, box);
+  PartMesh out;
+  out.materials = std::move(evaluator.materials);
+  if (piece.empty()) return out;
+  RoundedMesh rounded = roundedCopy(piece.mesh, floats);
+  // Rounding moves a point that a corefinement put a hair's breadth from
+  // another onto it, or onto the line through two others: the faces between
+  // them lose their area. CGAL collapses such edges and flips such faces
+  // away without moving any other point.
+  PMP::remove_degenerate_faces(rounded);
+  rounded.collect_garbage();
+
+  std::vector<std::uint32_t> index(rounded.number_of_vertices());
+  out.mesh.points.reserve(rounded.number_of_vertices());
+  for (RoundedMesh::Vertex_index v : rounded.vertices()) {
+    index[v] = std::uint32_t(out.mesh.points.size());
+    const auto& p = rounded.point(v);
+    out.mesh.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  auto tags = tagsOf(rounded);
+  out.mesh.triangles.reserve(rounded.number_of_faces());
+  out.material.reserve(rounded.number_of_faces());
+  for (RoundedMesh::Face_index f : rounded.faces()) {
+    TriangleMesh::Triangle t{};
+    int k = 0;
+    for (RoundedMesh::Vertex_index v : CGAL::vertices_around_face(rounded.halfedge(f), rounded))
+      t[k++ % 3] = index[v];
+    out.mesh.triangles.push_back(t);
+    out.material.push_back(tags[f]);
+  }
+  return out;
+}
+
+}  // namespace
+
+PartMesh meshOfSolid(const Solid& solid, double tolerance, bool floats, MeshBooleanStats* stats) {
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("the tolerance must be a positive number");
+  const Bounds box = solid.bounds();
+  if (!box.empty() && !box.finite())
+    throw std::invalid_argument(
+        "the part is unbounded; intersect it with a bounded solid (e.g. clip(...)) to export it");
+  MeshBooleanStats local;
+  MeshBooleanStats& counts = stats ? *stats : local;
+  using Clock = std::chrono::steady_clock;
+  auto checked = [&counts](PartMesh& part) {
+    const auto start = Clock::now();
+    std::string defect = part.mesh.empty() ? "" : meshDefect(part.mesh);
+    counts.checkSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+    return defect;
+  };
+  // Inexact constructions first; the exact kernel when they fail or leave
+  // a defect.
+  try {
+    PartMesh fast = evaluateWith<Inexact>(solid, box, tolerance, floats, counts);
+    if (checked(fast).empty()) return fast;
+  } catch (const CorefinementFailed&) {
+  }
+  counts.exact = true;
+  PartMesh exact = evaluateWith<Exact>(solid, box, tolerance, floats, counts);
+  if (std::string defect = checked(exact); !defect.empty())
+    throw std::runtime_error("the mesh would not be printable: " + defect);
+  return exact;
+}
+
+}  // namespace csgray

@@ -1,0 +1,168 @@
+#include "mesh/mesh_writer.h"
+
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/atomic_file.h"
+#include "io/srgb.h"
+
+namespace csgray {
+
+namespace {
+
+// Points in doubles, so that text formats keep every digit.
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using OpenMeshMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+void writeWithOpenMesh(const std::string& path, const std::string& tempPath, MeshFormat format,
+                       const TriangleMesh& mesh, bool ascii) {
+  OpenMeshMesh om;
+  om.reserve(mesh.points.size(), mesh.size() * 3 / 2, mesh.size());
+  std::vector<OpenMeshMesh::VertexHandle> vertices;
+  vertices.reserve(mesh.points.size());
+  for (const dvec3& p : mesh.points) vertices.push_back(om.add_vertex({p.x, p.y, p.z}));
+  for (const TriangleMesh::Triangle& t : mesh.triangles)
+    if (!om.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]).is_valid())
+      throw std::runtime_error("cannot write " + path + ": the mesh is not a 2-manifold");
+  om.request_face_normals();
+  om.update_face_normals();
+
+  OpenMesh::IO::Options options;
+  const bool binary = (format == MeshFormat::Stl || format == MeshFormat::Ply) && !ascii;
+  if (binary) options += OpenMesh::IO::Options::Binary;
+  if (format == MeshFormat::Stl) options += OpenMesh::IO::Options::FaceNormal;
+  if (format == MeshFormat::Ply && binary) options += OpenMesh::IO::Options::LSB;
+  std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + path + ": cannot create a file there");
+  const char* ext = format == MeshFormat::Stl   ? ".stl"
+                    : format == MeshFormat::Obj ? ".obj"
+                    : format == MeshFormat::Off ? ".off"
+                                                : ".ply";
+  // 17 significant digits print every double so that it reads back the same.
+  if (!OpenMesh::IO::write_mesh(om, out, ext, options, 17) || !out.flush())
+    throw std::runtime_error("cannot write " + path + ": the writer failed (disk full?)");
+}
+
+// lib3mf 1.x reports errors as codes; a failed call throws.
+void check3mf(LIB3MFRESULT result, const std::string& path, const char* what) {
+  if (result != LIB3MF_OK)
+    throw std::runtime_error("cannot write " + path + ": lib3mf could not " + what);
+}
+
+// Releases a lib3mf object when it goes out of scope. (lib3mf 1.x passes
+// objects as PLib3MFBase*, a pointer to its opaque handle type.)
+struct Released {
+  NMR::PLib3MFBase* object = nullptr;
+  ~Released() {
+    if (object) NMR::lib3mf_release(object);
+  }
+};
+
+void write3mf(const std::string& path, const std::string& tempPath, const PartMesh& part) {
+  using namespace NMR;
+  Released model, materials, object, handler, item, writer;
+  check3mf(lib3mf_createmodel(&model.object), path, "create a model");
+  check3mf(lib3mf_model_setunit(model.object, MODELUNIT_MILLIMETER), path, "set the unit");
+
+  // One base material per material of the part, coloured as the renderer
+  // shows it: linear RGB encoded as sRGB (3MF colours are sRGB).
+  check3mf(lib3mf_model_addbasematerialgroup(model.object, &materials.object), path,
+           "add materials");
+  DWORD groupId = 0;
+  check3mf(lib3mf_resource_getresourceid(materials.object, &groupId), path, "name materials");
+  std::vector<DWORD> materialIndex;
+  const SrgbEncoder srgb;
+  for (std::size_t i = 0; i < std::max<std::size_t>(1, part.materials.size()); ++i) {
+    dvec3 c = Material{}.color;
+    if (i < part.materials.size() && part.materials[i]) c = part.materials[i]->color;
+    std::string name = "material " + std::to_string(i + 1);
+    DWORD index = 0;
+    check3mf(lib3mf_basematerial_addmaterialutf8(materials.object, name.c_str(), srgb(float(c.r)),
+                                                 srgb(float(c.g)), srgb(float(c.b)), &index),
+             path, "add a material");
+    materialIndex.push_back(index);
+  }
+
+  check3mf(lib3mf_model_addmeshobject(model.object, &object.object), path, "add a mesh");
+  check3mf(
+      lib3mf_object_setnameutf8(object.object, std::filesystem::path(path).stem().string().c_str()),
+      path, "name the mesh");
+  std::vector<MODELMESHVERTEX> vertices(part.mesh.points.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    for (int k = 0; k < 3; ++k) vertices[i].m_fPosition[k] = float(part.mesh.points[i][k]);
+  std::vector<MODELMESHTRIANGLE> triangles(part.mesh.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) triangles[i].m_nIndices[k] = part.mesh.triangles[i][k];
+  check3mf(lib3mf_meshobject_setgeometry(object.object, vertices.data(), DWORD(vertices.size()),
+                                         triangles.data(), DWORD(triangles.size())),
+           path, "set the mesh");
+  check3mf(lib3mf_meshobject_createpropertyhandler(object.object, &handler.object), path,
+           "colour the mesh");
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    std::uint32_t m = i < part.material.size() ? part.material[i] : 0;
+    check3mf(lib3mf_propertyhandler_setbasematerial(
+                 handler.object, DWORD(i), groupId,
+                 materialIndex[std::min<std::size_t>(m, materialIndex.size() - 1)]),
+             path, "colour a triangle");
+  }
+  check3mf(lib3mf_model_addbuilditem(model.object, object.object, nullptr, &item.object), path,
+           "add the part to the build");
+
+  check3mf(lib3mf_model_querywriter(model.object, "3mf", &writer.object), path, "make a writer");
+  ULONG64 size = 0;
+  check3mf(lib3mf_writer_getstreamsize(writer.object, &size), path, "size the file");
+  std::vector<BYTE> buffer(size);
+  check3mf(lib3mf_writer_writetobuffer(writer.object, buffer.data(), size), path, "write the file");
+  std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
+  if (!out || !out.write(reinterpret_cast<const char*>(buffer.data()), std::streamsize(size)) ||
+      !out.flush())
+    throw std::runtime_error("cannot write " + path + ": the write failed (disk full?)");
+}
+
+}  // namespace
+
+MeshFormat meshFormatFor(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".stl") return MeshFormat::Stl;
+  if (ext == ".obj") return MeshFormat::Obj;
+  if (ext == ".off") return MeshFormat::Off;
+  if (ext == ".ply") return MeshFormat::Ply;
+  if (ext == ".3mf") return MeshFormat::ThreeMf;
+  throw std::invalid_argument("cannot write " + path + ": unknown mesh format '" + ext +
+                              "' (use .stl, .obj, .off, .ply or .3mf)");
+}
+
+bool storesFloats(MeshFormat format, bool ascii) {
+  return format == MeshFormat::ThreeMf || (format == MeshFormat::Stl && !ascii);
+}
+
+void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii) {
+  // OpenMesh reports each write on its log stream; csgray prints its own line.
+  omlog().disable();
+  const MeshFormat format = meshFormatFor(path);
+  AtomicFile file(path);
+  if (format == MeshFormat::ThreeMf)
+    write3mf(path, file.tempPath(), part);
+  else
+    writeWithOpenMesh(path, file.tempPath(), format, part.mesh, ascii);
+  file.commit();
+}
+
+}  // namespace csgray

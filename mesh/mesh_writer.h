@@ -1,0 +1,28 @@
+// Mesh files out: binary or ASCII STL, OBJ, OFF and PLY through OpenMesh,
+// and 3MF through lib3mf with each triangle's colour from its material.
+// Every write is atomic (io/atomic_file.h).
+#pragma once
+
+#include <string>
+
+#include "mesh/part_mesh.h"
+
+namespace csgray {
+
+enum class MeshFormat { Stl, Obj, Off, Ply, ThreeMf };
+
+// The format a file name asks for by its extension (any case). Throws
+// std::invalid_argument naming the extensions there are.
+MeshFormat meshFormatFor(const std::string& path);
+
+// Binary STL and 3MF hold 32-bit floats: a mesh that is valid in doubles
+// must be checked again once rounded to them.
+bool storesFloats(MeshFormat format, bool ascii);
+
+// Writes the part; ascii asks for text STL and PLY (OBJ and OFF are always
+// text, 3MF never). Text formats print 17 significant digits, so doubles
+// read back unchanged. Throws std::runtime_error naming the path; a failed
+// write leaves any old file as it was.
+void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii);
+
+}  // namespace csgray
