@@ -42,7 +42,8 @@ build: configure
 run: build
 	@mkdir -p out
 	$(CSGRAY) render examples/showcase.lua -o out/showcase.png --size 1024x768
-	@echo "The rendered showcase is out/showcase.png"
+	$(CSGRAY) export examples/showcase.lua -o out/showcase.stl
+	@echo "The rendered showcase is out/showcase.png, its printable mesh out/showcase.stl"
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

@@ -37,7 +37,8 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
   MeshBooleanStats counts;
   PartMesh mesh = [&] {
     try {
-      return meshOfSolid(*part, options.tolerance, storesFloats(format, options.ascii), &counts);
+      return meshOfSolid(*part, options.tolerance, storedCoordinate(format, options.ascii),
+                         &counts);
     } catch (const std::exception& e) {
       throw std::runtime_error(options.script + ": " + e.what());
     }
@@ -53,10 +54,9 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
   if (options.stats)
     std::fprintf(stderr,
                  "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
-                 "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one%s\n",
+                 "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one\n",
                  scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
-                 secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges,
-                 counts.exact ? "; evaluated again with exact constructions" : "");
+                 secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges);
   std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
               mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));
 }

@@ -16,10 +16,12 @@ local shapes = {
   piece(ellipsoid{radii={0.95, 0.7, 0.8}}, 0.85, 0.25, 0.2),
   piece(hyperboloid1{a=0.45, b=0.45, c=0.5}, 0.9, 0.55, 0.15),
   piece(hyperboloid2{a=0.28, b=0.28, c=0.3}, 0.85, 0.8, 0.2),
-  -- Middle row: the double cone and the two paraboloids, turned over so
-  -- that their curved faces are on top: the elliptic paraboloid is a dome
-  -- with its vertex at the top of its box, the saddle the top face.
-  piece(elliptic_cone{a=0.8, b=0.6, c=1}, 0.35, 0.7, 0.3),
+  -- Middle row: one nappe of the cone, its apex on the floor of its box (a
+  -- double cone's apex is a single point, which cannot be printed: export
+  -- refuses it), and the two paraboloids, turned over so that their curved
+  -- faces are on top: the elliptic paraboloid is a dome with its vertex at
+  -- the top of its box, the saddle the top face.
+  piece(elliptic_cone{a=0.8, b=0.6, c=1}:translate(0, 0, -1), 0.35, 0.7, 0.3),
   piece(elliptic_paraboloid{a=0.5, b=0.5}:rotate(180, 0, 0):translate(0, 0, 1), 0.2, 0.65, 0.6),
   piece(hyperbolic_paraboloid{a=1.3, b=1.3}:rotate(180, 0, 0), 0.25, 0.45, 0.85),
   -- Front row: the three cylinders along z. The parabolic cylinder's

@@ -29,7 +29,8 @@ local slot = union(
 local part = difference(union(plate, union(bosses)), union(holes), counterbore, bore, dimple, slot)
 part = part:material{color={0.75, 0.45, 0.15}}
 
-local ground = box{size={400, 400, 2}}:translate(-150, -165, -2)
+-- The ground is an open surface: it is rendered, but not exported.
+local ground = rectangle{size={400, 400}}:translate(-150, -165, 0)
                :material{color={0.35, 0.4, 0.45}}
 
 return scene{

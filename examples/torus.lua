@@ -30,7 +30,8 @@ local bored = difference(torus{R=2.5, r=0.9}, union(holes))
 -- A spindle torus: the apple.
 local apple = torus{R=0.9, r=1.6}:translate(1, -4.5, 1.4 * 1):material(colour(0.8, 0.15, 0.12))
 
-local slab = box{size={28, 20, 0.5}}:translate(-14, -9, -0.5)
+-- The slab is an open surface: rendered, not exported (the tori touch it).
+local slab = rectangle{size={28, 20}}:translate(-14, -9, 0)
   :material{color={0.55, 0.55, 0.5}, ambient=0.15, diffuse=0.85}
 
 return scene{

@@ -58,20 +58,15 @@ bool overlap(const Bounds& a, const Bounds& b) {
            a.hi.z < b.lo.z || b.hi.z < a.lo.z);
 }
 
-// A corefinement that CGAL could not make a 2-manifold, or (with inexact
-// constructions) a result that rounding spoiled: the exact kernel's turn.
-struct CorefinementFailed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Evaluates the tree with the kernel K: exact constructions (Epeck) make
-// a corefinement's new points exact, so the next boolean in a chain sees
-// them where they are; inexact ones (Epick, exact predicates) round them,
-// which is much faster and almost always harmless, and is checked after
-// (CGAL's manual, PMP, "Corefinement and Boolean Operations").
-template <class K>
+// Evaluates the tree with exact constructions (Epeck): a corefinement's new
+// points are exact, so the next boolean in a chain sees them where they
+// are (CGAL's manual, PMP, "Corefinement and Boolean Operations": with
+// inexact constructions a chained result may self-intersect, and CGAL's
+// face triangulation may then crash). Measured on plate(8), Epick was no
+// faster: CGAL computes the intersection points exactly either way.
 class Evaluator {
  public:
+  using K = Exact;
   using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
   using Face = typename Mesh::Face_index;
   using Vertex = typename Mesh::Vertex_index;
@@ -237,7 +232,7 @@ class Evaluator {
       char at[160];
       std::snprintf(at, sizeof at, "(%g, %g, %g)..(%g, %g, %g)", where.lo.x, where.lo.y, where.lo.z,
                     where.hi.x, where.hi.y, where.hi.z);
-      throw CorefinementFailed(std::string("the ") + name + " of two operands within " + at +
+      throw std::runtime_error(std::string("the ") + name + " of two operands within " + at +
                                " is not a 2-manifold: they touch along an edge or at a point; "
                                "move one a little, or let them overlap");
     }
@@ -255,14 +250,14 @@ class Evaluator {
 // The evaluated mesh with its points rounded to doubles (or floats), tags
 // kept.
 template <class Mesh>
-RoundedMesh roundedCopy(const Mesh& exact, bool floats) {
+RoundedMesh roundedCopy(const Mesh& exact, StoredCoordinate stored) {
   RoundedMesh rounded;
   rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
   std::vector<RoundedMesh::Vertex_index> vertex(exact.number_of_vertices() +
                                                 exact.number_of_removed_vertices());
-  auto round = [floats](const auto& x) {
+  auto round = [stored](const auto& x) {
     double d = CGAL::to_double(x);
-    return floats ? double(float(d)) : d;
+    return stored ? stored(d) : d;
   };
   for (auto v : exact.vertices()) {
     const auto& p = exact.point(v);
@@ -285,17 +280,16 @@ RoundedMesh roundedCopy(const Mesh& exact, bool floats) {
   return rounded;
 }
 
-// Evaluates the solid with kernel K and rounds the result; null materials
-// list and an empty mesh for an empty part.
-template <class K>
-PartMesh evaluateWith(const Solid& solid, const Bounds& box, double tolerance, bool floats,
-                      MeshBooleanStats& stats) {
-  Evaluator<K> evaluator(tolerance, stats);
+// Evaluates the solid and rounds the result; an empty mesh for an empty
+// part.
+PartMesh evaluate(const Solid& solid, const Bounds& box, double tolerance, StoredCoordinate stored,
+                  MeshBooleanStats& stats) {
+  Evaluator evaluator(tolerance, stats);
   auto piece = evaluator.evaluate(solid, box);
   PartMesh out;
   out.materials = std::move(evaluator.materials);
   if (piece.empty()) return out;
-  RoundedMesh rounded = roundedCopy(piece.mesh, floats);
+  RoundedMesh rounded = roundedCopy(piece.mesh, stored);
   // Rounding moves a point that a corefinement put a hair's breadth from
   // another onto it, or onto the line through two others: the faces between
   // them lose their area. CGAL collapses such edges and flips such faces
@@ -326,7 +320,8 @@ PartMesh evaluateWith(const Solid& solid, const Bounds& box, double tolerance, b
 
 }  // namespace
 
-PartMesh meshOfSolid(const Solid& solid, double tolerance, bool floats, MeshBooleanStats* stats) {
+PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored,
+                     MeshBooleanStats* stats) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("the tolerance must be a positive number");
   const Bounds box = solid.bounds();
@@ -335,25 +330,13 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, bool floats, MeshBool
         "the part is unbounded; intersect it with a bounded solid (e.g. clip(...)) to export it");
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  using Clock = std::chrono::steady_clock;
-  auto checked = [&counts](PartMesh& part) {
-    const auto start = Clock::now();
-    std::string defect = part.mesh.empty() ? "" : meshDefect(part.mesh);
-    counts.checkSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-    return defect;
-  };
-  // Inexact constructions first; the exact kernel when they fail or leave
-  // a defect.
-  try {
-    PartMesh fast = evaluateWith<Inexact>(solid, box, tolerance, floats, counts);
-    if (checked(fast).empty()) return fast;
-  } catch (const CorefinementFailed&) {
-  }
-  counts.exact = true;
-  PartMesh exact = evaluateWith<Exact>(solid, box, tolerance, floats, counts);
-  if (std::string defect = checked(exact); !defect.empty())
-    throw std::runtime_error("the mesh would not be printable: " + defect);
-  return exact;
+  PartMesh part = evaluate(solid, box, tolerance, stored, counts);
+  const auto start = std::chrono::steady_clock::now();
+  std::string defect = part.mesh.empty() ? "" : meshDefect(part.mesh);
+  counts.checkSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!defect.empty()) throw std::runtime_error("the mesh would not be printable: " + defect);
+  return part;
 }
 
 }  // namespace csgray

@@ -18,7 +18,6 @@ struct MeshBooleanStats {
   std::size_t primitives = 0;     // primitives tessellated
   std::size_t corefinements = 0;  // CGAL boolean operations
   std::size_t merges = 0;         // operands joined without one (boxes apart)
-  bool exact = false;             // evaluated again with exact constructions
   double checkSeconds = 0.0;      // in meshDefect
 };
 
@@ -28,13 +27,11 @@ struct MeshBooleanStats {
 // they are cut by. Throws std::invalid_argument for an unbounded part or a
 // primitive that cannot be tessellated, std::runtime_error when CGAL cannot
 // make a 2-manifold result (operands that touch along an edge or a point).
-// The exact result is rounded to doubles, or to floats when the file holds
-// floats (binary STL, 3MF); faces that rounding leaves without area are
-// removed. The result is checked with meshDefect (closed, 2-manifold,
-// outward, no self-intersections): the booleans run with inexact
-// constructions first and again with exact ones if that check fails; if it
-// still fails, std::runtime_error says why.
-PartMesh meshOfSolid(const Solid& solid, double tolerance, bool floats = false,
+// The exact result is rounded to doubles and then by `stored` (to what the
+// file will hold: floats for binary STL, ...); faces that rounding leaves
+// without area are removed. The result is checked with meshDefect (closed, 2-manifold,
+// outward, no self-intersections); std::runtime_error says why it fails.
+PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored = nullptr,
                      MeshBooleanStats* stats = nullptr);
 
 }  // namespace csgray

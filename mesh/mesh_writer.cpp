@@ -6,6 +6,8 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -60,10 +62,17 @@ void writeWithOpenMesh(const std::string& path, const std::string& tempPath, Mes
     throw std::runtime_error("cannot write " + path + ": the writer failed (disk full?)");
 }
 
-// lib3mf 1.x reports errors as codes; a failed call throws.
-void check3mf(LIB3MFRESULT result, const std::string& path, const char* what) {
-  if (result != LIB3MF_OK)
-    throw std::runtime_error("cannot write " + path + ": lib3mf could not " + what);
+// lib3mf 1.x reports errors as codes; a failed call throws with the
+// library's own message where it has one.
+void check3mf(LIB3MFRESULT result, const std::string& path, const char* what,
+              NMR::PLib3MFBase* object = nullptr) {
+  if (result == LIB3MF_OK) return;
+  std::string message = "cannot write " + path + ": lib3mf could not " + what;
+  DWORD code = 0;
+  LPCSTR text = nullptr;
+  if (object && NMR::lib3mf_getlasterror(object, &code, &text) == LIB3MF_OK && text)
+    message += std::string(" (") + text + ")";
+  throw std::runtime_error(message);
 }
 
 // Releases a lib3mf object when it goes out of scope. (lib3mf 1.x passes
@@ -77,7 +86,7 @@ struct Released {
 
 void write3mf(const std::string& path, const std::string& tempPath, const PartMesh& part) {
   using namespace NMR;
-  Released model, materials, object, handler, item, writer;
+  Released model, materials, object, handler, defaults, item, writer;
   check3mf(lib3mf_createmodel(&model.object), path, "create a model");
   check3mf(lib3mf_model_setunit(model.object, MODELUNIT_MILLIMETER), path, "set the unit");
 
@@ -97,6 +106,10 @@ void write3mf(const std::string& path, const std::string& tempPath, const PartMe
     check3mf(lib3mf_basematerial_addmaterialutf8(materials.object, name.c_str(), srgb(float(c.r)),
                                                  srgb(float(c.g)), srgb(float(c.b)), &index),
              path, "add a material");
+    // lib3mf leaves the alpha of a colour added this way at 0 (clear).
+    check3mf(lib3mf_basematerial_setdisplaycolorrgba(materials.object, index, srgb(float(c.r)),
+                                                     srgb(float(c.g)), srgb(float(c.b)), 255),
+             path, "colour a material");
     materialIndex.push_back(index);
   }
 
@@ -122,18 +135,19 @@ void write3mf(const std::string& path, const std::string& tempPath, const PartMe
                  materialIndex[std::min<std::size_t>(m, materialIndex.size() - 1)]),
              path, "colour a triangle");
   }
+  // 3MF wants a default for an object whose triangles have properties.
+  check3mf(lib3mf_object_createdefaultpropertyhandler(object.object, &defaults.object), path,
+           "colour the mesh");
+  check3mf(
+      lib3mf_defaultpropertyhandler_setbasematerial(defaults.object, groupId, materialIndex[0]),
+      path, "colour the mesh");
   check3mf(lib3mf_model_addbuilditem(model.object, object.object, nullptr, &item.object), path,
            "add the part to the build");
 
   check3mf(lib3mf_model_querywriter(model.object, "3mf", &writer.object), path, "make a writer");
-  ULONG64 size = 0;
-  check3mf(lib3mf_writer_getstreamsize(writer.object, &size), path, "size the file");
-  std::vector<BYTE> buffer(size);
-  check3mf(lib3mf_writer_writetobuffer(writer.object, buffer.data(), size), path, "write the file");
-  std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
-  if (!out || !out.write(reinterpret_cast<const char*>(buffer.data()), std::streamsize(size)) ||
-      !out.flush())
-    throw std::runtime_error("cannot write " + path + ": the write failed (disk full?)");
+  // lib3mf writes the zip itself, to the temporary beside the target.
+  check3mf(lib3mf_writer_writetofileutf8(writer.object, tempPath.c_str()), path, "write the file",
+           writer.object);
 }
 
 }  // namespace
@@ -149,8 +163,23 @@ MeshFormat meshFormatFor(const std::string& path) {
                               "' (use .stl, .obj, .off, .ply or .3mf)");
 }
 
-bool storesFloats(MeshFormat format, bool ascii) {
-  return format == MeshFormat::ThreeMf || (format == MeshFormat::Stl && !ascii);
+namespace {
+
+double asDouble(double x) { return x; }
+double asFloat(double x) { return float(x); }
+// lib3mf 1.8 prints a coordinate as the float with "%f": six decimals.
+double asSixDecimals(double x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%f", double(float(x)));
+  return std::strtof(text, nullptr);
+}
+
+}  // namespace
+
+StoredCoordinate storedCoordinate(MeshFormat format, bool ascii) {
+  if (format == MeshFormat::ThreeMf) return asSixDecimals;
+  if (format == MeshFormat::Stl && !ascii) return asFloat;
+  return asDouble;
 }
 
 void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii) {

@@ -15,9 +15,11 @@ enum class MeshFormat { Stl, Obj, Off, Ply, ThreeMf };
 // std::invalid_argument naming the extensions there are.
 MeshFormat meshFormatFor(const std::string& path);
 
-// Binary STL and 3MF hold 32-bit floats: a mesh that is valid in doubles
-// must be checked again once rounded to them.
-bool storesFloats(MeshFormat format, bool ascii);
+// A coordinate as the file will hold it: binary STL keeps 32-bit floats,
+// 3MF (as lib3mf 1.8 writes it) floats printed with six decimals, the text
+// formats every digit of a double. The exporter rounds the mesh this way
+// before it checks it, so that the check is of what is written.
+StoredCoordinate storedCoordinate(MeshFormat format, bool ascii);
 
 // Writes the part; ascii asks for text STL and PLY (OBJ and OFF are always
 // text, 3MF never). Text formats print 17 significant digits, so doubles

@@ -16,4 +16,7 @@ struct PartMesh {
   std::vector<MaterialPtr> materials;   // distinct, in order of first use; may hold null
 };
 
+// How a file stores a coordinate: the value it reads back as.
+using StoredCoordinate = double (*)(double);
+
 }  // namespace csgray

@@ -20,6 +20,11 @@ class Quadric : public Primitive {
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
+  // A closed mesh of the solid within a box a little larger than the region
+  // (see quadric.cpp); throws std::invalid_argument where that cannot be a
+  // 2-manifold (a cone's apex or two crossing planes inside the region) and
+  // for the outside of an ellipsoid, elliptic cylinder, hyperboloid or cone.
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
   std::shared_ptr<Primitive> clone() const override { return std::make_shared<Quadric>(*this); }
 
  private:
