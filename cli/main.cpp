@@ -18,6 +18,7 @@
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_plugin.h"
+#include "mesh/mesh_import.h"
 #include "modeler/primitive.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
@@ -146,6 +147,7 @@ int main(int argc, char** argv) {
   bool adaptive = false, stats = false;
   std::vector<std::string> aovs;
   double scriptTimeout = 60.0;
+  std::vector<std::string> allowedFolders;
   ExportOptions exportOptions;
 
   CLI::App* render = app.add_subcommand("render", "Ray trace a part script to an image");
@@ -174,6 +176,9 @@ int main(int argc, char** argv) {
   render->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
       ->check(timeoutRange)
       ->capture_default_str();
+  const char* allowHelp =
+      "A folder outside the script's that its files (meshes, images) may come from";
+  render->add_option("--allow-path", allowedFolders, allowHelp)->check(CLI::ExistingDirectory);
 
   CLI::App* exporter =
       app.add_subcommand("export", "Write a part script's solids as a closed, printable mesh");
@@ -195,6 +200,7 @@ int main(int argc, char** argv) {
       ->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
       ->check(timeoutRange)
       ->capture_default_str();
+  exporter->add_option("--allow-path", allowedFolders, allowHelp)->check(CLI::ExistingDirectory);
 
   CLI::App* info = app.add_subcommand("info", "Print the bounds and tree size of a part script");
   info->add_option("script", script, "Lua part script")->required();
@@ -202,6 +208,7 @@ int main(int argc, char** argv) {
   info->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
       ->check(timeoutRange)
       ->capture_default_str();
+  info->add_option("--allow-path", allowedFolders, allowHelp)->check(CLI::ExistingDirectory);
 
   try {
     app.parse(argc, argv);
@@ -216,6 +223,11 @@ int main(int argc, char** argv) {
     ScriptOptions scriptOptions;
     scriptOptions.defines = parseDefines(defineItems);
     scriptOptions.loadImage = readTextureImage;
+    scriptOptions.loadMesh = importMesh;
+    scriptOptions.allowedFolders = allowedFolders;
+    scriptOptions.warn = [](const std::string& message) {
+      std::cerr << "csgray: warning: " << message << "\n";
+    };
     // Runs the script under the watchdog: nothing is written meanwhile.
     auto runScript = [&] {
       char limit[32];

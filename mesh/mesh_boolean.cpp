@@ -5,6 +5,7 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -280,24 +281,12 @@ RoundedMesh roundedCopy(const Mesh& exact, StoredCoordinate stored) {
   return rounded;
 }
 
-// Evaluates the solid and rounds the result; an empty mesh for an empty
-// part.
-PartMesh evaluate(const Solid& solid, const Bounds& box, double tolerance, StoredCoordinate stored,
-                  MeshBooleanStats& stats) {
-  Evaluator evaluator(tolerance, stats);
-  auto piece = evaluator.evaluate(solid, box);
+// The rounded mesh as a PartMesh.
+PartMesh partOf(const RoundedMesh& rounded, std::vector<MaterialPtr> materials) {
   PartMesh out;
-  out.materials = std::move(evaluator.materials);
-  if (piece.empty()) return out;
-  RoundedMesh rounded = roundedCopy(piece.mesh, stored);
-  // Rounding moves a point that a corefinement put a hair's breadth from
-  // another onto it, or onto the line through two others: the faces between
-  // them lose their area. CGAL collapses such edges and flips such faces
-  // away without moving any other point.
-  PMP::remove_degenerate_faces(rounded);
-  rounded.collect_garbage();
-
-  std::vector<std::uint32_t> index(rounded.number_of_vertices());
+  out.materials = std::move(materials);
+  std::vector<std::uint32_t> index(rounded.number_of_vertices() +
+                                   rounded.number_of_removed_vertices());
   out.mesh.points.reserve(rounded.number_of_vertices());
   for (RoundedMesh::Vertex_index v : rounded.vertices()) {
     index[v] = std::uint32_t(out.mesh.points.size());
@@ -330,9 +319,31 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
         "the part is unbounded; intersect it with a bounded solid (e.g. clip(...)) to export it");
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  PartMesh part = evaluate(solid, box, tolerance, stored, counts);
+  Evaluator evaluator(tolerance, counts);
+  auto piece = evaluator.evaluate(solid, box);
+  if (piece.empty()) return PartMesh{{}, {}, std::move(evaluator.materials)};
+
+  RoundedMesh rounded = roundedCopy(piece.mesh, stored);
+  // Rounding moves a point that a corefinement put a hair's breadth from
+  // another onto it, or onto the line through two others: the faces between
+  // them lose their area. CGAL collapses such edges and flips such faces
+  // away without moving any other point.
+  PMP::remove_degenerate_faces(rounded);
+  PartMesh part = partOf(rounded, evaluator.materials);
+
   const auto start = std::chrono::steady_clock::now();
-  std::string defect = part.mesh.empty() ? "" : meshDefect(part.mesh);
+  std::string defect = meshDefect(part.mesh);
+  if (!defect.empty()) {
+    // Rounding can also fold a sliver over its neighbour where faces meet
+    // at a hair's breadth (coplanar faces of a rotated union): CGAL removes
+    // the faces that cross and fills the holes they leave, a change within
+    // the rounding error.
+    ++counts.repairs;
+    PMP::experimental::remove_self_intersections(rounded);
+    PMP::remove_degenerate_faces(rounded);
+    part = partOf(rounded, evaluator.materials);
+    defect = meshDefect(part.mesh);
+  }
   counts.checkSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!defect.empty()) throw std::runtime_error("the mesh would not be printable: " + defect);

@@ -84,6 +84,39 @@ struct Released {
   }
 };
 
+// lib3mf 1.8 prints a coordinate by cutting its float after six decimals,
+// not by rounding it. The exporter has already rounded each coordinate to
+// the float nearest to a six-decimal number d; where that float lies
+// between 0 and d, the cut would print the number below d, so the next
+// float away from zero is handed over instead: it prints as d, and d reads
+// back as the coordinate checked.
+float printsAsSixDecimals(double stored) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", stored);
+  const double d = std::strtod(text, nullptr);
+  const float f = float(stored);
+  if (std::abs(double(f)) < std::abs(d)) return std::nextafter(f, d < 0 ? -INFINITY : INFINITY);
+  return f;
+}
+
+// Where lib3mf writes a 3MF file: its callbacks (lib3mf 1.x,
+// NMR_ExportStream_Callback.h) return 0 for success.
+struct ZipBuffer {
+  std::vector<char> bytes;
+  std::size_t position = 0;
+  static std::uint32_t write(std::uint8_t* data, std::uint32_t count, void* self) {
+    auto& zip = *static_cast<ZipBuffer*>(self);
+    if (zip.bytes.size() < zip.position + count) zip.bytes.resize(zip.position + count);
+    std::copy(data, data + count, zip.bytes.begin() + std::ptrdiff_t(zip.position));
+    zip.position += count;
+    return 0;
+  }
+  static std::uint32_t seek(std::uint64_t position, void* self) {
+    static_cast<ZipBuffer*>(self)->position = position;
+    return 0;
+  }
+};
+
 void write3mf(const std::string& path, const std::string& tempPath, const PartMesh& part) {
   using namespace NMR;
   Released model, materials, object, handler, defaults, item, writer;
@@ -119,7 +152,8 @@ void write3mf(const std::string& path, const std::string& tempPath, const PartMe
       path, "name the mesh");
   std::vector<MODELMESHVERTEX> vertices(part.mesh.points.size());
   for (std::size_t i = 0; i < vertices.size(); ++i)
-    for (int k = 0; k < 3; ++k) vertices[i].m_fPosition[k] = float(part.mesh.points[i][k]);
+    for (int k = 0; k < 3; ++k)
+      vertices[i].m_fPosition[k] = printsAsSixDecimals(part.mesh.points[i][k]);
   std::vector<MODELMESHTRIANGLE> triangles(part.mesh.size());
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (int k = 0; k < 3; ++k) triangles[i].m_nIndices[k] = part.mesh.triangles[i][k];
@@ -145,9 +179,16 @@ void write3mf(const std::string& path, const std::string& tempPath, const PartMe
            "add the part to the build");
 
   check3mf(lib3mf_model_querywriter(model.object, "3mf", &writer.object), path, "make a writer");
-  // lib3mf writes the zip itself, to the temporary beside the target.
-  check3mf(lib3mf_writer_writetofileutf8(writer.object, tempPath.c_str()), path, "write the file",
-           writer.object);
+  // lib3mf writes the zip into memory, and this code writes it to the
+  // temporary: lib3mf's own file writer aborts the process (an exception
+  // through a destructor) when the disk is full.
+  ZipBuffer zip;
+  check3mf(lib3mf_writer_writetocallback(writer.object, reinterpret_cast<void*>(&ZipBuffer::write),
+                                         reinterpret_cast<void*>(&ZipBuffer::seek), &zip),
+           path, "write the file", writer.object);
+  std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
+  if (!out || !out.write(zip.bytes.data(), std::streamsize(zip.bytes.size())) || !out.flush())
+    throw std::runtime_error("cannot write " + path + ": the write failed (disk full?)");
 }
 
 }  // namespace
@@ -165,8 +206,14 @@ MeshFormat meshFormatFor(const std::string& path) {
 
 namespace {
 
-double asDouble(double x) { return x; }
 double asFloat(double x) { return float(x); }
+// OpenMesh prints a coordinate of an ASCII STL file as the float with ten
+// significant digits.
+double asTenDigits(double x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.10g", double(float(x)));
+  return std::strtod(text, nullptr);
+}
 // lib3mf 1.8 prints a coordinate as the float with "%f": six decimals.
 double asSixDecimals(double x) {
   char text[64];
@@ -176,10 +223,12 @@ double asSixDecimals(double x) {
 
 }  // namespace
 
+// OpenMesh writes coordinates as floats in every format: binary STL as
+// such, OBJ, OFF and PLY with every digit of the float, ASCII STL with ten
+// significant digits.
 StoredCoordinate storedCoordinate(MeshFormat format, bool ascii) {
   if (format == MeshFormat::ThreeMf) return asSixDecimals;
-  if (format == MeshFormat::Stl && !ascii) return asFloat;
-  return asDouble;
+  return format == MeshFormat::Stl && ascii ? asTenDigits : asFloat;
 }
 
 void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii) {

@@ -15,9 +15,9 @@ enum class MeshFormat { Stl, Obj, Off, Ply, ThreeMf };
 // std::invalid_argument naming the extensions there are.
 MeshFormat meshFormatFor(const std::string& path);
 
-// A coordinate as the file will hold it: binary STL keeps 32-bit floats,
-// 3MF (as lib3mf 1.8 writes it) floats printed with six decimals, the text
-// formats every digit of a double. The exporter rounds the mesh this way
+// A coordinate as the file will hold it: a 32-bit float (OpenMesh writes
+// floats in every format), or for 3MF (as lib3mf 1.8 writes it) the float
+// of a number with six decimals. The exporter rounds the mesh this way
 // before it checks it, so that the check is of what is written.
 StoredCoordinate storedCoordinate(MeshFormat format, bool ascii);
 

@@ -314,5 +314,46 @@ else
   fail "textured_box.lua by a relative path from a subfolder"; cat "$work/stderr"
 fi
 
+# ---- export ------------------------------------------------------------------
+# A good export writes the mesh and says so, in every format.
+for ext in stl obj off ply 3mf; do
+  if "$csgray" export "$work/part.lua" -o "$work/part.$ext" >"$work/stdout" 2>"$work/stderr" &&
+     [ -s "$work/part.$ext" ] && grep -q "wrote $work/part.$ext (" "$work/stdout" && [ ! -s "$work/stderr" ]; then
+    pass
+  else
+    fail "good export to .$ext"; cat "$work/stdout" "$work/stderr"
+  fi
+done
+# Bad exports: one line, exit 1 (2 for the command line), no file.
+expect_failure "export of an unknown format" "$work/part.xyz" export "$work/part.lua" -o "$work/part.xyz"
+expect_in_stderr "export of an unknown format" "unknown mesh format '.xyz'"
+expect_failure "export of an unbounded part" "$work/unbounded.stl" export "$work/unbounded.lua" -o "$work/unbounded.stl"
+expect_in_stderr "export of an unbounded part" "unbounded.lua: the part is unbounded"
+printf 'return box(1) + box(1):translate(1, 1, 0)\n' > "$work/edge.lua"
+expect_failure "export of boxes that share an edge" "$work/edge.stl" export "$work/edge.lua" -o "$work/edge.stl"
+expect_in_stderr "export of boxes that share an edge" "is not a 2-manifold"
+printf 'return torus{R=2, r=2}\n' > "$work/horn.lua"
+expect_failure "export of a horn torus" "$work/horn.stl" export "$work/horn.lua" -o "$work/horn.stl"
+expect_in_stderr "export of a horn torus" "horn torus"
+expect_exit 2 "export with a zero tolerance" "$work/zero.stl" export "$work/part.lua" -o "$work/zero.stl" --tolerance 0
+expect_failure "export over the script" "" export "$work/part.lua" -o "$work/part.lua"
+expect_failure "export into a missing folder" "" export "$work/part.lua" -o "$work/nowhere/part.stl"
+# A failed export leaves the old file as it was and no temporary behind.
+printf 'old' > "$work/keep.stl"
+expect_exit 1 "failed export keeps the old file" "" export "$work/horn.lua" -o "$work/keep.stl"
+if [ "$(cat "$work/keep.stl")" = old ] && [ -z "$(ls -A "$work" | grep '^\.keep')" ]; then
+  pass
+else
+  fail "a failed export changed keep.stl or left a temporary"
+fi
+# Open surfaces are left out, with a warning.
+printf 'return scene{objects={box(1), plane{normal={0, 0, 1}, offset=0}}}\n' > "$work/floor.lua"
+if "$csgray" export "$work/floor.lua" -o "$work/floor.stl" >/dev/null 2>"$work/stderr" && [ -s "$work/floor.stl" ]; then
+  pass
+else
+  fail "export with a floor"; cat "$work/stderr"
+fi
+expect_in_stderr "export with a floor" "1 open surface is not exported"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "io/image_file.h"
+#include "mesh/mesh_import.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
 
@@ -25,6 +26,7 @@ class Example : public ::testing::TestWithParam<std::string> {};
 TEST_P(Example, Renders) {
   ScriptOptions options;
   options.loadImage = readTextureImage;
+  options.loadMesh = importMesh;
   Scene scene = runScriptFile(GetParam(), options);
   ASSERT_FALSE(scene.objects.empty());
   Image image = Renderer(scene, {160, 120, 0}).render();

@@ -155,7 +155,9 @@ struct Case {
   std::shared_ptr<const Primitive> primitive;
   double volume, area;
   std::function<double(const dvec3&)> distance;
-  bool convex;
+  // Vertices on a convex surface: the mesh lies inside the solid. (The
+  // sphere's mesh straddles its surface instead.)
+  bool inscribed;
 };
 
 std::shared_ptr<Primitive> cone(double r1, double r2, double h) {
@@ -231,7 +233,7 @@ std::vector<Case> bounded() {
   std::vector<Case> cases;
   cases.push_back({"sphere", Primitive::create<Sphere>(2.5), 4.0 / 3.0 * kPi * std::pow(2.5, 3),
                    4.0 * kPi * 2.5 * 2.5,
-                   [](const dvec3& p) { return std::abs(glm::length(p) - 2.5); }, true});
+                   [](const dvec3& p) { return std::abs(glm::length(p) - 2.5); }, false});
   cases.push_back({"box", Primitive::create<Box>(dvec3(1.0, 2.0, 3.0)), 6.0, 22.0,
                    [](const dvec3& p) {
                      return boxDistance(p, {1.0, 2.0, 3.0});
@@ -263,7 +265,7 @@ void expectMeshOf(const Case& c, const TriangleMesh& mesh, double tolerance, dou
   double volume = mesh.volume();
   EXPECT_GT(volume, 0.0) << "inside out";
   EXPECT_NEAR(volume, c.volume * volumeScale, tolerance * c.area * volumeScale * 1.01);
-  if (c.convex) {
+  if (c.inscribed) {
     EXPECT_LE(volume, c.volume * volumeScale * (1.0 + 1e-12));
   }
   EXPECT_LE(maxSampleDistance(mesh, *c.primitive, c.distance), objectTolerance * (1.0 + 1e-9));
@@ -297,6 +299,26 @@ TEST(Tessellation, ScaledAndMirroredFramesKeepTheMeshOutward) {
       expectMeshOf(c, mesh, tolerance / 3.0, det, tolerance / 3.0);
     }
   }
+}
+
+TEST(Tessellation, SphereMeshStraddlesTheSurfaceByHalfTheError) {
+  // Vertices outside and face centres inside, by the same distance: the
+  // farthest points out and in are both close to the tolerance's limit,
+  // and the volume is closer to the sphere's than an inscribed mesh's.
+  const double r = 4.0, tolerance = 0.01;
+  TriangleMesh mesh = Primitive::create<Sphere>(r)->tessellate(tolerance, Bounds::everything());
+  double outside = 0.0, inside = 0.0;
+  for (const dvec3& p : mesh.points) outside = std::max(outside, glm::length(p) - r);
+  for (const auto& t : mesh.triangles) {
+    const dvec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    inside = std::max(inside, r - glm::dot(a, glm::normalize(glm::cross(b - a, c - a))));
+  }
+  EXPECT_LE(outside, tolerance);
+  EXPECT_LE(inside, tolerance);
+  EXPECT_NEAR(outside, inside, 1e-12);
+  EXPECT_GT(outside, 0.5 * tolerance);
+  const double volume = 4.0 / 3.0 * kPi * r * r * r;
+  EXPECT_LT(std::abs(mesh.volume() - volume), 0.5 * tolerance * 4.0 * kPi * r * r);
 }
 
 TEST(Tessellation, VertexCountFollowsTheTolerance) {

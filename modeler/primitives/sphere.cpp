@@ -133,20 +133,32 @@ double geodesicError(const TriangleMesh& mesh, double radius) {
 }  // namespace
 
 // A geodesic sphere: its triangles are nearly equal, so it needs about half
-// the triangles of a latitude-longitude mesh for the same tolerance. The
-// frequency is estimated from the largest triangle (near a face centre of
-// the icosahedron, whose edge subtends 1.1071 rad) and raised until the
-// measured error is within the tolerance. The vertices are on the sphere
-// and it is convex, so the mesh lies inside.
+// the triangles of a latitude-longitude mesh for the same tolerance.
+//
+// The mesh straddles the sphere rather than lying inside it: with its
+// vertices at radius ρ, every point of a face lies between ρ·c and ρ from
+// the centre, c = 1 − (the largest sag of a unit geodesic sphere of the
+// frequency). ρ = 2r/(1 + c) puts the vertices and the face centres the
+// same distance r(1 − c)/(1 + c) outside and inside the sphere: half the
+// error of an inscribed mesh, so half the triangles for a tolerance (the
+// best a mesh of these faces can do, the minimax placement). The frequency
+// starts from the largest triangle (near a face centre of the icosahedron,
+// whose edge subtends 1.1071 rad; a triangle of edge L sags L²/(6r), so
+// L = √(12 r tol)) and is raised until the measured error is within the
+// tolerance.
 TriangleMesh Sphere::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
-  // A triangle of edge L has circumradius L/√3 and sags ρ²/(2r) = L²/(6r).
-  const double edge = std::sqrt(6.0 * radius_ * std::min(tolerance, radius_));
+  const double edge = std::sqrt(12.0 * radius_ * std::min(tolerance, radius_));
   int f = std::max(2, int(std::ceil(1.1071 * radius_ / edge)));
   for (;;) {
     requireTriangleBudget(kind(), 20.0 * f * f, tolerance);
-    TriangleMesh mesh = geodesicSphere(radius_, f);
-    if (geodesicError(mesh, radius_) <= tolerance) return mesh;
+    TriangleMesh mesh = geodesicSphere(1.0, f);
+    const double c = 1.0 - geodesicError(mesh, 1.0);
+    if (radius_ * (1.0 - c) / (1.0 + c) <= tolerance) {
+      const double rho = 2.0 * radius_ / (1.0 + c);
+      for (dvec3& p : mesh.points) p *= rho;
+      return mesh;
+    }
     f = int(std::ceil(f * 1.1));
   }
 }

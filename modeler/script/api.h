@@ -15,6 +15,11 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options);
 // The options registerScriptApi was given.
 const ScriptOptions& scriptOptionsOf(lua_State* L);
 
+// A file named by the script for `function` (e.g. "mesh"): relative to the
+// script's folder, and not outside it or the --allow-path folders; throws
+// std::invalid_argument otherwise.
+std::string scriptFile(lua_State* L, const std::string& function, const std::string& name);
+
 // The part of the API in api_scene.cpp: materials, textures, lights, open
 // surfaces (which take the given transform methods), camera and scene.
 void registerSceneApi(lua_State* L, const luaL_Reg* transformMethods);

@@ -1,7 +1,10 @@
 // polyhedron{points=..., faces=...}: OpenSCAD's polyhedron, a closed
-// triangle mesh from points and faces (docs/script.md, Polyhedron).
+// triangle mesh from points and faces (docs/script.md, Polyhedron), and
+// mesh{file=...}: the same solid from a mesh file.
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -104,8 +107,44 @@ int polyhedron(lua_State* L) {
   return 1;
 }
 
+// mesh{file="part.stl", repair=false}: the file is read by the program
+// (ScriptOptions::loadMesh), which refuses a mesh that is not a solid.
+int meshFn(lua_State* L) {
+  LuaArgs args(L, 1, "mesh");
+  std::optional<std::string> file = args.string("file");
+  const bool repair = args.boolean("repair").value_or(false);
+  args.finish();
+  if (!file) throw std::invalid_argument("mesh: needs file=\"part.stl\" (STL, OBJ, OFF or PLY)");
+  const ScriptOptions& options = scriptOptionsOf(L);
+  if (!options.loadMesh) throw std::invalid_argument("mesh: this program cannot read mesh files");
+  const std::string path = scriptFile(L, "mesh", *file);
+  std::string report;
+  std::shared_ptr<MeshSolid> mesh;
+  try {
+    TriangleMesh loaded = options.loadMesh(path, repair, report);
+    // MeshSolid takes OpenSCAD's clockwise faces.
+    std::vector<std::vector<std::int64_t>> faces;
+    faces.reserve(loaded.triangles.size());
+    for (const auto& t : loaded.triangles) faces.push_back({t[0], t[2], t[1]});
+    mesh = Primitive::create<MeshSolid>(loaded.points, faces);
+  } catch (const std::invalid_argument& e) {
+    // The loader's message begins with the file's name; MeshSolid's with
+    // "polyhedron: ", which would mislead here.
+    std::string message = e.what();
+    if (message.starts_with("polyhedron: ")) message = *file + ": " + message.substr(12);
+    throw std::invalid_argument("mesh: " + message);
+  }
+  if (!report.empty() && options.warn) options.warn("mesh: " + *file + ": " + report);
+  Sandbox::of(L).charge(L, mesh->memoryBytes());
+  pushSolid(L, mesh);
+  return 1;
+}
+
 }  // namespace
 
-void registerMeshApi(lua_State* L) { lua_register(L, "polyhedron", guarded<polyhedron>); }
+void registerMeshApi(lua_State* L) {
+  lua_register(L, "polyhedron", guarded<polyhedron>);
+  lua_register(L, "mesh", guarded<meshFn>);
+}
 
 }  // namespace csgray

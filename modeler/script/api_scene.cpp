@@ -109,6 +109,9 @@ int checker(lua_State* L) {
 // A file named by the script: relative to the script's folder, and not
 // outside it (scripts are untrusted: they may not read /etc/passwd as a
 // texture).
+}  // namespace
+
+// Declared in api_mesh.cpp too, which reads mesh files.
 std::string scriptFile(lua_State* L, const std::string& function, const std::string& name) {
   namespace fs = std::filesystem;
   const ScriptOptions& options = scriptOptionsOf(L);
@@ -119,12 +122,23 @@ std::string scriptFile(lua_State* L, const std::string& function, const std::str
     throw std::invalid_argument(function + ": file name contains a NUL byte");
   fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
   fs::path file = fs::weakly_canonical(folder / fs::path(name));
-  auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
-  if (fs::path(name).is_absolute() || end != folder.end())
-    throw std::invalid_argument(function + ": file " + name +
-                                " is outside the script's folder; give a path relative to it");
-  return file.string();
+  auto inside = [&file](const fs::path& dir) {
+    auto [end, _] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
+    return end == dir.end();
+  };
+  // Symbolic links are followed before the check (weakly_canonical), so a
+  // link cannot lead out either.
+  if (!fs::path(name).is_absolute() && inside(folder)) return file.string();
+  for (const std::string& allowed : options.allowedFolders)
+    if (inside(fs::weakly_canonical(fs::absolute(allowed)))) return file.string();
+  throw std::invalid_argument(function + ": file " + name +
+                              " is outside the script's folder; give a path relative to it" +
+                              (options.allowedFolders.empty()
+                                   ? std::string(", or allow its folder with --allow-path")
+                                   : std::string(" or inside a folder given with --allow-path")));
 }
+
+namespace {
 
 int imageTextureFn(lua_State* L) {
   LuaArgs args(L, 1, "image_texture");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "modeler/scene.h"
+#include "modeler/triangle_mesh.h"
 
 namespace csgray {
 
@@ -24,12 +25,25 @@ struct ScriptOptions {
   // or strings (quotes optional).
   std::vector<std::pair<std::string, std::string>> defines;
   ScriptLimits limits;
-  // The folder that file names in the script (image textures) are relative
-  // to, and may not leave; runScriptFile sets it to the script's folder.
+  // The folder that file names in the script (image textures, meshes) are
+  // relative to, and may not leave; runScriptFile sets it to the script's
+  // folder.
   std::string folder = ".";
+  // Further folders (--allow-path) that file names may lead into, by a
+  // relative path from `folder` or an absolute one.
+  std::vector<std::string> allowedFolders;
   // Reads an image file for image_texture{}; without it, image textures
   // are an error. (The modeler does not read images itself: io/ does.)
   std::function<TextureImage(const std::string& path)> loadImage;
+  // Reads a mesh file for mesh{}, repairing it when asked and saying what
+  // it did in repairReport; throws std::invalid_argument for a bad file or
+  // a mesh that is not a solid. Without it, mesh{} is an error. (importMesh
+  // of mesh/mesh_import.h fits.)
+  std::function<TriangleMesh(const std::string& path, bool repair, std::string& repairReport)>
+      loadMesh;
+  // Receives what the script should be told but does not stop it, such as
+  // what mesh{repair=true} repaired; without it these are dropped.
+  std::function<void(const std::string& message)> warn;
 };
 
 // A script that failed: the message names the file and line where known.
