@@ -2,6 +2,8 @@
 #   make run   install what is missing, build, render and export the showcase
 #   make test  install what is missing, build, run every test
 #   make bench run the benchmarks (see docs/performance.md)
+#   make fuzz  build the mesh readers' libFuzzer targets with clang and run
+#              each for FUZZ_SECONDS (default 60)
 
 BUILD      ?= build
 BUILD_TYPE ?= Release
@@ -15,7 +17,7 @@ PACKAGES := build-essential cmake pkg-config \
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build run test bench clean
+.PHONY: all deps configure build run test bench fuzz clean
 
 all: build
 
@@ -51,5 +53,21 @@ test: build
 bench: build
 	bench/run.sh $(CSGRAY)
 
+# The fuzzers need clang and its sanitizer runtime (Debian: clang,
+# libclang-rt-dev); new inputs they find go to a scratch copy of the corpus.
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@command -v clang++ >/dev/null && dpkg -s libclang-rt-dev >/dev/null 2>&1 || \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends clang libclang-rt-dev
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCSGRAY_FUZZ=ON -DCSGRAY_TESTS=OFF \
+	  -DCMAKE_CXX_COMPILER=clang++
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_stl fuzz_obj fuzz_off fuzz_ply
+	for format in stl obj off ply; do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$format && \
+	  $(FUZZ_BUILD)/fuzz/fuzz_$$format -max_total_time=$(FUZZ_SECONDS) \
+	    $(FUZZ_BUILD)/corpus/$$format fuzz/corpus/$$format || exit 1; \
+	done
+
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) $(FUZZ_BUILD) out

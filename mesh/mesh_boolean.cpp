@@ -208,6 +208,12 @@ class Evaluator {
   // a = a op b, in place.
   void corefine(Piece& a, Piece& b, Boolean::Op op) {
     ++stats_.corefinements;
+    // The result is built in the first mesh: its faces that stay are kept
+    // where they are, the other's are copied. A union or intersection is
+    // symmetric, so the larger mesh takes that place (a box united with a
+    // grid of spheres copies the box's faces, not the spheres').
+    if (op != Boolean::Op::Difference && b.mesh.number_of_faces() > a.mesh.number_of_faces())
+      std::swap(a, b);
     tagsOf(a.mesh);
     tagsOf(b.mesh);
     TagVisitor<Mesh> visitor;

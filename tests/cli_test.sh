@@ -25,11 +25,12 @@ printf 'return half_space{normal={0, 0, 1}}\n' > "$work/unbounded.lua"
 # script time limit ends it.
 printf 'local s = string.rep("a", 200000)\nlocal found = s:find(".-.-.-.-b")\nreturn sphere(1)\n' > "$work/pattern.lua"
 
-# expect_failure NAME OUTPUT-FILE-OR-"" ARGS...: non-zero exit, exactly one
-# line on stderr that starts with "csgray: error:", and no output file.
-expect_failure() {
-  local name=$1 output=$2
-  shift 2
+# expect_exit CODE NAME OUTPUT-FILE-OR-"" ARGS...: exit with CODE ("any"
+# for any failure that is not a crash), exactly one line on stderr that
+# starts with "csgray: error:", and no output file.
+expect_exit() {
+  local want=$1 name=$2 output=$3
+  shift 3
   "$csgray" "$@" >"$work/stdout" 2>"$work/stderr"
   local code=$?
   local lines
@@ -38,6 +39,8 @@ expect_failure() {
     fail "$name: exit code 0"
   elif [ $code -ge 128 ]; then
     fail "$name: crashed with exit code $code"
+  elif [ "$want" != any ] && [ $code -ne "$want" ]; then
+    fail "$name: exit code $code, expected $want"; cat "$work/stderr"
   elif [ "$lines" -ne 1 ] || ! grep -q '^csgray: error: ' "$work/stderr"; then
     fail "$name: stderr is not one 'csgray: error:' line:"; cat "$work/stderr"
   elif [ -n "$output" ] && [ -e "$output" ]; then
@@ -46,6 +49,8 @@ expect_failure() {
     pass
   fi
 }
+
+expect_failure() { expect_exit any "$@"; }
 
 expect_in_stderr() {
   if grep -qF -- "$2" "$work/stderr"; then pass; else fail "$1: stderr lacks '$2':"; cat "$work/stderr"; fi
@@ -137,10 +142,28 @@ expect_failure "keep old file" "" render "$work/bad.lua" -o "$work/keep.png"
 if [ "$(cat "$work/keep.png")" = "old image" ]; then pass; else fail "old file was clobbered"; fi
 
 # A folder that cannot be written: the error names the file, nothing is left.
+# A read-only folder: chmod for a user; root ignores modes, so as root the
+# folder is made immutable (chattr +i, which root cannot write past either).
+mkdir "$work/readonly" && printf 'old' > "$work/readonly/part.stl"
 if [ "$(id -u)" != 0 ]; then
-  mkdir "$work/readonly" && chmod 555 "$work/readonly"
-  expect_failure "read-only folder" "$work/readonly/out.png" render "$work/part.lua" -o "$work/readonly/out.png"
+  chmod 555 "$work/readonly"
+else
+  chattr +i "$work/readonly"
 fi
+if touch "$work/readonly/probe" 2>/dev/null; then
+  fail "read-only folder: could not make $work/readonly read-only"
+  rm -f "$work/readonly/probe"
+else
+  expect_failure "read-only folder" "$work/readonly/out.png" render "$work/part.lua" -o "$work/readonly/out.png"
+  expect_exit 1 "export into a read-only folder" "" export "$work/part.lua" -o "$work/readonly/part.stl"
+  if [ "$(cat "$work/readonly/part.stl")" = old ] && [ "$(ls -A "$work/readonly")" = part.stl ]; then
+    pass
+  else
+    fail "export into a read-only folder changed the old file or left a temporary"
+  fi
+fi
+chattr -i "$work/readonly" 2>/dev/null
+chmod 755 "$work/readonly"
 
 # No temporary files are left anywhere in the work folder.
 if ls -A "$work" | grep -q '\.tmp'; then fail "temporary files left: $(ls -A "$work")"; else pass; fi
@@ -152,23 +175,6 @@ if "$csgray" render "$source_dir/examples/showcase.lua" -o "$work/showcase.png" 
 # expect_exit CODE NAME OUTPUT-FILE-OR-"" ARGS...: as expect_failure, and the
 # exit code must be CODE (1: the script, scene or output failed; 2: the
 # command line is wrong).
-expect_exit() {
-  local want=$1 name=$2 output=$3
-  shift 3
-  "$csgray" "$@" >"$work/stdout" 2>"$work/stderr"
-  local code=$?
-  local lines
-  lines=$(wc -l <"$work/stderr")
-  if [ $code -ne "$want" ]; then
-    fail "$name: exit code $code, expected $want"; cat "$work/stderr"
-  elif [ "$lines" -ne 1 ] || ! grep -q '^csgray: error: ' "$work/stderr"; then
-    fail "$name: stderr is not one 'csgray: error:' line:"; cat "$work/stderr"
-  elif [ -n "$output" ] && [ -e "$output" ]; then
-    fail "$name: left $output behind"
-  else
-    pass
-  fi
-}
 
 # Width and height of a PNG from its IHDR chunk, as "WxH".
 png_size() {
