@@ -28,6 +28,9 @@ using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 using RoundedMesh = CGAL::Surface_mesh<Inexact::Point_3>;
 
 constexpr const char* kTag = "f:material";
+// The booleans hold each triangle in exact arithmetic, some hundreds of
+// bytes: this many are a few GB.
+constexpr std::size_t kMaxExportTriangles = 10'000'000;
 
 template <class Mesh>
 auto tagsOf(Mesh& mesh) {
@@ -133,6 +136,18 @@ class Evaluator {
   Piece leaf(const Primitive& primitive, const Bounds& region) {
     ++stats_.primitives;
     TriangleMesh triangles = primitive.tessellate(tolerance_, region);
+    // Each primitive keeps within its limit; the whole part within
+    // kMaxExportTriangles, checked as each is added (before its exact
+    // copy, several times the size, is made).
+    triangles_ += triangles.size();
+    if (triangles_ > kMaxExportTriangles) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "the part needs more than %zu triangles at a tolerance of %g; give a larger "
+                    "tolerance",
+                    kMaxExportTriangles, tolerance_);
+      throw std::invalid_argument(text);
+    }
     Piece piece;
     if (triangles.empty()) return piece;
     Mesh& mesh = piece.mesh;
@@ -250,6 +265,7 @@ class Evaluator {
   }
 
   double tolerance_;
+  std::size_t triangles_ = 0;  // tessellated so far
   MeshBooleanStats& stats_;
   std::unordered_map<const Material*, std::uint32_t> tags_;
 };
@@ -322,7 +338,8 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   const Bounds box = solid.bounds();
   if (!box.empty() && !box.finite())
     throw std::invalid_argument(
-        "the part is unbounded; intersect it with a bounded solid (e.g. clip(...)) to export it");
+        "the part is unbounded, or bounded only by half-spaces, whose reach csgray does not "
+        "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
   Evaluator evaluator(tolerance, counts);

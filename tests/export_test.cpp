@@ -277,6 +277,21 @@ TEST(Export, RefusesWhatCannotBePrinted) {
 // A write that fails part-way (here: the file size limit, as a full disk
 // would) leaves the old file as it was and no temporary behind, in every
 // format. (This works as root too, unlike a read-only folder.)
+TEST(Export, ATooFineToleranceIsRefusedForTheWholePart) {
+  // Each sphere is within the limit of one primitive (about 600 000
+  // triangles at 1e-5), twenty of them are not within the part's.
+  const SolidPtr part = partOfScript(R"(
+    local balls = {}
+    for i = 1, 20 do balls[i] = sphere{r=3}:translate(10 * i, 0, 0) end
+    return union(balls))");
+  try {
+    meshOfSolid(*part, 1e-5);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("give a larger tolerance"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Export, AWriteThatFailsPartWayLeavesTheOldFile) {
   TempFolder folder;
   const PartMesh mesh = meshOfSolid(*partOfScript("return sphere{r=10}"), 0.01);

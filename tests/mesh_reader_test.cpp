@@ -399,7 +399,7 @@ TEST_F(MeshScript, EveryFormatIsTheSameSolid) {
 TEST_F(MeshScript, RepairReportsGoToTheWarnings) {
   runScript("return mesh{file=\"inside_out.off\", repair=true}", "part.lua", options_);
   ASSERT_EQ(warnings_.size(), 1u);
-  EXPECT_EQ(warnings_[0], "mesh: inside_out.off: reversed 1 shell (12 faces)");
+  EXPECT_EQ(warnings_[0], "part.lua:1: mesh: inside_out.off: reversed 1 shell (12 faces)");
 }
 
 TEST_F(MeshScript, BadFilesStopTheScriptNamingTheFile) {

@@ -134,7 +134,13 @@ int meshFn(lua_State* L) {
     if (message.starts_with("polyhedron: ")) message = *file + ": " + message.substr(12);
     throw std::invalid_argument("mesh: " + message);
   }
-  if (!report.empty() && options.warn) options.warn("mesh: " + *file + ": " + report);
+  if (!report.empty() && options.warn) {
+    // "part.lua:3: ", as an error would begin.
+    luaL_where(L, 1);
+    std::string where = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    options.warn(where + "mesh: " + *file + ": " + report);
+  }
   Sandbox::of(L).charge(L, mesh->memoryBytes());
   pushSolid(L, mesh);
   return 1;
