@@ -62,6 +62,57 @@ bool overlap(const Bounds& a, const Bounds& b) {
            a.hi.z < b.lo.z || b.hi.z < a.lo.z);
 }
 
+// The frame the booleans are evaluated in. A part turned as a whole (or
+// mirrored) has that turn folded into every primitive's frame, where it is
+// rounded: a hole's top and the plate's top face, flush before the turn,
+// no longer lie on one plane, and the corefinement leaves slivers that do
+// not survive rounding to the file's precision. So the tree is evaluated
+// in the frame of its first primitive's rotation: each primitive's frame
+// is taken back through that rotation, and its entries, off by rounding
+// only, are snapped to a grid of 2⁻³⁰ (a change of about 10⁻⁹, far below
+// any tolerance), which makes flush faces flush again. The result is
+// turned back at the end.
+struct EvaluationFrame {
+  glm::dmat3 worldFromEval{1.0};
+  glm::dmat3 evalFromWorld{1.0};
+  bool identity = true;
+
+  explicit EvaluationFrame(const Solid& solid) {
+    const Solid* first = &solid;
+    while (!first->children().empty()) first = first->children()[0].get();
+    auto* primitive = dynamic_cast<const Primitive*>(first);
+    if (!primitive) return;
+    const glm::dmat3 linear(primitive->frame().worldFromObject());
+    // Only a rotation or a mirror (orthonormal columns), so that the
+    // tolerance means the same in both frames.
+    const glm::dmat3 gram = glm::transpose(linear) * linear;
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r)
+        if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-12) return;
+    if (linear == glm::dmat3(1.0)) return;
+    worldFromEval = linear;
+    evalFromWorld = glm::transpose(linear);
+    identity = false;
+  }
+
+  static double snapped(double x) { return std::ldexp(std::nearbyint(std::ldexp(x, 30)), -30); }
+
+  Affine evalFrame(const Affine& frame) const {
+    glm::dmat4 m = glm::dmat4(evalFromWorld) * frame.worldFromObject();
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 3; ++r) m[c][r] = snapped(m[c][r]);
+    return Affine::fromMatrix(m);
+  }
+  Bounds evalBounds(const Bounds& b) const {
+    if (identity || !b.finite()) return b;
+    Bounds out;
+    for (int i = 0; i < 8; ++i)
+      out.include(evalFromWorld *
+                  dvec3(i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z));
+    return out;
+  }
+};
+
 // Evaluates the tree with exact constructions (Epeck): a corefinement's new
 // points are exact, so the next boolean in a chain sees them where they
 // are (CGAL's manual, PMP, "Corefinement and Boolean Operations": with
@@ -82,13 +133,14 @@ class Evaluator {
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
-  Evaluator(double tolerance, MeshBooleanStats& stats) : tolerance_(tolerance), stats_(stats) {}
+  Evaluator(double tolerance, const EvaluationFrame& frame, MeshBooleanStats& stats)
+      : tolerance_(tolerance), frame_(frame), stats_(stats) {}
 
   // A mesh M with M ∩ region = solid ∩ region; M may reach past the region
   // (an unbounded primitive is meshed within a larger box), which the
   // operations above it cut away.
   Piece evaluate(const Solid& solid, const Bounds& outer) {
-    const Bounds region = outer.intersected(solid.bounds());
+    const Bounds region = outer.intersected(frame_.evalBounds(solid.bounds()));
     if (region.empty()) return {};
     if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) return leaf(*primitive, region);
     auto* node = dynamic_cast<const Boolean*>(&solid);
@@ -135,7 +187,11 @@ class Evaluator {
 
   Piece leaf(const Primitive& primitive, const Bounds& region) {
     ++stats_.primitives;
-    TriangleMesh triangles = primitive.tessellate(tolerance_, region);
+    TriangleMesh triangles = frame_.identity
+                                 ? primitive.tessellate(tolerance_, region)
+                                 : std::dynamic_pointer_cast<const Primitive>(
+                                       primitive.withFrame(frame_.evalFrame(primitive.frame())))
+                                       ->tessellate(tolerance_, region);
     // Each primitive keeps within its limit; the whole part within
     // kMaxExportTriangles, checked as each is added (before its exact
     // copy, several times the size, is made).
@@ -265,6 +321,7 @@ class Evaluator {
   }
 
   double tolerance_;
+  const EvaluationFrame& frame_;
   std::size_t triangles_ = 0;  // tessellated so far
   MeshBooleanStats& stats_;
   std::unordered_map<const Material*, std::uint32_t> tags_;
@@ -273,19 +330,20 @@ class Evaluator {
 // The evaluated mesh with its points rounded to doubles (or floats), tags
 // kept.
 template <class Mesh>
-RoundedMesh roundedCopy(const Mesh& exact, StoredCoordinate stored) {
+RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredCoordinate stored) {
   RoundedMesh rounded;
   rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
   std::vector<RoundedMesh::Vertex_index> vertex(exact.number_of_vertices() +
                                                 exact.number_of_removed_vertices());
-  auto round = [stored](const auto& x) {
-    double d = CGAL::to_double(x);
-    return stored ? stored(d) : d;
-  };
+  auto round = [stored](double d) { return stored ? stored(d) : d; };
   for (auto v : exact.vertices()) {
     const auto& p = exact.point(v);
-    vertex[v] = rounded.add_vertex({round(p.x()), round(p.y()), round(p.z())});
+    dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    if (!frame.identity) q = frame.worldFromEval * q;
+    vertex[v] = rounded.add_vertex({round(q.x), round(q.y), round(q.z)});
   }
+  // A mirror turns the faces inside out on the way back.
+  const bool flip = !frame.identity && glm::determinant(frame.worldFromEval) < 0.0;
   auto tags = tagsOf(rounded);
   auto exactTags = tagsOf(exact);
   for (auto f : exact.faces()) {
@@ -295,9 +353,12 @@ RoundedMesh roundedCopy(const Mesh& exact, StoredCoordinate stored) {
       if (k == 3) throw std::logic_error("meshOfSolid: a face of the result is not a triangle");
       t[k++] = vertex[v];
     }
+    if (flip) std::swap(t[1], t[2]);
     RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
     if (g == RoundedMesh::null_face())
-      throw std::logic_error("meshOfSolid: the result is not a 2-manifold");
+      throw std::runtime_error(
+          "the result is not a 2-manifold once rounded to the file's precision (faces meet at "
+          "a hair's breadth)");
     tags[g] = exactTags[f];
   }
   return rounded;
@@ -335,18 +396,19 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
                      MeshBooleanStats* stats) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("the tolerance must be a positive number");
-  const Bounds box = solid.bounds();
+  const EvaluationFrame frame(solid);
+  const Bounds box = frame.evalBounds(solid.bounds());
   if (!box.empty() && !box.finite())
     throw std::invalid_argument(
         "the part is unbounded, or bounded only by half-spaces, whose reach csgray does not "
         "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  Evaluator evaluator(tolerance, counts);
+  Evaluator evaluator(tolerance, frame, counts);
   auto piece = evaluator.evaluate(solid, box);
   if (piece.empty()) return PartMesh{{}, {}, std::move(evaluator.materials)};
 
-  RoundedMesh rounded = roundedCopy(piece.mesh, stored);
+  RoundedMesh rounded = roundedCopy(piece.mesh, frame, stored);
   // Rounding moves a point that a corefinement put a hair's breadth from
   // another onto it, or onto the line through two others: the faces between
   // them lose their area. CGAL collapses such edges and flips such faces

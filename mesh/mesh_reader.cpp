@@ -399,7 +399,7 @@ TriangleMesh readObjText(std::string_view bytes, const std::string& name,
         if (*index == 0) fail(where, "face index 0: OBJ counts vertices from 1");
         if (*index < 0) {
           // Relative to the vertices read so far: −1 is the last.
-          if (-*index > count)
+          if (*index < -count)  // (not −index > count: −INT64_MIN overflows)
             fail(where, "face index " + std::to_string(*index) + " is out of range (" +
                             std::to_string(count) + " vertices so far)");
           corners.push_back(std::uint32_t(count + *index));

@@ -43,7 +43,24 @@ Affine Affine::rotation(double radians, const dvec3& axis) {
   double len = glm::length(axis);
   if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(radians))
     throw std::invalid_argument("rotation needs a finite angle and a non-zero axis");
-  return fromMatrix(glm::rotate(glm::dmat4(1.0), radians, axis / len));
+  // Rodrigues' formula R = cI + s[k]× + (1 − c)kkᵀ. cos and sin of a
+  // multiple of 90° come out as 6e-17 instead of 0: they are made exact,
+  // so that a part turned by 90° keeps its faces on exact planes (and
+  // flush faces flush, for the exporter's booleans).
+  double c = std::cos(radians), s = std::sin(radians);
+  if (std::abs(c) < 1e-15) c = 0.0, s = s > 0.0 ? 1.0 : -1.0;
+  if (std::abs(s) < 1e-15) s = 0.0, c = c > 0.0 ? 1.0 : -1.0;
+  const dvec3 k = axis / len;
+  glm::dmat4 m(1.0);
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) m[col][row] = (1.0 - c) * k[row] * k[col];
+  for (int i = 0; i < 3; ++i) m[i][i] += c;
+  // [k]× has rows (0, −kz, ky), (kz, 0, −kx), (−ky, kx, 0); glm is
+  // column-major, m[col][row].
+  m[1][0] -= s * k.z, m[2][0] += s * k.y;
+  m[0][1] += s * k.z, m[2][1] -= s * k.x;
+  m[0][2] -= s * k.y, m[1][2] += s * k.x;
+  return fromMatrix(m);
 }
 
 Affine Affine::mirror(const dvec3& normal) {

@@ -259,6 +259,29 @@ TEST(Export, ThreeMfKeepsEachPrimitivesColour) {
   EXPECT_GT(blue, 0);
 }
 
+// A part turned or mirrored as a whole has the turn rounded into every
+// primitive's frame; flush faces (a hole as deep as the plate, a boss on
+// it) must still export, with the volume of the unturned part.
+TEST(Export, TurnedPartsWithFlushFacesExport) {
+  const std::string plateWithHole =
+      "(box{size={20, 20, 10}} - cylinder{d=6, h=10}:translate(10, 10, 0))";
+  const std::string plateWithSlot =
+      "(box{size={20, 20, 10}} - box{size={6, 6, 10}}:translate(7, 7, 0))";
+  const std::string boss = "(box{size={20, 20, 5}} + cylinder{r=4, h=10}:translate(10, 10, 5))";
+  for (const std::string& part : {plateWithHole, plateWithSlot, boss}) {
+    const double volume = meshOfSolid(*partOfScript("return " + part), 0.01).mesh.volume();
+    for (const char* turn : {":rotate(10, 0, 0)", ":rotate(45, 0, 0)", ":rotate(90, 0, 0)",
+                             ":rotate{angle=10, axis={1, 1, 1}}", ":mirror(0, 1, 1)",
+                             ":rotate(20, 30, 0):translate(5, -3, 2)"}) {
+      SCOPED_TRACE(part + turn);
+      PartMesh mesh = meshOfSolid(*partOfScript("return " + part + turn), 0.01,
+                                  storedCoordinate(MeshFormat::Stl, false));
+      EXPECT_EQ(meshDefect(mesh.mesh), "");
+      EXPECT_NEAR(mesh.mesh.volume(), volume, 1e-4 * volume);
+    }
+  }
+}
+
 // ---- Errors ------------------------------------------------------------------------
 
 TEST(Export, RefusesWhatCannotBePrinted) {

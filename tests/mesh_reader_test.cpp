@@ -168,6 +168,19 @@ TEST(MeshReader, AMissingFileIsNamed) {
 }
 
 // Caps are checked before anything is read or allocated.
+TEST(MeshReader, TheMostNegativeObjIndexIsOutOfRange) {
+  // −INT64_MIN does not exist: the range test must not negate the index.
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -9223372036854775808 3 2\n";
+  try {
+    readObj(obj, "negative.obj");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(
+        std::string(e.what()),
+        "negative.obj:5: face index -9223372036854775808 is out of range (4 vertices so far)");
+  }
+}
+
 TEST(MeshReader, LimitsAreEnforced) {
   MeshReadLimits small;
   small.maxTriangles = 11;
