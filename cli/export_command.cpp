@@ -1,6 +1,8 @@
 #include "cli/export_command.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -34,6 +36,23 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
   const SolidPtr part = scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
 
   const MeshFormat format = meshFormatFor(options.output);
+  // Far from the origin a 32-bit float (every format here stores floats)
+  // cannot hold the tolerance: half its spacing at |x| is |x|·2⁻²⁴.
+  const Bounds box = part->bounds();
+  if (box.finite()) {
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    const double precision = std::ldexp(reach, -24);
+    if (precision > 0.5 * options.tolerance) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "%s: the part reaches %g from the origin, where the file's 32-bit floats are "
+                    "good to %.2g only, coarser than half the tolerance %g; move it nearer the "
+                    "origin or give a larger tolerance",
+                    options.script.c_str(), reach, precision, options.tolerance);
+      throw std::runtime_error(text);
+    }
+  }
   MeshBooleanStats counts;
   PartMesh mesh = [&] {
     try {

@@ -136,6 +136,17 @@ const CLI::Validator timeoutRange(
     },
     "SECONDS");
 
+// 1e-6 to 1000 model units; NaN and words are refused.
+const CLI::Validator toleranceRange(
+    [](const std::string& text) -> std::string {
+      char* end = nullptr;
+      double v = std::strtod(text.c_str(), &end);
+      return end != text.c_str() && *end == '\0' && v >= 1e-6 && v <= 1e3
+                 ? ""
+                 : "must be a number from 1e-6 to 1000 (model units)";
+    },
+    "TOLERANCE");
+
 int main(int argc, char** argv) {
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
   app.set_version_flag("--version", std::string(CSGRAY_VERSION));
@@ -190,7 +201,7 @@ int main(int argc, char** argv) {
   exporter
       ->add_option("--tolerance", exportOptions.tolerance,
                    "Largest distance of the mesh from the exact surface, in model units")
-      ->check(CLI::Range(1e-6, 1e3))
+      ->check(toleranceRange)
       ->capture_default_str();
   exporter->add_flag("--ascii", exportOptions.ascii, "Write STL and PLY as text");
   exporter->add_flag("--stats", exportOptions.stats,

@@ -902,7 +902,9 @@ TriangleMesh readMeshFile(const std::string& path, const MeshReadLimits& limits)
   namespace fs = std::filesystem;
   const std::string name = fs::path(path).filename().string();
   std::error_code error;
-  if (!fs::is_regular_file(path, error)) fail(name, "no such file");
+  if (!fs::exists(path, error)) fail(name, "no such file");
+  // A folder, a FIFO or a device is refused by name (a FIFO would block).
+  if (!fs::is_regular_file(path, error)) fail(name, "not a regular file");
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) fail(name, "cannot read the file: " + error.message());
   if (size > limits.maxFileBytes)

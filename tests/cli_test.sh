@@ -342,6 +342,10 @@ printf 'return torus{R=2, r=2}\n' > "$work/horn.lua"
 expect_failure "export of a horn torus" "$work/horn.stl" export "$work/horn.lua" -o "$work/horn.stl"
 expect_in_stderr "export of a horn torus" "horn torus"
 expect_exit 2 "export with a zero tolerance" "$work/zero.stl" export "$work/part.lua" -o "$work/zero.stl" --tolerance 0
+expect_exit 2 "export with a NaN tolerance" "$work/nan.stl" export "$work/part.lua" -o "$work/nan.stl" --tolerance nan
+printf 'return sphere(1):translate(1e6, 0, 0)\n' > "$work/far.lua"
+expect_failure "export far from the origin" "$work/far.stl" export "$work/far.lua" -o "$work/far.stl"
+expect_in_stderr "export far from the origin" "32-bit floats are good to 0.06 only"
 expect_failure "export over the script" "" export "$work/part.lua" -o "$work/part.lua"
 expect_failure "export into a missing folder" "" export "$work/part.lua" -o "$work/nowhere/part.stl"
 # A failed export leaves the old file as it was and no temporary behind.
