@@ -153,6 +153,12 @@ TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
     EXPECT_NEAR(back.volume(), mesh.mesh.volume(), digits * std::abs(mesh.mesh.volume()));
     EXPECT_EQ(meshDefect(back), "");
   }
+  // And it comes back in as a solid: mesh{} takes the file it wrote.
+  ScriptOptions options = scriptOptions();
+  options.folder = folder.path.string();
+  Scene again = runScript("return mesh{file=\"part.stl\"}", "again.lua", options);
+  ASSERT_EQ(again.objects.size(), 1u);
+  EXPECT_TRUE(again.objects[0]->bounds().finite());
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleExport, ::testing::ValuesIn(exampleScripts()),

@@ -400,10 +400,11 @@ MeshSolid::MeshSolid(const std::vector<dvec3>& points,
   for (std::uint32_t i = 0; i < mesh->triangles.size(); ++i) {
     const Triangle& tri = mesh->triangles[i];
     const dvec3 &a = mesh->points[tri[0]], &b = mesh->points[tri[1]], &c = mesh->points[tri[2]];
-    double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
-    // Zero area up to rounding: the sine of the largest angle is below
-    // what the coordinates can resolve.
-    if (glm::length(glm::cross(b - a, c - a)) <= 1e-14 * longest * longest) {
+    // No area at all. A sliver whose area rounds to almost nothing is
+    // kept: exported booleans have them (CGAL's exact check accepts them),
+    // and a ray meets such a triangle rarely and exactly, as any other.
+    const dvec3 n = glm::cross(b - a, c - a);
+    if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
       std::uint32_t f = mesh->faceOfTriangle[i];
       // Named as the face runs in the input (clockwise).
       if (faces[f].size() == 3)
