@@ -418,7 +418,9 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
 
   const auto start = std::chrono::steady_clock::now();
   std::string defect = meshDefect(part.mesh);
-  if (!defect.empty()) {
+  // (Only crossings and slivers: parts that touch at a point are reported
+  // as they are, not "repaired" into something else.)
+  if (defect.starts_with("self-intersecting") || defect.starts_with("degenerate")) {
     // Rounding can also fold a sliver over its neighbour where faces meet
     // at a hair's breadth (coplanar faces of a rotated union): CGAL removes
     // the faces that cross and fills the holes they leave, a change within

@@ -118,6 +118,15 @@ std::string checkVertices(const TriangleMesh& mesh, const std::vector<std::uint3
 // centroids. (Not their intersection: constructing that overflows on the
 // huge coordinates a broken file may hold, and the message needs no more.)
 std::string meetingPoint(const Surface& surface, FaceIndex f, FaceIndex g) {
+  // Two faces with a corner at one place (parts that touch at a point or
+  // along an edge) meet there.
+  for (auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+    for (auto w : CGAL::vertices_around_face(surface.halfedge(g), surface))
+      if (surface.point(v) == surface.point(w)) {
+        const Point& p = surface.point(v);
+        return " at " + coordinates(dvec3(p.x(), p.y(), p.z())) +
+               ", where two parts touch at a point or an edge";
+      }
   dvec3 sum(0.0);
   for (FaceIndex face : {f, g})
     for (auto v : CGAL::vertices_around_face(surface.halfedge(face), surface)) {

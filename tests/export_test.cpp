@@ -306,6 +306,18 @@ TEST(Export, RefusesWhatCannotBePrinted) {
 // A write that fails part-way (here: the file size limit, as a full disk
 // would) leaves the old file as it was and no temporary behind, in every
 // format. (This works as root too, unlike a read-only folder.)
+TEST(Export, PartsTouchingAtAPointAreNamedThere) {
+  const SolidPtr part = partOfScript("return box(10) + box(10):translate(10, 10, 10)");
+  try {
+    meshOfSolid(*part, 0.01);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("at (10, 10, 10), where two parts touch"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Export, ATooFineToleranceIsRefusedForTheWholePart) {
   // Each sphere is within the limit of one primitive (about 600 000
   // triangles at 1e-5), twenty of them are not within the part's.
