@@ -300,8 +300,13 @@ TriangleMesh readAsciiStl(std::string_view bytes, const std::string& name,
     fail(name + ":" + std::to_string(lines.number),
          "expected " + std::string(what) + ", got " + shown(keyword));
   };
+  std::string lowered;
   while (lines.next(line)) {
-    Tokens tokens{line};
+    // Keywords in any case (SOLID, FACET, ... from some writers); numbers
+    // read the same in lower case.
+    lowered.assign(line);
+    for (char& c : lowered) c = char(std::tolower(static_cast<unsigned char>(c)));
+    Tokens tokens{lowered};
     if (!tokens.next(keyword)) continue;
     const std::string where = name + ":" + std::to_string(lines.number);
     switch (state) {
@@ -521,6 +526,9 @@ TriangleMesh readOffText(std::string_view bytes, const std::string& name,
     raw.countTriangles(corners.size(), name, limits);
     raw.face(corners);
   }
+  // More lines than the header declares is a wrong header, not a hole.
+  if (nextLine(tokens))
+    fail(where(), "more faces than the " + std::to_string(counts[1]) + " the header declares");
   return raw.build(name, limits);
 }
 
@@ -793,7 +801,10 @@ TriangleMesh readPlyData(std::string_view bytes, const std::string& name,
           corners.clear();
           for (std::uint64_t k = 0; k < n; ++k) {
             double index = values.next(property.type);
-            if (!(index == std::floor(index) && index >= 0 && index < double(vertexCount)))
+            if (index != std::floor(index))
+              fail(values.whereLast(), "face " + std::to_string(item) + ": vertex index " +
+                                           numberText(index) + " is not a whole number");
+            if (!(index >= 0 && index < double(vertexCount)))
               fail(values.whereLast(), "face " + std::to_string(item) + ": vertex index " +
                                            numberText(index) + " is out of range (" +
                                            std::to_string(vertexCount) + " vertices)");
@@ -849,7 +860,10 @@ TriangleMesh readStl(std::string_view bytes, const std::string& name,
   if (sized && binarySize == bytes.size()) return readBinaryStl(bytes, name, limits);
   std::string_view start = bytes.substr(0, 512);
   start.remove_prefix(std::min(start.find_first_not_of(" \t\r\n"), start.size()));
-  if (start.starts_with("solid")) {
+  // Keywords in any case: some writers use SOLID, FACET, ...
+  std::string head(start.substr(0, 5));
+  for (char& c : head) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (head == "solid") {
     try {
       return readAsciiStl(bytes, name, limits);
     } catch (const std::invalid_argument& e) {

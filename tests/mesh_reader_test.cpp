@@ -168,6 +168,51 @@ TEST(MeshReader, AMissingFileIsNamed) {
 }
 
 // Caps are checked before anything is read or allocated.
+// The message of what f throws, or "(no error)".
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(MeshReader, UpperCaseAsciiStlIsRead) {
+  const std::string stl =
+      "SOLID T\n"
+      "FACET NORMAL 0 0 -1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 0 1 0\nVERTEX 1 0 "
+      "0\nENDLOOP\nENDFACET\n"
+      "FACET NORMAL 0 -1 0\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 0 "
+      "1\nENDLOOP\nENDFACET\n"
+      "FACET NORMAL -1 0 0\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 0 0 1\nVERTEX 0 1 "
+      "0\nENDLOOP\nENDFACET\n"
+      "FACET NORMAL 1 1 1\nOUTER LOOP\nVERTEX 1 0 0\nVERTEX 0 1 0\nVERTEX 0 0 "
+      "1\nENDLOOP\nENDFACET\n"
+      "ENDSOLID T\n";
+  TriangleMesh mesh = readStl(stl, "upper.stl");
+  EXPECT_EQ(mesh.size(), 4u);
+  EXPECT_NEAR(mesh.volume(), 1.0 / 6.0, 1e-15);
+}
+
+TEST(MeshReader, OffWithMoreFacesThanDeclaredIsRefused) {
+  const std::string off =
+      "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  EXPECT_EQ(errorOf([&] { readOff(off, "extra.off"); }),
+            "extra.off:10: more faces than the 3 the header declares");
+}
+
+TEST(MeshReader, AFractionalPlyIndexIsNamedSo) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1.5 2\n";
+  const std::string e = errorOf([&] { readPly(ply, "frac.ply"); });
+  EXPECT_NE(e.find("vertex index 1.5 is not a whole number"), std::string::npos) << e;
+}
+
 TEST(MeshReader, TheMostNegativeObjIndexIsOutOfRange) {
   // −INT64_MIN does not exist: the range test must not negate the index.
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -9223372036854775808 3 2\n";
