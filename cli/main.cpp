@@ -136,6 +136,14 @@ const CLI::Validator timeoutRange(
     },
     "SECONDS");
 
+// Digits only: CLI11 would read 0x10 as sixteen and 010 as eight.
+const CLI::Validator decimal(
+    [](const std::string& text) -> std::string {
+      bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+      return digits && !(text.size() > 1 && text[0] == '0') ? "" : "must be a whole number";
+    },
+    "N");
+
 // 1e-6 to 1000 model units; NaN and words are refused.
 const CLI::Validator toleranceRange(
     [](const std::string& text) -> std::string {
@@ -172,6 +180,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   render->add_option("--samples", samples, "Rays per pixel, jittered (antialiasing)")
+      ->check(decimal)
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   render->add_flag("--stats", stats,
@@ -260,9 +269,13 @@ int main(int argc, char** argv) {
       std::vector<std::string> outputs{output};
       if (depthAov) outputs.push_back(aovPath(output, "depth"));
       if (normalAov) outputs.push_back(aovPath(output, "normal"));
-      for (const std::string& path : outputs)
+      for (const std::string& path : outputs) {
+        // An AOV's name is made from the output's: it too may not be the script.
+        if (std::filesystem::equivalent(script, path, same))
+          throw std::runtime_error("cannot write " + path + ": it is the script itself");
         if (std::string problem = imageOutputProblem(path); !problem.empty())
           throw std::runtime_error("cannot write " + path + ": " + problem);
+      }
       auto start = std::chrono::steady_clock::now();
       // Formats other than PNG go through OpenImageIO, whose many libraries
       // load on another thread while the script runs and the image renders.

@@ -320,6 +320,13 @@ else
   fail "textured_box.lua by a relative path from a subfolder"; cat "$work/stderr"
 fi
 
+# --samples is read as decimal digits only (CLI11 would read 0x10 as 16).
+expect_exit 2 "hexadecimal samples" "$work/hex.png" render "$work/part.lua" -o "$work/hex.png" --samples 0x10
+# An AOV file named after the output may not be the script either.
+cp "$work/part.lua" "$work/s.depth.png"
+expect_failure "AOV over the script" "" render "$work/s.depth.png" -o "$work/s.png" --aov depth --size 40x30
+if cmp -s "$work/part.lua" "$work/s.depth.png" && [ ! -e "$work/s.png" ]; then pass; else fail "AOV over the script changed it"; fi
+
 # ---- export ------------------------------------------------------------------
 # A good export writes the mesh and says so, in every format.
 for ext in stl obj off ply 3mf; do
