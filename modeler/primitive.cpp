@@ -76,10 +76,6 @@ TriangleMesh Primitive::tessellate(double tolerance, const Bounds& region) const
   return mesh;
 }
 
-TriangleMesh Primitive::objectTessellate(double, const Bounds&) const {
-  throw std::logic_error(kind() + ": cannot be tessellated");
-}
-
 void Primitive::updateBounds() {
   Bounds local = objectBounds();
   if (local.empty()) {

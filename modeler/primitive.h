@@ -64,7 +64,7 @@ class Primitive : public Solid {
   virtual std::shared_ptr<Primitive> clone() const = 0;
   // tessellate() in object space: the tolerance divided by the frame's
   // largest stretch, and the box of the region's corners in the frame.
-  virtual TriangleMesh objectTessellate(double tolerance, const Bounds& region) const;
+  virtual TriangleMesh objectTessellate(double tolerance, const Bounds& region) const = 0;
 
   Boundary boundary(double t, int face = 0) const {
     return Boundary{t, this, static_cast<decltype(Boundary::face)>(face), false};

@@ -9,17 +9,10 @@
 #include "mesh/mesh_import.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
+#include "test_support.h"
 
 namespace csgray {
 namespace {
-
-std::vector<std::string> exampleScripts() {
-  std::vector<std::string> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(CSGRAY_SOURCE_DIR "/examples"))
-    if (entry.path().extension() == ".lua") paths.push_back(entry.path().string());
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
 
 class Example : public ::testing::TestWithParam<std::string> {};
 
@@ -43,16 +36,11 @@ TEST_P(Example, Renders) {
   EXPECT_GT(notBackground, image.width * image.height / 10);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, Example, ::testing::ValuesIn(exampleScripts()),
-                         [](const auto& info) {
-                           std::string name = std::filesystem::path(info.param).stem().string();
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Examples, Example, ::testing::ValuesIn(test::exampleScripts()),
+                         [](const auto& info) { return test::exampleName(info.param); });
 
 TEST(Examples, ShowcaseIsAmongThem) {
-  auto scripts = exampleScripts();
+  auto scripts = test::exampleScripts();
   EXPECT_NE(std::find_if(scripts.begin(), scripts.end(),
                          [](const std::string& p) { return p.ends_with("/showcase.lua"); }),
             scripts.end());

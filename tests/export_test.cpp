@@ -21,6 +21,7 @@
 #include "mesh/mesh_writer.h"
 #include "modeler/boolean.h"
 #include "modeler/script/script.h"
+#include "test_support.h"
 
 namespace csgray {
 namespace {
@@ -115,14 +116,6 @@ ThreeMf read3mf(const std::string& path) {
 
 // ---- Every example, in every format --------------------------------------------
 
-std::vector<std::string> exampleScripts() {
-  std::vector<std::string> paths;
-  for (const auto& entry : fs::directory_iterator(CSGRAY_SOURCE_DIR "/examples"))
-    if (entry.path().extension() == ".lua") paths.push_back(entry.path().string());
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
-
 class ExampleExport : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
@@ -161,13 +154,8 @@ TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
   EXPECT_TRUE(again.objects[0]->bounds().finite());
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, ExampleExport, ::testing::ValuesIn(exampleScripts()),
-                         [](const auto& info) {
-                           std::string name = fs::path(info.param).stem().string();
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleExport, ::testing::ValuesIn(test::exampleScripts()),
+                         [](const auto& info) { return test::exampleName(info.param); });
 
 // ---- Volumes ------------------------------------------------------------------------
 

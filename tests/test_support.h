@@ -4,12 +4,34 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <glm/geometric.hpp>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "modeler/solid.h"
 
 namespace csgray::test {
+
+// The scripts in examples/, sorted: every one is rendered and exported.
+inline std::vector<std::string> exampleScripts() {
+  std::vector<std::string> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(CSGRAY_SOURCE_DIR "/examples"))
+    if (entry.path().extension() == ".lua") paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+// A test name from a script's path: its stem, other characters as '_'.
+inline std::string exampleName(const std::string& path) {
+  std::string name = std::filesystem::path(path).stem().string();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
 
 // The spans of a ray, as a value.
 inline SpanList spansOf(const Solid& solid, const Ray& ray) {
