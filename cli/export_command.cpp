@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "cli/heap_reserve.h"
 #include "io/atomic_file.h"
 #include "mesh/mesh_boolean.h"
 #include "mesh/mesh_writer.h"
@@ -53,6 +54,8 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
       throw std::runtime_error(text);
     }
   }
+  // A tenth to a fifth faster (plate(8): 1.03 → 0.85 s; docs/performance.md).
+  reserveHugePageHeap(std::size_t(512) << 20);
   MeshBooleanStats counts;
   PartMesh mesh = [&] {
     try {

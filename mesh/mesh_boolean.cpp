@@ -56,11 +56,9 @@ struct TagVisitor : PMP::Corefinement::Default_visitor<Mesh> {
   }
 };
 
-// Closed boxes, so that operands that touch are corefined, not joined.
-bool overlap(const Bounds& a, const Bounds& b) {
-  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y ||
-           a.hi.z < b.lo.z || b.hi.z < a.lo.z);
-}
+// Closed boxes (Bounds::overlaps), so that operands that touch are
+// corefined, not joined.
+bool overlap(const Bounds& a, const Bounds& b) { return a.overlaps(b); }
 
 // The frame the booleans are evaluated in. A part turned as a whole (or
 // mirrored) has that turn folded into every primitive's frame, where it is

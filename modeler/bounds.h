@@ -33,6 +33,11 @@ struct Bounds {
     hi = glm::max(hi, b.hi);
   }
   Bounds intersected(const Bounds& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
+  // Closed boxes: boxes that touch overlap.
+  bool overlaps(const Bounds& b) const {
+    return lo.x <= b.hi.x && b.lo.x <= hi.x && lo.y <= b.hi.y && b.lo.y <= hi.y && lo.z <= b.hi.z &&
+           b.lo.z <= hi.z;
+  }
   bool contains(const dvec3& p) const {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
   }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -130,6 +132,30 @@ double geodesicError(const TriangleMesh& mesh, double radius) {
   return worst;
 }
 
+// The unit geodesic sphere of frequency f and its error. Those of up to
+// kCachedFrequency (82 000 triangles) are built once: a part's spheres
+// mostly share a tolerance and so a frequency (plate(8) has 64 alike),
+// and building one costs far more than copying it.
+struct UnitGeodesic {
+  TriangleMesh mesh;
+  double error;
+};
+constexpr int kCachedFrequency = 64;
+std::shared_ptr<const UnitGeodesic> unitGeodesic(int f) {
+  auto build = [f] {
+    TriangleMesh mesh = geodesicSphere(1.0, f);
+    const double error = geodesicError(mesh, 1.0);
+    return std::make_shared<const UnitGeodesic>(UnitGeodesic{std::move(mesh), error});
+  };
+  if (f > kCachedFrequency) return build();
+  static std::mutex lock;
+  static std::map<int, std::shared_ptr<const UnitGeodesic>> built;
+  std::lock_guard guard(lock);
+  auto& unit = built[f];
+  if (!unit) unit = build();
+  return unit;
+}
+
 }  // namespace
 
 // A geodesic sphere: its triangles are nearly equal, so it needs about half
@@ -152,10 +178,11 @@ TriangleMesh Sphere::objectTessellate(double tolerance, const Bounds&) const {
   int f = std::max(2, int(std::ceil(1.1071 * radius_ / edge)));
   for (;;) {
     requireTriangleBudget(kind(), 20.0 * f * f, tolerance);
-    TriangleMesh mesh = geodesicSphere(1.0, f);
-    const double c = 1.0 - geodesicError(mesh, 1.0);
+    const std::shared_ptr<const UnitGeodesic> unit = unitGeodesic(f);
+    const double c = 1.0 - unit->error;
     if (radius_ * (1.0 - c) / (1.0 + c) <= tolerance) {
       const double rho = 2.0 * radius_ / (1.0 + c);
+      TriangleMesh mesh = unit->mesh;
       for (dvec3& p : mesh.points) p *= rho;
       return mesh;
     }
