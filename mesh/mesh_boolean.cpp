@@ -56,10 +56,6 @@ struct TagVisitor : PMP::Corefinement::Default_visitor<Mesh> {
   }
 };
 
-// Closed boxes (Bounds::overlaps), so that operands that touch are
-// corefined, not joined.
-bool overlap(const Bounds& a, const Bounds& b) { return a.overlaps(b); }
-
 // The frame the booleans are evaluated in. A part turned as a whole (or
 // mirrored) has that turn folded into every primitive's frame, where it is
 // rounded: a hole's top and the plate's top face, flush before the turn,
@@ -166,7 +162,7 @@ class Evaluator {
         std::vector<Piece> cutters;
         for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
         Piece cut = unite(std::move(cutters));
-        if (cut.empty() || !overlap(minuend.box, cut.box)) return minuend;
+        if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
         corefine(minuend, cut, Boolean::Op::Difference);
         return minuend;
       }
@@ -230,7 +226,8 @@ class Evaluator {
 
   // Pieces whose boxes are pairwise apart are joined into one group; the
   // groups are then united pairwise in a balanced order, so that no mesh
-  // is corefined more than log₂(groups) times.
+  // is corefined more than log₂(groups) times. (Boxes are closed,
+  // Bounds::overlaps: operands that touch are corefined, not joined.)
   Piece unite(std::vector<Piece> pieces) {
     std::vector<Piece> groups;
     std::vector<std::vector<Bounds>> members;
@@ -239,7 +236,7 @@ class Evaluator {
       std::size_t g = 0;
       while (g < groups.size() &&
              std::any_of(members[g].begin(), members[g].end(),
-                         [&](const Bounds& b) { return overlap(b, piece.box); }))
+                         [&](const Bounds& b) { return b.overlaps(piece.box); }))
         ++g;
       if (g == groups.size()) {
         groups.push_back(std::move(piece));
@@ -259,7 +256,7 @@ class Evaluator {
       for (std::size_t i = 0; i + 1 < pieces.size(); i += 2) {
         Piece& a = pieces[i];
         Piece& b = pieces[i + 1];
-        if (!overlap(a.box, b.box)) {
+        if (!a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
           join(a, b);
         } else {
