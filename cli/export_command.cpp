@@ -24,17 +24,21 @@ void checkExportOutput(const ExportOptions& options) {
     throw std::runtime_error("cannot write " + options.output + ": " + problem);
 }
 
+SolidPtr printedPart(const Scene& scene, const std::string& script, const char* verb) {
+  if (scene.objects.empty())
+    throw std::runtime_error(script + ": there is no solid to " + verb +
+                             " (open surfaces cannot be printed)");
+  if (!scene.surfaces.empty())
+    std::fprintf(stderr, "csgray: warning: %s: %zu open surface%s not %sed: only solids are\n",
+                 script.c_str(), scene.surfaces.size(), scene.surfaces.size() == 1 ? " is" : "s are",
+                 verb);
+  return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
+}
+
 void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  if (scene.objects.empty())
-    throw std::runtime_error(options.script +
-                             ": there is no solid to export (open surfaces cannot be printed)");
-  if (!scene.surfaces.empty())
-    std::fprintf(stderr, "csgray: warning: %s: %zu open surface%s not exported: only solids are\n",
-                 options.script.c_str(), scene.surfaces.size(),
-                 scene.surfaces.size() == 1 ? " is" : "s are");
-  const SolidPtr part = scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
+  const SolidPtr part = printedPart(scene, options.script, "export");
 
   const MeshFormat format = meshFormatFor(options.output);
   // Far from the origin a 32-bit float (every format here stores floats)

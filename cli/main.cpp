@@ -13,12 +13,14 @@
 #include <thread>
 #include <vector>
 
+#include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/progress.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_plugin.h"
 #include "mesh/mesh_import.h"
+#include "mesh/part_check.h"
 #include "modeler/primitive.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
@@ -222,6 +224,48 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   exporter->add_option("--allow-path", allowedFolders, allowHelp)->check(CLI::ExistingDirectory);
 
+  CheckCommandOptions checkOptions;
+  CLI::App* checker = app.add_subcommand(
+      "check", "Hold a part's exported mesh against its exact model, and report on its booleans");
+  checker->add_option("script", script, "Lua part script")->required();
+  checker
+      ->add_option("--samples", checkOptions.check.samples,
+                   "Random points classified by both the exact model and the mesh")
+      ->check(decimal)
+      ->check(CLI::Range(std::size_t(0), std::size_t(100'000'000)))
+      ->capture_default_str();
+  checker
+      ->add_option("--tolerance", checkOptions.check.tolerance,
+                   "Tolerance of the export, in model units")
+      ->check(toleranceRange)
+      ->capture_default_str();
+  checker
+      ->add_option("--min-wall", checkOptions.check.minWall,
+                   "Warn of solid walls thinner than this (model units)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  checker
+      ->add_option("--min-gap", checkOptions.check.minGap,
+                   "Warn of empty gaps narrower than this (model units)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  checker
+      ->add_option("--grid", checkOptions.check.grid,
+                   "Rays per side of each of the three ray grids along x, y and z")
+      ->check(decimal)
+      ->check(CLI::Range(2, 4096))
+      ->capture_default_str();
+  checker->add_option("--seed", checkOptions.check.seed, "Seed of the random points and rays")
+      ->check(decimal)
+      ->capture_default_str();
+  checker->add_flag("--strict", checkOptions.check.strict, "Fail on warnings too");
+  checker->add_flag("--json", checkOptions.json, "Print the report as JSON");
+  checker->add_option("-D", defineItems, "Set a script global before it runs: name=value");
+  checker->add_option("--script-timeout", scriptTimeout, "Seconds the script may run (0: no limit)")
+      ->check(timeoutRange)
+      ->capture_default_str();
+  checker->add_option("--allow-path", allowedFolders, allowHelp)->check(CLI::ExistingDirectory);
+
   CLI::App* info = app.add_subcommand("info", "Print the bounds and tree size of a part script");
   info->add_option("script", script, "Lua part script")->required();
   info->add_option("-D", defineItems, "Set a script global before it runs: name=value");
@@ -244,6 +288,7 @@ int main(int argc, char** argv) {
     scriptOptions.defines = parseDefines(defineItems);
     scriptOptions.loadImage = readTextureImage;
     scriptOptions.loadMesh = importMesh;
+    scriptOptions.checkSolid = checkPart;
     scriptOptions.allowedFolders = allowedFolders;
     scriptOptions.warn = [](const std::string& message) {
       std::cerr << "csgray: warning: " << message << "\n";
@@ -349,6 +394,9 @@ int main(int argc, char** argv) {
       Scene scene = runScript();
       exportScene(scene, exportOptions,
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    } else if (*checker) {
+      checkOptions.script = script;
+      return checkScene(runScript(), checkOptions);
     } else if (*info) {
       printInfo(script, runScript());
     }

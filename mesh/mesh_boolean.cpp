@@ -418,10 +418,14 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   if (defect.starts_with("self-intersecting") || defect.starts_with("degenerate")) {
     // Rounding can also fold a sliver over its neighbour where faces meet
     // at a hair's breadth (coplanar faces of a rotated union): CGAL removes
-    // the faces that cross and fills the holes they leave, a change within
-    // the rounding error.
+    // the faces that cross and fills the holes they leave. Its smoothing
+    // and hole filling may move the surface far (a vertex of a rotated
+    // union moved 1.2 mm: csgray check found it), so every patch must stay
+    // within a hundredth of the tolerance of the faces it replaces, or the
+    // crossing stays and the export fails.
     ++counts.repairs;
-    PMP::experimental::remove_self_intersections(rounded);
+    PMP::experimental::remove_self_intersections(
+        rounded, CGAL::parameters::polyhedral_envelope_epsilon(0.01 * tolerance));
     PMP::remove_degenerate_faces(rounded);
     part = partOf(rounded, evaluator.materials);
     defect = meshDefect(part.mesh);

@@ -199,7 +199,9 @@ SolidPtr Boolean::mapPrimitives(const PrimitiveMap& f) const {
   std::vector<SolidPtr> mapped;
   mapped.reserve(operands_.size());
   for (const SolidPtr& s : operands_) mapped.push_back(s->mapPrimitives(f));
-  return std::make_shared<Boolean>(op_, std::move(mapped));
+  auto copy = std::make_shared<Boolean>(op_, std::move(mapped));
+  copy->setOrigin(origin());
+  return copy;
 }
 
 SolidPtr unionOf(std::vector<SolidPtr> operands) {

@@ -16,6 +16,10 @@ SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
   });
 }
 
+std::string SourceLine::text() const {
+  return known() ? *file + ":" + std::to_string(line) : std::string();
+}
+
 TreeStats treeStats(const Solid& solid) {
   return TreeStats{solid.primitiveCount(), solid.booleanCount()};
 }

@@ -20,6 +20,17 @@ class Solid;
 class Primitive;
 using SolidPtr = std::shared_ptr<const Solid>;
 
+// Where a script made a solid: its file and line, for messages that point
+// the user at the shape in question ("box at part.lua:12").
+struct SourceLine {
+  std::shared_ptr<const std::string> file;  // shared: thousands of solids come from one script
+  int line = 0;
+
+  bool known() const { return file && line > 0; }
+  // "part.lua:12", or "" when unknown.
+  std::string text() const;
+};
+
 class Solid : public std::enable_shared_from_this<Solid> {
  public:
   virtual ~Solid() = default;
@@ -55,6 +66,12 @@ class Solid : public std::enable_shared_from_this<Solid> {
   std::size_t booleanCount() const { return booleans_; }
   int depth() const { return depth_; }
 
+  // Where the script made this solid. Copies made by transforms and
+  // materials keep it. The script API sets it once, on a solid it has just
+  // built and not yet shared, which is why a const solid may take it.
+  const SourceLine& origin() const { return origin_; }
+  void setOrigin(SourceLine origin) const { origin_ = std::move(origin); }
+
   // This solid moved by worldFromObject (applied after any transform it has).
   SolidPtr transformed(const Affine& worldFromObject) const;
   // This solid with the material given to every primitive that has none.
@@ -64,6 +81,7 @@ class Solid : public std::enable_shared_from_this<Solid> {
   std::size_t primitives_ = 1;
   std::size_t booleans_ = 0;
   int depth_ = 0;
+  mutable SourceLine origin_;
 };
 
 // Counts of a tree, for `csgray info`.

@@ -1,12 +1,16 @@
 // Every script in examples/ runs and renders: a small image that is not
-// all background and has only finite, non-negative colours.
+// all background and has only finite, non-negative colours. Its part
+// passes csgray check: the export agrees with the exact model.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "check_support.h"
 #include "io/image_file.h"
 #include "mesh/mesh_import.h"
+#include "mesh/part_check.h"
+#include "modeler/boolean.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
 #include "test_support.h"
@@ -16,11 +20,16 @@ namespace {
 
 class Example : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(Example, Renders) {
+Scene runExample(const std::string& path) {
   ScriptOptions options;
   options.loadImage = readTextureImage;
   options.loadMesh = importMesh;
-  Scene scene = runScriptFile(GetParam(), options);
+  options.checkSolid = checkPart;
+  return runScriptFile(path, options);
+}
+
+TEST_P(Example, Renders) {
+  Scene scene = runExample(GetParam());
   ASSERT_FALSE(scene.objects.empty());
   Image image = Renderer(scene, {160, 120, 0}).render();
   int notBackground = 0;
@@ -34,6 +43,12 @@ TEST_P(Example, Renders) {
   }
   // The part fills a good share of the frame.
   EXPECT_GT(notBackground, image.width * image.height / 10);
+}
+
+TEST_P(Example, PassesTheCheck) {
+  Scene scene = runExample(GetParam());
+  ASSERT_FALSE(scene.objects.empty());
+  EXPECT_TRUE(test::checksOut(*unionOf(scene.objects)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, Example, ::testing::ValuesIn(test::exampleScripts()),

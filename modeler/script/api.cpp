@@ -421,6 +421,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerQuadricApi(L);
   registerConvexApi(L);
   registerMeshApi(L);
+  registerCheckApi(L);
 }
 
 }  // namespace csgray

@@ -29,6 +29,8 @@ void registerSceneApi(lua_State* L, const luaL_Reg* transformMethods);
 void registerQuadricApi(lua_State* L);
 void registerConvexApi(lua_State* L);
 void registerMeshApi(lua_State* L);
+// check(solid, options) (api_check.cpp): ScriptOptions::checkSolid's report as a table.
+void registerCheckApi(lua_State* L);
 // s:material{...} on a solid.
 int solidMaterial(lua_State* L);
 

@@ -86,6 +86,7 @@ int convex(lua_State* L) {
   args.finish();
   // The planes are held once, however often the solid is copied.
   auto solid = Primitive::create<ConvexPolyhedron>(planes, "convex");
+  markOrigin(L, *solid);
   pushValue<SolidPtr>(L, solid, kBytesPerNode + count * sizeof(ConvexPolyhedron::Plane));
   return 1;
 }

@@ -250,6 +250,7 @@ int clip(lua_State* L) {
   operands.insert(operands.end(), cutters.begin(), cutters.end());
   charge += operands.size() * sizeof(SolidPtr);
   auto result = std::make_shared<Boolean>(Boolean::Op::Intersection, std::move(operands));
+  markOrigin(L, *result);
   pushValue<SolidPtr>(L, std::move(result), charge);
   return 1;
 }

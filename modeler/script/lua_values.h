@@ -110,11 +110,30 @@ inline int guarded(lua_State* L) {
   }
 }
 
+// Gives the solid, and every node below it that has none, the line of the
+// script that called the running function: the nodes a call builds afresh
+// (a shape, the intersection clip{} makes) take the line of that call,
+// while copies made by transforms and materials keep the line of their
+// original. Stops at a node that has a line, so it costs nothing for the
+// copy of a large tree.
+inline void markOrigin(lua_State* L, const Solid& solid) {
+  if (solid.origin().known()) return;
+  SourceLine line = Sandbox::of(L).callerLine(L);
+  if (!line.known()) return;
+  auto mark = [&](auto& self, const Solid& node) -> void {
+    if (node.origin().known()) return;
+    node.setOrigin(line);
+    for (const SolidPtr& child : node.children()) self(self, *child);
+  };
+  mark(mark, solid);
+}
+
 // A solid that the call built afresh: a transform or material copies the
 // whole tree below it, so all of its nodes are charged.
 inline void pushSolid(lua_State* L, SolidPtr solid) {
   TreeStats stats = treeStats(*solid);
   std::size_t charge = (stats.primitives + stats.booleans) * kBytesPerNode;
+  markOrigin(L, *solid);
   pushValue<SolidPtr>(L, std::move(solid), charge);
 }
 
@@ -122,6 +141,7 @@ inline void pushSolid(lua_State* L, SolidPtr solid) {
 // of operands.
 inline void pushBoolean(lua_State* L, SolidPtr solid) {
   std::size_t charge = kBytesPerNode + solid->children().size() * sizeof(SolidPtr);
+  markOrigin(L, *solid);
   pushValue<SolidPtr>(L, std::move(solid), charge);
 }
 

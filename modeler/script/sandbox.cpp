@@ -198,8 +198,20 @@ int Sandbox::printToStderr(lua_State* L) {
   return 0;
 }
 
+SourceLine Sandbox::callerLine(lua_State* L) {
+  // The nearest Lua frame: a C function in between (pcall, table.sort's
+  // comparator caller) has no line of its own.
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "l", &ar)) break;
+    if (ar.currentline > 0) return SourceLine{chunkName_, ar.currentline};
+  }
+  return {};
+}
+
 int Sandbox::run(const std::string& source, const std::string& chunkName) {
   int base = lua_gettop(L_);
+  chunkName_ = std::make_shared<const std::string>(chunkName);
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
   if (status != LUA_OK) {

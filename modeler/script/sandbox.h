@@ -8,9 +8,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <lua.hpp>
+#include <memory>
 #include <string>
 
 #include "modeler/script/script.h"
+#include "modeler/solid.h"
 
 namespace csgray {
 
@@ -34,6 +36,10 @@ class Sandbox {
   // on the stack. Throws ScriptError with "chunk:line: message".
   int run(const std::string& source, const std::string& chunkName);
 
+  // The file and line of the script code that called the running API
+  // function; unknown when it was not called from Lua.
+  SourceLine callerLine(lua_State* L);
+
   // Why the script was aborted, or empty.
   const std::string& abortReason() const { return abortReason_; }
 
@@ -55,6 +61,7 @@ class Sandbox {
   std::size_t sinceCollectorStep_ = 0;
   std::uint64_t executed_ = 0;
   std::string abortReason_;
+  std::shared_ptr<const std::string> chunkName_;  // shared by the SourceLines of every solid
   // Set once the script is being aborted: the allocator then allows
   // kAbortReserve bytes past the cap for the error message.
   bool aborting_ = false;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "modeler/check_report.h"
 #include "modeler/scene.h"
 #include "modeler/triangle_mesh.h"
 
@@ -41,6 +42,9 @@ struct ScriptOptions {
   // of mesh/mesh_import.h fits.)
   std::function<TriangleMesh(const std::string& path, bool repair, std::string& repairReport)>
       loadMesh;
+  // Checks a solid's export against it for check(solid, options)
+  // (checkPart of mesh/part_check.h fits); without it, check() is an error.
+  std::function<CheckReport(const Solid& solid, const CheckOptions& options)> checkSolid;
   // Receives what the script should be told but does not stop it, such as
   // what mesh{repair=true} repaired; without it these are dropped.
   std::function<void(const std::string& message)> warn;

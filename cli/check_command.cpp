@@ -1,0 +1,23 @@
+#include "cli/check_command.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "cli/heap_reserve.h"
+#include "mesh/part_check.h"
+#include "cli/export_command.h"
+
+namespace csgray {
+
+int checkScene(const Scene& scene, const CheckCommandOptions& options) {
+  const SolidPtr part = printedPart(scene, options.script, "check");
+  // The export's booleans, as in csgray export (cli/heap_reserve.h).
+  reserveHugePageHeap(std::size_t(512) << 20);
+  const CheckReport report = checkPart(*part, options.check);
+  const std::string text = options.json ? checkReportJson(report, options.script)
+                                        : checkReportText(report, options.script);
+  std::fputs(text.c_str(), stdout);
+  return report.ok() ? 0 : 1;
+}
+
+}  // namespace csgray

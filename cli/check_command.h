@@ -1,0 +1,24 @@
+// csgray check: a part script's export held against its exact model
+// (mesh/part_check.h), printed as text or JSON.
+#pragma once
+
+#include <string>
+
+#include "modeler/check_report.h"
+#include "modeler/scene.h"
+
+namespace csgray {
+
+struct CheckCommandOptions {
+  std::string script;  // for messages
+  CheckOptions check;
+  bool json = false;  // print JSON instead of text
+};
+
+// Checks the scene's solids (their union, when there are several) and
+// prints the report on stdout. Returns the exit status: 0 when the check
+// holds, 1 when it does not. Throws std::runtime_error when there is no
+// solid to check.
+int checkScene(const Scene& scene, const CheckCommandOptions& options);
+
+}  // namespace csgray

@@ -1,0 +1,519 @@
+#include "mesh/part_check.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <glm/geometric.hpp>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "mesh/mesh_boolean.h"
+#include "mesh/mesh_probe.h"
+#include "mesh/mesh_validity.h"
+#include "mesh/mesh_writer.h"
+#include "modeler/boolean.h"
+#include "modeler/primitive.h"
+
+namespace csgray {
+
+namespace {
+
+// Two faces face each other across a stretch when their outward normals
+// are within about 25° of opposite: a wall or a gap. Across a sphere near
+// its silhouette they do not, so a grazing ray finds no thin wall there.
+constexpr double kFacing = -0.9;
+// Normals this close to parallel (about 0.08°) make coinciding boundaries
+// coinciding faces; otherwise the ray merely passes where two faces cross.
+constexpr double kParallel = 1.0 - 1e-6;
+// Below this cosine between a line and a face's normal, the distance from
+// a point to the face is not measured along that line (see surfaceDistance).
+constexpr double kGrazing = 0.2;
+// Grid volumes may differ by this many standard deviations of their
+// sampling before the grids are said to disagree.
+constexpr double kSigmas = 5.0;
+// A mesh point whose distance estimate along its own ray is below this
+// share of the tolerance is not measured along the other two axes.
+constexpr double kQuickShare = 0.25;
+constexpr std::size_t kListed = 10;  // disagreeing points listed
+constexpr std::size_t kWarningKinds = 20;
+
+// 13 lines through a point: along the axes, the face diagonals and the
+// body diagonals of a cube (one of each pair ±v).
+const std::array<dvec3, 13> kLines = [] {
+  std::array<dvec3, 13> lines;
+  std::size_t k = 0;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z) {
+        const bool first = x > 0 || (x == 0 && (y > 0 || (y == 0 && z > 0)));
+        if (first) lines[k++] = glm::normalize(dvec3(x, y, z));
+      }
+  return lines;
+}();
+
+// splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
+// generators", OOPSLA 2014): a jitter per ray that does not depend on
+// which thread traces it, so every run of a check gives the same figures.
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+double unit(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+dvec3 axisVector(int axis) {
+  dvec3 d(0.0);
+  d[axis] = 1.0;
+  return d;
+}
+
+// The outward normal of the solid at a boundary.
+dvec3 outwardNormal(const Boundary& b, const dvec3& p) {
+  dvec3 n = b.primitive->normal(p, b.face);
+  return b.flip ? -n : n;
+}
+
+std::string describe(const Solid& solid) {
+  std::string line = solid.origin().text();
+  return line.empty() ? solid.kind() : solid.kind() + " (" + line + ")";
+}
+
+std::string format(const dvec3& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return s.str();
+}
+
+// What the rays of one row of a grid found; rows are merged in order, so
+// that the figures do not depend on the threads.
+struct Tally {
+  // The sampled point furthest from the other boundary for what is
+  // allowed there.
+  double fidelity = 0.0, fidelityAllowed = 1.0;
+  dvec3 fidelityAt{0.0};
+  bool fidelityFromMesh = false;
+  std::optional<Stretch> wall, gap;
+  bool unbounded = false;
+  // Warnings by what they say but where: one for each pair of script
+  // lines, however many faces and rays show it.
+  std::map<std::string, CheckWarning> warnings;
+
+  void distance(double d, double allowed, const dvec3& at, bool fromMesh) {
+    if (d * fidelityAllowed > fidelity * allowed) {
+      fidelity = d;
+      fidelityAllowed = allowed;
+      fidelityAt = at;
+      fidelityFromMesh = fromMesh;
+    }
+  }
+  static void thinnest(std::optional<Stretch>& best, double thickness, const dvec3& at) {
+    if (!best || thickness < best->thickness) best = Stretch{thickness, at};
+  }
+  void warn(const std::string& kind, const std::string& what, const dvec3& at) {
+    auto [it, added] = warnings.try_emplace(kind + ": " + what);
+    if (added) {
+      it->second.kind = kind;
+      it->second.message = what + ", at " + format(at);
+      it->second.location = at;
+    } else {
+      ++it->second.rays;
+    }
+  }
+  void merge(const Tally& other) {
+    distance(other.fidelity, other.fidelityAllowed, other.fidelityAt, other.fidelityFromMesh);
+    if (other.wall) thinnest(wall, other.wall->thickness, other.wall->location);
+    if (other.gap) thinnest(gap, other.gap->thickness, other.gap->location);
+    unbounded = unbounded || other.unbounded;
+    for (const auto& [key, w] : other.warnings) {
+      auto [it, added] = warnings.try_emplace(key, w);
+      if (!added) it->second.rays += w.rays;
+    }
+  }
+};
+
+class Checker {
+ public:
+  Checker(const Solid& solid, const MeshProbe& probe, const CheckOptions& options,
+          const Bounds& box)
+      : solid_(solid), probe_(probe), options_(options), box_(box) {
+    const double diagonal = glm::length(box.size());
+    epsilon_ = 1e-9 * std::max(1.0, diagonal);
+    cap_ = diagonal;
+    nudge_ = 1e-8 * diagonal * glm::normalize(dvec3(0.5257, 0.6095, 0.5934));
+  }
+
+  double epsilon() const { return epsilon_; }
+
+  // The distance from p to the exact surface, estimated along 13 lines
+  // through p (the axes, the face diagonals and the body diagonals of a
+  // cube): a boundary at Δt with unit normal n is Δt·|n·d| away if the
+  // surface is flat there (exact for a plane, off by O(δ²/radius) on a
+  // curved one); the least over the boundaries. Faces a line grazes
+  // (|n·d| < kGrazing) are left to the other lines. Several lines are
+  // needed near an edge of the solid, where the nearest point is on the
+  // edge and the lines along the axes may all miss the faces beside it.
+  //
+  // The lines pass a hair's breadth (1e-8 of the box) off p in a skew
+  // direction: a mesh point found by an axis ray lies on an axis-aligned
+  // face more often than not, and a line in the plane of a face grazes it.
+  double surfaceDistance(const dvec3& p) const {
+    double best = cap_;
+    SpanList spans;
+    const dvec3 off = p + nudge_;
+    for (const dvec3& d : kLines) {
+      const Ray line(off, d, -kInfinity, kInfinity);
+      solid_.spans(line, spans);
+      for (const Span& s : spans)
+        for (const Boundary* b : {&s.in, &s.out}) {
+          if (!std::isfinite(b->t)) continue;
+          const double cosine = std::abs(glm::dot(outwardNormal(*b, line.at(b->t)), d));
+          if (cosine >= kGrazing) best = std::min(best, std::abs(b->t) * cosine);
+        }
+    }
+    return best;
+  }
+
+  // How far the mesh may be from the exact surface at p, found d away:
+  // the tolerance, or more where two faces meet at a crease. Each face's
+  // mesh is within the tolerance of the face, and so may be offset by it;
+  // where faces with normals an angle φ apart meet, offsetting both by the
+  // tolerance moves their crease by tolerance / cos(φ/2) (√2 of it at a
+  // right angle), and the mesh of a boolean is made of such offset faces.
+  // Faces of other primitives (or other faces of p's) met within a few
+  // tolerances of p along the 13 lines make a crease.
+  double allowance(const dvec3& p, double d) const {
+    const double tolerance = options_.tolerance;
+    if (d <= tolerance) return tolerance;
+    struct Face {
+      const Primitive* primitive;
+      std::uint32_t face;
+      dvec3 normal;
+    };
+    std::vector<Face> near;
+    const double reach = 4.0 * tolerance + d;
+    SpanList spans;
+    for (const dvec3& dir : kLines) {
+      const Ray line(p + nudge_, dir, -reach, reach);
+      solid_.spans(line, spans);
+      for (const Span& s : spans)
+        for (const Boundary* b : {&s.in, &s.out})
+          if (std::abs(b->t) <= reach && b->primitive)
+            near.push_back({b->primitive, b->face, outwardNormal(*b, line.at(b->t))});
+    }
+    double cosine = 1.0;  // of the widest angle between two faces
+    for (std::size_t i = 0; i < near.size(); ++i)
+      for (std::size_t j = i + 1; j < near.size(); ++j)
+        if (near[i].primitive != near[j].primitive || near[i].face != near[j].face)
+          cosine = std::min(cosine, glm::dot(near[i].normal, near[j].normal));
+    // cos(φ/2) = √((1 + cos φ)/2); a knife edge is allowed ten tolerances.
+    return tolerance / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1);
+  }
+
+  // One ray of a grid: its spans' length, the distances between the two
+  // boundaries along it, its walls and gaps, and the faces of operands
+  // that coincide on it.
+  double trace(const Ray& ray, int axis, Tally& tally) const {
+    SpanList spans;
+    solid_.spans(ray, spans);
+    struct Hit {
+      double t;
+      dvec3 normal;
+    };
+    std::vector<Hit> exact;
+    double length = 0.0;
+    for (std::uint32_t k = 0; k < spans.size(); ++k) {
+      const Span& s = spans[k];
+      if (!std::isfinite(s.in.t) || !std::isfinite(s.out.t)) {
+        tally.unbounded = true;
+        continue;
+      }
+      length += s.length();
+      if (s.length() <= epsilon_) zeroLength(s, ray, tally);
+      const dvec3 in = ray.at(s.in.t), out = ray.at(s.out.t);
+      const dvec3 nIn = outwardNormal(s.in, in), nOut = outwardNormal(s.out, out);
+      exact.push_back({s.in.t, nIn});
+      exact.push_back({s.out.t, nOut});
+      for (const dvec3& e : {in, out}) {
+        const double d = probe_.distance(e);
+        tally.distance(d, allowance(e, d), e, false);
+      }
+      if (glm::dot(nIn, nOut) < kFacing) stretch(tally.wall, s.length(), nIn, nOut, in, out, axis);
+      if (k > 0 && std::isfinite(spans[k - 1].out.t)) {
+        const Boundary& before = spans[k - 1].out;
+        const dvec3 from = ray.at(before.t);
+        const dvec3 nFrom = outwardNormal(before, from);
+        if (glm::dot(nFrom, nIn) < kFacing)
+          stretch(tally.gap, s.in.t - before.t, nFrom, nIn, from, in, axis);
+      }
+    }
+
+    // Each mesh crossing against the nearest exact boundary on the ray,
+    // and against the other two axes where that is not near enough.
+    for (const MeshProbe::Crossing& c : probe_.crossings(ray.origin, ray.dir)) {
+      const dvec3 q = ray.at(c.t);
+      double estimate = cap_;
+      for (const Hit& h : exact)
+        estimate = std::min(estimate, std::abs(h.t - c.t) * std::abs(h.normal[axis]));
+      if (estimate > kQuickShare * options_.tolerance)
+        estimate = std::min(estimate, surfaceDistance(q));
+      tally.distance(estimate, allowance(q, estimate), q, true);
+    }
+    scanOperands(solid_, ray, tally);
+    return length;
+  }
+
+ private:
+  // A stretch of the ray between two faces that face each other (outward
+  // normals a at p and b at q, near opposite), a wall or a gap: its width
+  // measured across the mean plane of the faces, whose normal is a − b
+  // (their distance, for parallel faces), or twice the distance from its
+  // middle to the nearest face (the largest ball there), whichever is
+  // larger. The first is too small where the ray meets both faces at a
+  // glancing angle, the second where the ray runs along a third face.
+  void stretch(std::optional<Stretch>& thinnest, double length, const dvec3& a, const dvec3& b,
+               const dvec3& p, const dvec3& q, int axis) const {
+    double width = length * std::abs(glm::normalize(a - b)[axis]);
+    if (thinnest && width >= thinnest->thickness) return;
+    const dvec3 middle = 0.5 * (p + q);
+    width = std::max(width, 2.0 * surfaceDistance(middle));
+    Tally::thinnest(thinnest, width, middle);
+  }
+
+  void zeroLength(const Span& s, const Ray& ray, Tally& tally) const {
+    const dvec3 at = ray.at(s.in.t);
+    tally.warn("zero-length span",
+               describe(*s.in.primitive) + " and " + describe(*s.out.primitive) +
+                   " enclose nothing along a ray: they meet in a face, an edge or a point",
+               at);
+  }
+
+  // Where the boundaries of two operands of a boolean node lie together on
+  // the ray with parallel faces: they share a face (both enter or both
+  // leave) or touch along one (one leaves where the other enters).
+  void scanOperands(const Solid& node, const Ray& ray, Tally& tally) const {
+    std::span<const SolidPtr> operands = node.children();
+    if (operands.empty()) return;
+    struct Mark {
+      double t;
+      std::uint32_t operand;
+      Boundary boundary;
+      bool entering;
+    };
+    std::vector<Mark> marks;
+    SpanList spans;
+    for (std::uint32_t i = 0; i < operands.size(); ++i) {
+      const Solid& operand = *operands[i];
+      if (!operand.bounds().hitBy(ray)) continue;
+      operand.spans(ray, spans);
+      for (const Span& s : spans) {
+        if (s.length() <= epsilon_ && std::isfinite(s.in.t)) zeroLength(s, ray, tally);
+        if (std::isfinite(s.in.t)) marks.push_back({s.in.t, i, s.in, true});
+        if (std::isfinite(s.out.t)) marks.push_back({s.out.t, i, s.out, false});
+      }
+      scanOperands(operand, ray, tally);
+    }
+    std::sort(marks.begin(), marks.end(), [](const Mark& a, const Mark& b) { return a.t < b.t; });
+    for (std::size_t a = 0; a < marks.size(); ++a)
+      for (std::size_t b = a + 1; b < marks.size() && marks[b].t - marks[a].t <= epsilon_; ++b) {
+        const Mark& m = marks[a];
+        const Mark& n = marks[b];
+        if (m.operand == n.operand) continue;
+        const dvec3 at = ray.at(m.t);
+        const double cosine =
+            glm::dot(outwardNormal(m.boundary, at), outwardNormal(n.boundary, at));
+        if (std::abs(cosine) < kParallel) continue;
+        const bool shared = m.entering == n.entering;
+        // In operand order, so that "a and b" reads as the script wrote them.
+        const bool inOrder = m.operand < n.operand;
+        const Primitive& first = *(inOrder ? m : n).boundary.primitive;
+        const Primitive& second = *(inOrder ? n : m).boundary.primitive;
+        tally.warn(shared ? "coincident faces" : "touching faces",
+                   describe(first) + " and " + describe(second) +
+                       (shared ? " share a face" : " touch along a face") + " in the " +
+                       describe(node),
+                   at);
+      }
+  }
+
+  const Solid& solid_;
+  const MeshProbe& probe_;
+  const CheckOptions& options_;
+  Bounds box_;
+  double epsilon_ = 0.0;  // boundaries this close coincide
+  double cap_ = 0.0;      // no distance inside the box is larger
+  dvec3 nudge_{0.0};      // off the point where surfaceDistance measures
+};
+
+// The three grids: volume along each axis with its sampling deviation, and
+// what their rays found.
+void traceGrids(const Checker& checker, const Bounds& box, const CheckOptions& options,
+                CheckReport& report, Tally& tally) {
+  const int n = options.grid;
+  double sigma[3] = {0.0, 0.0, 0.0};
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const double du = box.size()[u] / n, dv = box.size()[v] / n;
+    const double cell = du * dv;
+    std::vector<double> lengths(std::size_t(n) * n);
+    std::vector<Tally> rows(n);
+    tbb::parallel_for(0, n, [&](int i) {
+      for (int j = 0; j < n; ++j) {
+        // One ray at a random point of each cell (stratified sampling):
+        // unbiased, and no aliasing with a regular pattern of holes.
+        const std::uint64_t key =
+            mix(options.seed ^ mix((std::uint64_t(axis) << 60) ^ (std::uint64_t(i) << 30) ^ j));
+        dvec3 origin = box.lo;
+        origin[u] += (i + unit(key)) * du;
+        origin[v] += (j + unit(mix(key))) * dv;
+        lengths[std::size_t(i) * n + j] =
+            checker.trace(Ray(origin, axisVector(axis), -kInfinity, kInfinity), axis, rows[i]);
+      }
+    });
+    double volume = 0.0, variance = 0.0;
+    for (std::size_t k = 0; k < lengths.size(); ++k) volume += cell * lengths[k];
+    // Collapsed strata (Cochran, Sampling Techniques, 3rd ed., §5A.12):
+    // with one sample per cell, neighbouring cells in pairs give an upper
+    // estimate of the variance, Σ (a·L₁ − a·L₂)².
+    for (std::size_t k = 0; k + 1 < lengths.size(); k += 2)
+      variance += std::pow(cell * (lengths[k] - lengths[k + 1]), 2);
+    report.volumeAlong[axis] = volume;
+    sigma[axis] = std::sqrt(variance);
+    for (const Tally& row : rows) tally.merge(row);
+  }
+  report.exactVolume = (report.volumeAlong[0] + report.volumeAlong[1] + report.volumeAlong[2]) / 3;
+  // The pair of grids furthest apart for their deviations decides.
+  const double rounding = 1e-9 * std::abs(report.exactVolume);
+  double worst = -1.0;
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3;
+    const double spread = std::abs(report.volumeAlong[a] - report.volumeAlong[b]);
+    const double allowed = kSigmas * std::hypot(sigma[a], sigma[b]) + rounding;
+    if (spread / allowed > worst) {
+      worst = spread / allowed;
+      report.gridSpread = spread;
+      report.gridAllowed = allowed;
+    }
+  }
+  const double sigmaOfMean =
+      std::sqrt(sigma[0] * sigma[0] + sigma[1] * sigma[1] + sigma[2] * sigma[2]) / 3;
+  report.volumeAllowed = options.tolerance * report.meshArea + kSigmas * sigmaOfMean + rounding;
+}
+
+void classify(const Solid& solid, const MeshProbe& probe, const Checker& checker, const Bounds& box,
+              const CheckOptions& options, CheckReport& report) {
+  std::mt19937_64 rng(options.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<dvec3> points(options.samples);
+  for (dvec3& p : points) p = box.lo + dvec3(uniform(rng), uniform(rng), uniform(rng)) * box.size();
+  enum Verdict : std::uint8_t { Agree, InBand, Disagree };
+  std::vector<std::uint8_t> verdicts(points.size());
+  const double band = options.tolerance * (1.0 + 1e-3) + checker.epsilon();
+  if (!points.empty()) probe.side(points[0]);  // builds CGAL's tree before the threads ask
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t k) {
+    const MeshProbe::Side side = probe.side(points[k]);
+    const bool exact = solid.contains(points[k]);
+    if (side == MeshProbe::Side::Boundary)
+      verdicts[k] = InBand;
+    else if (exact == (side == MeshProbe::Side::Inside))
+      verdicts[k] = Agree;
+    else
+      verdicts[k] = checker.surfaceDistance(points[k]) <= band ? InBand : Disagree;
+  });
+  report.points = points.size();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (verdicts[k] == Agree) ++report.agree;
+    if (verdicts[k] == InBand) ++report.inBand;
+    if (verdicts[k] != Disagree) continue;
+    ++report.disagreementCount;
+    if (report.disagreements.size() < kListed) report.disagreements.push_back(points[k]);
+  }
+}
+
+}  // namespace
+
+CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
+                                  const CheckOptions& options) {
+  CheckReport report;
+  report.options = options;
+  report.triangles = mesh.size();
+  if (!solid.bounds().finite()) {
+    report.failure = "the part is unbounded: it has no mesh to check";
+    return report;
+  }
+  if (mesh.empty()) {
+    report.failure = "the mesh is empty";
+    return report;
+  }
+  if (options.grid < 2 || options.grid > 4096 || !(options.tolerance > 0.0)) {
+    report.failure = "the grid must have 2 to 4096 rays a side and the tolerance be positive";
+    return report;
+  }
+  report.meshDefect = meshDefect(mesh);
+  solid.prepare();
+  const MeshProbe probe(mesh);
+  report.meshVolume = probe.volume();
+  report.meshArea = probe.area();
+
+  // The box holds both: the mesh may lie up to the tolerance outside.
+  Bounds box = solid.bounds();
+  box.include(mesh.bounds());
+  const dvec3 margin(2.0 * options.tolerance + 1e-6 * glm::length(box.size()));
+  box = Bounds{box.lo - margin, box.hi + margin};
+
+  const Checker checker(solid, probe, options, box);
+  Tally tally;
+  traceGrids(checker, box, options, report, tally);
+  if (tally.unbounded) {
+    report.failure = "the part is unbounded along a grid ray: it has no mesh to check";
+    return report;
+  }
+  report.fidelity = tally.fidelity;
+  report.fidelityAllowed = tally.fidelityAllowed;
+  report.fidelityAt = tally.fidelityAt;
+  report.fidelityFromMesh = tally.fidelityFromMesh;
+  report.thinnestWall = tally.wall;
+  report.narrowestGap = tally.gap;
+
+  if (probe.canClassify()) classify(solid, probe, checker, box, options, report);
+
+  // Warnings: the degenerate booleans the rays met, most often met first,
+  // then walls and gaps below what a printer makes.
+  std::vector<CheckWarning> found;
+  for (const auto& [key, w] : tally.warnings) found.push_back(w);
+  std::stable_sort(found.begin(), found.end(),
+                   [](const CheckWarning& a, const CheckWarning& b) { return a.rays > b.rays; });
+  if (found.size() > kWarningKinds) found.resize(kWarningKinds);
+  report.warnings = std::move(found);
+  auto thin = [&](const std::optional<Stretch>& s, double limit, const char* kind,
+                  const char* what) {
+    if (!s || s->thickness >= limit) return;
+    std::ostringstream m;
+    m << what << " " << s->thickness << " thick at " << format(s->location) << ", under " << limit;
+    report.warnings.push_back({kind, m.str(), s->location, 1});
+  };
+  thin(report.thinnestWall, options.minWall, "thin wall", "a wall");
+  thin(report.narrowestGap, options.minGap, "narrow gap", "a gap");
+  return report;
+}
+
+CheckReport checkPart(const Solid& solid, const CheckOptions& options) {
+  TriangleMesh mesh;
+  try {
+    // Rounded to floats, as STL, OBJ, OFF and PLY files store them.
+    mesh = meshOfSolid(solid, options.tolerance, storedCoordinate(MeshFormat::Stl, false)).mesh;
+  } catch (const std::exception& e) {
+    CheckReport report;
+    report.options = options;
+    report.failure = std::string("the part cannot be exported: ") + e.what();
+    return report;
+  }
+  return checkMeshAgainstSolid(solid, mesh, options);
+}
+
+}  // namespace csgray

@@ -1,0 +1,291 @@
+// csgray check (mesh/part_check.h): it passes sound parts with figures that
+// match the analytic ones, fails broken meshes and says why, and warns of
+// operands that share faces and of walls and gaps too thin to print.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "check_support.h"
+#include "mesh/mesh_boolean.h"
+#include "mesh/part_check.h"
+#include "modeler/boolean.h"
+#include "modeler/primitives/box.h"
+#include "modeler/primitives/cylinder.h"
+#include "modeler/primitives/sphere.h"
+#include "modeler/script/script.h"
+
+namespace csgray {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+SolidPtr box(const dvec3& size, const dvec3& at = dvec3(0.0)) {
+  return Primitive::create<Box>(size)->transformed(Affine::translation(at));
+}
+SolidPtr cylinder(double r, double h, const dvec3& at) {
+  return Primitive::create<Cylinder>(r, r, h)->transformed(Affine::translation(at));
+}
+
+CheckOptions quick(double tolerance = 0.01) {
+  CheckOptions options;
+  options.tolerance = tolerance;
+  options.samples = 20'000;
+  options.grid = 96;
+  return options;
+}
+
+bool hasWarning(const CheckReport& report, const std::string& kind) {
+  for (const CheckWarning& w : report.warnings)
+    if (w.kind == kind) return true;
+  return false;
+}
+
+// A part with curved faces, a boolean and a hole: the mesh the broken
+// cases start from.
+SolidPtr drilledBlock() {
+  return differenceOf({unionOf({box({20, 20, 6}), Primitive::create<Sphere>(6.0)->transformed(
+                                                      Affine::translation({10, 10, 6}))}),
+                       cylinder(3, 20, {10, 10, -2})});
+}
+
+TEST(Check, SphereFiguresMatchTheAnalyticOnes) {
+  const double r = 10.0;
+  const SolidPtr sphere = Primitive::create<Sphere>(r);
+  const CheckOptions options = quick();
+  const CheckReport report = checkPart(*sphere, options);
+  ASSERT_TRUE(report.ok()) << checkReportText(report, "sphere");
+  const double volume = 4.0 / 3.0 * kPi * r * r * r;
+  // Each grid is an unbiased estimate: within a few of its deviations,
+  // which for 96² rays over a sphere is well under a thousandth.
+  for (double v : report.volumeAlong) EXPECT_NEAR(v, volume, 1e-3 * volume);
+  EXPECT_NEAR(report.exactVolume, volume, 5e-4 * volume);
+  // The mesh lies within the tolerance of the surface, so its volume is
+  // within tolerance × area of the sphere's, and its area near 4πr².
+  EXPECT_NEAR(report.meshVolume, volume, options.tolerance * 4 * kPi * r * r);
+  EXPECT_NEAR(report.meshArea, 4 * kPi * r * r, 0.01 * 4 * kPi * r * r);
+  // Straddled: the mesh reaches out to the tolerance, and no further; a
+  // sphere has no crease, so nothing more is allowed.
+  EXPECT_EQ(report.fidelityAllowed, options.tolerance);
+  EXPECT_LE(report.fidelity, options.tolerance * 1.001);
+  EXPECT_GT(report.fidelity, 0.5 * options.tolerance);
+  EXPECT_EQ(report.disagreementCount, 0u);
+  EXPECT_EQ(report.points, options.samples);
+  EXPECT_EQ(report.agree + report.inBand, report.points);
+  // A solid ball: one wall, the diameter, and no gap.
+  ASSERT_TRUE(report.thinnestWall.has_value());
+  EXPECT_NEAR(report.thinnestWall->thickness, 2 * r, 0.1 * r);
+  EXPECT_FALSE(report.narrowestGap.has_value());
+  EXPECT_TRUE(report.warnings.empty());
+}
+
+TEST(Check, BoxVolumesAreExactAlongEveryGrid) {
+  const SolidPtr block = box({4, 5, 6}, {1, 2, 3});
+  const CheckReport report = checkPart(*block, quick());
+  ASSERT_TRUE(report.ok()) << checkReportText(report, "box");
+  // Rays parallel to a face cross a box in its full length or not at all:
+  // only the cells its sides cut sample it unevenly.
+  for (double v : report.volumeAlong) EXPECT_NEAR(v, 120.0, 1e-3 * 120.0);
+  EXPECT_LE(report.gridSpread, report.gridAllowed);
+  EXPECT_NEAR(report.meshVolume, 120.0, 1e-9);
+  EXPECT_LT(report.fidelity, 1e-9);
+  EXPECT_EQ(report.inBand + report.agree, report.points);
+}
+
+TEST(Check, ADrilledBlockChecksOut) { EXPECT_TRUE(test::checksOut(*drilledBlock())); }
+
+TEST(Check, AFlippedFaceFailsTheMesh) {
+  const SolidPtr part = drilledBlock();
+  TriangleMesh mesh = meshOfSolid(*part, 0.01).mesh;
+  std::swap(mesh.triangles[7][1], mesh.triangles[7][2]);
+  const CheckReport report = checkMeshAgainstSolid(*part, mesh, quick());
+  EXPECT_FALSE(report.ok());
+  EXPECT_FALSE(report.meshOk());
+  EXPECT_FALSE(report.meshDefect.empty());
+  EXPECT_NE(checkReportText(report, "part").find("verdict: FAILED"), std::string::npos);
+}
+
+TEST(Check, AMissingFaceFailsTheMeshAndItsClassification) {
+  const SolidPtr part = drilledBlock();
+  TriangleMesh mesh = meshOfSolid(*part, 0.01).mesh;
+  mesh.triangles.erase(mesh.triangles.begin() + 11);
+  const CheckReport report = checkMeshAgainstSolid(*part, mesh, quick());
+  EXPECT_FALSE(report.ok());
+  EXPECT_NE(report.meshDefect.find("open"), std::string::npos) << report.meshDefect;
+  // An open mesh has no inside to classify points by.
+  EXPECT_EQ(report.points, 0u);
+  EXPECT_FALSE(report.classificationOk());
+  EXPECT_NE(checkReportText(report, "part").find("not a closed 2-manifold"), std::string::npos);
+}
+
+TEST(Check, AMovedVertexFailsTheFidelity) {
+  const SolidPtr part = Primitive::create<Sphere>(10.0);
+  TriangleMesh mesh = meshOfSolid(*part, 0.01).mesh;
+  // The vertex nearest the top pulled up by half a unit: a spike of 50
+  // tolerances, which the mesh's validity does not see.
+  std::size_t top = 0;
+  for (std::size_t k = 1; k < mesh.points.size(); ++k)
+    if (mesh.points[k].z > mesh.points[top].z) top = k;
+  mesh.points[top].z += 0.5;
+  const CheckReport report = checkMeshAgainstSolid(*part, mesh, quick());
+  EXPECT_TRUE(report.meshOk()) << report.meshDefect;
+  EXPECT_FALSE(report.fidelityOk());
+  EXPECT_FALSE(report.ok());
+  EXPECT_GT(report.fidelity, 0.25);
+  EXPECT_LE(report.fidelity, 0.5 + 1e-6);
+  // Where: near the top of the sphere.
+  EXPECT_NEAR(report.fidelityAt.z, 10.0, 0.6);
+}
+
+TEST(Check, AnExportFarLooserThanAskedFails) {
+  const SolidPtr part = drilledBlock();
+  TriangleMesh loose = meshOfSolid(*part, 0.5).mesh;
+  const CheckReport report = checkMeshAgainstSolid(*part, loose, quick(0.01));
+  EXPECT_TRUE(report.meshOk());
+  EXPECT_FALSE(report.ok());
+  EXPECT_FALSE(report.fidelityOk());
+  EXPECT_GT(report.fidelity, 0.1);
+  // Points more than 0.01 from the surface fall on the wrong side of
+  // faces half a unit off it.
+  EXPECT_GT(report.disagreementCount, 0u);
+  // The same mesh is fine against the tolerance it was made for.
+  EXPECT_TRUE(checkMeshAgainstSolid(*part, loose, quick(0.5)).ok());
+}
+
+// Scripts, so that the warnings can name the lines that made the operands.
+Scene script(const std::string& source) {
+  ScriptOptions options;
+  options.checkSolid = checkPart;
+  return runScript(source, "part.lua", options);
+}
+
+TEST(Check, ABoxMinusABoxThatSharesAFaceWarnsOfIt) {
+  const Scene scene = script(
+      "local block = box(10)\n"
+      "local slot = box{size={4, 12, 3}}:translate(3, -1, 7)\n"  // top face z = 10 shared
+      "return block - slot\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+  ASSERT_TRUE(hasWarning(report, "coincident faces")) << checkReportText(report, "part");
+  const CheckWarning& w = report.warnings.front();
+  EXPECT_NE(w.message.find("box (part.lua:1) and box (part.lua:2) share a face"), std::string::npos)
+      << w.message;
+  EXPECT_NE(w.message.find("difference (part.lua:3)"), std::string::npos) << w.message;
+  // On the shared plane, within the slot's reach.
+  EXPECT_NEAR(w.location.z, 10.0, 1e-9);
+  EXPECT_GE(w.location.x, 3.0 - 1e-9);
+  EXPECT_LE(w.location.x, 7.0 + 1e-9);
+}
+
+TEST(Check, ACleanDifferenceDoesNotWarn) {
+  const Scene scene = script(
+      "local block = box(10)\n"
+      "local slot = box{size={4, 12, 4}}:translate(3, -1, 7)\n"  // pokes out of the top
+      "return block - slot\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+  EXPECT_TRUE(report.warnings.empty()) << checkReportText(report, "part");
+}
+
+TEST(Check, BoxesStackedFaceToFaceTouch) {
+  const Scene scene = script("return box(10) + box(10):translate(0, 0, 10)\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+  EXPECT_TRUE(hasWarning(report, "touching faces")) << checkReportText(report, "part");
+  EXPECT_FALSE(hasWarning(report, "coincident faces")) << checkReportText(report, "part");
+}
+
+TEST(Check, ThinWallsAndNarrowGapsAreMeasured) {
+  // A cup whose floor is 0.3 thick, beside a block 0.25 away.
+  const SolidPtr cup = differenceOf({box({10, 10, 5}), box({8, 8, 5}, {1, 1, 0.3})});
+  const SolidPtr part = unionOf({cup, box({3, 10, 5}, {10.25, 0, 0})});
+  const CheckReport report = checkPart(*part, quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+  ASSERT_TRUE(report.thinnestWall && report.narrowestGap);
+  EXPECT_NEAR(report.thinnestWall->thickness, 0.3, 1e-6);
+  EXPECT_NEAR(report.thinnestWall->location.z, 0.15, 1e-6);
+  EXPECT_NEAR(report.narrowestGap->thickness, 0.25, 1e-6);
+  EXPECT_NEAR(report.narrowestGap->location.x, 10.125, 1e-6);
+  EXPECT_TRUE(hasWarning(report, "thin wall"));
+  EXPECT_TRUE(hasWarning(report, "narrow gap"));
+  // Under thresholds below them, neither is warned of.
+  CheckOptions lenient = quick();
+  lenient.minWall = 0.2;
+  lenient.minGap = 0.2;
+  EXPECT_TRUE(checkPart(*part, lenient).warnings.empty());
+  // --strict makes a warning fail the check.
+  CheckOptions strict = quick();
+  strict.strict = true;
+  EXPECT_FALSE(checkPart(*part, strict).ok());
+}
+
+TEST(Check, AnUnboundedPartCannotBeChecked) {
+  const CheckReport unbounded = checkMeshAgainstSolid(
+      *script("return half_space{normal={0, 0, 1}}").objects[0], TriangleMesh{}, quick());
+  EXPECT_FALSE(unbounded.ok());
+  EXPECT_NE(unbounded.failure.find("unbounded"), std::string::npos) << unbounded.failure;
+}
+
+TEST(Check, TheFiguresAreTheSameEveryRun) {
+  const SolidPtr part = drilledBlock();
+  const CheckReport a = checkPart(*part, quick());
+  const CheckReport b = checkPart(*part, quick());
+  EXPECT_EQ(checkReportJson(a, "p"), checkReportJson(b, "p"));
+}
+
+TEST(CheckScript, ReturnsTheReportAsATable) {
+  const Scene scene = script(
+      "local part = box(10) - cylinder{r=2, h=20, center=true}:translate(5, 5, 5)\n"
+      "local report = check(part, {samples=5000, grid=48, tolerance=0.02})\n"
+      "assert(report.ok, report.summary)\n"
+      "assert(report.mesh.ok and report.mesh.triangles > 0)\n"
+      "assert(report.classification.points == 5000)\n"
+      "assert(report.classification.disagree == 0)\n"
+      "local hole = math.pi * 2 * 2 * 10\n"
+      "assert(math.abs(report.volume.exact - (1000 - hole)) < 5, report.volume.exact)\n"
+      "assert(report.fidelity.distance <= 0.02 * 1.001)\n"
+      "assert(#report.warnings == 0)\n"
+      "assert(report.thinnest_wall.thickness > 2)\n"
+      "return part\n");
+  EXPECT_EQ(scene.objects.size(), 1u);
+}
+
+TEST(CheckScript, SharedFacesShowInTheTable) {
+  const Scene scene = script(
+      "local r = check(box(10) - box{size={4, 12, 3}}:translate(3, -1, 7), {grid=48, "
+      "samples=1000})\n"
+      "assert(r.ok)\n"
+      "assert(#r.warnings >= 1 and r.warnings[1].kind == 'coincident faces', r.summary)\n"
+      "assert(math.abs(r.warnings[1].at[3] - 10) < 1e-9)\n"
+      "return box(1)\n");
+  EXPECT_EQ(scene.objects.size(), 1u);
+}
+
+TEST(CheckScript, BadArgumentsAreNamed) {
+  auto message = [](const std::string& source) {
+    try {
+      script(source);
+    } catch (const ScriptError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("return check(1)"),
+            "part.lua:1: check: the first argument must be a solid, got number");
+  EXPECT_EQ(message("return check(box(1), {samplez=10})"),
+            "part.lua:1: check: unknown parameter 'samplez'");
+  EXPECT_NE(message("return check(box(1), {samples=-1})").find("samples must be a whole number"),
+            std::string::npos);
+  EXPECT_NE(message("return check(box(1), {tolerance=0})").find("tolerance must be from"),
+            std::string::npos);
+  // A program that cannot check says so.
+  try {
+    runScript("return check(box(1))", "part.lua");
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), "part.lua:1: check: this program cannot check solids");
+  }
+}
+
+}  // namespace
+}  // namespace csgray
