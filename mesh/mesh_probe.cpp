@@ -100,31 +100,6 @@ double MeshProbe::area() const {
   return impl_->mesh.area();
 }
 
-std::vector<MeshProbe::Crossing> MeshProbe::crossings(const dvec3& origin, const dvec3& dir) const {
-  const Impl& m = *impl_;
-  using Hit = SoupTree::Intersection_and_primitive_id<Kernel::Line_3>::Type;
-  std::vector<Hit> hits;
-  m.soupTree.all_intersections(Kernel::Line_3(point(origin), point(origin + dir)),
-                               std::back_inserter(hits));
-  std::vector<Crossing> out;
-  out.reserve(hits.size());
-  const double dirSquared = glm::dot(dir, dir);
-  for (const Hit& hit : hits) {
-    const Point* p = boost::get<Point>(&hit.first);
-    if (!p) continue;  // the line runs along the face
-    const auto face = static_cast<std::size_t>(hit.second - m.soup.cbegin());
-    const TriangleMesh::Triangle& t = m.mesh.triangles[face];
-    const dvec3 a = m.mesh.points[t[0]], b = m.mesh.points[t[1]], c = m.mesh.points[t[2]];
-    dvec3 normal = glm::cross(b - a, c - a);
-    const double length = glm::length(normal);
-    if (length > 0.0) normal /= length;
-    const dvec3 q(p->x(), p->y(), p->z());
-    out.push_back({glm::dot(q - origin, dir) / dirSquared, normal});
-  }
-  std::sort(out.begin(), out.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
-  return out;
-}
-
 double MeshProbe::distance(const dvec3& p) const {
   return std::sqrt(CGAL::to_double(impl_->soupTree.squared_distance(point(p))));
 }

@@ -1,6 +1,6 @@
 // Questions about a triangle mesh, answered by CGAL independently of the
-// exact model: which side of it a point lies on, its volume and area, where
-// a line crosses it and how far a point is from it. What `csgray check`
+// exact model: which side of it a point lies on, its volume and area, and
+// how far a point is from it. What `csgray check`
 // holds against the exact model's answers.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace csgray {
 class MeshProbe {
  public:
   // The mesh need not be valid: a mesh that is not a closed 2-manifold
-  // still has crossings and distances, but no sides (canClassify() is false).
+  // still has distances, but no sides (canClassify() is false).
   explicit MeshProbe(const TriangleMesh& mesh);
   ~MeshProbe();
   MeshProbe(const MeshProbe&) = delete;
@@ -31,14 +31,6 @@ class MeshProbe {
   double volume() const;
   double area() const;
 
-  // Where the line origin + t·dir crosses the faces: t and the unit normal
-  // of the face crossed, sorted by t. A line along a face gives no crossing
-  // there.
-  struct Crossing {
-    double t;
-    dvec3 normal;
-  };
-  std::vector<Crossing> crossings(const dvec3& origin, const dvec3& dir) const;
   // The distance from p to the nearest point of the faces.
   double distance(const dvec3& p) const;
 

@@ -32,4 +32,7 @@ struct TriangleMesh {
   double area() const;
 };
 
+// The distance from p to the nearest point of the triangle abc.
+double pointTriangleDistance(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c);
+
 }  // namespace csgray

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
+#include <random>
 
 #include "check_support.h"
+#include "mesh/axis_crossings.h"
 #include "mesh/mesh_boolean.h"
 #include "mesh/part_check.h"
 #include "modeler/boolean.h"
@@ -47,6 +50,62 @@ SolidPtr drilledBlock() {
   return differenceOf({unionOf({box({20, 20, 6}), Primitive::create<Sphere>(6.0)->transformed(
                                                       Affine::translation({10, 10, 6}))}),
                        cylinder(3, 20, {10, 10, -2})});
+}
+
+TEST(AxisCrossings, LinesCrossASphereMeshWhereTheSphereIsWithinTheTolerance) {
+  const double r = 5.0, tolerance = 0.01;
+  const TriangleMesh mesh = meshOfSolid(*Primitive::create<Sphere>(r), tolerance).mesh;
+  const Bounds box{dvec3(-6.0), dvec3(6.0)};
+  const int n = 24;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> jitter(0.0, 1.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    const AxisCrossings crossings(mesh, box, axis, n);
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::vector<AxisCrossings::Crossing> found;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        dvec3 origin = box.lo;
+        origin[u] += (i + jitter(rng)) * 0.5;
+        origin[v] += (j + jitter(rng)) * 0.5;
+        crossings.crossings(origin, i, j, found);
+        const double b2 = origin[u] * origin[u] + origin[v] * origin[v];
+        // Lines clear of the silhouette's tolerance band cross twice, at
+        // ±√(r² − b²) along the axis, within the tolerance along the normal.
+        if (b2 > (r + 2 * tolerance) * (r + 2 * tolerance)) {
+          EXPECT_TRUE(found.empty());
+          continue;
+        }
+        if (b2 > (r - 0.5) * (r - 0.5)) continue;  // grazing: the normal bound is loose
+        ASSERT_EQ(found.size(), 2u) << axis << " " << i << " " << j;
+        const double half = std::sqrt(r * r - b2);
+        const double slack = tolerance * r / half;  // distance along the line
+        EXPECT_NEAR(found[0].t, -origin[axis] - half, slack);
+        EXPECT_NEAR(found[1].t, -origin[axis] + half, slack);
+        EXPECT_LT(found[0].normal[axis], 0.0);
+        EXPECT_GT(found[1].normal[axis], 0.0);
+      }
+  }
+}
+
+TEST(AxisCrossings, PointTriangleDistanceIsTheLeastOverTheTriangle) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  auto point = [&] { return dvec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  for (int trial = 0; trial < 200; ++trial) {
+    const dvec3 a = point(), b = point(), c = point(), p = point();
+    // The least distance over a fine grid of barycentric points.
+    double least = kInfinity;
+    const int steps = 200;
+    for (int i = 0; i <= steps; ++i)
+      for (int j = 0; i + j <= steps; ++j) {
+        const dvec3 q = a + (double(i) / steps) * (b - a) + (double(j) / steps) * (c - a);
+        least = std::min(least, glm::length(p - q));
+      }
+    const double distance = pointTriangleDistance(p, a, b, c);
+    EXPECT_LE(distance, least + 1e-12);
+    EXPECT_GE(distance, least - 0.03);  // the grid's spacing bounds how far it is off
+  }
 }
 
 TEST(Check, SphereFiguresMatchTheAnalyticOnes) {
