@@ -45,6 +45,7 @@ run: build
 	@mkdir -p out
 	$(CSGRAY) render examples/showcase.lua -o out/showcase.png --size 1024x768
 	$(CSGRAY) export examples/showcase.lua -o out/showcase.stl
+	$(CSGRAY) check examples/showcase.lua
 	@echo "The rendered showcase is out/showcase.png, its printable mesh out/showcase.stl"
 
 test: build

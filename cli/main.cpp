@@ -157,6 +157,17 @@ const CLI::Validator toleranceRange(
     },
     "TOLERANCE");
 
+// 0 to 10⁶ model units; NaN and words are refused (CLI::Range lets NaN by).
+const CLI::Validator lengthRange(
+    [](const std::string& text) -> std::string {
+      char* end = nullptr;
+      double v = std::strtod(text.c_str(), &end);
+      return end != text.c_str() && *end == '\0' && v >= 0.0 && v <= 1e6
+                 ? ""
+                 : "must be a number from 0 to 1e6 (model units)";
+    },
+    "LENGTH");
+
 int main(int argc, char** argv) {
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
   app.set_version_flag("--version", std::string(CSGRAY_VERSION));
@@ -232,7 +243,7 @@ int main(int argc, char** argv) {
       ->add_option("--samples", checkOptions.check.samples,
                    "Random points classified by both the exact model and the mesh")
       ->check(decimal)
-      ->check(CLI::Range(std::size_t(0), std::size_t(100'000'000)))
+      ->check(CLI::Range(std::size_t(0), CheckOptions::kMaxSamples))
       ->capture_default_str();
   checker
       ->add_option("--tolerance", checkOptions.check.tolerance,
@@ -242,18 +253,18 @@ int main(int argc, char** argv) {
   checker
       ->add_option("--min-wall", checkOptions.check.minWall,
                    "Warn of solid walls thinner than this (model units)")
-      ->check(CLI::Range(0.0, 1e6))
+      ->check(lengthRange)
       ->capture_default_str();
   checker
       ->add_option("--min-gap", checkOptions.check.minGap,
                    "Warn of empty gaps narrower than this (model units)")
-      ->check(CLI::Range(0.0, 1e6))
+      ->check(lengthRange)
       ->capture_default_str();
   checker
       ->add_option("--grid", checkOptions.check.grid,
                    "Rays per side of each of the three ray grids along x, y and z")
       ->check(decimal)
-      ->check(CLI::Range(2, 4096))
+      ->check(CLI::Range(2, CheckOptions::kMaxGrid))
       ->capture_default_str();
   checker->add_option("--seed", checkOptions.check.seed, "Seed of the random points and rays")
       ->check(decimal)

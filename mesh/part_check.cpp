@@ -463,8 +463,11 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     report.failure = "the mesh is empty";
     return report;
   }
-  if (options.grid < 2 || options.grid > 4096 || !(options.tolerance > 0.0)) {
-    report.failure = "the grid must have 2 to 4096 rays a side and the tolerance be positive";
+  if (options.grid < 2 || options.grid > CheckOptions::kMaxGrid ||
+      options.samples > CheckOptions::kMaxSamples || !(options.tolerance > 0.0)) {
+    report.failure = "the grid must have 2 to " + std::to_string(CheckOptions::kMaxGrid) +
+                     " rays a side, the samples be at most " +
+                     std::to_string(CheckOptions::kMaxSamples) + ", and the tolerance be positive";
     return report;
   }
   report.meshDefect = meshDefect(mesh);

@@ -15,6 +15,10 @@
 namespace csgray {
 
 struct CheckOptions {
+  // Limits that keep a check within memory and minutes.
+  static constexpr std::size_t kMaxSamples = 10'000'000;
+  static constexpr int kMaxGrid = 1024;
+
   std::size_t samples = 100'000;  // random points classified both ways
   double tolerance = 0.01;        // of the export (model units)
   double minWall = 0.4;           // thinner solid stretches are warned of

@@ -17,7 +17,9 @@ SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
 }
 
 std::string SourceLine::text() const {
-  return known() ? *file + ":" + std::to_string(line) : std::string();
+  if (!known()) return std::string();
+  std::string text = *file + ":" + std::to_string(line);
+  return via > 0 && via != line ? text + " via line " + std::to_string(via) : text;
 }
 
 TreeStats treeStats(const Solid& solid) {

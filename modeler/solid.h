@@ -25,9 +25,13 @@ using SolidPtr = std::shared_ptr<const Solid>;
 struct SourceLine {
   std::shared_ptr<const std::string> file;  // shared: thousands of solids come from one script
   int line = 0;
+  // The line of the script's main chunk that led there, when the solid was
+  // made inside a function: two calls of one function make solids on the
+  // same line, and this tells them apart.
+  int via = 0;
 
   bool known() const { return file && line > 0; }
-  // "part.lua:12", or "" when unknown.
+  // "part.lua:12", "part.lua:12 via line 30", or "" when unknown.
   std::string text() const;
 };
 

@@ -236,6 +236,23 @@ TEST(Check, ABoxMinusABoxThatSharesAFaceWarnsOfIt) {
   EXPECT_LE(w.location.x, 7.0 + 1e-9);
 }
 
+TEST(Check, WarningsTellCallsOfOneFunctionApart) {
+  const Scene scene = script(
+      "local function block(x)\n"
+      "  return box(10):translate(x, 0, 0)\n"
+      "end\n"
+      "local left = block(0)\n"
+      "local right = block(10)\n"  // touches left along x = 10
+      "return left + right\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  ASSERT_TRUE(hasWarning(report, "touching faces")) << checkReportText(report, "part");
+  EXPECT_NE(report.warnings.front().message.find(
+                "box (part.lua:2 via line 4) and box (part.lua:2 via line 5) touch along a face"),
+            std::string::npos)
+      << report.warnings.front().message;
+  EXPECT_NEAR(report.warnings.front().location.x, 10.0, 1e-9);
+}
+
 TEST(Check, ACleanDifferenceDoesNotWarn) {
   const Scene scene = script(
       "local block = box(10)\n"

@@ -372,5 +372,51 @@ else
 fi
 expect_in_stderr "export with a floor" "1 open surface is not exported"
 
+# check: a sound part passes (exit 0), writes nothing, and says why.
+before=$(ls -A "$work" | wc -l)
+if "$csgray" check "$work/part.lua" --samples 2000 --grid 32 >"$work/stdout" 2>"$work/stderr" &&
+   grep -q '^verdict: ok$' "$work/stdout" && grep -q 'classification  ok .* 0 disagree' "$work/stdout" &&
+   [ "$(ls -A "$work" | wc -l)" -eq "$before" ]; then
+  pass
+else
+  fail "good check"; cat "$work/stdout" "$work/stderr"
+fi
+if "$csgray" check "$work/part.lua" --samples 2000 --grid 32 --json >"$work/stdout" 2>"$work/stderr" &&
+   grep -q '^  "ok": true,$' "$work/stdout" && grep -q '"disagree": 0' "$work/stdout" &&
+   [ "$(head -c1 "$work/stdout")" = "{" ] && [ "$(tail -n1 "$work/stdout")" = "}" ]; then
+  pass
+else
+  fail "check --json"; cat "$work/stdout" "$work/stderr"
+fi
+# A cutter flush with the top face: a warning, which --strict makes a failure.
+printf 'local block = box(10)\nlocal slot = box{size={4, 12, 3}}:translate(3, -1, 7)\nreturn block - slot\n' > "$work/flush.lua"
+if "$csgray" check "$work/flush.lua" --samples 2000 --grid 32 >"$work/stdout" 2>"$work/stderr" &&
+   grep -qF 'warning: coincident faces: box (' "$work/stdout" &&
+   grep -qF 'flush.lua:1) and box (' "$work/stdout" && grep -q '^verdict: ok$' "$work/stdout"; then
+  pass
+else
+  fail "check warns of a shared face"; cat "$work/stdout" "$work/stderr"
+fi
+"$csgray" check "$work/flush.lua" --samples 2000 --grid 32 --strict >"$work/stdout" 2>"$work/stderr"
+if [ $? -eq 1 ] && grep -q '^verdict: FAILED (strict: there are warnings)$' "$work/stdout"; then
+  pass
+else
+  fail "check --strict fails on a warning"; cat "$work/stdout" "$work/stderr"
+fi
+# A part that cannot be exported fails the check, and says why.
+"$csgray" check "$work/unbounded.lua" >"$work/stdout" 2>"$work/stderr"
+if [ $? -eq 1 ] && grep -q 'the part is unbounded' "$work/stdout" && grep -q '^verdict: FAILED$' "$work/stdout"; then
+  pass
+else
+  fail "check of an unbounded part"; cat "$work/stdout" "$work/stderr"
+fi
+expect_exit 1 "check of a bad script" "" check "$work/bad.lua"
+expect_in_stderr "check of a bad script" "bad.lua:2: sphere: r must be > 0 (got -2)"
+expect_exit 1 "check of a missing script" "" check "$work/nope.lua"
+expect_exit 2 "check with negative samples" "" check "$work/part.lua" --samples -1
+expect_exit 2 "check with a one-ray grid" "" check "$work/part.lua" --grid 1
+expect_exit 2 "check with a zero tolerance" "" check "$work/part.lua" --tolerance 0
+expect_exit 2 "check with a NaN wall" "" check "$work/part.lua" --min-wall nan
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

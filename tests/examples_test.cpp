@@ -7,9 +7,6 @@
 #include <filesystem>
 
 #include "check_support.h"
-#include "io/image_file.h"
-#include "mesh/mesh_import.h"
-#include "mesh/part_check.h"
 #include "modeler/boolean.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
@@ -20,13 +17,7 @@ namespace {
 
 class Example : public ::testing::TestWithParam<std::string> {};
 
-Scene runExample(const std::string& path) {
-  ScriptOptions options;
-  options.loadImage = readTextureImage;
-  options.loadMesh = importMesh;
-  options.checkSolid = checkPart;
-  return runScriptFile(path, options);
-}
+Scene runExample(const std::string& path) { return runScriptFile(path, test::exampleOptions()); }
 
 TEST_P(Example, Renders) {
   Scene scene = runExample(GetParam());

@@ -42,19 +42,12 @@ struct TempFolder {
   ~TempFolder() { fs::remove_all(path); }
 };
 
-ScriptOptions scriptOptions() {
-  ScriptOptions options;
-  options.loadImage = readTextureImage;
-  options.loadMesh = importMesh;
-  return options;
-}
-
 SolidPtr partOf(const Scene& scene) {
   return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
 }
 
 SolidPtr partOfScript(const std::string& source) {
-  return partOf(runScript(source, "test.lua", scriptOptions()));
+  return partOf(runScript(source, "test.lua", test::exampleOptions()));
 }
 
 // The mesh and the material colours (sRGB bytes) of its triangles, read
@@ -120,7 +113,7 @@ class ExampleExport : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
   TempFolder folder;
-  const SolidPtr part = partOf(runScriptFile(GetParam(), scriptOptions()));
+  const SolidPtr part = partOf(runScriptFile(GetParam(), test::exampleOptions()));
   struct Format {
     const char* file;
     bool ascii;
@@ -147,7 +140,7 @@ TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
     EXPECT_EQ(meshDefect(back), "");
   }
   // And it comes back in as a solid: mesh{} takes the file it wrote.
-  ScriptOptions options = scriptOptions();
+  ScriptOptions options = test::exampleOptions();
   options.folder = folder.path.string();
   Scene again = runScript("return mesh{file=\"part.stl\"}", "again.lua", options);
   ASSERT_EQ(again.objects.size(), 1u);

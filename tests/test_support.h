@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "io/image_file.h"
+#include "mesh/mesh_import.h"
+#include "mesh/part_check.h"
+#include "modeler/script/script.h"
 #include "modeler/solid.h"
 
 namespace csgray::test {
@@ -23,6 +27,15 @@ inline std::vector<std::string> exampleScripts() {
     if (entry.path().extension() == ".lua") paths.push_back(entry.path().string());
   std::sort(paths.begin(), paths.end());
   return paths;
+}
+
+// What the command line gives a script: image and mesh files, and check().
+inline ScriptOptions exampleOptions() {
+  ScriptOptions options;
+  options.loadImage = readTextureImage;
+  options.loadMesh = importMesh;
+  options.checkSolid = checkPart;
+  return options;
 }
 
 // A test name from a script's path: its stem, other characters as '_'.

@@ -126,8 +126,9 @@ int check(lua_State* L) {
   const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "check: the first argument");
   LuaArgs args(L, 2, "check");
   CheckOptions options;
-  options.samples = wholeArg<std::size_t>(args, "samples", 0, 1e8).value_or(options.samples);
-  options.grid = wholeArg<int>(args, "grid", 2, 4096).value_or(options.grid);
+  options.samples = wholeArg<std::size_t>(args, "samples", 0, double(CheckOptions::kMaxSamples))
+                        .value_or(options.samples);
+  options.grid = wholeArg<int>(args, "grid", 2, CheckOptions::kMaxGrid).value_or(options.grid);
   options.seed = wholeArg<std::uint64_t>(args, "seed", 0, 9e15).value_or(options.seed);
   options.tolerance = positiveArg(args, "tolerance", 1e-6, 1e3).value_or(options.tolerance);
   options.minWall = positiveArg(args, "min_wall", 0.0, 1e6).value_or(options.minWall);

@@ -201,12 +201,16 @@ int Sandbox::printToStderr(lua_State* L) {
 SourceLine Sandbox::callerLine(lua_State* L) {
   // The nearest Lua frame: a C function in between (pcall, table.sort's
   // comparator caller) has no line of its own.
+  SourceLine where;
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level) {
-    if (!lua_getinfo(L, "l", &ar)) break;
-    if (ar.currentline > 0) return SourceLine{chunkName_, ar.currentline};
+    if (!lua_getinfo(L, "l", &ar) || ar.currentline <= 0) continue;
+    if (!where.known())
+      where = SourceLine{chunkName_, ar.currentline, 0};
+    else
+      where.via = ar.currentline;  // the outermost Lua frame, the main chunk, comes last
   }
-  return {};
+  return where;
 }
 
 int Sandbox::run(const std::string& source, const std::string& chunkName) {
