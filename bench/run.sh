@@ -81,3 +81,26 @@ for n in $export_sizes; do
   printf '| plate(%s) | %s | %d | %s | %s | %s | %s | %s | %s | %s |\n' "$n" "$best" "$memory" \
     "$script" "$mesh" "$check" "$write" "${triangles:--}" "${booleans:--}" "$verdict"
 done
+
+# csgray check: plate(N)'s export held against the exact model at the
+# default settings (100 000 points, three 128² ray grids); wall time
+# includes making the export in memory.
+echo
+echo "| check | wall (s) | peak memory (MB) | verdict |"
+echo "|---|---:|---:|---|"
+check_sizes=${CHECK_SIZES:-"8 16"}
+for n in $check_sizes; do
+  best=""
+  for ((r = 0; r < runs; r++)); do
+    verdict=ok
+    /usr/bin/time -f "%e %M" -o "$out/time" \
+      "$csgray" check bench/plate.lua -D n="$n" >"$out/stdout" 2>&1 || verdict="FAILED"
+    read -r seconds kilobytes < <(tail -1 "$out/time")
+    if [ -z "$best" ] || awk -v a="$seconds" -v b="$best" 'BEGIN {exit !(a < b)}'; then
+      best=$seconds
+      memory=$((kilobytes / 1024))
+      result=$verdict
+    fi
+  done
+  printf '| plate(%s) | %s | %d | %s |\n' "$n" "$best" "$memory" "$result"
+done

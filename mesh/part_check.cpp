@@ -40,6 +40,9 @@ constexpr double kSigmas = 5.0;
 // own ray, is below this share of the tolerance is not measured along 13
 // lines: the estimate is good, and the point cannot be the one that fails.
 constexpr double kQuickShare = 0.5;
+// A mesh point further than this many tolerances from the exact surface is
+// reported as this far: the check has failed by then.
+constexpr double kFidelityReach = 100.0;
 constexpr std::size_t kListed = 10;  // disagreeing points listed
 constexpr std::size_t kWarningKinds = 20;
 
@@ -164,21 +167,32 @@ class Checker {
   // The lines pass a hair's breadth (1e-8 of the box) off p in a skew
   // direction: a mesh point found by an axis ray lies on an axis-aligned
   // face more often than not, and a line in the plane of a face grazes it.
-  double surfaceDistance(const dvec3& p) const {
-    double best = cap_;
+  //
+  // Only faces within `reach` of p are looked for, and a distance beyond
+  // it is given as `reach`: the callers need no more, and a short line
+  // meets few of a large boolean's operands.
+  double surfaceDistance(const dvec3& p, double reach) const {
+    double best = reach;
     SpanList spans;
     const dvec3 off = p + nudge_;
     for (const dvec3& d : kLines) {
-      const Ray line(off, d, -kInfinity, kInfinity);
+      const Ray line(off, d, -reach, reach);
       solid_.spans(line, spans);
       for (const Span& s : spans)
         for (const Boundary* b : {&s.in, &s.out}) {
-          if (!std::isfinite(b->t)) continue;
+          if (!(std::abs(b->t) < reach)) continue;  // also skips ±infinity
           const double cosine = std::abs(glm::dot(outwardNormal(*b, line.at(b->t)), d));
           if (cosine >= kGrazing) best = std::min(best, std::abs(b->t) * cosine);
         }
     }
     return best;
+  }
+
+  // Is p within what the mesh may be off the exact surface there, where
+  // the two may classify it differently?
+  bool withinBand(const dvec3& p) const {
+    const double d = surfaceDistance(p, kFidelityReach * options_.tolerance);
+    return d <= allowance(p, d) * (1.0 + kCheckEstimateSlack) + epsilon_;
   }
 
   // How far the mesh may be from the exact surface at p, found d away:
@@ -270,7 +284,7 @@ class Checker {
       for (const Hit& h : exact)
         estimate = std::min(estimate, std::abs(h.t - c.t) * std::abs(h.normal[axis]));
       if (estimate > kQuickShare * options_.tolerance)
-        estimate = std::min(estimate, surfaceDistance(q));
+        estimate = std::min(estimate, surfaceDistance(q, kFidelityReach * options_.tolerance));
       tally.distance(estimate, allowance(q, estimate), q, true);
     }
     scanOperands(solid_, ray, tally);
@@ -290,7 +304,9 @@ class Checker {
     double width = length * std::abs(glm::normalize(a - b)[axis]);
     if (thinnest && width >= thinnest->thickness) return;
     const dvec3 middle = 0.5 * (p + q);
-    width = std::max(width, 2.0 * surfaceDistance(middle));
+    // Only a ball narrower than the thinnest so far can change it.
+    const double reach = thinnest ? 0.5 * thinnest->thickness : cap_;
+    width = std::max(width, 2.0 * surfaceDistance(middle, reach));
     Tally::thinnest(thinnest, width, middle);
   }
 
@@ -426,7 +442,7 @@ void classify(const Solid& solid, const MeshProbe& probe, const Checker& checker
   for (dvec3& p : points) p = box.lo + dvec3(uniform(rng), uniform(rng), uniform(rng)) * box.size();
   enum Verdict : std::uint8_t { Agree, InBand, Disagree };
   std::vector<std::uint8_t> verdicts(points.size());
-  const double band = options.tolerance * (1.0 + 1e-3) + checker.epsilon();
+
   if (!points.empty()) probe.side(points[0]);  // builds CGAL's tree before the threads ask
   tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t k) {
     const MeshProbe::Side side = probe.side(points[k]);
@@ -436,7 +452,7 @@ void classify(const Solid& solid, const MeshProbe& probe, const Checker& checker
     else if (exact == (side == MeshProbe::Side::Inside))
       verdicts[k] = Agree;
     else
-      verdicts[k] = checker.surfaceDistance(points[k]) <= band ? InBand : Disagree;
+      verdicts[k] = checker.withinBand(points[k]) ? InBand : Disagree;
   });
   report.points = points.size();
   for (std::size_t k = 0; k < points.size(); ++k) {

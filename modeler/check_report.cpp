@@ -8,10 +8,6 @@ namespace csgray {
 
 namespace {
 
-// The distance estimates along rays are exact on flat faces and off by a
-// part in a thousand where a face curves within the tolerance.
-constexpr double kEstimateSlack = 1e-3;
-
 std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", x);
@@ -59,7 +55,7 @@ bool CheckReport::volumeOk() const {
 }
 
 bool CheckReport::fidelityOk() const {
-  return failure.empty() && fidelity <= fidelityAllowed * (1.0 + kEstimateSlack);
+  return failure.empty() && fidelity <= fidelityAllowed * (1.0 + kCheckEstimateSlack);
 }
 
 bool CheckReport::ok() const {
