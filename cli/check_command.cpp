@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cli/export_command.h"
 #include "cli/heap_reserve.h"
 #include "mesh/part_check.h"
-#include "cli/export_command.h"
 
 namespace csgray {
 

@@ -30,8 +30,8 @@ SolidPtr printedPart(const Scene& scene, const std::string& script, const char* 
                              " (open surfaces cannot be printed)");
   if (!scene.surfaces.empty())
     std::fprintf(stderr, "csgray: warning: %s: %zu open surface%s not %sed: only solids are\n",
-                 script.c_str(), scene.surfaces.size(), scene.surfaces.size() == 1 ? " is" : "s are",
-                 verb);
+                 script.c_str(), scene.surfaces.size(),
+                 scene.surfaces.size() == 1 ? " is" : "s are", verb);
   return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
 }
 

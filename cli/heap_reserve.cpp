@@ -19,6 +19,9 @@ void reserveHugePageHeap(std::size_t bytes) {
   mallopt(M_MMAP_MAX, 0);
   void* block = std::malloc(bytes);
   mallopt(M_MMAP_MAX, 65536);  // glibc's default
+  // Blocks up to 32 MiB (an image, a mesh's arrays) come from the heap
+  // too, rather than each from a fresh mapping of 4 KiB pages.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
   if (!block) return;
   constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
   const auto begin = (reinterpret_cast<std::uintptr_t>(block) + kHugePage - 1) & ~(kHugePage - 1);

@@ -14,13 +14,12 @@
 #include <vector>
 
 #include "cli/check_command.h"
-#include "cli/export_command.h"
+#include "cli/heap_reserve.h"
+#include "cli/mesh_plugin.h"
 #include "cli/progress.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_plugin.h"
-#include "mesh/mesh_import.h"
-#include "mesh/part_check.h"
 #include "modeler/primitive.h"
 #include "modeler/script/script.h"
 #include "raytrace/renderer.h"
@@ -298,8 +297,12 @@ int main(int argc, char** argv) {
     ScriptOptions scriptOptions;
     scriptOptions.defines = parseDefines(defineItems);
     scriptOptions.loadImage = readTextureImage;
-    scriptOptions.loadMesh = importMesh;
-    scriptOptions.checkSolid = checkPart;
+    scriptOptions.loadMesh = [](const std::string& path, bool repair, std::string& report) {
+      return meshPlugin().importMesh(path, repair, report);
+    };
+    scriptOptions.checkSolid = [](const Solid& solid, const CheckOptions& options) {
+      return meshPlugin().checkPart(solid, options);
+    };
     scriptOptions.allowedFolders = allowedFolders;
     scriptOptions.warn = [](const std::string& message) {
       std::cerr << "csgray: warning: " << message << "\n";
@@ -333,6 +336,10 @@ int main(int argc, char** argv) {
           throw std::runtime_error("cannot write " + path + ": " + problem);
       }
       auto start = std::chrono::steady_clock::now();
+      // The script's solids and the images come from huge pages: on a
+      // virtual machine a 4 KiB page fault costs about 12 µs, and a render
+      // touched some 4 000 pages (plate(8): 0.05 s of 0.26 s).
+      reserveHugePageHeap(std::size_t(256) << 20);
       // Formats other than PNG go through OpenImageIO, whose many libraries
       // load on another thread while the script runs and the image renders.
       std::optional<ImagePluginPreload> preload;
@@ -353,6 +360,10 @@ int main(int argc, char** argv) {
       }();
       using Clock = std::chrono::steady_clock;
       Clock::time_point scripted = Clock::now(), built, traced;
+      // A PNG file is compressed band by band on the render's threads as
+      // its rows are finished, so that little is left for after the render.
+      std::optional<PngEncoder> png;
+      if (endsWithPng(output)) png.emplace(width, height);
       RenderResult result = [&] {
         ProgressBar bar("rendering");
         RenderOptions options;
@@ -364,6 +375,13 @@ int main(int argc, char** argv) {
         options.depthAov = depthAov;
         options.normalAov = normalAov;
         options.progress = [&bar](double done) { bar.update(done); };
+        if (png) {
+          options.bandRows = PngEncoder::kBandRows;
+          options.rowsDone = [&](const Image& color, int first, int) {
+            png->encodeBand(first / PngEncoder::kBandRows,
+                            pngRows(color.rgb.data(), color.width, ImageData::LinearColor));
+          };
+        }
         try {
           Renderer renderer(scene, options);
           built = Clock::now();
@@ -378,7 +396,7 @@ int main(int argc, char** argv) {
       if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false, workers);
       const Image& image = result.color;
       writeImage(output, image.width, image.height, image.rgb.data(), ImageData::LinearColor,
-                 workers);
+                 workers, png ? &*png : nullptr);
       if (stats) {
         auto secs = [](Clock::time_point a, Clock::time_point b) {
           return std::chrono::duration<double>(b - a).count();
@@ -400,14 +418,15 @@ int main(int argc, char** argv) {
                   seconds.count());
     } else if (*exporter) {
       exportOptions.script = script;
-      checkExportOutput(exportOptions);
+      meshPlugin().checkExportOutput(exportOptions);
       auto start = std::chrono::steady_clock::now();
       Scene scene = runScript();
-      exportScene(scene, exportOptions,
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      meshPlugin().exportScene(
+          scene, exportOptions,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     } else if (*checker) {
       checkOptions.script = script;
-      return checkScene(runScript(), checkOptions);
+      return meshPlugin().checkScene(runScript(), checkOptions);
     } else if (*info) {
       printInfo(script, runScript());
     }

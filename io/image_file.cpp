@@ -7,6 +7,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -51,24 +52,29 @@ std::string imageOutputProblem(const std::string& path) {
   return imagePlugin().outputProblem(path);
 }
 
-void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data,
-                int threads) {
-  AtomicFile file(path);
-  if (!isPng(path)) {
-    imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
-    file.commit();
-    return;
-  }
+PngRowSource pngRows(const float* rgb, int width, ImageData data) {
   static const SrgbEncoder srgb;
   const std::size_t stride = std::size_t(width) * 3;
-  auto row = [&](int y, std::uint8_t* out) {
+  return [rgb, stride, data](int y, std::uint8_t* out) {
     const float* in = rgb + std::size_t(y) * stride;
     for (std::size_t i = 0; i < stride; ++i)
       out[i] = data == ImageData::LinearColor
                    ? srgb(in[i])
                    : std::uint8_t(std::lround(255.0f * std::clamp(in[i], 0.0f, 1.0f)));
   };
-  std::string png = encodePng(width, height, row, threads);
+}
+
+void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data,
+                int threads, PngEncoder* started) {
+  AtomicFile file(path);
+  if (!isPng(path)) {
+    imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
+    file.commit();
+    return;
+  }
+  std::optional<PngEncoder> own;
+  PngEncoder& encoder = started ? *started : own.emplace(width, height);
+  std::string png = encoder.finish(pngRows(rgb, width, data), threads);
   std::ofstream out(file.tempPath(), std::ios::binary);
   out.write(png.data(), std::streamsize(png.size()));
   out.close();

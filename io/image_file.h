@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "io/png_file.h"
 #include "modeler/texture.h"
 
 namespace csgray {
@@ -16,12 +17,17 @@ std::string imageOutputProblem(const std::string& path);
 // (depth, normals) that 8-bit formats store as they are, clamped to [0, 1].
 enum class ImageData { LinearColor, Values };
 
+// The rows of an image of RGB floats as the 8-bit codes a PNG file holds.
+PngRowSource pngRows(const float* rgb, int width, ImageData data);
+
 // Writes RGB floats (row-major, top row first) atomically. Float formats
 // (EXR, HDR) keep the values; others store colours sRGB-encoded. PNG files
-// are encoded on up to `threads` threads. Throws std::runtime_error naming
-// the file.
+// are encoded on up to `threads` threads; `started`, if given, is a PNG
+// encoder of this image that may hold bands encoded already (from
+// pngRows of the same floats). Throws std::runtime_error naming the file.
 void writeImage(const std::string& path, int width, int height, const float* rgb,
-                ImageData data = ImageData::LinearColor, int threads = 1);
+                ImageData data = ImageData::LinearColor, int threads = 1,
+                PngEncoder* started = nullptr);
 
 // Reads an image for a texture as linear RGB floats: grey is replicated,
 // alpha dropped; 8- and 16-bit integer formats are sRGB-decoded, float

@@ -1,6 +1,5 @@
 #include "raytrace/renderer.h"
 
-#include <oneapi/tbb/blocked_range2d.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
@@ -8,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <vector>
 
 #include "modeler/primitive.h"
 #include "raytrace/optics.h"
@@ -308,36 +308,62 @@ dvec3 Renderer::pixel(int x, int y, int samples, TraceContext& ctx) const {
 RenderResult Renderer::renderAll() const {
   const int w = options_.width, h = options_.height;
   RenderResult result;
-  result.color = Image(w, h);
+  result.color = Image::uninitialized(w, h);  // the first pass sets every pixel
   if (options_.depthAov) result.depth = Image(w, h);
   if (options_.normalAov) result.normal = Image(w, h);
   bool refine = options_.adaptive && options_.samples > 1;
   const double rows = double(h) * (refine ? 2 : 1);
-  std::atomic<int> rowsDone = 0;
+  std::atomic<int> pixelsDone = 0;
   std::atomic<std::uint64_t> primary = 0, shadow = 0, secondary = 0;
 
-  // Runs work(x, y, counts) for every pixel, tiles in parallel; the rays a
-  // tile traced are added up once per tile.
-  auto forEachTile = [&](auto&& work) {
-    auto tile = [&](const tbb::blocked_range2d<int>& r) {
+  // Runs work(x, y, counts) for every pixel, in tiles of 16 × 16 that the
+  // threads take in order, row of tiles by row of tiles from the top; the
+  // rays a tile traced are added up once per tile. In the last pass, the
+  // tile that finishes a band of rows hands it on (options_.rowsDone).
+  constexpr int kTile = 16;
+  const int tilesX = (w + kTile - 1) / kTile, tiles = tilesX * ((h + kTile - 1) / kTile);
+  const int bandRows = options_.rowsDone ? std::max(options_.bandRows, 0) : 0;
+  auto forEachTile = [&](bool last, auto&& work) {
+    // The pixels each band still waits for.
+    std::vector<std::atomic<std::int64_t>> waiting(bandRows && last ? (h + bandRows - 1) / bandRows
+                                                                    : 0);
+    for (std::size_t b = 0; b < waiting.size(); ++b)
+      waiting[b] = std::int64_t(std::min(bandRows, h - int(b) * bandRows)) * w;
+    auto tile = [&](int i) {
+      const int x0 = i % tilesX * kTile, x1 = std::min(w, x0 + kTile);
+      const int y0 = i / tilesX * kTile, y1 = std::min(h, y0 + kTile);
       RayCounts counts;
-      for (int y = r.rows().begin(); y < r.rows().end(); ++y)
-        for (int x = r.cols().begin(); x < r.cols().end(); ++x) work(x, y, counts);
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) work(x, y, counts);
       primary += counts.primary;
       shadow += counts.shadow;
       secondary += counts.secondary;
+      const int pixels = (y1 - y0) * (x1 - x0);
       if (options_.progress) {
-        // Count a tile's rows in proportion to its width.
-        int done = rowsDone.fetch_add(int(r.rows().size()) * int(r.cols().size()));
-        options_.progress((done + r.rows().size() * r.cols().size()) / (rows * w));
+        int done = pixelsDone.fetch_add(pixels);
+        options_.progress((done + pixels) / (rows * w));
+      }
+      // A tile's rows may reach into two bands (if bandRows is not a
+      // multiple of 16). The atomic counts order the threads' writes: the
+      // tile that finishes a band sees the pixels of all the others.
+      if (!waiting.empty()) {
+        for (int y = y0; y < y1;) {
+          const int band = y / bandRows, end = std::min(y1, (band + 1) * bandRows);
+          if ((waiting[band] -= std::int64_t(end - y) * (x1 - x0)) == 0)
+            options_.rowsDone(result.color, band * bandRows, std::min(h, (band + 1) * bandRows));
+          y = end;
+        }
       }
     };
-    tbb::blocked_range2d<int> all(0, h, 16, 0, w, 16);
+    std::atomic<int> next = 0;
+    auto take = [&](int) {
+      for (int i; (i = next++) < tiles;) tile(i);
+    };
     if (options_.threads > 0) {
       tbb::task_arena arena(options_.threads);
-      arena.execute([&] { tbb::parallel_for(all, tile); });
+      arena.execute([&] { tbb::parallel_for(0, options_.threads, take); });
     } else {
-      tbb::parallel_for(all, tile);
+      tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), take);
     }
   };
 
@@ -346,7 +372,7 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
-  forEachTile([&](int x, int y, RayCounts& counts) {
+  forEachTile(!refine, [&](int x, int y, RayCounts& counts) {
     TraceContext ctx{Sampler(x, y)};
     result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, ctx));
     add(counts, ctx.counts);
@@ -380,7 +406,7 @@ RenderResult Renderer::renderAll() const {
         }
       return false;
     };
-    forEachTile([&](int x, int y, RayCounts& counts) {
+    forEachTile(true, [&](int x, int y, RayCounts& counts) {
       if (!differs(x, y)) return;
       TraceContext ctx{Sampler(x, y, 1)};
       result.color.set(x, y, pixel(x, y, options_.samples, ctx));

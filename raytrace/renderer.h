@@ -39,6 +39,13 @@ struct RenderOptions {
   bool normalAov = false;
   // Called from worker threads with the share of the image done, in [0, 1].
   std::function<void(double)> progress;
+  // Called once for each band of bandRows rows of the colour image, rows
+  // [first, last) (the last band may be shorter), as soon as its pixels
+  // are final, on the worker thread that finished it, while the render
+  // goes on: so a PNG file can be compressed band by band meanwhile. Tiles
+  // are rendered in rows from the top, so bands finish from the top down.
+  int bandRows = 0;
+  std::function<void(const Image& color, int first, int last)> rowsDone;
 };
 
 // What the renderer makes: the colour image, and the AOVs asked for. Depth

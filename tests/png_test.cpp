@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "io/image_file.h"
@@ -50,6 +51,27 @@ TEST(Png, BandsOnSeveralThreadsDecodeToTheSamePixels) {
     EXPECT_EQ(back, pixels) << threads << " threads";
   }
   std::filesystem::remove_all(dir);
+}
+
+// The renderer hands bands over in whatever order its threads finish
+// them; the file does not depend on it, nor on who encodes the rest.
+TEST(Png, BandsEncodedInAnyOrderGiveTheSameFile) {
+  const int w = 50, h = 4 * PngEncoder::kBandRows + 7;
+  std::mt19937 rng(3);
+  std::vector<std::uint8_t> pixels(std::size_t(w) * h * 3);
+  for (std::uint8_t& p : pixels) p = std::uint8_t(rng() % 5 * 60);
+  auto rows = [&](int y, std::uint8_t* out) {
+    std::copy_n(&pixels[std::size_t(y) * w * 3], w * 3, out);
+  };
+  const std::string whole = encodePng(w, h, rows, 1);
+  PngEncoder encoder(w, h);
+  ASSERT_EQ(encoder.bands(), 5);
+  std::thread a([&] { encoder.encodeBand(4, rows); });
+  std::thread b([&] { encoder.encodeBand(1, rows); });
+  encoder.encodeBand(2, rows);
+  a.join();
+  b.join();
+  EXPECT_EQ(encoder.finish(rows, 2), whole);  // bands 0 and 3 encoded here
 }
 
 TEST(Png, SrgbCodesAreTheRoundedTransferFunction) {

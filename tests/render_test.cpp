@@ -3,9 +3,11 @@
 // Lambert's cosine law.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <vector>
 
 #include "modeler/primitives/box.h"
 #include "modeler/primitives/half_space.h"
@@ -55,6 +57,40 @@ TEST(Render, ImageHasRequestedSizeAndThreadCountDoesNotMatter) {
   EXPECT_EQ(one.width, 64);
   EXPECT_EQ(one.height, 48);
   EXPECT_EQ(one.rgb, two.rgb);
+}
+
+// Each band of rows is handed over once, when its pixels are final: the
+// rows seen then are those of the finished image, whatever the thread
+// count, band height (one that is not a multiple of the tiles' 16 rows
+// splits tiles between bands) or second, adaptive pass.
+TEST(Render, BandsAreHandedOverOnceWithTheirFinalRows) {
+  Scene scene = sphereScene();
+  for (int threads : {1, 2, 3})
+    for (int bandRows : {16, 23, 64})
+      for (bool adaptive : {false, true}) {
+        RenderOptions options(70, 53, threads);
+        options.samples = adaptive ? 4 : 1;
+        options.adaptive = adaptive;
+        options.bandRows = bandRows;
+        std::vector<std::vector<float>> seen((53 + bandRows - 1) / bandRows);
+        std::vector<int> calls(seen.size(), 0);
+        options.rowsDone = [&](const Image& color, int first, int last) {
+          int band = first / bandRows;
+          ASSERT_EQ(first, band * bandRows);
+          ASSERT_EQ(last, std::min(53, first + bandRows));
+          ++calls[band];
+          seen[band].assign(color.rgb.begin() + std::size_t(first) * 70 * 3,
+                            color.rgb.begin() + std::size_t(last) * 70 * 3);
+        };
+        Image image = Renderer(scene, options).render();
+        std::vector<float> joined;
+        for (std::size_t b = 0; b < seen.size(); ++b) {
+          EXPECT_EQ(calls[b], 1) << "band " << b;
+          joined.insert(joined.end(), seen[b].begin(), seen[b].end());
+        }
+        EXPECT_TRUE(std::equal(joined.begin(), joined.end(), image.rgb.begin(), image.rgb.end()))
+            << threads << " threads, bands of " << bandRows;
+      }
 }
 
 // A sphere of radius 1 centred 8 below a point light, over a floor 10

@@ -1,0 +1,34 @@
+#include "io/plugin_module.h"
+
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace csgray {
+
+const void* loadPluginModule(const std::string& fileName, const std::string& builtPath,
+                             const char* entry, const std::string& what) {
+  std::vector<std::string> paths;
+  std::error_code error;
+  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) paths.push_back((exe.parent_path() / fileName).string());
+  paths.push_back(builtPath);
+  std::string why;
+  for (const std::string& path : paths) {
+    if (!std::filesystem::exists(path)) continue;
+    void* module = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+      why = ::dlerror();
+      continue;
+    }
+    auto get = reinterpret_cast<const void* (*)()>(::dlsym(module, entry));
+    if (get) return get();
+    why = path + " has no " + entry;
+  }
+  throw std::runtime_error("cannot load csgray's " + fileName + " (needed for " + what + ")" +
+                           (why.empty() ? std::string() : ": " + why));
+}
+
+}  // namespace csgray
