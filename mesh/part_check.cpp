@@ -520,7 +520,10 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
   for (const auto& [key, w] : tally.warnings) found.push_back(w);
   std::stable_sort(found.begin(), found.end(),
                    [](const CheckWarning& a, const CheckWarning& b) { return a.rays > b.rays; });
-  if (found.size() > kWarningKinds) found.resize(kWarningKinds);
+  if (found.size() > kWarningKinds) {
+    report.warningsLeftOut = found.size() - kWarningKinds;
+    found.resize(kWarningKinds);
+  }
   report.warnings = std::move(found);
   auto thin = [&](const std::optional<Stretch>& s, double limit, const char* kind,
                   const char* what) {

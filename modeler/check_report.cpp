@@ -110,6 +110,8 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
     if (w.rays > 1) s << " (" << w.rays << " rays)";
     s << "\n";
   }
+  if (r.warningsLeftOut > 0)
+    s << "  (" << r.warningsLeftOut << " more warnings of coinciding faces left out)\n";
   const bool warned = r.options.strict && !r.warnings.empty();
   s << "verdict: " << (r.ok() ? "ok" : "FAILED") << (warned ? " (strict: there are warnings)" : "")
     << "\n";
@@ -160,7 +162,8 @@ std::string checkReportJson(const CheckReport& r, const std::string& name) {
       << ", \"message\": " << jsonString(w.message) << ", \"at\": " << jsonPoint(w.location)
       << ", \"rays\": " << w.rays << "}";
   }
-  s << (r.warnings.empty() ? "]" : "\n  ]") << "\n}\n";
+  s << (r.warnings.empty() ? "]" : "\n  ]") << ",\n  \"warnings_left_out\": " << r.warningsLeftOut
+    << "\n}\n";
   return s.str();
 }
 

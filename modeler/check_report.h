@@ -83,6 +83,7 @@ struct CheckReport {
 
   std::optional<Stretch> thinnestWall, narrowestGap;
   std::vector<CheckWarning> warnings;
+  std::size_t warningsLeftOut = 0;  // past the first 20 of the boolean warnings
 
   bool meshOk() const { return failure.empty() && meshDefect.empty(); }
   bool classificationOk() const { return meshOk() && disagreementCount == 0; }

@@ -253,6 +253,20 @@ TEST(Check, WarningsTellCallsOfOneFunctionApart) {
   EXPECT_NEAR(report.warnings.front().location.x, 10.0, 1e-9);
 }
 
+TEST(Check, TwentyBooleanWarningsAreListedAndTheRestCounted) {
+  // 24 cubes in a row, each made on its own line: 23 pairs touch.
+  std::string source = "local cubes = {}\n";
+  for (int i = 0; i < 24; ++i)
+    source += "cubes[" + std::to_string(i + 1) + "] = box(1):translate(" + std::to_string(i) +
+              ", 0, 0)\n";
+  source += "return union(cubes)\n";
+  const CheckReport report = checkPart(*script(source).objects[0], quick());
+  EXPECT_EQ(report.warnings.size(), 20u) << checkReportText(report, "row");
+  EXPECT_EQ(report.warningsLeftOut, 3u);
+  EXPECT_NE(checkReportText(report, "row").find("(3 more warnings of coinciding faces left out)"),
+            std::string::npos);
+}
+
 TEST(Check, ACleanDifferenceDoesNotWarn) {
   const Scene scene = script(
       "local block = box(10)\n"

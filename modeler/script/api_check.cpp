@@ -120,6 +120,7 @@ void pushReport(lua_State* L, const CheckReport& r) {
     lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
   }
   lua_setfield(L, -2, "warnings");
+  setInteger(L, "warnings_left_out", r.warningsLeftOut);
 }
 
 int check(lua_State* L) {
