@@ -506,7 +506,8 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     return report;
   }
   report.fidelity = tally.fidelity;
-  report.fidelityAllowed = tally.fidelityAllowed;
+  // (With no distance found above zero, nothing more than the tolerance was allowed.)
+  report.fidelityAllowed = tally.fidelity > 0.0 ? tally.fidelityAllowed : options.tolerance;
   report.fidelityAt = tally.fidelityAt;
   report.fidelityFromMesh = tally.fidelityFromMesh;
   report.thinnestWall = tally.wall;

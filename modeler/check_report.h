@@ -66,12 +66,12 @@ struct CheckReport {
 
   // Volumes: the exact one from ray grids along x, y and z, and the mesh's.
   double volumeAlong[3] = {0.0, 0.0, 0.0};
-  double gridSpread = 0.0;   // largest difference between two of the three
-  double gridAllowed = 0.0;  // what the grids' resolution explains
+  double gridSpread = 0.0;   // the difference of the two furthest apart for their sampling
+  double gridAllowed = 0.0;  // five standard deviations of those two grids' sampling
   double exactVolume = 0.0;  // their mean
   double meshVolume = 0.0;
   double meshArea = 0.0;
-  double volumeAllowed = 0.0;  // tolerance × area, plus the grid spread
+  double volumeAllowed = 0.0;  // tolerance × area, plus five deviations of the mean
 
   // The distance between the two boundaries at the sampled point where it
   // is largest for what is allowed there (the tolerance, or more where
@@ -86,7 +86,10 @@ struct CheckReport {
   std::size_t warningsLeftOut = 0;  // past the first 20 of the boolean warnings
 
   bool meshOk() const { return failure.empty() && meshDefect.empty(); }
-  bool classificationOk() const { return meshOk() && disagreementCount == 0; }
+  // Every point was classified, and none disagrees.
+  bool classificationOk() const {
+    return meshOk() && points == options.samples && disagreementCount == 0;
+  }
   bool gridsAgree() const { return gridSpread <= gridAllowed; }
   bool volumeOk() const;
   bool fidelityOk() const;

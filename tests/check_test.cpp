@@ -148,6 +148,7 @@ TEST(Check, BoxVolumesAreExactAlongEveryGrid) {
   EXPECT_LE(report.gridSpread, report.gridAllowed);
   EXPECT_NEAR(report.meshVolume, 120.0, 1e-9);
   EXPECT_LT(report.fidelity, 1e-9);
+  EXPECT_EQ(report.fidelityAllowed, 0.01);
   EXPECT_EQ(report.inBand + report.agree, report.points);
 }
 
