@@ -11,6 +11,7 @@
 #include "check_support.h"
 #include "mesh/axis_crossings.h"
 #include "mesh/mesh_boolean.h"
+#include "mesh/mesh_writer.h"
 #include "mesh/part_check.h"
 #include "modeler/boolean.h"
 #include "modeler/primitives/box.h"
@@ -36,6 +37,13 @@ CheckOptions quick(double tolerance = 0.01) {
   options.samples = 20'000;
   options.grid = 96;
   return options;
+}
+
+// Scripts, so that the warnings can name the lines that made the operands.
+Scene script(const std::string& source) {
+  ScriptOptions options;
+  options.checkSolid = checkPart;
+  return runScript(source, "part.lua", options);
 }
 
 bool hasWarning(const CheckReport& report, const std::string& kind) {
@@ -154,6 +162,34 @@ TEST(Check, BoxVolumesAreExactAlongEveryGrid) {
 
 TEST(Check, ADrilledBlockChecksOut) { EXPECT_TRUE(test::checksOut(*drilledBlock())); }
 
+// The export bug the check found: where rounding folded a sliver of a
+// rotated union's coplanar faces, CGAL's repair smoothed a vertex 1.2 units
+// off the wall, and the mesh was still valid. The repair must now stay on
+// the surface or leave the export failing.
+TEST(Check, RepairsOfRoundingStayOnTheSurface) {
+  const Scene scene = script(
+      "local block = (box{size={8, 8, 4}} + box{size={4, 8, 12}})\n"
+      "  - cylinder{r=1.5, h=10, center=true}:translate(6, 4, 2)\n"
+      "return block:translate(17, 0, 4) + block:rotate(0, 0, 45):translate(34, 0, 0)\n");
+  const SolidPtr part = scene.objects[0];
+  int exported = 0;
+  for (StoredCoordinate stored :
+       {StoredCoordinate(nullptr), storedCoordinate(MeshFormat::Stl, false),
+        storedCoordinate(MeshFormat::ThreeMf, false)}) {
+    TriangleMesh mesh;
+    try {
+      mesh = meshOfSolid(*part, 0.01, stored).mesh;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("self-intersecting"), std::string::npos) << e.what();
+      continue;
+    }
+    ++exported;
+    const CheckReport report = checkMeshAgainstSolid(*part, mesh, quick());
+    EXPECT_TRUE(report.ok()) << checkReportText(report, "rotated union");
+  }
+  EXPECT_GE(exported, 1);  // as STL, at least, it exports
+}
+
 TEST(Check, AFlippedFaceFailsTheMesh) {
   const SolidPtr part = drilledBlock();
   TriangleMesh mesh = meshOfSolid(*part, 0.01).mesh;
@@ -210,13 +246,6 @@ TEST(Check, AnExportFarLooserThanAskedFails) {
   EXPECT_GT(report.disagreementCount, 0u);
   // The same mesh is fine against the tolerance it was made for.
   EXPECT_TRUE(checkMeshAgainstSolid(*part, loose, quick(0.5)).ok());
-}
-
-// Scripts, so that the warnings can name the lines that made the operands.
-Scene script(const std::string& source) {
-  ScriptOptions options;
-  options.checkSolid = checkPart;
-  return runScript(source, "part.lua", options);
 }
 
 TEST(Check, ABoxMinusABoxThatSharesAFaceWarnsOfIt) {
