@@ -151,6 +151,7 @@ class Checker {
     epsilon_ = 1e-9 * std::max(1.0, diagonal);
     cap_ = diagonal;
     nudge_ = 1e-8 * diagonal * glm::normalize(dvec3(0.5257, 0.6095, 0.5934));
+    partBox_ = {solid.bounds().lo - dvec3(epsilon_), solid.bounds().hi + dvec3(epsilon_)};
   }
 
   double epsilon() const { return epsilon_; }
@@ -312,6 +313,7 @@ class Checker {
 
   void zeroLength(const Span& s, const Ray& ray, Tally& tally) const {
     const dvec3 at = ray.at(s.in.t);
+    if (!partBox_.contains(at)) return;  // as in scanOperands
     tally.warn("zero-length span",
                describe(*s.in.primitive) + " and " + describe(*s.out.primitive) +
                    " enclose nothing along a ray: they meet in a face, an edge or a point",
@@ -350,6 +352,9 @@ class Checker {
         const Mark& n = marks[b];
         if (m.operand == n.operand) continue;
         const dvec3 at = ray.at(m.t);
+        // Outside the part's box the part is empty all around: faces that
+        // meet there (the ends of cutters that reach past it) shape nothing.
+        if (!partBox_.contains(at)) continue;
         const double cosine =
             glm::dot(outwardNormal(m.boundary, at), outwardNormal(n.boundary, at));
         if (std::abs(cosine) < kParallel) continue;
@@ -370,6 +375,7 @@ class Checker {
   const MeshProbe& probe_;
   const CheckOptions& options_;
   Bounds box_;
+  Bounds partBox_;        // the solid's own box, by epsilon_ larger
   double epsilon_ = 0.0;  // boundaries this close coincide
   double cap_ = 0.0;      // no distance inside the box is larger
   dvec3 nudge_{0.0};      // off the point where surfaceDistance measures

@@ -307,6 +307,19 @@ TEST(Check, ACleanDifferenceDoesNotWarn) {
   EXPECT_TRUE(report.warnings.empty()) << checkReportText(report, "part");
 }
 
+TEST(Check, CuttersThatShareFacesOutsideThePartDoNotWarn) {
+  // A rounded slot: two cylinders and a box whose ends meet at z = -5 and
+  // z = 15, beyond the block (z from 0 to 10), where they shape nothing.
+  const Scene scene = script(
+      "local slot = union(cylinder{r=1.5, h=20}:translate(3, 5, -5),\n"
+      "                   cylinder{r=1.5, h=20}:translate(7, 5, -5),\n"
+      "                   box{size={4, 3, 20}}:translate(3, 3.5, -5))\n"
+      "return box(10) - slot\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "slot");
+  EXPECT_TRUE(report.warnings.empty()) << checkReportText(report, "slot");
+}
+
 TEST(Check, BoxesStackedFaceToFaceTouch) {
   const Scene scene = script("return box(10) + box(10):translate(0, 0, 10)\n");
   const CheckReport report = checkPart(*scene.objects[0], quick());
