@@ -9,9 +9,7 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
 #include <optional>
 
 namespace csgray {

@@ -146,7 +146,7 @@ class Checker {
  public:
   Checker(const Solid& solid, const MeshProbe& probe, const CheckOptions& options,
           const Bounds& box)
-      : solid_(solid), probe_(probe), options_(options), box_(box) {
+      : solid_(solid), probe_(probe), options_(options) {
     const double diagonal = glm::length(box.size());
     epsilon_ = 1e-9 * std::max(1.0, diagonal);
     cap_ = diagonal;
@@ -374,7 +374,6 @@ class Checker {
   const Solid& solid_;
   const MeshProbe& probe_;
   const CheckOptions& options_;
-  Bounds box_;
   Bounds partBox_;        // the solid's own box, by epsilon_ larger
   double epsilon_ = 0.0;  // boundaries this close coincide
   double cap_ = 0.0;      // no distance inside the box is larger

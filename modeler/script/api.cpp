@@ -322,14 +322,6 @@ int transform(lua_State* L) {
   return 1;
 }
 
-void pushVec3(lua_State* L, const dvec3& v) {
-  lua_createtable(L, 3, 0);
-  for (int i = 0; i < 3; ++i) {
-    lua_pushnumber(L, v[i]);
-    lua_rawseti(L, -2, i + 1);
-  }
-}
-
 // bounds() returns two points, the low and the high corner.
 int bounds(lua_State* L) {
   const Bounds& b = self(L)->bounds();

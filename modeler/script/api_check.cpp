@@ -30,11 +30,7 @@ void setString(lua_State* L, const char* key, const std::string& value) {
   lua_setfield(L, -2, key);
 }
 void setPoint(lua_State* L, const char* key, const dvec3& p) {
-  lua_createtable(L, 3, 0);
-  for (int i = 0; i < 3; ++i) {
-    lua_pushnumber(L, p[i]);
-    lua_rawseti(L, -2, i + 1);
-  }
+  pushVec3(L, p);
   lua_setfield(L, -2, key);
 }
 void setStretch(lua_State* L, const char* key, const std::optional<Stretch>& s) {

@@ -117,4 +117,12 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
   return v;
 }
 
+void pushVec3(lua_State* L, const dvec3& v) {
+  lua_createtable(L, 3, 0);
+  for (int i = 0; i < 3; ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+}
+
 }  // namespace csgray

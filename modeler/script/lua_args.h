@@ -41,5 +41,7 @@ bool hasStringKey(lua_State* L, int index);
 // Values at a stack index, with errors that name what was expected.
 double toNumber(lua_State* L, int index, const std::string& what);
 dvec3 toVec3(lua_State* L, int index, const std::string& what);
+// Pushes {x, y, z}.
+void pushVec3(lua_State* L, const dvec3& v);
 
 }  // namespace csgray
