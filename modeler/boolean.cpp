@@ -24,7 +24,12 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
   }
   primitives_ = 0;
   booleans_ = 1;
-  for (const SolidPtr& s : operands_) {
+  insideBeyondWindow_ = op_ != Op::Difference;
+  holesInsideBeyondWindow_ = true;
+  for (size_t i = 0; i < operands_.size(); ++i) {
+    const SolidPtr& s = operands_[i];
+    insideBeyondWindow_ = insideBeyondWindow_ && s->insideBeyondWindow();
+    if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s->insideBeyondWindow();
     primitives_ += s->primitiveCount();
     booleans_ += s->booleanCount();
     depth_ = std::max(depth_, s->depth() + 1);
@@ -161,19 +166,61 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
     finish();
     return;
   }
-  auto cut = [&](const Solid& s) {
+  forEachHole(window, [&](const Solid& s) {
     s.spans(window, operand);
     if (!operand.empty()) fold(operand);
     return narrow();
-  };
+  });
+  finish();
+}
+
+template <class Cut>
+void Boolean::forEachHole(Ray& window, Cut&& cut) const {
   if (const Bvh& tree = bvh(); tree.empty()) {
     for (std::size_t i = 1; i < operands_.size(); ++i)
-      if (operands_[i]->bounds().hitBy(window) && !cut(*operands_[i])) break;
+      if (operands_[i]->bounds().hitBy(window) && !cut(*operands_[i])) return;
   } else {
     tree.traverse(window, window.tMax,
                   [&](std::uint32_t i, double) { return cut(*operands_[i + 1]); });
   }
-  finish();
+}
+
+void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  if (op_ != Op::Difference || !holesInsideBeyondWindow_) {
+    spans(ray, out);
+    return;
+  }
+  out.clear();
+  if (!bounds_.hitBy(ray)) return;
+  operands_[0]->spans(ray, out);
+  SpanList operand, spare;
+  SpanList* result = &out;
+  SpanList* other = &spare;
+  while (!result->empty()) {
+    // The result starts where the first operand's spans, less the holes
+    // cut so far, start: the answer, unless a hole covers that point.
+    const double start = result->front().in.t;
+    if (!(start > ray.tMin)) {  // the ray starts inside: where it leaves needs every hole
+      spans(ray, out);
+      return;
+    }
+    if (start > ray.tMax) break;  // no boundary within the window
+    // The holes that meet the start, or lie within the distance at which
+    // boundaries are one point (span_list.h); the spans they give are
+    // theirs beyond that, so the cut is exact as far as it reaches.
+    Ray point = ray;
+    point.tMin = start;
+    point.tMax = std::min(ray.tMax, start + 2.0 * kSameT * std::abs(start));
+    forEachHole(point, [&](const Solid& hole) {
+      hole.spans(point, operand);
+      if (operand.empty()) return true;
+      subtract(*result, operand, *other);
+      std::swap(result, other);
+      return !result->empty();
+    });
+    if (result->empty() || result->front().in.t == start) break;
+  }
+  if (result != &out) out = *result;
 }
 
 bool Boolean::contains(const dvec3& p) const {

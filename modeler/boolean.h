@@ -36,6 +36,11 @@ class Boolean : public Solid {
   Op op() const { return op_; }
   const Bounds& bounds() const override { return bounds_; }
   void spans(const Ray& ray, SpanList& out) const override;
+  // For a difference: the first operand's spans, cut only by the holes that
+  // cover the point where the result would start, again from where a cut
+  // moved it, so that a ray meets the holes at a point or two rather than
+  // along all of the first operand.
+  void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool contains(const dvec3& p) const override;
   std::span<const SolidPtr> children() const override { return operands_; }
   std::string kind() const override;
@@ -45,10 +50,17 @@ class Boolean : public Solid {
  private:
   // Operands from this index on are found through the BVH.
   std::size_t firstInBvh() const { return op_ == Op::Difference ? 1 : 0; }
+  // Calls cut(hole) for each subtracted operand whose box meets the window
+  // until it returns false; cut may narrow the window as it goes.
+  template <class Cut>
+  void forEachHole(Ray& window, Cut&& cut) const;
 
   Op op_;
   std::vector<SolidPtr> operands_;
   Bounds bounds_;
+  // spansToFirstBoundary takes each hole's spans beyond the point it asks
+  // about as they come, so they must lie inside the hole there (solid.h).
+  bool holesInsideBeyondWindow_ = true;
   // Built on first use (or by prepare), so that the intermediate nodes of a
   // script that adds operands one at a time never build one.
   const Bvh& bvh() const;

@@ -47,6 +47,17 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // operand lies wholly before the window starts its span later), so only
   // boundaries within the window are answers.
   virtual void spans(const Ray& ray, SpanList& out) const = 0;
+  // Like spans(), for a ray that needs only the solid's first boundary
+  // within the window (a camera ray, a shadow ray): where that boundary is
+  // and whether the ray enters or leaves there are exact, and an empty list
+  // means the solid does not meet the window; the spans beyond that first
+  // boundary may not be the solid's.
+  virtual void spansToFirstBoundary(const Ray& ray, SpanList& out) const { spans(ray, out); }
+  // Beyond the window, do the spans that spans() writes lie inside the
+  // solid? True of primitives, whose spans are whole, and of unions and
+  // intersections of such solids, which an operand left out only makes
+  // smaller; a difference asked about a window leaves out the holes beyond it.
+  bool insideBeyondWindow() const { return insideBeyondWindow_; }
   // Is p in the closed point set (up to rounding on the surface)?
   virtual bool contains(const dvec3& p) const = 0;
 
@@ -85,6 +96,7 @@ class Solid : public std::enable_shared_from_this<Solid> {
   std::size_t primitives_ = 1;
   std::size_t booleans_ = 0;
   int depth_ = 0;
+  bool insideBeyondWindow_ = true;
   mutable SourceLine origin_;
 };
 

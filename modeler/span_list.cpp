@@ -70,11 +70,6 @@ struct Cursor {
   }
 };
 
-// Boundaries this close (relative to t) are one point: faces that coincide
-// in the model differ by rounding once each primitive has computed t in its
-// own frame. Far above that rounding (~1e-15), far below any feature.
-constexpr double kSameT = 1e-10;
-
 // Sweep both lists' boundaries in order of t, grouping equal t, and emit a
 // boundary wherever the combined inside/outside state changes. Grouping
 // makes the result regular: spans that touch merge, and spans that only

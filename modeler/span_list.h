@@ -12,6 +12,11 @@ namespace csgray {
 
 class Primitive;
 
+// Boundaries this close (relative to t) are one point: faces that coincide
+// in the model differ by rounding once each primitive has computed t in its
+// own frame. Far above that rounding (~1e-15), far below any feature.
+inline constexpr double kSameT = 1e-10;
+
 // One end of a span: the ray parameter, the primitive whose surface lies
 // there (null at ±infinity) and which face of it. Normals and materials are
 // looked up from the primitive only for the boundary that is finally shaded.

@@ -137,11 +137,11 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
     // The first boundary beyond tMin: an entry, or an exit when the ray
     // starts inside the solid. Nothing beyond the best so far matters.
     if (tMax == ray.tMax) {
-      scene_.objects[i]->spans(ray, spans);
+      scene_.objects[i]->spansToFirstBoundary(ray, spans);
     } else {
       Ray window = ray;
       window.tMax = tMax;
-      scene_.objects[i]->spans(window, spans);
+      scene_.objects[i]->spansToFirstBoundary(window, spans);
     }
     for (const Span& s : spans) {
       bool entering = s.in.t > ray.tMin;
@@ -173,13 +173,23 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
       const Surface& surface = *scene_.surfaces[i - solids];
       return !surface.hit(ray) || dim(materialOf(surface.material()));
     }
-    scene_.objects[i]->spans(ray, spans);
-    for (const Span& s : spans) {
-      if (s.out.t <= 0.0 || s.in.t >= 1.0) continue;
-      // A stretch inside the solid: its material is the one of the face
-      // where the light enters it (or leaves, if the segment starts inside).
-      if (!dim(materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out))) return false;
-    }
+    // A stretch inside the solid: its material is the one of the face
+    // where the light enters it (or leaves, if the segment starts inside).
+    auto material = [](const Span& s) -> const Material& {
+      return materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
+    };
+    auto meets = [](const Span& s) { return s.out.t > 0.0 && s.in.t < 1.0; };
+    // The first stretch is all an opaque solid needs to stop the light, and
+    // the solid's first boundary tells where it is; a transparent one dims
+    // the light by every stretch.
+    const Solid& solid = *scene_.objects[i];
+    solid.spansToFirstBoundary(ray, spans);
+    const Span* first = std::find_if(spans.begin(), spans.end(), meets);
+    if (first == spans.end()) return true;
+    if (material(*first).transparency <= 0.0) return dim(material(*first));
+    solid.spans(ray, spans);
+    for (const Span& s : spans)
+      if (meets(s) && !dim(material(s))) return false;
     return true;
   });
   return pass;

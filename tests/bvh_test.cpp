@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <set>
 #include <vector>
@@ -210,6 +211,90 @@ TEST(BooleanBvh, IntersectionWindowsEqualThePlainFold) {
     expectSameWithin(actual, referenceSpans(Boolean::Op::Intersection, operands, line), -kInfinity,
                      kInfinity);
   }
+}
+
+// The first boundary within [ray.tMin, ray.tMax] after tMin, and whether
+// the ray enters there; none if the window holds no boundary.
+std::optional<std::pair<Boundary, bool>> firstBoundary(const SpanList& spans, const Ray& ray) {
+  for (const Span& s : spans) {
+    bool entering = s.in.t > ray.tMin;
+    const Boundary& b = entering ? s.in : s.out;
+    if (b.t <= ray.tMin) continue;
+    if (b.t > ray.tMax) break;
+    return std::pair{b, entering};
+  }
+  return std::nullopt;
+}
+
+TEST(BooleanBvh, FirstBoundaryQueriesAgreeWithTheWholeSpans) {
+  std::mt19937_64 rng(6);
+  auto bigBox = [] {
+    return Primitive::create<Box>(dvec3(14.0))->transformed(Affine::translation(dvec3(-7.0)));
+  };
+  // Holes given one by one (a BVH over them), as one union (the union's
+  // BVH), with an intersection among them, and with a difference among
+  // them, whose spans beyond a window are not its own: the plain path.
+  std::vector<SolidPtr> cutters = randomSolids(rng, 200, false);
+  std::vector<SolidPtr> listed{bigBox()};
+  listed.insert(listed.end(), cutters.begin(), cutters.end());
+  std::vector<SolidPtr> lens = randomSolids(rng, 2, false);
+  std::vector<SolidPtr> mixed = cutters;
+  mixed.push_back(intersectionOf(lens));
+  std::vector<SolidPtr> notched = cutters;
+  notched.push_back(differenceOf({Primitive::create<Sphere>(4.0), Primitive::create<Sphere>(3.0)}));
+  // Overlapping holes, so that a cut moves the start into the next one.
+  std::vector<SolidPtr> foam;
+  for (double x = -6.0; x <= 6.0; x += 1.5)
+    for (double y = -6.0; y <= 6.0; y += 1.5)
+      for (double z = -6.0; z <= 6.0; z += 1.5)
+        foam.push_back(Primitive::create<Sphere>(0.9)->transformed(
+            Affine::translation(dvec3(x, y, z) + 0.3 * randomDirection(rng))));
+  std::vector<SolidPtr> foamListed{bigBox()};
+  foamListed.insert(foamListed.end(), foam.begin(), foam.end());
+  std::vector<SolidPtr> parts{
+      differenceOf({bigBox(), unionOf(foam)}),
+      differenceOf(foamListed),
+      differenceOf(listed),
+      differenceOf({unionOf({bigBox(), unionOf(randomSolids(rng, 100, false))}), unionOf(cutters)}),
+      differenceOf({bigBox(), unionOf(mixed)}),
+      differenceOf({bigBox(), unionOf(notched)}),
+      differenceOf({Primitive::create<Sphere>(6.0), Primitive::create<Sphere>(6.0)->transformed(
+                                                        Affine::translation(dvec3(0, 0, 6)))}),
+  };
+  EXPECT_TRUE(unionOf(cutters)->insideBeyondWindow());
+  EXPECT_TRUE(unionOf(mixed)->insideBeyondWindow());
+  EXPECT_FALSE(unionOf(notched)->insideBeyondWindow());
+  EXPECT_FALSE(parts[0]->insideBeyondWindow());
+  EXPECT_TRUE(unionOf(foam)->insideBeyondWindow());
+  std::uniform_real_distribution<double> u(0.0, 20.0);
+  int hits = 0, entries = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    for (int r = 0; r < 2000; ++r) {
+      // Rays from outside and from inside the parts, over windows that
+      // start and end anywhere.
+      Ray ray = randomRay(rng);
+      if (r % 2) ray = Ray(randomPoint(rng, Bounds{dvec3(-7.0), dvec3(7.0)}), ray.dir);
+      if (r % 3 == 1) ray.tMin = u(rng);
+      if (r % 5 == 2) ray.tMax = ray.tMin + u(rng);
+      SpanList whole, first;
+      parts[k]->spans(ray, whole);
+      parts[k]->spansToFirstBoundary(ray, first);
+      auto expected = firstBoundary(whole, ray), actual = firstBoundary(first, ray);
+      ASSERT_EQ(actual.has_value(), expected.has_value()) << "part " << k << ", ray " << r;
+      if (!expected) continue;
+      ++hits;
+      entries += expected->second;
+      EXPECT_EQ(actual->first.t, expected->first.t) << "part " << k << ", ray " << r;
+      EXPECT_EQ(actual->first.primitive, expected->first.primitive);
+      EXPECT_EQ(actual->first.face, expected->first.face);
+      EXPECT_EQ(actual->first.flip, expected->first.flip);
+      EXPECT_EQ(actual->second, expected->second);
+    }
+  }
+  // Most rays meet a part, both entering it and leaving it first.
+  EXPECT_GT(hits, 3000);
+  EXPECT_GT(entries, 500);
+  EXPECT_LT(entries, hits - 1000);
 }
 
 // The renderer's BVH over the scene's objects finds the nearest surface

@@ -156,11 +156,6 @@ class RayFrame {
   double sx_, sy_, sz_;
 };
 
-// Boundaries this close (relative to t) are one point: a ray grazing a
-// silhouette edge enters and leaves there, and the two depths differ by
-// rounding. The same tolerance as the boolean merge of span lists.
-constexpr double kSameT = 1e-10;
-
 // A direction for the parity rays of contains(), chosen away from the axes
 // and the usual diagonals so that they rarely meet an edge exactly (the
 // perturbation makes them correct anyway).
@@ -539,6 +534,7 @@ void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
   // answer; it is reported from −∞, as for an unbounded solid.
   Boundary start{-kInfinity, nullptr, 0, false};
   for (std::size_t i = 0; i < crossings.size();) {
+    // (A ray grazing a silhouette edge enters and leaves there: one point.)
     double last = crossings[i].t + kSameT * std::abs(crossings[i].t);
     const Crossing *entry = nullptr, *exit = nullptr;
     for (; i < crossings.size() && crossings[i].t <= last; ++i) {
