@@ -10,7 +10,6 @@
 #include <optional>
 #include <regex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/check_command.h"
@@ -344,20 +343,10 @@ int main(int argc, char** argv) {
       // load on another thread while the script runs and the image renders.
       std::optional<ImagePluginPreload> preload;
       if (!endsWithPng(output)) preload.emplace();
-      // The render's worker threads start while the script runs.
-      const int workers =
-          threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-      std::thread warmUp;
-      if (workers > 1) warmUp = std::thread([workers] { startRenderThreads(workers); });
-      Scene scene = [&] {
-        struct Join {
-          std::thread& t;
-          ~Join() {
-            if (t.joinable()) t.join();
-          }
-        } join{warmUp};
-        return runScript();
-      }();
+      // The render's threads start while the script runs.
+      RenderThreads renderThreads(threads);
+      const int workers = renderThreads.size();
+      Scene scene = runScript();
       using Clock = std::chrono::steady_clock;
       Clock::time_point scripted = Clock::now(), built, traced;
       // A PNG file is compressed band by band on the render's threads as
@@ -370,6 +359,7 @@ int main(int argc, char** argv) {
         options.width = width;
         options.height = height;
         options.threads = threads;
+        options.threadPool = &renderThreads;
         options.samples = samples;
         options.adaptive = adaptive;
         options.depthAov = depthAov;

@@ -1,12 +1,10 @@
 #include "raytrace/renderer.h"
 
-#include <oneapi/tbb/parallel_for.h>
-#include <oneapi/tbb/task_arena.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <vector>
 
 #include "modeler/primitive.h"
@@ -55,11 +53,6 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
 }
 
 }  // namespace
-
-void startRenderThreads(int threads) {
-  tbb::task_arena arena(threads);
-  arena.execute([&] { tbb::parallel_for(0, threads, [](int) {}); });
-}
 
 Media Media::entered(int solid, double index) const {
   Media m = *this;
@@ -333,6 +326,9 @@ RenderResult Renderer::renderAll() const {
   constexpr int kTile = 16;
   const int tilesX = (w + kTile - 1) / kTile, tiles = tilesX * ((h + kTile - 1) / kTile);
   const int bandRows = options_.rowsDone ? std::max(options_.bandRows, 0) : 0;
+  std::optional<RenderThreads> ownThreads;
+  RenderThreads* pool =
+      options_.threadPool ? options_.threadPool : &ownThreads.emplace(options_.threads);
   auto forEachTile = [&](bool last, auto&& work) {
     // The pixels each band still waits for.
     std::vector<std::atomic<std::int64_t>> waiting(bandRows && last ? (h + bandRows - 1) / bandRows
@@ -369,12 +365,7 @@ RenderResult Renderer::renderAll() const {
     auto take = [&](int) {
       for (int i; (i = next++) < tiles;) tile(i);
     };
-    if (options_.threads > 0) {
-      tbb::task_arena arena(options_.threads);
-      arena.execute([&] { tbb::parallel_for(0, options_.threads, take); });
-    } else {
-      tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), take);
-    }
+    pool->run(take);
   };
 
   auto add = [](RayCounts& sum, const RayCounts& more) {

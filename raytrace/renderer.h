@@ -13,6 +13,7 @@
 #include "modeler/scene.h"
 #include "raytrace/camera.h"
 #include "raytrace/image.h"
+#include "raytrace/render_threads.h"
 
 namespace csgray {
 class Sampler;
@@ -28,6 +29,10 @@ struct RenderOptions {
   int width;
   int height;
   int threads;  // 0: all cores
+  // The threads to render on, made beforehand (as the command line does
+  // while the script runs); if null, the render makes its own, as many as
+  // threads says.
+  RenderThreads* threadPool = nullptr;
   // Rays per pixel, jittered within the pixel on a stratified grid.
   int samples = 1;
   // Spend the samples only on pixels whose colour differs from a
@@ -84,11 +89,6 @@ struct Media {
   Media entered(int solid, double index) const;
   Media left(int solid) const;
 };
-
-// Starts the worker threads that a render on this many threads uses, so
-// that a render that follows does not wait for them (they take a few
-// milliseconds to start).
-void startRenderThreads(int threads);
 
 class Renderer {
  public:
