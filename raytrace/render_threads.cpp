@@ -2,24 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace csgray {
 
 namespace {
 
-// How long an idle worker spins before it sleeps: longer than the script
-// of most parts takes, short enough not to matter to anyone else. (GNU
-// OpenMP's threads spin in the same way before they sleep, GOMP_SPINCOUNT.)
+// How long a woken thread spins before it sleeps: longer than making the
+// renderer from a scene takes, and than the step between the passes of an
+// adaptive render. (GNU OpenMP's threads spin in the same way before they
+// sleep, GOMP_SPINCOUNT.)
 constexpr auto kSpin = std::chrono::milliseconds(50);
-
-void pause() {
-#if defined(__SSE2__)
-  _mm_pause();
-#endif
-}
 
 }  // namespace
 
@@ -31,8 +23,8 @@ RenderThreads::RenderThreads(int threads) {
 
 RenderThreads::~RenderThreads() {
   stop_.store(true, std::memory_order_relaxed);
-  job_.fetch_add(1, std::memory_order_release);
-  job_.notify_all();
+  bump_.fetch_add(1, std::memory_order_release);
+  bump_.notify_all();
   for (std::thread& t : workers_) t.join();
 }
 
@@ -41,12 +33,19 @@ void RenderThreads::failed() {
   if (!error_) error_ = std::current_exception();
 }
 
+void RenderThreads::wake() {
+  bump_.fetch_add(1, std::memory_order_release);
+  bump_.notify_all();
+}
+
 void RenderThreads::run(const std::function<void(int)>& work) {
   work_ = &work;
   error_ = nullptr;
   running_.store(int(workers_.size()), std::memory_order_relaxed);
-  job_.fetch_add(1, std::memory_order_release);  // publishes work_ and running_
-  job_.notify_all();
+  // Publishes work_ and running_ with the job's number, then the job.
+  workJob_.store(bump_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+  bump_.fetch_add(1, std::memory_order_release);
+  bump_.notify_all();
   try {
     work(0);
   } catch (...) {
@@ -60,18 +59,23 @@ void RenderThreads::run(const std::function<void(int)>& work) {
 
 void RenderThreads::serve(int index) {
   std::uint64_t seen = 0;
+  bool spin = false;  // asleep until the first wake or job
   for (;;) {
     const auto sleepAt = std::chrono::steady_clock::now() + kSpin;
-    std::uint64_t job;
-    while ((job = job_.load(std::memory_order_acquire)) == seen) {
-      if (std::chrono::steady_clock::now() < sleepAt) {
-        pause();
+    std::uint64_t bump;
+    while ((bump = bump_.load(std::memory_order_acquire)) == seen) {
+      if (spin && std::chrono::steady_clock::now() < sleepAt) {
+        std::this_thread::yield();  // to any thread with work, if there are more than cores
       } else {
-        job_.wait(seen, std::memory_order_acquire);
+        bump_.wait(seen, std::memory_order_acquire);
       }
     }
-    seen = job;
+    seen = bump;
+    spin = true;
     if (stop_.load(std::memory_order_relaxed)) return;
+    // A wake, or a job this thread woke too late to see as one (it has
+    // seen a later bump, and comes round to that job next).
+    if (workJob_.load(std::memory_order_acquire) != bump) continue;
     try {
       (*work_)(index);
     } catch (...) {
