@@ -187,7 +187,7 @@ int main(int argc, char** argv) {
                    "Image file; its extension picks the format (.png, .exr, ...)")
       ->required();
   render->add_option("--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  render->add_option("--threads", threads, "Worker threads (0: all cores)")
+  render->add_option("--threads", threads, "Threads to render on (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   render->add_option("--samples", samples, "Rays per pixel, jittered (antialiasing)")

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#if defined(__linux__)
+#include <sched.h>
+#endif
 
 namespace csgray {
 
@@ -15,8 +18,18 @@ constexpr auto kSpin = std::chrono::milliseconds(50);
 
 }  // namespace
 
+int RenderThreads::cores() {
+#if defined(__linux__)
+  // The cores this process may run on (taskset, a container's cpuset), not
+  // all the machine has.
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
+#endif
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 RenderThreads::RenderThreads(int threads) {
-  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  if (threads <= 0) threads = cores();
   workers_.reserve(threads - 1);
   for (int k = 1; k < threads; ++k) workers_.emplace_back([this, k] { serve(k); });
 }

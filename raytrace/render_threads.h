@@ -27,6 +27,8 @@ class RenderThreads {
   ~RenderThreads();
 
   int size() const { return int(workers_.size()) + 1; }
+  // The cores this process may run on: the number of threads for 0.
+  static int cores();
 
   // Sets the sleeping threads spinning, for a job that is about to come.
   void wake();

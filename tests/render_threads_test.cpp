@@ -42,7 +42,10 @@ TEST(RenderThreads, TheCallerIsThreadZeroAndTheOthersAreDistinct) {
 }
 
 TEST(RenderThreads, AllCoresByDefault) {
-  EXPECT_EQ(RenderThreads().size(), int(std::max(1u, std::thread::hardware_concurrency())));
+  EXPECT_GE(RenderThreads::cores(), 1);
+  EXPECT_LE(RenderThreads::cores(), int(std::max(1u, std::thread::hardware_concurrency())));
+  EXPECT_EQ(RenderThreads().size(), RenderThreads::cores());
+  EXPECT_EQ(RenderThreads(0).size(), RenderThreads::cores());
 }
 
 TEST(RenderThreads, SleepingThreadsWakeForTheNextJob) {
