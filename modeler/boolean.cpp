@@ -186,6 +186,10 @@ void Boolean::forEachHole(Ray& window, Cut&& cut) const {
 }
 
 void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  if (op_ == Op::Union) {
+    unionToFirstBoundary(ray, out);
+    return;
+  }
   if (op_ != Op::Difference || !holesInsideBeyondWindow_) {
     spans(ray, out);
     return;
@@ -221,6 +225,50 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
     if (result->empty() || result->front().in.t == start) break;
   }
   if (result != &out) out = *result;
+}
+
+void Boolean::unionToFirstBoundary(const Ray& ray, SpanList& out) const {
+  out.clear();
+  const Bvh& tree = bvh();
+  if (tree.empty() && !bounds_.hitBy(ray)) return;
+  // A ray that starts outside every operand first meets the union where it
+  // first enters one of them: the operands are asked for their first
+  // boundaries only, and those whose boxes it enters beyond the best so far
+  // not at all. An operand the ray starts inside makes that an exit, which
+  // needs all of them.
+  SpanList operand;
+  double best = ray.tMax;
+  bool startsInside = false;
+  Ray window = ray;
+  auto visit = [&](const Solid& s) {
+    window.tMax = best;
+    s.spansToFirstBoundary(window, operand);
+    for (const Span& span : operand) {
+      if (span.out.t <= ray.tMin) continue;
+      if (!(span.in.t > ray.tMin)) {
+        startsInside = true;
+        return false;
+      }
+      // Entries within the distance at which boundaries are one point go
+      // to the operand met first, as in the merge of the whole spans
+      // (span_list.h), so that coplanar faces show the same operand.
+      if (span.in.t <= best && span.in.t + kSameT * std::abs(span.in.t) < best) {
+        best = span.in.t;
+        out = operand;
+      }
+      break;
+    }
+    return true;
+  };
+  if (tree.empty()) {
+    for (const SolidPtr& s : operands_) {
+      window.tMax = best;
+      if (s->bounds().hitBy(window) && !visit(*s)) break;
+    }
+  } else {
+    tree.traverse(window, best, [&](std::uint32_t i, double) { return visit(*operands_[i]); });
+  }
+  if (startsInside) spans(ray, out);
 }
 
 bool Boolean::contains(const dvec3& p) const {

@@ -39,7 +39,8 @@ class Boolean : public Solid {
   // For a difference: the first operand's spans, cut only by the holes that
   // cover the point where the result would start, again from where a cut
   // moved it, so that a ray meets the holes at a point or two rather than
-  // along all of the first operand.
+  // along all of the first operand. For a union: the first boundary of the
+  // operand the ray enters first, the others asked only up to it.
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool contains(const dvec3& p) const override;
   std::span<const SolidPtr> children() const override { return operands_; }
@@ -54,6 +55,7 @@ class Boolean : public Solid {
   // until it returns false; cut may narrow the window as it goes.
   template <class Cut>
   void forEachHole(Ray& window, Cut&& cut) const;
+  void unionToFirstBoundary(const Ray& ray, SpanList& out) const;
 
   Op op_;
   std::vector<SolidPtr> operands_;

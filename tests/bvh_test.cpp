@@ -260,6 +260,14 @@ TEST(BooleanBvh, FirstBoundaryQueriesAgreeWithTheWholeSpans) {
       differenceOf({bigBox(), unionOf(notched)}),
       differenceOf({Primitive::create<Sphere>(6.0), Primitive::create<Sphere>(6.0)->transformed(
                                                         Affine::translation(dvec3(0, 0, 6)))}),
+      // Unions: of many primitives (a BVH), of a few, of differences, and
+      // with a half-space, which every ray from one side starts inside.
+      unionOf(cutters),
+      unionOf(lens),
+      unionOf({differenceOf(listed), differenceOf({bigBox(), unionOf(foam)}),
+               Primitive::create<Sphere>(3.0)->transformed(Affine::translation(dvec3(9, 0, 0)))}),
+      unionOf({unionOf(randomSolids(rng, 30, false)),
+               Primitive::create<HalfSpace>(dvec3(0, 0, 1), -8.0)}),
   };
   EXPECT_TRUE(unionOf(cutters)->insideBeyondWindow());
   EXPECT_TRUE(unionOf(mixed)->insideBeyondWindow());
