@@ -1,11 +1,12 @@
 // The threads a render runs on: the caller and threads − 1 workers, which
-// take tiles from a shared counter (renderer.cpp). They are made while the
-// script runs and sleep; wake() sets them spinning once the scene is made,
-// and they spin for a while after each job before they sleep again, so that
-// the render's first tiles start on every core at once: on a virtual
-// machine a sleeping core can take milliseconds to wake, a few percent of
-// a render of a tenth of a second. (They do not spin while the script runs:
-// here a spinning thread slowed the script's thread by a third.)
+// take tiles from a shared counter (renderer.cpp). They are made before the
+// script runs and sleep while it does; wake() sets them spinning once the
+// scene is made, and they spin for a while after each job before they sleep
+// again, so that the render's first tiles start on every core at once: on
+// a virtual machine a sleeping core can take milliseconds to wake, a few
+// percent of a render of a tenth of a second. (They do not spin while the
+// script runs: here a spinning thread slowed the script's thread by a
+// third.)
 #pragma once
 
 #include <atomic>
