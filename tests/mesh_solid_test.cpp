@@ -9,36 +9,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <glm/geometric.hpp>
-#include <new>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "allocation_counter.h"
 #include "modeler/boolean.h"
 #include "modeler/primitives/box.h"
 #include "modeler/primitives/sphere.h"
 #include "modeler/script/script.h"
 #include "test_support.h"
-
-// Counts heap allocations, to check that rays allocate nothing. (Not
-// inlined, so that the compiler sees new and delete as a pair.)
-namespace {
-std::atomic<long> gAllocations{0};
-}
-[[gnu::noinline]] void* operator new(std::size_t n) {
-  ++gAllocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace csgray {
 namespace {
@@ -641,13 +627,13 @@ TEST(MeshSolid, RaysDoNotAllocate) {
     lines.emplace_back(test::randomPoint(rng, Bounds{dvec3(-0.5), dvec3(0.5)}),
                        randomDirection(rng), -kInfinity, kInfinity);
   mesh->spans(lines[0], spans);
-  long before = gAllocations.load();
+  long before = test::allocations();
   bool inside = false;
   for (const Ray& line : lines) {
     mesh->spans(line, spans);
     inside = inside != mesh->contains(line.origin);
   }
-  EXPECT_EQ(gAllocations.load(), before);
+  EXPECT_EQ(test::allocations(), before);
 }
 
 // ---------------------------------------------------------------- refusals
