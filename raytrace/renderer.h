@@ -28,9 +28,9 @@ struct RenderOptions {
 
   int width;
   int height;
-  int threads;  // 0: all cores
-  // The threads to render on, made beforehand (as the command line does
-  // while the script runs); if null, the render makes its own, as many as
+  int threads;  // 0: one per core (RenderThreads::cores)
+  // The threads to render on, made beforehand (the command line makes them
+  // before the script runs); if null, the render makes its own, as many as
   // threads says.
   RenderThreads* threadPool = nullptr;
   // Rays per pixel, jittered within the pixel on a stratified grid.
