@@ -211,6 +211,20 @@ const VolumeCase kVolumeCases[] = {
      2.0 * 4.0 / 3.0 * kPi - kPi * 5.0 / 12.0},
     {"intersection_of_spheres", "return sphere{r=1} * sphere{r=1}:translate(1, 0, 0)",
      kPi * 5.0 / 12.0},
+    // Half-spaces alone: their planes are the sides of the part's box.
+    {"cube_of_half_spaces",
+     "return clip(half_space{normal={1, 0, 0}, offset=5}, {half_space{normal={-1, 0, 0}, "
+     "offset=5}, half_space{normal={0, 1, 0}, offset=5}, half_space{normal={0, -1, 0}, offset=5}, "
+     "half_space{normal={0, 0, 1}, offset=5}, half_space{normal={0, 0, -1}, offset=5}})",
+     1000.0},
+    // ... and a slanted one, x + y + z ≤ 5, which cuts the simplex u + v + w
+    // < 10 (u = 5 − x, ...) of volume 10³/6 off the corner.
+    {"cube_of_half_spaces_less_a_corner",
+     "return clip(half_space{normal={1, 0, 0}, offset=5}, {half_space{normal={-1, 0, 0}, "
+     "offset=5}, half_space{normal={0, 1, 0}, offset=5}, half_space{normal={0, -1, 0}, offset=5}, "
+     "half_space{normal={0, 0, 1}, offset=5}, half_space{normal={0, 0, -1}, offset=5}, "
+     "half_space{normal={1, 1, 1}, offset=5}})",
+     1000.0 - 1000.0 / 6.0},
 };
 
 INSTANTIATE_TEST_SUITE_P(Primitives, ExportVolume, ::testing::ValuesIn(kVolumeCases),
