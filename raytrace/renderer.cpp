@@ -32,6 +32,17 @@ const Material& materialOf(const Boundary& b) {
 
 double largest(const dvec3& c) { return std::max({c.x, c.y, c.z}); }
 
+// Does any primitive of the solid let light through? A shadow ray needs all
+// the spans of such a solid (each stretch dims it), and of any other only
+// the first boundary (an opaque stretch stops it).
+bool letsLightThrough(const Solid& solid) {
+  if (auto* primitive = dynamic_cast<const Primitive*>(&solid))
+    return materialOf(primitive->material()).transparency > 0.0;
+  for (const SolidPtr& s : solid.children())
+    if (letsLightThrough(*s)) return true;
+  return false;
+}
+
 CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
   CameraSpec camera = scene.camera
                           ? *scene.camera
@@ -99,7 +110,10 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       camera_(cameraSpec_, options.width, options.height),
       lights_(scene.lights) {
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
-  for (const SolidPtr& s : scene.objects) s->prepare();
+  for (const SolidPtr& s : scene.objects) {
+    s->prepare();
+    seeThrough_.push_back(letsLightThrough(*s));
+  }
   scale_ = sceneScale(scene, cameraSpec_);
   // A camera inside a solid looks out of it: the solid's index holds
   // until its rays leave it. The boundary where the view ray leaves tells
@@ -171,18 +185,15 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     auto material = [](const Span& s) -> const Material& {
       return materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
     };
-    auto meets = [](const Span& s) { return s.out.t > 0.0 && s.in.t < 1.0; };
-    // The first stretch is all an opaque solid needs to stop the light, and
-    // the solid's first boundary tells where it is; a transparent one dims
-    // the light by every stretch.
-    const Solid& solid = *scene_.objects[i];
-    solid.spansToFirstBoundary(ray, spans);
-    const Span* first = std::find_if(spans.begin(), spans.end(), meets);
-    if (first == spans.end()) return true;
-    if (material(*first).transparency <= 0.0) return dim(material(*first));
-    solid.spans(ray, spans);
+    // An opaque solid stops the light at its first stretch, which its
+    // first boundary tells; a transparent one dims it by every stretch.
+    if (seeThrough_[i]) {
+      scene_.objects[i]->spans(ray, spans);
+    } else {
+      scene_.objects[i]->spansToFirstBoundary(ray, spans);
+    }
     for (const Span& s : spans)
-      if (meets(s) && !dim(material(s))) return false;
+      if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
     return true;
   });
   return pass;

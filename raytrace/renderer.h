@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "modeler/bvh.h"
 #include "modeler/scene.h"
@@ -125,7 +126,8 @@ class Renderer {
   Camera camera_;
   std::vector<Light> lights_;
   Media cameraMedia_;
-  double scale_;  // a length for the size of the scene
+  std::vector<bool> seeThrough_;  // per object: does any of it let light through?
+  double scale_;                  // a length for the size of the scene
 };
 
 }  // namespace csgray
