@@ -3,12 +3,14 @@
 // library (a backtracking string pattern) can run for hours without
 // executing any; this catches that. Only for phases that have no output
 // file open, since the process ends at once.
+//
+// A real-time interval timer (setitimer) raises SIGALRM at the limit, and
+// the handler writes the message and exits: no thread to start and join
+// around every script. One watchdog at a time, and nothing else in csgray
+// uses SIGALRM.
 #pragma once
 
-#include <condition_variable>
-#include <mutex>
 #include <string>
-#include <thread>
 
 namespace csgray {
 
@@ -21,10 +23,8 @@ class Watchdog {
   Watchdog& operator=(const Watchdog&) = delete;
 
  private:
-  std::mutex mutex_;
-  std::condition_variable finished_;
-  bool done_ = false;
-  std::thread thread_;
+  std::string line_;  // "csgray: error: <message>\n", written by the handler
+  bool armed_ = false;
 };
 
 }  // namespace csgray
