@@ -37,8 +37,8 @@ SrgbEncoder::SrgbEncoder() {
   // The code at each bucket's start: the number of steps at or below it,
   // found in one sweep since both rise together.
   int code = 0;
-  for (int i = 0; i < 65536; ++i) {
-    float v = float(i) / 65535.0f;
+  for (int i = 0; i < kBuckets; ++i) {
+    float v = float(i) / float(kBuckets - 1);
     while (v > steps_[code]) ++code;
     start_[i] = std::uint8_t(code);
   }

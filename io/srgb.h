@@ -20,22 +20,26 @@ inline float decodeSrgb(float encoded) {
 }
 
 // The 8-bit code of a linear value, round(255 · encodeSrgb(v)), without a
-// pow per value: a table over [0, 1] in 65536 buckets gives the code at each
-// bucket's start, and since codes lie more than a bucket apart in linear
-// light, one comparison with the next step finishes the job.
+// pow per value: a table over [0, 1] in kBuckets buckets gives the code at
+// each bucket's start, and since codes lie more than a bucket apart in
+// linear light, one comparison with the next step finishes the job. The
+// closest codes are those of the linear segment near black, 1 / (255 ·
+// 12.92) = 3.0e-4 apart; a bucket is 1 / 4095 = 2.4e-4 wide.
 class SrgbEncoder {
  public:
+  static constexpr int kBuckets = 4096;
+
   SrgbEncoder();
   std::uint8_t operator()(float linear) const {
     if (!(linear > 0.0f)) return 0;  // also NaN
     float v = std::min(linear, 1.0f);
-    int code = start_[int(v * 65535.0f)];
+    int code = start_[int(v * float(kBuckets - 1))];
     return std::uint8_t(v > steps_[code] ? code + 1 : code);
   }
 
  private:
   std::array<float, 256> steps_;  // steps_[k]: where the code goes from k to k + 1
-  std::array<std::uint8_t, 65536> start_;
+  std::array<std::uint8_t, kBuckets> start_;
 };
 
 }  // namespace csgray
