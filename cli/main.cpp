@@ -345,10 +345,10 @@ int main(int argc, char** argv) {
       if (!endsWithPng(output)) preload.emplace();
       // The render's threads start while the script runs, and wake when it
       // is done, to spin while the renderer is made.
-      std::optional<RenderThreads> renderThreads(std::in_place, threads);
-      const int workers = renderThreads->size();
+      RenderThreads renderThreads(threads);
+      const int workers = renderThreads.size();
       Scene scene = runScript();
-      renderThreads->wake();
+      renderThreads.wake();
       using Clock = std::chrono::steady_clock;
       Clock::time_point scripted = Clock::now(), built, traced;
       // A PNG file is compressed band by band on the render's threads as
@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
         options.width = width;
         options.height = height;
         options.threads = threads;
-        options.threadPool = &*renderThreads;
+        options.threadPool = &renderThreads;
         options.samples = samples;
         options.adaptive = adaptive;
         options.depthAov = depthAov;
@@ -379,7 +379,7 @@ int main(int argc, char** argv) {
           built = Clock::now();
           RenderResult r = renderer.renderAll();
           traced = Clock::now();
-          renderThreads.reset();  // not spinning while the file is written
+          renderThreads.finish();  // not spinning while the file is written
           return r;
         } catch (const std::invalid_argument& e) {  // e.g. nothing to frame
           throw std::runtime_error(script + ": " + e.what());

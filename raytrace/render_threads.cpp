@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #if defined(__linux__)
 #include <sched.h>
 #endif
@@ -35,10 +36,14 @@ RenderThreads::RenderThreads(int threads) {
 }
 
 RenderThreads::~RenderThreads() {
-  stop_.store(true, std::memory_order_relaxed);
+  finish();
+  for (std::thread& t : workers_) t.join();
+}
+
+void RenderThreads::finish() {
+  if (stop_.exchange(true, std::memory_order_relaxed)) return;
   bump_.fetch_add(1, std::memory_order_release);
   bump_.notify_all();
-  for (std::thread& t : workers_) t.join();
 }
 
 void RenderThreads::failed() {
@@ -52,6 +57,8 @@ void RenderThreads::wake() {
 }
 
 void RenderThreads::run(const std::function<void(int)>& work) {
+  if (stop_.load(std::memory_order_relaxed))
+    throw std::logic_error("RenderThreads::run after finish: the workers have ended");
   work_ = &work;
   error_ = nullptr;
   running_.store(int(workers_.size()), std::memory_order_relaxed);

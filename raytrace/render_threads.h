@@ -39,6 +39,11 @@ class RenderThreads {
   // of them threw.
   void run(const std::function<void(int)>& work);
 
+  // Lets the workers end, without waiting for them: no job may follow.
+  // The destructor then only collects them, so that their exits overlap
+  // whatever the caller does next (writing the image).
+  void finish();
+
  private:
   void serve(int index);
   void failed();

@@ -1,6 +1,7 @@
 // The render's threads: every thread runs each job once, jobs follow one
-// another on the same threads, and an exception on any thread reaches the
-// caller once all have finished.
+// another on the same threads, an exception on any thread reaches the
+// caller once all have finished, and finish() lets the workers end without
+// waiting for them.
 #include "raytrace/render_threads.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,32 @@ TEST(RenderThreads, AnExceptionReachesTheCallerAfterEveryThreadIsDone) {
   std::atomic<int> total = 0;
   pool.run([&](int) { ++total; });
   EXPECT_EQ(total, 3);
+}
+
+// Each worker ends (its thread-local objects are destroyed) after finish()
+// and before the pool is destroyed; no job may follow. (At namespace scope,
+// a thread-local is made, and its destruction arranged, in each thread that
+// uses it.)
+std::atomic<int> workersEnded = 0;
+struct WorkerEnd {
+  bool counts = false;
+  ~WorkerEnd() {
+    if (counts) ++workersEnded;
+  }
+};
+thread_local WorkerEnd workerEnd;
+
+TEST(RenderThreads, FinishLetsTheWorkersEndBeforeThePoolGoes) {
+  RenderThreads pool(3);
+  pool.run([&](int k) { workerEnd.counts = k != 0; });
+  EXPECT_EQ(workersEnded, 0);
+  pool.finish();
+  pool.finish();  // once is enough; again does nothing
+  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (workersEnded < 2 && std::chrono::steady_clock::now() < limit)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(workersEnded, 2);
+  EXPECT_THROW(pool.run([](int) {}), std::logic_error);
 }
 
 }  // namespace
