@@ -58,13 +58,19 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
 }
 
 const Bvh& Boolean::bvh() const {
+  // Once the tree is built (by prepare, before a render's threads start), a
+  // ray pays one flag read: std::call_once costs a library call and
+  // thread-local writes every time (2 % of a plate(8) render).
+  if (bvhReady_.load(std::memory_order_acquire)) return bvh_;
   std::call_once(bvhBuilt_, [this] {
-    if (op_ == Op::Intersection || operands_.size() - firstInBvh() <= kBvhOperands) return;
-    std::vector<Bounds> boxes;
-    boxes.reserve(operands_.size() - firstInBvh());
-    for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
-      boxes.push_back(operands_[i]->bounds());
-    bvh_ = Bvh(boxes);
+    if (op_ != Op::Intersection && operands_.size() - firstInBvh() > kBvhOperands) {
+      std::vector<Bounds> boxes;
+      boxes.reserve(operands_.size() - firstInBvh());
+      for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
+        boxes.push_back(operands_[i]->bounds());
+      bvh_ = Bvh(boxes);
+    }
+    bvhReady_.store(true, std::memory_order_release);
   });
   return bvh_;
 }

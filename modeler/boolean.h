@@ -7,6 +7,7 @@
 // about the stretch of the ray where the first has spans.
 #pragma once
 
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -67,6 +68,7 @@ class Boolean : public Solid {
   // script that adds operands one at a time never build one.
   const Bvh& bvh() const;
   mutable std::once_flag bvhBuilt_;
+  mutable std::atomic<bool> bvhReady_{false};
   mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
 };
 
