@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 #include "check_support.h"
 #include "mesh/axis_crossings.h"
@@ -231,6 +232,43 @@ TEST(Check, AMovedVertexFailsTheFidelity) {
   EXPECT_LE(report.fidelity, 0.5 + 1e-6);
   // Where: near the top of the sphere.
   EXPECT_NEAR(report.fidelityAt.z, 10.0, 0.6);
+}
+
+// A dodecahedron less a sphere a little larger than its inradius: 20
+// corners, each with edges where a face meets the sphere at 10–20°. A mesh
+// point on the part of a face the sphere cut off lies a few thousandths
+// from such an edge, but the lines through it all miss the wedge there;
+// the check then finds the edge by projecting onto the two faces, and
+// allows the crease's offset (allowance). These all failed before.
+SolidPtr cutDodecahedron(double radius, const dvec3& degrees) {
+  std::ostringstream source;
+  source << "return dodecahedron{r=3}:rotate(" << degrees.x << ", " << degrees.y << ", "
+         << degrees.z << ") - sphere{r=" << radius << "}";
+  return script(source.str()).objects[0];
+}
+
+TEST(Check, ShallowWedgesBetweenAFaceAndASphereCheckOut) {
+  for (double radius : {2.42, 2.5, 2.6})
+    for (dvec3 degrees : {dvec3(0.0), dvec3(5, 10, 15), dvec3(17, 29, 41)})
+      EXPECT_TRUE(test::checksOut(*cutDodecahedron(radius, degrees)))
+          << "r " << radius << ", turned " << degrees.x << ", " << degrees.y << ", " << degrees.z;
+}
+
+// What the projections find is a point of the exact surface, so a mesh
+// that is off stays off: a corner of the part pulled out by 0.3.
+TEST(Check, AMovedVertexOfAShallowWedgeFailsTheFidelity) {
+  const SolidPtr part = cutDodecahedron(2.5, dvec3(17, 29, 41));
+  TriangleMesh mesh = meshOfSolid(*part, 0.01).mesh;
+  ASSERT_TRUE(checkMeshAgainstSolid(*part, mesh, quick()).ok());
+  std::size_t far = 0;
+  for (std::size_t k = 1; k < mesh.points.size(); ++k)
+    if (glm::length(mesh.points[k]) > glm::length(mesh.points[far])) far = k;
+  mesh.points[far] *= 1.0 + 0.3 / glm::length(mesh.points[far]);
+  const CheckReport report = checkMeshAgainstSolid(*part, mesh, quick());
+  EXPECT_FALSE(report.fidelityOk());
+  EXPECT_FALSE(report.ok());
+  EXPECT_GT(report.fidelity, 0.15);
+  EXPECT_LE(report.fidelity, 0.3 + 1e-6);
 }
 
 TEST(Check, AnExportFarLooserThanAskedFails) {
