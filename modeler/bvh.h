@@ -87,27 +87,33 @@ void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
   // towards negative coordinates.
   const bool negative[3] = {std::signbit(ray.invDir.x), std::signbit(ray.invDir.y),
                             std::signbit(ray.invDir.z)};
+  // The nearer child of a node is visited next without going through the
+  // stack: a store and a load less on the path from node to node.
   int top = 0;
-  stack[top++] = {0, rootEntry};
-  while (top > 0) {
-    Entry e = stack[--top];
-    if (e.t > tMax) continue;  // pruned since it was pushed
+  Entry e{0, rootEntry};
+  for (;;) {
     const Node& node = nodes_[e.node];
     if (node.count > 0) {
       // A leaf holds one item, whose box is the leaf's (only a tree cut off
       // at kMaxDepth has larger leaves: their items are all visited).
       for (std::uint32_t i = node.start; i < node.start + node.count; ++i)
         if (!visit(items_[i], e.t)) return;
-      continue;
+    } else {
+      std::uint32_t left = node.start, right = node.start + 1;
+      double t[2];
+      childEntries(children_[e.node], ray, negative, ray.tMin, tMax, t);
+      double tl = t[0], tr = t[1];
+      if (tl > tr) std::swap(left, right), std::swap(tl, tr);
+      if (tl != kInfinity) {
+        if (tr != kInfinity) stack[top++] = {right, tr};
+        e = {left, tl};
+        continue;
+      }
     }
-    std::uint32_t left = node.start, right = node.start + 1;
-    double t[2];
-    childEntries(children_[e.node], ray, negative, ray.tMin, tMax, t);
-    double tl = t[0], tr = t[1];
-    // Push the farther child first, so the nearer one is visited first.
-    if (tl > tr) std::swap(left, right), std::swap(tl, tr);
-    if (tr != kInfinity) stack[top++] = {right, tr};
-    if (tl != kInfinity) stack[top++] = {left, tl};
+    do {  // the next child on the stack not pruned since it was pushed
+      if (top == 0) return;
+      e = stack[--top];
+    } while (e.t > tMax);
   }
 }
 
