@@ -209,7 +209,8 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   dvec3 color = m.ambient * sp.color;
   for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {
-      double u = ctx.rng.next(), v = ctx.rng.next();
+      double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers
+      if (light.isArea()) u = ctx.rng.next(), v = ctx.rng.next();
       dvec3 s = light.samplePoint(i, u, v, sp.point);
       dvec3 l = glm::normalize(s - sp.point);
       double cosAlpha = glm::dot(sp.normal, l);
