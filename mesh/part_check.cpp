@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <sstream>
+#include <vector>
 
 #include "mesh/axis_crossings.h"
 #include "mesh/mesh_boolean.h"
@@ -44,6 +46,14 @@ constexpr double kQuickShare = 0.5;
 // A mesh point further than this many tolerances from the exact surface is
 // reported as this far: the check has failed by then.
 constexpr double kFidelityReach = 100.0;
+// The last measure of a mesh point that the others put beyond what is
+// allowed (Checker::distanceBySearch): this many lines through it, then
+// kSearchRounds rounds of kSearchAround lines ever closer to each of the
+// kSearchLeads best.
+constexpr int kSearchLines = 1024;
+constexpr std::size_t kSearchLeads = 8;
+constexpr int kSearchRounds = 10;
+constexpr int kSearchAround = 64;
 constexpr std::size_t kListed = 10;  // disagreeing points listed
 constexpr std::size_t kWarningKinds = 20;
 
@@ -60,6 +70,23 @@ const std::array<dvec3, 13> kLines = [] {
       }
   return lines;
 }();
+
+// n directions spread evenly over the sphere: the Fibonacci lattice
+// (González, "Measurement of areas on a sphere using Fibonacci and
+// latitude-longitude lattices", Math. Geosci. 2010), z evenly spaced and
+// the azimuth turned by the golden angle from one to the next.
+std::vector<dvec3> fibonacciSphere(int n) {
+  std::vector<dvec3> directions(n);
+  const double goldenAngle = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(1.0 - z * z), phi = goldenAngle * i;
+    directions[i] = dvec3(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return directions;
+}
+const std::vector<dvec3> kSearchDirections = fibonacciSphere(kSearchLines);
+const std::vector<dvec3> kAroundDirections = fibonacciSphere(kSearchAround);
 
 // splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
 // generators", OOPSLA 2014): a jitter per ray that does not depend on
@@ -110,8 +137,10 @@ struct Tally {
   // lines, however many faces and rays show it.
   std::map<std::string, CheckWarning> warnings;
 
+  // Would a point d away where `allowed` is allowed be the worst so far?
+  bool worse(double d, double allowed) const { return d * fidelityAllowed > fidelity * allowed; }
   void distance(double d, double allowed, const dvec3& at, bool fromMesh) {
-    if (d * fidelityAllowed > fidelity * allowed) {
+    if (worse(d, allowed)) {
       fidelity = d;
       fidelityAllowed = allowed;
       fidelityAt = at;
@@ -276,6 +305,53 @@ class Checker {
     return best;
   }
 
+  // An upper bound on the distance from p to the exact surface, searched
+  // for along many lines through p: for a mesh point that neither the 13
+  // lines nor projection put within what is allowed. A face cut down to a
+  // small patch by other operands (a torus less a box and a cylinder) can
+  // lie nearer p than anything those find: the lines pass beside the
+  // patch, and the point of the whole face nearest p lies off the part.
+  // The lines cover the sphere of directions kSearchLines times, then
+  // close in on the few best, each round half as widely; every boundary
+  // they meet is a point of the exact surface, so the bound is sound.
+  double distanceBySearch(const dvec3& p, double reach) const {
+    SpanList spans;
+    // The nearest boundary along the ray from p in a direction, within limit.
+    auto along = [&](const dvec3& direction, double limit) {
+      solid_.spans(Ray(p, direction, 0.0, limit), spans);
+      for (const Span& s : spans)
+        for (const Boundary* b : {&s.in, &s.out})
+          if (b->t > 0.0 && b->t < limit) limit = b->t;
+      return limit;
+    };
+    struct Lead {
+      double distance;
+      dvec3 direction;
+    };
+    std::vector<Lead> leads;
+    for (const dvec3& d : kSearchDirections)
+      if (const double t = along(d, reach); t < reach) leads.push_back({t, d});
+    // Each of the nearest few may lead to the nearest patch.
+    const std::size_t followed = std::min<std::size_t>(kSearchLeads, leads.size());
+    std::partial_sort(leads.begin(), leads.begin() + followed, leads.end(),
+                      [](const Lead& a, const Lead& b) { return a.distance < b.distance; });
+    double best = reach;
+    for (std::size_t k = 0; k < followed; ++k) {
+      Lead lead = leads[k];
+      double spread = std::sqrt(4.0 * std::numbers::pi / kSearchLines);  // the lines' spacing
+      for (int round = 0; round < kSearchRounds; ++round, spread *= 0.5) {
+        const dvec3 centre = lead.direction;
+        for (const dvec3& d : kAroundDirections) {
+          const dvec3 direction = glm::normalize(centre + spread * d);
+          if (const double t = along(direction, lead.distance); t < lead.distance)
+            lead = {t, direction};
+        }
+      }
+      best = std::min(best, lead.distance);
+    }
+    return best;
+  }
+
   // Is p within what the mesh may be off the exact surface there, where
   // the two may classify it differently?
   bool withinBand(const dvec3& p) const {
@@ -385,6 +461,20 @@ class Checker {
         if (found.distance * allowed < estimate * found.allowed) {
           estimate = found.distance;
           allowed = found.allowed;
+        }
+      }
+      // The search costs some 6 000 queries of the part, so it is made
+      // only for a point that would otherwise be the worst so far; it can
+      // only lower the estimate, so a point that would not be is not.
+      if (estimate > allowed && tally.worse(estimate, allowed)) {
+        const double searched =
+            distanceBySearch(q, std::min(estimate, kFidelityReach * options_.tolerance));
+        if (searched < estimate) {
+          const double searchedAllowed = allowance(q, searched);
+          if (searched * allowed < estimate * searchedAllowed) {
+            estimate = searched;
+            allowed = searchedAllowed;
+          }
         }
       }
       tally.distance(estimate, allowed, q, true);

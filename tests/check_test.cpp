@@ -271,6 +271,63 @@ TEST(Check, AMovedVertexOfAShallowWedgeFailsTheFidelity) {
   EXPECT_LE(report.fidelity, 0.3 + 1e-6);
 }
 
+// A part of rotated boxes and tori whose faces cut one another down to
+// small patches. A point of its mesh lies 0.03–0.04 from a patch of a
+// torus, but the 13 lines through it pass beside the patch, and the point
+// of the whole torus nearest it lies off the part, so projection finds
+// nothing either: the check said it was 100 tolerances (its reach) off.
+// The search along many lines must find the patch: what it reports is
+// close to the nearest boundary that 20 000 random lines from the point,
+// and lines ever closer to the best of them, find independently.
+TEST(Check, ASmallPatchOfAFaceNearAMeshPointIsFound) {
+  const SolidPtr part = script(R"(
+    local u = {
+      box{size={4.17368, 1.60867, 4.52596}, center=true}
+        :rotate(180.141, 118.933, 203.339):translate(1.38292, -1.05315, -1.73614),
+      box{size={2.46344, 4.56244, 4.69688}, center=true}
+        :rotate(347.460, 248.085, 216.410):translate(-1.86948, 1.91925, 1.41223),
+      box{size={1.05394, 1.95364, 3.73268}, center=true}
+        :rotate(59.2711, 140.147, 48.9218):translate(-1.95562, -0.506993, 1.26781),
+      torus{R=2.94941, r=0.684923}
+        :rotate(25.0121, 23.7393, 335.294):translate(1.04620, 1.90329, 1.73005),
+    }
+    local holes = {
+      torus{R=2.73293, r=0.695279}
+        :rotate(262.536, 104.560, 35.2683):translate(-1.45407, -0.609008, -0.483322),
+      cylinder{r=1.78475, h=3.68860, center=true}
+        :rotate(119.263, 353.914, 35.2253):translate(-1.16971, -1.47869, -1.45644),
+      box{size={2.26585, 2.29663, 1.05342}, center=true}
+        :rotate(101.084, 300.391, 2.69047):translate(-0.404019, -1.18196, -0.329666),
+    }
+    return difference(union(u), union(holes)):rotate(208.601, 207.002, 216.615))")
+                            .objects[0];
+  CheckOptions options;
+  options.tolerance = 0.01;
+  const CheckReport report = checkPart(*part, options);
+  ASSERT_GT(report.fidelity, options.tolerance);  // the point this test is about
+  ASSERT_LT(report.fidelity, 0.5);
+
+  const dvec3 p = report.fidelityAt;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> gauss;
+  SpanList spans;
+  double nearest = kInfinity;
+  dvec3 best(0.0, 0.0, 1.0);
+  auto look = [&](const dvec3& d) {
+    part->spans(Ray(p, d, 0.0, 1.0), spans);
+    for (const Span& s : spans)
+      for (double t : {s.in.t, s.out.t})
+        if (t > 0.0 && t < nearest) nearest = t, best = d;
+  };
+  for (int i = 0; i < 20'000; ++i) look(glm::normalize(dvec3(gauss(rng), gauss(rng), gauss(rng))));
+  for (double spread = 0.05; spread > 1e-5; spread *= 0.5) {
+    const dvec3 centre = best;
+    for (int i = 0; i < 500; ++i)
+      look(glm::normalize(centre + spread * dvec3(gauss(rng), gauss(rng), gauss(rng))));
+  }
+  EXPECT_LE(report.fidelity, 1.15 * nearest) << "the nearest boundary found at random: " << nearest;
+}
+
 TEST(Check, AnExportFarLooserThanAskedFails) {
   const SolidPtr part = drilledBlock();
   TriangleMesh loose = meshOfSolid(*part, 0.5).mesh;
