@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -306,23 +308,39 @@ class Checker {
   }
 
   // An upper bound on the distance from p to the exact surface, searched
-  // for along many lines through p: for a mesh point that neither the 13
-  // lines nor projection put within what is allowed. A face cut down to a
-  // small patch by other operands (a torus less a box and a cylinder) can
-  // lie nearer p than anything those find: the lines pass beside the
-  // patch, and the point of the whole face nearest p lies off the part.
-  // The lines cover the sphere of directions kSearchLines times, then
-  // close in on the few best, each round half as widely; every boundary
-  // they meet is a point of the exact surface, so the bound is sound.
-  double distanceBySearch(const dvec3& p, double reach) const {
+  // for along many lines through p, with what is allowed there: for a mesh
+  // point that neither the 13 lines nor projection put within what is
+  // allowed. A face cut down to a small patch by other operands (a torus
+  // less a box and a cylinder) can lie nearer p than anything those find:
+  // the lines pass beside the patch, and the point of the whole face
+  // nearest p lies off the part. The lines cover the sphere of directions
+  // kSearchLines times, then close in on the few best, each round half as
+  // widely; every boundary they meet is a point of the exact surface, so
+  // the bound is sound. The faces they meet within a few tolerances of the
+  // nearest make the creases and corners of cornerAllowance.
+  Projected distanceBySearch(const dvec3& p, double reach) const {
+    const double tolerance = options_.tolerance;
+    struct Met {
+      double t;
+      dvec3 normal;  // outward, where the face is nearest
+    };
+    // The faces met from p, and from the nearest boundary point found.
+    std::map<std::pair<const Primitive*, std::uint32_t>, Met> faces, facesThere;
     SpanList spans;
-    // The nearest boundary along the ray from p in a direction, within limit.
-    auto along = [&](const dvec3& direction, double limit) {
-      solid_.spans(Ray(p, direction, 0.0, limit), spans);
+    // The nearest boundary along the ray from `from` in a direction, within
+    // limit; every face met within it is noted in `met`.
+    auto along = [&](const dvec3& from, const dvec3& direction, double limit, auto& met) {
+      double nearest = limit;
+      solid_.spans(Ray(from, direction, 0.0, limit), spans);
       for (const Span& s : spans)
-        for (const Boundary* b : {&s.in, &s.out})
-          if (b->t > 0.0 && b->t < limit) limit = b->t;
-      return limit;
+        for (const Boundary* b : {&s.in, &s.out}) {
+          if (!(b->t > 0.0 && b->t < limit) || !b->primitive) continue;
+          nearest = std::min(nearest, b->t);
+          Met& m =
+              met.try_emplace({b->primitive, b->face}, Met{kInfinity, dvec3(0.0)}).first->second;
+          if (b->t < m.t) m = {b->t, outwardNormal(*b, from + b->t * direction)};
+        }
+      return nearest;
     };
     struct Lead {
       double distance;
@@ -330,12 +348,12 @@ class Checker {
     };
     std::vector<Lead> leads;
     for (const dvec3& d : kSearchDirections)
-      if (const double t = along(d, reach); t < reach) leads.push_back({t, d});
+      if (const double t = along(p, d, reach, faces); t < reach) leads.push_back({t, d});
     // Each of the nearest few may lead to the nearest patch.
     const std::size_t followed = std::min<std::size_t>(kSearchLeads, leads.size());
     std::partial_sort(leads.begin(), leads.begin() + followed, leads.end(),
                       [](const Lead& a, const Lead& b) { return a.distance < b.distance; });
-    double best = reach;
+    Lead best{reach, kSearchDirections[0]};
     for (std::size_t k = 0; k < followed; ++k) {
       Lead lead = leads[k];
       double spread = std::sqrt(4.0 * std::numbers::pi / kSearchLines);  // the lines' spacing
@@ -343,13 +361,45 @@ class Checker {
         const dvec3 centre = lead.direction;
         for (const dvec3& d : kAroundDirections) {
           const dvec3 direction = glm::normalize(centre + spread * d);
-          if (const double t = along(direction, lead.distance); t < lead.distance)
-            lead = {t, direction};
+          const double t = along(p, direction, lead.distance + 4.0 * tolerance, faces);
+          if (t < lead.distance) lead = {t, direction};
         }
       }
-      best = std::min(best, lead.distance);
+      if (lead.distance < best.distance) best = lead;
     }
-    return best;
+    if (!(best.distance < reach)) return {reach, tolerance};
+    // The faces within a few tolerances of the nearest point: the patches
+    // of a corner there are larger seen from it than from p.
+    const dvec3 there = p + best.distance * best.direction;
+    for (const dvec3& d : kSearchDirections) along(there, d, 4.0 * tolerance, facesThere);
+    for (const auto& [face, m] : faces)
+      if (m.t <= best.distance + 4.0 * tolerance) facesThere.try_emplace(face, m);
+    std::vector<dvec3> near;
+    for (const auto& [face, m] : facesThere) near.push_back(glm::normalize(m.normal));
+    return {best.distance, cornerAllowance(near, tolerance)};
+  }
+
+  // What the mesh may be off where faces with these outward normals meet.
+  // Each face's mesh may be offset by the tolerance: two faces normals φ
+  // apart move their crease by tolerance / cos(φ/2) (as in allowance), and
+  // three faces move their corner to x with nᵢ·x = tolerance for each,
+  // x = N⁻¹(1, 1, 1)·tolerance for the matrix N of their normals (√3 ×
+  // the tolerance at a cube's corner). Ten tolerances at most, as for a
+  // knife edge.
+  static double cornerAllowance(const std::vector<dvec3>& normals, double tolerance) {
+    double stretch = 1.0;
+    for (std::size_t i = 0; i < normals.size(); ++i)
+      for (std::size_t j = i + 1; j < normals.size(); ++j) {
+        const double cosine = glm::dot(normals[i], normals[j]);
+        stretch = std::max(stretch, 1.0 / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1));
+        for (std::size_t k = j + 1; k < normals.size(); ++k) {
+          // Rows of N are the normals; glm's matrices are column-major.
+          const glm::dmat3 n = glm::transpose(glm::dmat3(normals[i], normals[j], normals[k]));
+          if (std::abs(glm::determinant(n)) < 1e-6) continue;  // three faces along one line
+          stretch = std::max(stretch, glm::length(glm::inverse(n) * dvec3(1.0)));
+        }
+      }
+    return std::min(stretch, 10.0) * tolerance;
   }
 
   // Is p within what the mesh may be off the exact surface there, where
@@ -463,18 +513,15 @@ class Checker {
           allowed = found.allowed;
         }
       }
-      // The search costs some 6 000 queries of the part, so it is made
+      // The search costs some 7 000 queries of the part, so it is made
       // only for a point that would otherwise be the worst so far; it can
       // only lower the estimate, so a point that would not be is not.
       if (estimate > allowed && tally.worse(estimate, allowed)) {
-        const double searched =
-            distanceBySearch(q, std::min(estimate, kFidelityReach * options_.tolerance));
-        if (searched < estimate) {
-          const double searchedAllowed = allowance(q, searched);
-          if (searched * allowed < estimate * searchedAllowed) {
-            estimate = searched;
-            allowed = searchedAllowed;
-          }
+        const Projected searched = distanceBySearch(
+            q, std::min(estimate + 4.0 * options_.tolerance, kFidelityReach * options_.tolerance));
+        if (searched.distance * allowed < estimate * searched.allowed) {
+          estimate = searched.distance;
+          allowed = searched.allowed;
         }
       }
       tally.distance(estimate, allowed, q, true);
