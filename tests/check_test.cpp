@@ -349,6 +349,72 @@ TEST(Check, AVertexPulledOutOfACornerFailsTheFidelity) {
   EXPECT_GT(report.fidelity, 0.1);
 }
 
+// Random parts: unions of four rotated primitives less the union of three
+// more, each part turned as a whole, from all the kinds of curved and flat
+// faces the export makes (geodesic spheres, polygonal rims, torus grids,
+// stacked ellipses, exact polyhedra). Each exports to a closed, valid mesh
+// that agrees with the exact part (24 parts, a few seconds). Seed 11
+// failed the check (0.47 reported at one mesh point) before it searched
+// for small patches and allowed for corners
+// (SmallPatchesAndCornersOfCutFacesCheckOut).
+std::string randomPart(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  // From the generator's bits, not std::uniform_real_distribution, whose
+  // results the standard leaves to the library.
+  auto uniform = [&](double a, double b) { return a + (b - a) * double(rng() >> 11) * 0x1.0p-53; };
+  auto primitive = [&] {
+    std::ostringstream s;
+    switch (rng() % 8) {
+      case 0:
+        s << "sphere(" << uniform(1, 3) << ")";
+        break;
+      case 1:
+        s << "box{size={" << uniform(1, 5) << ", " << uniform(1, 5) << ", " << uniform(1, 5)
+          << "}, center=true}";
+        break;
+      case 2:
+        s << "cylinder{r=" << uniform(0.5, 2) << ", h=" << uniform(2, 6) << ", center=true}";
+        break;
+      case 3:
+        s << "torus{R=" << uniform(2, 3) << ", r=" << uniform(0.3, 0.8) << "}";
+        break;
+      case 4:
+        s << "ellipsoid{radii={" << uniform(1, 3) << ", " << uniform(1, 3) << ", " << uniform(1, 3)
+          << "}}";
+        break;
+      case 5:
+        s << "cone{r=" << uniform(1, 2.5) << ", h=" << uniform(2, 5) << "}";
+        break;
+      case 6:
+        s << "dodecahedron{r=" << uniform(1.5, 3) << "}";
+        break;
+      default:
+        s << "icosahedron{r=" << uniform(1.5, 3) << "}";
+        break;
+    }
+    s << ":rotate(" << uniform(0, 360) << ", " << uniform(0, 360) << ", " << uniform(0, 360)
+      << "):translate(" << uniform(-2, 2) << ", " << uniform(-2, 2) << ", " << uniform(-2, 2)
+      << ")";
+    return s.str();
+  };
+  std::ostringstream source;
+  source.precision(17);
+  source << "local u = {";
+  for (int i = 0; i < 4; ++i) source << primitive() << ", ";
+  source << "}\nlocal holes = {";
+  for (int i = 0; i < 3; ++i) source << primitive() << ", ";
+  source << "}\nreturn difference(union(u), union(holes)):rotate(" << uniform(0, 360) << ", "
+         << uniform(0, 360) << ", " << uniform(0, 360) << ")";
+  return source.str();
+}
+
+TEST(Check, RandomPartsOfRotatedPrimitivesCheckOut) {
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    const std::string source = randomPart(seed);
+    EXPECT_TRUE(test::checksOut(*script(source).objects[0])) << "seed " << seed << ":\n" << source;
+  }
+}
+
 TEST(Check, AnExportFarLooserThanAskedFails) {
   const SolidPtr part = drilledBlock();
   TriangleMesh loose = meshOfSolid(*part, 0.5).mesh;
