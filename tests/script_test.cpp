@@ -281,5 +281,27 @@ TEST(Script, RandomNumbersAreReproducible) {
   EXPECT_EQ(a, b);
 }
 
+// A call of a name csgray lacks says what it is called here: OpenSCAD's
+// names, or the nearest global function's for a typo. Reading an unset
+// global (a -D parameter's default) is no error, and a name far from any
+// function gets Lua's message alone.
+TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
+  EXPECT_EQ(errorOf("return cube(1)"),
+            "part.lua:1: attempt to call a nil value (global 'cube'); OpenSCAD's cube is "
+            "box{size={x, y, z}} (or box(s)) here");
+  EXPECT_NE(errorOf("return translate(1, 0, 0)")
+                .find("; transforms are methods of a solid "
+                      "here: s:translate(...)"),
+            std::string::npos);
+  EXPECT_NE(errorOf("return color(1)").find("s:material{color={r, g, b}}"), std::string::npos);
+  EXPECT_EQ(errorOf("return sphre(1)"),
+            "part.lua:1: attempt to call a nil value (global 'sphre'); did you mean sphere?");
+  EXPECT_NE(errorOf("return dodecahedrn{r=1}").find("did you mean dodecahedron?"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("return frobnicate(1)"),
+            "part.lua:1: attempt to call a nil value (global 'frobnicate')");
+  EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));
+}
+
 }  // namespace
 }  // namespace csgray

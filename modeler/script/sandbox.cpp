@@ -1,8 +1,10 @@
 #include "modeler/script/sandbox.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace csgray {
 
@@ -10,6 +12,56 @@ namespace {
 constexpr int kHookInterval = 10000;  // instructions between budget checks
 
 std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+// The edit distance between two names (Levenshtein 1966): insertions,
+// deletions and substitutions, one row of the table at a time.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// What to add to Lua's "attempt to call a nil value (global 'name')": what
+// csgray calls it, for the names OpenSCAD users type by habit, or else the
+// global function whose name is nearest (two edits at most), as in
+// "sphre(1)". Reads the globals only, so it is safe after any error.
+std::string unknownCallHint(lua_State* L, const std::string& message) {
+  static const std::string kCall = "attempt to call a nil value (global '";
+  const std::size_t at = message.find(kCall);
+  if (at == std::string::npos) return "";
+  const std::size_t begin = at + kCall.size(), end = message.find('\'', begin);
+  if (end == std::string::npos) return "";
+  const std::string name = message.substr(begin, end - begin);
+  if (name == "cube") return "; OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here";
+  for (const char* transform : {"translate", "rotate", "scale", "mirror", "multmatrix"})
+    if (name == transform)
+      return "; transforms are methods of a solid here: s:" +
+             std::string(name == "multmatrix" ? "transform" : name) + "(...)";
+  if (name == "color") return "; a colour is a material here: s:material{color={r, g, b}}";
+  std::string nearest;
+  std::size_t best = 3;
+  lua_pushglobaltable(L);
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
+      const std::string candidate = lua_tostring(L, -2);
+      if (const std::size_t d = editDistance(name, candidate); d < best)
+        best = d, nearest = candidate;
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return nearest.empty() ? "" : "; did you mean " + nearest + "?";
+}
 }  // namespace
 
 Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
@@ -227,6 +279,7 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
     // An abort raised as a memory error carries Lua's generic text; say why.
     if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)
       message = abortReason_;
+    if (abortReason_.empty()) message += unknownCallHint(L_, message);
     // Every message names the script, also those Lua gives without a
     // position (binary chunks, C stack overflow, non-string errors).
     if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
