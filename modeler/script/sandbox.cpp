@@ -54,7 +54,10 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
   while (lua_next(L, -2) != 0) {
     if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
       const std::string candidate = lua_tostring(L, -2);
-      if (const std::size_t d = editDistance(name, candidate); d < best)
+      // Ties go to the first name in alphabetical order: the table's own
+      // order follows a hash that is seeded anew for every run.
+      const std::size_t d = editDistance(name, candidate);
+      if (d < best || (d == best && !nearest.empty() && candidate < nearest))
         best = d, nearest = candidate;
     }
     lua_pop(L, 1);
