@@ -282,7 +282,7 @@ TEST(Script, RandomNumbersAreReproducible) {
 }
 
 // A call of a name csgray lacks says what it is called here: OpenSCAD's
-// names, or the nearest global function's for a typo. Reading an unset
+// names, or the nearest global function's or method's for a typo. Reading an unset
 // global (a -D parameter's default) is no error, and a name far from any
 // function gets Lua's message alone.
 TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
@@ -300,6 +300,13 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
             std::string::npos);
   EXPECT_EQ(errorOf("return frobnicate(1)"),
             "part.lua:1: attempt to call a nil value (global 'frobnicate')");
+  EXPECT_EQ(errorOf("return sphere(1):translat(1, 0, 0)"),
+            "part.lua:1: attempt to call a nil value (method 'translat'); did you mean "
+            "translate?");
+  EXPECT_NE(errorOf("return sphere(1):materal{color={1, 0, 0}}").find("did you mean material?"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("return sphere(1):frobnicate()"),
+            "part.lua:1: attempt to call a nil value (method 'frobnicate')");
   EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));
 }
 

@@ -30,39 +30,63 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// What to add to Lua's "attempt to call a nil value (global 'name')": what
-// csgray calls it, for the names OpenSCAD users type by habit, or else the
-// global function whose name is nearest (two edits at most), as in
-// "sphre(1)". Reads the globals only, so it is safe after any error.
-std::string unknownCallHint(lua_State* L, const std::string& message) {
-  static const std::string kCall = "attempt to call a nil value (global '";
-  const std::size_t at = message.find(kCall);
-  if (at == std::string::npos) return "";
-  const std::size_t begin = at + kCall.size(), end = message.find('\'', begin);
-  if (end == std::string::npos) return "";
-  const std::string name = message.substr(begin, end - begin);
-  if (name == "cube") return "; OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here";
-  for (const char* transform : {"translate", "rotate", "scale", "mirror", "multmatrix"})
-    if (name == transform)
-      return "; transforms are methods of a solid here: s:" +
-             std::string(name == "multmatrix" ? "transform" : name) + "(...)";
-  if (name == "color") return "; a colour is a material here: s:material{color={r, g, b}}";
-  std::string nearest;
-  std::size_t best = 3;
-  lua_pushglobaltable(L);
+// The name of the function nearest `name` (two edits at most) among the
+// string keys of the table on top of the stack whose values are functions,
+// or `nearest` if none is nearer. Ties go to the first name in alphabetical
+// order: a table's own order follows a hash that is seeded anew every run.
+void nearestFunction(lua_State* L, const std::string& name, std::string& nearest,
+                     std::size_t& best) {
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
     if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
       const std::string candidate = lua_tostring(L, -2);
-      // Ties go to the first name in alphabetical order: the table's own
-      // order follows a hash that is seeded anew for every run.
       const std::size_t d = editDistance(name, candidate);
       if (d < best || (d == best && !nearest.empty() && candidate < nearest))
         best = d, nearest = candidate;
     }
     lua_pop(L, 1);
   }
-  lua_pop(L, 1);
+}
+
+// What to add to Lua's "attempt to call a nil value (global 'name')": what
+// csgray calls it, for the names OpenSCAD users type by habit, or else the
+// global function whose name is nearest, as in "sphre(1)". For a method
+// ("(method 'translat')"), the nearest method of any of the script API's
+// types (the __index tables of the metatables in the registry). Reads
+// tables only, so it is safe after any error.
+std::string unknownCallHint(lua_State* L, const std::string& message) {
+  static const std::string kNil = "attempt to call a nil value (";
+  const std::size_t at = message.find(kNil);
+  if (at == std::string::npos) return "";
+  const std::size_t kindBegin = at + kNil.size(), kindEnd = message.find(" '", kindBegin);
+  if (kindEnd == std::string::npos) return "";
+  const std::string kind = message.substr(kindBegin, kindEnd - kindBegin);
+  const std::size_t begin = kindEnd + 2, end = message.find('\'', begin);
+  if (end == std::string::npos) return "";
+  const std::string name = message.substr(begin, end - begin);
+  std::string nearest;
+  std::size_t best = 3;
+  if (kind == "global") {
+    if (name == "cube") return "; OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here";
+    for (const char* transform : {"translate", "rotate", "scale", "mirror", "multmatrix"})
+      if (name == transform)
+        return "; transforms are methods of a solid here: s:" +
+               std::string(name == "multmatrix" ? "transform" : name) + "(...)";
+    if (name == "color") return "; a colour is a material here: s:material{color={r, g, b}}";
+    lua_pushglobaltable(L);
+    nearestFunction(L, name, nearest, best);
+    lua_pop(L, 1);
+  } else if (kind == "method") {
+    lua_pushnil(L);
+    while (lua_next(L, LUA_REGISTRYINDEX) != 0) {
+      if (lua_type(L, -2) == LUA_TSTRING && lua_istable(L, -1)) {
+        lua_pushliteral(L, "__index");
+        if (lua_rawget(L, -2) == LUA_TTABLE) nearestFunction(L, name, nearest, best);
+        lua_pop(L, 1);  // __index
+      }
+      lua_pop(L, 1);  // the registry's value
+    }
+  }
   return nearest.empty() ? "" : "; did you mean " + nearest + "?";
 }
 }  // namespace
