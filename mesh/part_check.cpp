@@ -90,6 +90,12 @@ std::vector<dvec3> fibonacciSphere(int n) {
 const std::vector<dvec3> kSearchDirections = fibonacciSphere(kSearchLines);
 const std::vector<dvec3> kAroundDirections = fibonacciSphere(kSearchAround);
 
+// How much further than the tolerance a crease may lie, between faces whose
+// outward normals are φ apart (cosine = cos φ): each face's mesh may be
+// offset by the tolerance, which moves the crease by 1 / cos(φ/2)
+// tolerances, cos(φ/2) = √((1 + cos φ)/2); a knife edge is allowed ten.
+double creaseStretch(double cosine) { return 1.0 / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1); }
+
 // splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
 // generators", OOPSLA 2014): a jitter per ray that does not depend on
 // which thread traces it, so every run of a check gives the same figures.
@@ -301,7 +307,7 @@ class Checker {
         // crease whose normals are φ apart, as in allowance.
         const double cosine =
             glm::dot(n[0], n[1]) * (glm::dot(n[0], *in) * glm::dot(n[1], *in) > 0.0 ? 1.0 : -1.0);
-        keep({d, options_.tolerance / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1)});
+        keep({d, options_.tolerance * creaseStretch(cosine)});
       }
     }
     return best;
@@ -380,8 +386,8 @@ class Checker {
   }
 
   // What the mesh may be off where faces with these outward normals meet.
-  // Each face's mesh may be offset by the tolerance: two faces normals φ
-  // apart move their crease by tolerance / cos(φ/2) (as in allowance), and
+  // Each face's mesh may be offset by the tolerance: two faces move their
+  // crease by creaseStretch tolerances, and
   // three faces move their corner to x with nᵢ·x = tolerance for each,
   // x = N⁻¹(1, 1, 1)·tolerance for the matrix N of their normals (√3 ×
   // the tolerance at a cube's corner). Ten tolerances at most, as for a
@@ -390,8 +396,7 @@ class Checker {
     double stretch = 1.0;
     for (std::size_t i = 0; i < normals.size(); ++i)
       for (std::size_t j = i + 1; j < normals.size(); ++j) {
-        const double cosine = glm::dot(normals[i], normals[j]);
-        stretch = std::max(stretch, 1.0 / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1));
+        stretch = std::max(stretch, creaseStretch(glm::dot(normals[i], normals[j])));
         for (std::size_t k = j + 1; k < normals.size(); ++k) {
           // Rows of N are the normals; glm's matrices are column-major.
           const glm::dmat3 n = glm::transpose(glm::dmat3(normals[i], normals[j], normals[k]));
@@ -447,8 +452,7 @@ class Checker {
       for (std::size_t j = i + 1; j < near.size(); ++j)
         if (near[i].primitive != near[j].primitive || near[i].face != near[j].face)
           cosine = std::min(cosine, glm::dot(near[i].normal, near[j].normal));
-    // cos(φ/2) = √((1 + cos φ)/2); a knife edge is allowed ten tolerances.
-    return tolerance / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1);
+    return tolerance * creaseStretch(cosine);
   }
 
   // One ray of a grid: its spans' length, the distances between the two
