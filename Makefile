@@ -8,6 +8,9 @@
 BUILD      ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
+# Instruction set (README, "Building by hand"): auto, x86-64-v3 or portable;
+# read when $(BUILD) is first configured.
+ARCH       ?= auto
 CSGRAY     := $(BUILD)/cli/csgray
 
 # Debian 12 packages the build and the tests need.
@@ -34,7 +37,7 @@ deps:
 	fi
 
 $(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCSGRAY_ARCH=$(ARCH)
 
 configure: deps $(BUILD)/CMakeCache.txt
 

@@ -19,7 +19,7 @@ trap 'rm -rf "$out"' EXIT
 # hundredths of a second, a tenth of plate(8) on two threads).
 elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.3f", b - a}'; }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u +%Y-%m-%d)"
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u +%Y-%m-%d); csgray $("$csgray" --version)"
 echo
 echo "| scene | threads | wall (s) | peak memory (MB) | script (s) | build (s) | trace (s) | write (s) | primary rays/s | shadow rays/s |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"

@@ -168,7 +168,13 @@ const CLI::Validator lengthRange(
 
 int main(int argc, char** argv) {
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
-  app.set_version_flag("--version", std::string(CSGRAY_VERSION));
+  // The version and the instruction set the build is for (CMakeLists.txt,
+  // CSGRAY_ARCH): a v3 binary runs only on processors that have it.
+#if defined(CSGRAY_X86_64_V3)
+  app.set_version_flag("--version", std::string(CSGRAY_VERSION) + " (x86-64-v3)");
+#else
+  app.set_version_flag("--version", std::string(CSGRAY_VERSION) + " (portable)");
+#endif
   app.require_subcommand(1);
 
   std::string script, output, size = "800x600";

@@ -4,6 +4,7 @@
 set -u
 csgray=$1
 source_dir=$2
+version=$3  # what --version should print: "0.1.0 (x86-64-v3)" or "0.1.0 (portable)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0
@@ -55,6 +56,11 @@ expect_failure() { expect_exit any "$@"; }
 expect_in_stderr() {
   if grep -qF -- "$2" "$work/stderr"; then pass; else fail "$1: stderr lacks '$2':"; cat "$work/stderr"; fi
 }
+
+# --version names the instruction set the build was configured for.
+if [ "$("$csgray" --version 2>&1)" = "$version" ]; then pass; else
+  fail "--version printed '$("$csgray" --version 2>&1)', expected '$version'"
+fi
 
 # A good render writes the image and says so.
 if "$csgray" render "$work/part.lua" -o "$work/part.png" --size 64x48 --threads 2 >"$work/stdout" 2>&1 &&
