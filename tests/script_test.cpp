@@ -282,7 +282,8 @@ TEST(Script, RandomNumbersAreReproducible) {
 }
 
 // A call of a name csgray lacks says what it is called here: OpenSCAD's
-// names, or the nearest global function's or method's for a typo. Reading an unset
+// names, or the nearest global function's, method's or library function's
+// for a typo. Reading an unset
 // global (a -D parameter's default) is no error, and a name far from any
 // function gets Lua's message alone.
 TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
@@ -305,6 +306,13 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
             "translate?");
   EXPECT_NE(errorOf("return sphere(1):materal{color={1, 0, 0}}").find("did you mean material?"),
             std::string::npos);
+  EXPECT_EQ(errorOf("return sphere(math.sine(1))"),
+            "part.lua:1: attempt to call a nil value (field 'sine'); did you mean math.sin?");
+  EXPECT_NE(errorOf("local t = {}\ntable.insrt(t, 1)\nreturn sphere(1)")
+                .find("did you mean table.insert?"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("return sphere(math.frobnicate(1))"),
+            "part.lua:1: attempt to call a nil value (field 'frobnicate')");
   EXPECT_EQ(errorOf("return sphere(1):frobnicate()"),
             "part.lua:1: attempt to call a nil value (method 'frobnicate')");
   EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));

@@ -388,6 +388,12 @@ int areaLight(lua_State* L) {
   light.position = requiredPoint(args, "pos");
   light.edgeU = nonZeroVector(args, "u", light.edgeU);
   light.edgeV = nonZeroVector(args, "v", light.edgeV);
+  // Parallel edges span no rectangle: its samples would all lie on a line.
+  // (Relative to the edges' lengths, so that a scale of the scene keeps it.)
+  if (!(glm::length(glm::cross(light.edgeU, light.edgeV)) >
+        1e-9 * glm::length(light.edgeU) * glm::length(light.edgeV)))
+    throw std::invalid_argument(
+        "area_light: u and v must not be parallel (they are the rectangle's edges)");
   light.samples = samplesArg(args);
   lightCommon(args, light);
   args.finish();

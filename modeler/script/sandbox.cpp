@@ -32,15 +32,16 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 
 // The name of the function nearest `name` (two edits at most) among the
 // string keys of the table on top of the stack whose values are functions,
-// or `nearest` if none is nearer. Ties go to the first name in alphabetical
-// order: a table's own order follows a hash that is seeded anew every run.
-void nearestFunction(lua_State* L, const std::string& name, std::string& nearest,
-                     std::size_t& best) {
+// written with `prefix` ("math."), or `nearest` if none is nearer. Ties go
+// to the first name in alphabetical order: a table's own order follows a
+// hash that is seeded anew every run.
+void nearestFunction(lua_State* L, const std::string& name, std::string& nearest, std::size_t& best,
+                     const std::string& prefix = "") {
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
     if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
-      const std::string candidate = lua_tostring(L, -2);
-      const std::size_t d = editDistance(name, candidate);
+      const std::string key = lua_tostring(L, -2), candidate = prefix + key;
+      const std::size_t d = editDistance(name, key);
       if (d < best || (d == best && !nearest.empty() && candidate < nearest))
         best = d, nearest = candidate;
     }
@@ -52,7 +53,8 @@ void nearestFunction(lua_State* L, const std::string& name, std::string& nearest
 // csgray calls it, for the names OpenSCAD users type by habit, or else the
 // global function whose name is nearest, as in "sphre(1)". For a method
 // ("(method 'translat')"), the nearest method of any of the script API's
-// types (the __index tables of the metatables in the registry). Reads
+// types (the __index tables of the metatables in the registry); for a
+// field ("math.sine(x)": "(field 'sine')"), the nearest library function. Reads
 // tables only, so it is safe after any error.
 std::string unknownCallHint(lua_State* L, const std::string& message) {
   static const std::string kNil = "attempt to call a nil value (";
@@ -76,6 +78,18 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
     lua_pushglobaltable(L);
     nearestFunction(L, name, nearest, best);
     lua_pop(L, 1);
+  } else if (kind == "field") {
+    // The table is not named in the message: the nearest function of any
+    // library table (math, string, table, utf8), named with its table.
+    lua_pushglobaltable(L);
+    lua_pushnil(L);
+    while (lua_next(L, -2) != 0) {
+      if (lua_type(L, -2) == LUA_TSTRING && lua_istable(L, -1) &&
+          std::string(lua_tostring(L, -2)) != LUA_GNAME)
+        nearestFunction(L, name, nearest, best, std::string(lua_tostring(L, -2)) + ".");
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);  // the global table
   } else if (kind == "method") {
     lua_pushnil(L);
     while (lua_next(L, LUA_REGISTRYINDEX) != 0) {
