@@ -236,8 +236,11 @@ dvec3 Renderer::trace(const Ray& ray) const {
   return trace(ray, 0, 1.0, cameraMedia_, ctx);
 }
 
+static_assert((2 << TraceLimits{}.maxDepth) - 1 <= Renderer::kRaysPerCameraRay,
+              "the default recursion limits never reach the ray budget");
+
 dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& media,
-                      TraceContext& ctx) const {
+                      TraceContext& ctx, int raysLeft) const {
   ++(depth == 0 ? ctx.counts.primary : ctx.counts.secondary);
   std::optional<SurfaceHit> hit = firstHit(ray);
   if (!hit) return scene_.background;
@@ -277,7 +280,8 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   double kr = leaving ? 0.0 : m.reflection;
   double kt = leaving ? 1.0 : m.transparency;
   dvec3 tint = leaving ? dvec3(1.0) : m.filter;
-  dvec3 color = leaving ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, ctx);
+  // (A surface that passes all light shows none of its own: no shadow rays.)
+  dvec3 color = leaving || kt >= 1.0 ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, ctx);
 
   std::optional<dvec3> through = ray.dir;
   if (kt > 0.0 && n1 != n2) {
@@ -294,14 +298,25 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
 
   double offset = 1e-9 * (scale_ + glm::length(sp.point));
   bool deeper = depth < scene_.limits.maxDepth;
-  if (kr > 0.0 && deeper && weight * kr >= scene_.limits.minWeight) {
-    Ray mirrored(sp.point + offset * sp.normal, reflect(ray.dir, sp.normal));
-    color += kr * trace(mirrored, depth + 1, weight * kr, media, ctx);
-  }
   double kTinted = kt * largest(tint);
-  if (kt > 0.0 && deeper && weight * kTinted >= scene_.limits.minWeight) {
-    Ray onward(sp.point - offset * sp.normal, *through);
-    color += kt * tint * trace(onward, depth + 1, weight * kTinted, beyond, ctx);
+  bool mirror = kr > 0.0 && deeper && weight * kr >= scene_.limits.minWeight;
+  bool onward = kt > 0.0 && deeper && weight * kTinted >= scene_.limits.minWeight;
+  // The rays left (kRaysPerCameraRay) go first to the mirrored ray's tree,
+  // less one kept for the refracted ray, which gets what that tree leaves:
+  // a chain of reflections inside glass takes as many as it needs, as it
+  // would without the bound; with room for one only, the ray that carries
+  // more of the pixel is traced.
+  if (mirror && onward && raysLeft < 2) (kr >= kTinted ? onward : mirror) = false;
+  if (raysLeft < 1) mirror = onward = false;
+  const std::uint64_t tracedBefore = ctx.counts.secondary;
+  if (mirror) {
+    Ray mirrored(sp.point + offset * sp.normal, reflect(ray.dir, sp.normal));
+    color += kr * trace(mirrored, depth + 1, weight * kr, media, ctx, raysLeft - 1 - int(onward));
+  }
+  if (onward) {
+    const int left = raysLeft - int(ctx.counts.secondary - tracedBefore);
+    Ray onwardRay(sp.point - offset * sp.normal, *through);
+    color += kt * tint * trace(onwardRay, depth + 1, weight * kTinted, beyond, ctx, left - 1);
   }
   return color;
 }

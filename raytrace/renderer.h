@@ -99,6 +99,14 @@ class Renderer {
   Image render() const { return renderAll().color; }
   RenderResult renderAll() const;
 
+  // At most this many rays trace a camera ray's colour: it and the rays
+  // reflected and refracted from it. A material that mirrors all light and
+  // passes all of it too (reflection = transparency = 1) keeps every ray's
+  // weight at 1, so min_weight never stops the tree from doubling at each
+  // bounce: 2^64 rays at max_depth 64. (The default max_depth of 8 stays
+  // within it: 511 rays at most.)
+  static constexpr int kRaysPerCameraRay = 1024;
+
   // The colour seen along a ray from the camera's medium.
   dvec3 trace(const Ray& ray) const;
   std::optional<SurfaceHit> firstHit(const Ray& ray) const;
@@ -113,8 +121,9 @@ class Renderer {
 
  private:
   struct ShadingPoint;
-  dvec3 trace(const Ray& ray, int depth, double weight, const Media& media,
-              TraceContext& ctx) const;
+  // raysLeft: how many rays the tree below this one may trace.
+  dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, TraceContext& ctx,
+              int raysLeft = kRaysPerCameraRay - 1) const;
   dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
   dvec3 pixel(int x, int y, int samples, TraceContext& ctx) const;
 

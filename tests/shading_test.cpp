@@ -349,6 +349,32 @@ TEST(Shading, MirrorShowsTheSphereWhereGeometryPutsItsImage) {
   EXPECT_EQ(Renderer(bare, {8, 8, 1}).trace(Ray(eye, axis)), kBlack);
 }
 
+// Panes that mirror all light and pass all of it keep every ray's weight at
+// 1, so min_weight never prunes: between two mirrors, the rays double at
+// each pane, 2^64 of them at max_depth 64. The camera ray's budget bounds
+// the tree, and the tree uses it.
+TEST(Shading, ARayTreeThatNeverLosesWeightStaysWithinItsBudget) {
+  Scene scene;
+  auto mirror = std::make_shared<Material>(*flat(kBlack));
+  mirror->reflection = 1.0;
+  auto pane = std::make_shared<Material>(*flat(kRed));
+  pane->reflection = 1.0;
+  pane->transparency = 1.0;
+  for (double z : {0.0, 8.0})
+    scene.surfaces.push_back(Surface::plane(dvec3(0, 0, z), dvec3(0, 0, 1))->withMaterial(mirror));
+  for (int z = 1; z < 8; ++z)
+    scene.surfaces.push_back(Surface::plane(dvec3(0, 0, z), dvec3(0, 0, 1))->withMaterial(pane));
+  scene.camera = CameraSpec{dvec3(0, 0, 4.5), dvec3(3, 1, 3.5), dvec3(0, 0, 1), 45.0};
+  scene.limits.maxDepth = 64;
+  scene.limits.minWeight = 0.0;
+  const int w = 4, h = 3;
+  RenderResult result = Renderer(scene, {w, h, 1}).renderAll();
+  const std::uint64_t most = std::uint64_t(w * h) * (Renderer::kRaysPerCameraRay - 1);
+  EXPECT_EQ(result.rays.primary, std::uint64_t(w * h));
+  EXPECT_LE(result.rays.secondary, most);
+  EXPECT_GE(result.rays.secondary, most / 2);
+}
+
 // ---------------------------------------------------------------- texture
 
 TEST(Shading, CheckerboardPixelsShowTheSquareOfTheirCentre) {
