@@ -15,6 +15,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "modeler/polygon_triangulation.h"
+
 namespace csgray {
 
 namespace {
@@ -153,55 +155,13 @@ class MeshBuilder {
 };
 
 void MeshBuilder::polygon(const std::vector<std::uint32_t>& corners) {
-  const std::size_t n = corners.size();
-  if (n == 3) return triangle(corners[0], corners[1], corners[2]);
-  // Newell's normal (Sutherland, Sproull and Schumacker 1974) picks the
-  // plane to clip ears in: drop its largest axis.
-  const std::vector<dvec3>& points = mesh_.points;
-  dvec3 normal(0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const dvec3& p = points[corners[i]];
-    const dvec3& q = points[corners[(i + 1) % n]];
-    normal +=
-        dvec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
-  }
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
-  // Ear clipping costs O(n³) at worst: large polygons are nearly always
-  // convex caps, which a fan splits as well.
-  if (normal[axis] == 0.0 || n > 64) return fan(corners);
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double orientation = normal[axis] > 0.0 ? 1.0 : -1.0;
-  auto turn = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    const dvec3 &pa = points[a], &pb = points[b], &pc = points[c];
-    return orientation * ((pb[u] - pa[u]) * (pc[v] - pa[v]) - (pb[v] - pa[v]) * (pc[u] - pa[u]));
-  };
-  std::vector<std::uint32_t> ring = corners;
-  while (ring.size() > 3) {
-    const std::size_t m = ring.size();
-    bool clipped = false;
-    for (std::size_t i = 0; i < m && !clipped; ++i) {
-      std::uint32_t a = ring[(i + m - 1) % m], b = ring[i], c = ring[(i + 1) % m];
-      if (turn(a, b, c) <= 0.0) continue;  // reflex or flat corner
-      bool empty = true;
-      for (std::uint32_t p : ring) {
-        if (p == a || p == b || p == c) continue;
-        if (turn(a, b, p) >= 0.0 && turn(b, c, p) >= 0.0 && turn(c, a, p) >= 0.0) {
-          empty = false;
-          break;
-        }
-      }
-      if (!empty) continue;
-      triangle(a, b, c);
-      ring.erase(ring.begin() + std::ptrdiff_t(i));
-      clipped = true;
-    }
-    // A self-overlapping or degenerate polygon has no ear: fan the rest and
-    // let the validity check say what is wrong.
-    if (!clipped) return fan(ring);
-  }
-  triangle(ring[0], ring[1], ring[2]);
+  // Ear clipping costs O(n·r) for r reflex corners, O(n²·r) at worst:
+  // beyond kMaxClippedCorners a polygon is fanned, as it is when it has no
+  // area; the validity check then says what is wrong, if anything is.
+  constexpr std::size_t kMaxClippedCorners = 20'000;
+  auto add = [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) { triangle(a, b, c); };
+  if (corners.size() > kMaxClippedCorners || !triangulatePolygon(mesh_.points, corners, add))
+    fan(corners);
 }
 
 // Raw vertices and faces of an indexed format, turned into a mesh at the

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <glm/vec2.hpp>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -27,6 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kMeshes = CSGRAY_SOURCE_DIR "/tests/meshes/";
+constexpr double kPi = std::numbers::pi;
 
 std::string readError(const std::string& name) {
   try {
@@ -82,6 +85,48 @@ TEST(MeshReader, NonConvexFacesAreEarClipped) {
   TriangleMesh mesh = readMeshFile(kMeshes + "l_prism.obj");
   EXPECT_DOUBLE_EQ(mesh.volume(), 20.0);
   EXPECT_EQ(meshDefect(mesh), "");
+}
+
+// A face of many corners is ear clipped too: a star prism whose caps have
+// 400 corners, 200 of them reflex (a fan would cross the notches), with the
+// volume of its caps' area, n/2 · R·r · sin(2π/n), times the height.
+TEST(MeshReader, LargeNonConvexFacesAreEarClipped) {
+  const int n = 400;
+  const double outer = 10.0, inner = 4.0, height = 5.0;
+  std::string obj;
+  for (double z : {0.0, height})
+    for (int i = 0; i < n; ++i) {
+      const double a = 2.0 * kPi * i / n, r = i % 2 ? inner : outer;
+      obj += "v " + std::to_string(r * std::cos(a)) + " " + std::to_string(r * std::sin(a)) + " " +
+             std::to_string(z) + "\n";
+    }
+  std::string bottom = "f", top = "f";
+  for (int i = 0; i < n; ++i) {
+    bottom += " " + std::to_string(n - i);
+    top += " " + std::to_string(n + i + 1);
+  }
+  obj += bottom + "\n" + top + "\n";
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    obj += "f " + std::to_string(i + 1) + " " + std::to_string(j + 1) + " " +
+           std::to_string(n + j + 1) + " " + std::to_string(n + i + 1) + "\n";
+  }
+  TriangleMesh mesh = readMesh(obj, "star.obj");
+  EXPECT_EQ(mesh.triangles.size(), std::size_t(2 * (n - 2) + 2 * n));
+  EXPECT_EQ(meshDefect(mesh), "");
+  // The corners were written with six decimals: the volume of those points.
+  auto corner = [&](int i) {
+    const double a = 2.0 * kPi * (i % n) / n, r = i % 2 ? inner : outer;
+    return glm::dvec2(std::stod(std::to_string(r * std::cos(a))),
+                      std::stod(std::to_string(r * std::sin(a))));
+  };
+  double area = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec2 p = corner(i), q = corner(i + 1);
+    area += 0.5 * (p.x * q.y - q.x * p.y);
+  }
+  EXPECT_NEAR(mesh.volume(), area * height, 1e-9);
+  EXPECT_NEAR(mesh.volume(), n / 2.0 * outer * inner * std::sin(2.0 * kPi / n) * height, 1e-3);
 }
 
 TEST(MeshReader, TheFormatComesFromTheExtensionInAnyCase) {
@@ -284,7 +329,7 @@ TEST(MeshReader, MangledFilesAreReadOrRefused) {
 TEST(MeshValidity, OpenMeshesAreRefusedNamingTheEdge) {
   EXPECT_EQ(importError("open.obj"),
             "open.obj: open: the edge from vertex 1 (0, 0, 4) to vertex 2 (0, 3, 4) has one "
-            "face (face 1); the mesh has a hole there");
+            "face (face 0); the mesh has a hole there");
 }
 
 TEST(MeshValidity, AFlippedFaceIsRefusedNamingItsNeighbour) {
@@ -310,7 +355,7 @@ TEST(MeshValidity, NonManifoldEdgesAndVerticesAreRefused) {
   e = importError("shared_edge.obj");
   EXPECT_EQ(e,
             "shared_edge.obj: non-manifold: the edge from vertex 5 (2, 3, 0) to vertex 6 (2, 3, "
-            "4) has 4 faces (3, 7, 12, 16) (repair=true may fix this)");
+            "4) has 4 faces (2, 7, 12, 17) (repair=true may fix this)");
   // Two tetrahedra tip to tip: every edge is fine, the shared vertex is not.
   TriangleMesh cones;
   cones.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};

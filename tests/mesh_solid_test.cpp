@@ -21,6 +21,7 @@
 
 #include "allocation_counter.h"
 #include "modeler/boolean.h"
+#include "modeler/polygon_triangulation.h"
 #include "modeler/primitives/box.h"
 #include "modeler/primitives/sphere.h"
 #include "modeler/script/script.h"
@@ -206,6 +207,52 @@ void expectGridVolume(const SolidPtr& s, double exact, int grid = 300) {
 }
 
 // ---------------------------------------------------------------- hits
+
+// Faces to triangles: random star-shaped polygons (simple, with many
+// reflex corners) in random planes become n − 2 triangles that all turn
+// the polygon's way and together cover its area exactly once.
+TEST(PolygonTriangulation, StarShapedPolygonsAreCoveredByTrianglesOfTheirOrientation) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> radius(0.2, 3.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 3 + trial % 150;
+    // The plane (e1, e2), seen from normal = e1 × e2.
+    const dvec3 normal = randomDirection(rng);
+    const dvec3 e1 = glm::normalize(glm::cross(normal, randomDirection(rng)));
+    const dvec3 e2 = glm::cross(normal, e1);
+    // Corners at increasing angles, counter-clockwise about the normal; the
+    // points are listed in reverse and from index 7, so that the polygon's
+    // indices are neither 0 .. n − 1 nor in order.
+    std::vector<dvec3> points(7 + n);
+    std::vector<std::uint32_t> polygon;
+    std::vector<glm::dvec2> flat;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2.0 * kPi * i / n, r = radius(rng);
+      flat.emplace_back(r * std::cos(a), r * std::sin(a));
+      polygon.push_back(std::uint32_t(7 + n - 1 - i));
+      points[polygon.back()] = dvec3(5, -2, 1) + flat.back().x * e1 + flat.back().y * e2;
+    }
+    double area = 0.0;  // the shoelace formula in the plane
+    for (int i = 0; i < n; ++i)
+      area += 0.5 * (flat[i].x * flat[(i + 1) % n].y - flat[(i + 1) % n].x * flat[i].y);
+    int triangles = 0;
+    double covered = 0.0;
+    ASSERT_TRUE(
+        triangulatePolygon(points, polygon, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+          ++triangles;
+          const double signedArea =
+              0.5 * glm::dot(glm::cross(points[b] - points[a], points[c] - points[a]), normal);
+          EXPECT_GT(signedArea, 0.0) << "trial " << trial;
+          covered += signedArea;
+        }));
+    EXPECT_EQ(triangles, n - 2) << "trial " << trial;
+    EXPECT_NEAR(covered, area, 1e-12 * n) << "trial " << trial;
+  }
+  // Collinear corners span no plane.
+  std::vector<dvec3> line{dvec3(0), dvec3(1, 0, 0), dvec3(2, 0, 0), dvec3(3, 0, 0)};
+  std::vector<std::uint32_t> corners{0, 1, 2, 3};
+  EXPECT_FALSE(triangulatePolygon(line, corners, [](auto, auto, auto) { FAIL(); }));
+}
 
 TEST(MeshSolid, OpenScadCubeAnalyticHits) {
   auto cube = meshOf(openScadCube());

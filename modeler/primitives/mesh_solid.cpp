@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
 #include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
 
+#include "modeler/polygon_triangulation.h"
 #include "modeler/tessellation.h"
 
 namespace csgray {
@@ -30,8 +30,6 @@ struct MeshSolid::Mesh {
 };
 
 namespace {
-
-using glm::dvec2;
 
 [[noreturn]] void refuse(const std::string& message) {
   throw std::invalid_argument("polyhedron: " + message);
@@ -177,15 +175,8 @@ struct Crossing {
 
 // ---- Faces to triangles -----------------------------------------------------------
 
-double cross2(const dvec2& a, const dvec2& b, const dvec2& c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
 // Splits a polygon (indices into points, in the order that is to face out)
-// into triangles with the same orientation. Convex polygons become fans;
-// others are cut by ear clipping (Meisters, "Polygons have ears", 1975),
-// in the plane of the polygon's Newell normal (Tampieri, "Newell's method
-// for computing the plane equation of a polygon", Graphics Gems III, 1992).
+// into triangles with the same orientation (polygon_triangulation.h).
 void triangulate(const std::vector<dvec3>& points, const std::vector<std::uint32_t>& polygon,
                  std::uint32_t face, std::vector<MeshSolid::Triangle>& out,
                  std::vector<std::uint32_t>& faceOf) {
@@ -193,63 +184,8 @@ void triangulate(const std::vector<dvec3>& points, const std::vector<std::uint32
     out.push_back({a, b, c});
     faceOf.push_back(face);
   };
-  std::size_t n = polygon.size();
-  if (n == 3) {
-    emit(polygon[0], polygon[1], polygon[2]);
-    return;
-  }
-  const dvec3& o = points[polygon[0]];
-  dvec3 normal(0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    normal += glm::cross(points[polygon[i]] - o, points[polygon[(i + 1) % n]] - o);
-  dvec3 m = glm::abs(normal);
-  int axis = m.x > m.y ? (m.x > m.z ? 0 : 2) : (m.y > m.z ? 1 : 2);
-  if (normal[axis] == 0.0)
+  if (!triangulatePolygon(points, polygon, emit))
     refuse("face " + std::to_string(face) + " is degenerate: its points are collinear");
-  // Project along the axis, keeping the polygon counter-clockwise.
-  int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  if (normal[axis] < 0.0) std::swap(u, v);
-  std::vector<dvec2> xy(n);
-  for (std::size_t i = 0; i < n; ++i) xy[i] = {points[polygon[i]][u], points[polygon[i]][v]};
-
-  bool convex = true;
-  for (std::size_t i = 0; i < n && convex; ++i)
-    convex = cross2(xy[(i + n - 1) % n], xy[i], xy[(i + 1) % n]) > 0.0;
-  if (convex) {
-    for (std::size_t i = 1; i + 1 < n; ++i) emit(polygon[0], polygon[i], polygon[i + 1]);
-    return;
-  }
-
-  std::vector<std::size_t> next(n), prev(n);
-  for (std::size_t i = 0; i < n; ++i) next[i] = (i + 1) % n, prev[i] = (i + n - 1) % n;
-  auto isEar = [&](std::size_t i) {
-    std::size_t a = prev[i], c = next[i];
-    if (!(cross2(xy[a], xy[i], xy[c]) > 0.0)) return false;
-    for (std::size_t r = next[c]; r != a; r = next[r]) {
-      // Closed test: a vertex on the cut a–c blocks it too.
-      if (cross2(xy[a], xy[i], xy[r]) >= 0.0 && cross2(xy[i], xy[c], xy[r]) >= 0.0 &&
-          cross2(xy[c], xy[a], xy[r]) >= 0.0)
-        return false;
-    }
-    return true;
-  };
-  std::size_t remaining = n, i = 0, tried = 0;
-  while (remaining > 3) {
-    // A simple polygon always has an ear; one that is not simple may have
-    // none, and is cut anyway so that the mesh stays closed.
-    if (isEar(i) || tried > remaining) {
-      emit(polygon[prev[i]], polygon[i], polygon[next[i]]);
-      next[prev[i]] = next[i];
-      prev[next[i]] = prev[i];
-      i = next[i];
-      --remaining;
-      tried = 0;
-    } else {
-      i = next[i];
-      ++tried;
-    }
-  }
-  emit(polygon[prev[i]], polygon[i], polygon[next[i]]);
 }
 
 // ---- Validation of the face graph --------------------------------------------------
