@@ -14,6 +14,25 @@ double turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+// Cuts a convex polygon (its corners in order) into a zig-zag strip: each
+// triangle joins a corner from the front to one from the back. Unlike a fan,
+// whose triangles all meet at one corner, a strip's triangles lie side by
+// side, so their boxes overlap only their neighbours' (the mesh checks and
+// BVHs test boxes against each other).
+void strip(std::span<const std::uint32_t> ring,
+           const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& triangle) {
+  std::size_t front = 0, back = ring.size() - 1;
+  for (bool fromFront = true; back - front >= 2; fromFront = !fromFront) {
+    if (fromFront) {
+      triangle(ring[front], ring[front + 1], ring[back]);
+      ++front;
+    } else {
+      triangle(ring[front], ring[back - 1], ring[back]);
+      --back;
+    }
+  }
+}
+
 }  // namespace
 
 bool triangulatePolygon(
@@ -48,17 +67,19 @@ bool triangulatePolygon(
   // Reflex (or flat) corners: only they can lie in an ear of a simple
   // polygon (Meisters, "Polygons have ears", 1975; Eberly, "Triangulation
   // by ear clipping", 2002), so only they are tested against one, which
-  // makes a polygon with few of them cost little more than its fan.
+  // makes a polygon with few of them cost little more than a convex one.
   std::vector<char> reflex(n), removed(n, 0);
   std::vector<std::size_t> reflexCorners;
+  std::size_t reflexLeft = 0;
   auto classify = [&](std::size_t i) {
     const bool was = reflex[i];
     reflex[i] = !(turn(xy[prev[i]], xy[i], xy[next[i]]) > 0.0);
-    if (reflex[i] && !was) reflexCorners.push_back(i);
+    if (reflex[i] && !was) reflexCorners.push_back(i), ++reflexLeft;
+    if (was && !reflex[i]) --reflexLeft;
   };
   for (std::size_t i = 0; i < n; ++i) classify(i);
-  if (reflexCorners.empty()) {
-    for (std::size_t i = 1; i + 1 < n; ++i) triangle(polygon[0], polygon[i], polygon[i + 1]);
+  if (reflexLeft == 0) {
+    strip(polygon, triangle);
     return true;
   }
 
@@ -76,6 +97,13 @@ bool triangulatePolygon(
   };
   std::size_t remaining = n, i = 0, tried = 0, clipped = 0;
   while (remaining > 3) {
+    if (reflexLeft == 0) {  // what is left is convex
+      std::vector<std::uint32_t> ring;
+      ring.reserve(remaining);
+      for (std::size_t k = 0, j = i; k < remaining; ++k, j = next[j]) ring.push_back(polygon[j]);
+      strip(ring, triangle);
+      return true;
+    }
     // A simple polygon always has an ear; one that is not simple may have
     // none, and is cut anyway.
     if (isEar(i) || tried > remaining) {
@@ -84,6 +112,7 @@ bool triangulatePolygon(
       next[a] = c;
       prev[c] = a;
       removed[i] = 1;
+      reflexLeft -= reflex[i];  // only when a polygon that is not simple is cut anyway
       --remaining;
       classify(a);
       classify(c);

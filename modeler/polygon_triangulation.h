@@ -12,10 +12,11 @@ namespace csgray {
 
 // Calls triangle(a, b, c) n − 2 times for the polygon's n corners (indices
 // into points, in the order that is to face out). A triangle is passed on
-// as it is; convex polygons become
-// fans; others are cut by ear clipping in the plane of the polygon's
-// Newell normal. A polygon that is not simple is cut anyway, so that a
-// closed mesh stays closed and its validity check can say what is wrong.
+// as it is; convex polygons become zig-zag strips, others are cut by ear
+// clipping in the plane of the polygon's Newell normal, and what is left
+// convex of them is a strip too. A polygon that is not simple is cut
+// anyway, so that a closed mesh stays closed and its validity check can say
+// what is wrong.
 // Returns false, and calls nothing, if a polygon of more than three
 // corners has a zero normal (its corners are collinear, or it has no area).
 bool triangulatePolygon(

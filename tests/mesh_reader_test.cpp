@@ -329,7 +329,7 @@ TEST(MeshReader, MangledFilesAreReadOrRefused) {
 TEST(MeshValidity, OpenMeshesAreRefusedNamingTheEdge) {
   EXPECT_EQ(importError("open.obj"),
             "open.obj: open: the edge from vertex 1 (0, 0, 4) to vertex 2 (0, 3, 4) has one "
-            "face (face 0); the mesh has a hole there");
+            "face (face 1); the mesh has a hole there");
 }
 
 TEST(MeshValidity, AFlippedFaceIsRefusedNamingItsNeighbour) {
@@ -355,7 +355,7 @@ TEST(MeshValidity, NonManifoldEdgesAndVerticesAreRefused) {
   e = importError("shared_edge.obj");
   EXPECT_EQ(e,
             "shared_edge.obj: non-manifold: the edge from vertex 5 (2, 3, 0) to vertex 6 (2, 3, "
-            "4) has 4 faces (2, 7, 12, 17) (repair=true may fix this)");
+            "4) has 4 faces (3, 7, 12, 16) (repair=true may fix this)");
   // Two tetrahedra tip to tip: every edge is fine, the shared vertex is not.
   TriangleMesh cones;
   cones.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};

@@ -254,6 +254,34 @@ TEST(PolygonTriangulation, StarShapedPolygonsAreCoveredByTrianglesOfTheirOrienta
   EXPECT_FALSE(triangulatePolygon(line, corners, [](auto, auto, auto) { FAIL(); }));
 }
 
+// A convex cap (a 2 000-sided circle) becomes triangles that lie side by
+// side: each one's box overlaps a few others', where a fan's triangles all
+// meet at one corner and every box overlaps every other (n²/2 pairs), which
+// made mesh checks and BVHs over such caps slow.
+TEST(PolygonTriangulation, AConvexCapBecomesTrianglesSideBySide) {
+  const int n = 2000;
+  std::vector<dvec3> points;
+  std::vector<std::uint32_t> polygon;
+  for (int i = 0; i < n; ++i) {
+    points.push_back(dvec3(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n), 0.0));
+    polygon.push_back(std::uint32_t(i));
+  }
+  std::vector<Bounds> boxes;
+  ASSERT_TRUE(
+      triangulatePolygon(points, polygon, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        Bounds box;
+        for (std::uint32_t k : {a, b, c}) box.include(points[k]);
+        boxes.push_back(box);
+      }));
+  ASSERT_EQ(boxes.size(), std::size_t(n - 2));
+  std::size_t overlapping = 0;  // pairs whose boxes share some area
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      overlapping += boxes[i].lo.x < boxes[j].hi.x && boxes[j].lo.x < boxes[i].hi.x &&
+                     boxes[i].lo.y < boxes[j].hi.y && boxes[j].lo.y < boxes[i].hi.y;
+  EXPECT_LT(overlapping, std::size_t(4 * n));
+}
+
 TEST(MeshSolid, OpenScadCubeAnalyticHits) {
   auto cube = meshOf(openScadCube());
   EXPECT_EQ(cube->kind(), "polyhedron");
