@@ -155,13 +155,10 @@ class MeshBuilder {
 };
 
 void MeshBuilder::polygon(const std::vector<std::uint32_t>& corners) {
-  // Ear clipping costs O(n·r) for r reflex corners, O(n²·r) at worst:
-  // beyond kMaxClippedCorners a polygon is fanned, as it is when it has no
-  // area; the validity check then says what is wrong, if anything is.
-  constexpr std::size_t kMaxClippedCorners = 20'000;
+  // A polygon without area is fanned all the same; the validity check then
+  // says what is wrong.
   auto add = [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) { triangle(a, b, c); };
-  if (corners.size() > kMaxClippedCorners || !triangulatePolygon(mesh_.points, corners, add))
-    fan(corners);
+  if (!triangulatePolygon(mesh_.points, corners, add)) fan(corners);
 }
 
 // Raw vertices and faces of an indexed format, turned into a mesh at the

@@ -78,7 +78,10 @@ bool triangulatePolygon(
     if (was && !reflex[i]) --reflexLeft;
   };
   for (std::size_t i = 0; i < n; ++i) classify(i);
-  if (reflexLeft == 0) {
+  // Ear clipping costs O(n·r) for r reflex corners, O(n²·r) at worst: a
+  // polygon too large for it is cut as a strip as if it were convex (the
+  // mesh's validity check says where the triangles then overlap).
+  if (reflexLeft == 0 || n > kMaxEarClippedCorners) {
     strip(polygon, triangle);
     return true;
   }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -252,6 +253,32 @@ TEST(PolygonTriangulation, StarShapedPolygonsAreCoveredByTrianglesOfTheirOrienta
   std::vector<dvec3> line{dvec3(0), dvec3(1, 0, 0), dvec3(2, 0, 0), dvec3(3, 0, 0)};
   std::vector<std::uint32_t> corners{0, 1, 2, 3};
   EXPECT_FALSE(triangulatePolygon(line, corners, [](auto, auto, auto) { FAIL(); }));
+}
+
+// Ear clipping costs O(n²·r) at worst, so a non-convex polygon of more than
+// kMaxEarClippedCorners is cut as a strip, in time linear in its corners:
+// all n − 2 triangles, each joining a corner from one end to an edge at the
+// other.
+TEST(PolygonTriangulation, APolygonTooLargeToEarClipIsCutAsAStrip) {
+  const std::size_t n = kMaxEarClippedCorners + 2;
+  std::vector<dvec3> points;
+  std::vector<std::uint32_t> polygon;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * kPi * double(i) / double(n), r = i % 2 ? 0.5 : 1.0;
+    points.push_back(dvec3(r * std::cos(a), r * std::sin(a), 0.0));
+    polygon.push_back(std::uint32_t(i));
+  }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  ASSERT_TRUE(
+      triangulatePolygon(points, polygon, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        triangles.push_back({a, b, c});
+      }));
+  ASSERT_EQ(triangles.size(), n - 2);
+  // The strip's start: the first corner's edge, then the last one's, in turn.
+  const std::uint32_t last = std::uint32_t(n - 1);
+  EXPECT_EQ(triangles[0], (std::array<std::uint32_t, 3>{0, 1, last}));
+  EXPECT_EQ(triangles[1], (std::array<std::uint32_t, 3>{1, last - 1, last}));
+  EXPECT_EQ(triangles[2], (std::array<std::uint32_t, 3>{1, 2, last - 1}));
 }
 
 // A convex cap (a 2 000-sided circle) becomes triangles that lie side by
