@@ -54,7 +54,16 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-bench: build
+# Manifold's WebAssembly build, the anchor of the export table, from the npm
+# registry into bench/manifold/node_modules (bench only: never run or test).
+MANIFOLD := bench/manifold/node_modules/manifold-3d/package.json
+$(MANIFOLD): bench/manifold/package.json
+	@command -v npm >/dev/null || \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends nodejs npm
+	cd bench/manifold && npm install --no-audit --no-fund --loglevel=error
+	@touch $@
+
+bench: build $(MANIFOLD)
 	bench/run.sh $(CSGRAY)
 
 # The fuzzers need clang and its sanitizer runtime (Debian: clang,

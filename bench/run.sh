@@ -90,6 +90,57 @@ for n in $export_sizes; do
     "$script" "$mesh" "$check" "$write" "${triangles:--}" "${booleans:--}" "$verdict"
 done
 
+# Export against Manifold (its WebAssembly build, bench/manifold/parts.mjs,
+# installed by `make bench`): the same geometry with csgray's segment counts,
+# written as a binary STL by both, whole process. The two commands alternate,
+# PAIRS times (default 5), and the medians are compared: on one core
+# (taskset) for every part, and on all cores for plate(32) (Manifold's
+# WebAssembly build runs on one either way).
+manifold=bench/manifold/parts.mjs
+if [ -d bench/manifold/node_modules/manifold-3d ] && command -v node >/dev/null; then
+  pairs=${PAIRS:-5}
+  one_core="taskset -c 0"
+  median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+  # time_of <command...>: wall seconds, or "failed"
+  time_of() {
+    local start=$EPOCHREALTIME
+    if "$@" >/dev/null 2>"$out/err"; then elapsed "$start"; else echo failed; fi
+  }
+  echo
+  echo "| export vs Manifold | cores | csgray median (s) | Manifold median (s) | csgray / Manifold | csgray valid |"
+  echo "|---|---:|---:|---:|---:|---|"
+  # part:parameter=value:script[:all]; the value goes to parts.mjs too.
+  rows="plate:n=8:bench/plate.lua plate:n=16:bench/plate.lua plate:n=32:bench/plate.lua
+        shaft_on_hub::bench/parts/shaft_on_hub.lua two_frustums::bench/parts/two_frustums.lua
+        frustum_stack::bench/parts/frustum_stack.lua vase:layers=40:bench/parts/vase.lua
+        rounded_box::examples/rounded_box.lua pixel_knob::bench/parts/pixel_knob.lua
+        knurled_knob::bench/parts/knurled_knob.lua plate:n=32:bench/plate.lua:all"
+  for row in $rows; do
+    IFS=: read -r name parameter script cores <<<"$row"
+    pin=$one_core
+    label=1
+    if [ "$cores" = all ]; then pin=""; label=$threads_all; fi
+    define=()
+    n=${parameter#*=}
+    [ -n "$parameter" ] && define=(-D "$parameter")
+    : >"$out/a"; : >"$out/b"
+    valid=yes
+    for ((r = 0; r < pairs; r++)); do
+      t=$(time_of $pin "$csgray" export "$script" "${define[@]}" -o "$out/part.stl")
+      [ "$t" = failed ] && valid="no: $(tail -1 "$out/err")" || echo "$t" >>"$out/a"
+      t=$(time_of $pin node "$manifold" "$name" $n -o "$out/manifold.stl")
+      [ "$t" = failed ] || echo "$t" >>"$out/b"
+    done
+    a=$(median <"$out/a"); b=$(median <"$out/b")
+    ratio=$(awk -v a="$a" -v b="$b" 'BEGIN {if (a == "" || b == "") print "-"; else printf "%.2f", a / b}')
+    printf '| %s%s | %s | %s | %s | %s | %s |\n' "$name" "${n:+($n)}" "$label" "${a:--}" "${b:--}" \
+      "$ratio" "$valid"
+  done
+else
+  echo
+  echo "(export vs Manifold left out: make bench installs manifold-3d into bench/manifold)"
+fi
+
 # csgray check: plate(N)'s export held against the exact model at the
 # default settings (100 000 points, three 128² ray grids); wall time
 # includes making the export in memory.

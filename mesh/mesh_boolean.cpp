@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <tuple>
 #include <chrono>
 #include <stdexcept>
 #include <unordered_map>
@@ -28,6 +29,10 @@ using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 using RoundedMesh = CGAL::Surface_mesh<Inexact::Point_3>;
 
 constexpr const char* kTag = "f:material";
+// How far operands that touch are moved to resolve the contact, in
+// tolerances: far above the rounding of a file's floats at a part's size
+// (7.6·10⁻⁶ at 100 mm), far below what a printer makes.
+constexpr double kContactOffset = 0.01;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
@@ -107,6 +112,128 @@ struct EvaluationFrame {
   }
 };
 
+// A vertex's point, rounded to doubles.
+template <class Mesh>
+dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
+  const auto& p = mesh.point(v);
+  return dvec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// How a vertex moves so that each of its faces moves by `delta` along its
+// normal (outwards for delta > 0): the displacement v solves n·v = delta
+// for the unit normals n of its faces in the least-squares sense,
+// (Σ n nᵀ + εI) v = delta Σ n. At a box's corner that is the exact offset
+// delta·(±1, ±1, ±1); where the faces are nearly parallel (a smooth
+// surface) it is delta along their normal, and ε keeps the vertex of an
+// edge (two planes) from sliding along it. A vertex whose faces fold back
+// on themselves moves ten times delta at most.
+template <class Mesh>
+dvec3 vertexOffset(const Mesh& mesh, typename Mesh::Vertex_index v, double delta) {
+  glm::dmat3 normalMatrix(0.0);
+  dvec3 sum(0.0);
+  for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+    if (f == Mesh::null_face()) continue;
+    auto h = mesh.halfedge(f);
+    const dvec3 a = pointOf(mesh, mesh.source(h)), b = pointOf(mesh, mesh.target(h)),
+                c = pointOf(mesh, mesh.target(mesh.next(h)));
+    dvec3 n = glm::cross(b - a, c - a);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) continue;
+    n /= length;
+    normalMatrix += glm::outerProduct(n, n);
+    sum += n;
+  }
+  if (sum == dvec3(0.0)) return dvec3(0.0);
+  const double trace = normalMatrix[0][0] + normalMatrix[1][1] + normalMatrix[2][2];
+  normalMatrix += glm::dmat3(1e-6 * trace);
+  dvec3 shift = glm::inverse(normalMatrix) * (delta * sum);
+  const double reach = glm::length(shift);
+  if (!(reach <= 10.0 * std::abs(delta))) shift *= 10.0 * std::abs(delta) / reach;
+  return shift;
+}
+
+// Every face of a closed mesh moved by delta along its normal (vertexOffset).
+template <class Mesh>
+void offsetMesh(Mesh& mesh, double delta) {
+  std::vector<dvec3> moved;
+  moved.reserve(mesh.number_of_vertices());
+  for (auto v : mesh.vertices()) moved.push_back(pointOf(mesh, v) + vertexOffset(mesh, v, delta));
+  std::size_t k = 0;
+  for (auto v : mesh.vertices()) {
+    const dvec3& q = moved[k++];
+    mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
+  }
+}
+
+// Where solids touch at a point, CGAL's boolean keeps the mesh a 2-manifold
+// by giving each of them a vertex of its own there, at one place, which the
+// validity check rightly finds touching. Each such vertex is moved by delta
+// into its own solid, so that the contact becomes a gap of about 2·delta.
+// Returns how many were moved.
+template <class Mesh>
+std::size_t separateCoincidentVertices(Mesh& mesh, double delta) {
+  std::vector<std::pair<dvec3, typename Mesh::Vertex_index>> order;
+  order.reserve(mesh.number_of_vertices());
+  for (auto v : mesh.vertices()) order.emplace_back(pointOf(mesh, v), v);
+  auto less = [](const auto& a, const auto& b) {
+    return std::tie(a.first.x, a.first.y, a.first.z) < std::tie(b.first.x, b.first.y, b.first.z);
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<std::pair<typename Mesh::Vertex_index, dvec3>> moved;
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && order[j].first == order[i].first) ++j;
+    if (j - i > 1)
+      for (std::size_t k = i; k < j; ++k)
+        moved.emplace_back(order[k].second,
+                           order[k].first + vertexOffset(mesh, order[k].second, -delta));
+    i = j;
+  }
+  for (auto& [v, q] : moved) mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
+  return moved.size();
+}
+
+// A solid as `csgray check` names it: its kind and the script line that
+// made it.
+std::string describe(const Solid* solid) {
+  if (solid == nullptr) return "an operand";
+  const std::string line = solid->origin().text();
+  return line.empty() ? solid->kind() : solid->kind() + " (" + line + ")";
+}
+
+// The primitives of the part whose boxes (grown by the tolerance) hold p,
+// the first four by their script lines: who to look at when the mesh
+// fails near p.
+std::string primitivesNear(const Solid& solid, const dvec3& p, double tolerance) {
+  std::vector<std::string> names;
+  std::size_t count = 0;
+  std::vector<const Solid*> pending = {&solid};
+  while (!pending.empty()) {
+    const Solid* s = pending.back();
+    pending.pop_back();
+    const Bounds b = s->bounds();
+    if (b.empty() || !Bounds{b.lo - dvec3(tolerance), b.hi + dvec3(tolerance)}.contains(p))
+      continue;
+    if (dynamic_cast<const Primitive*>(s) == nullptr) {
+      for (const SolidPtr& child : s->children()) pending.push_back(child.get());
+      continue;
+    }
+    if (++count <= 4) names.push_back(describe(s));
+  }
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  if (count > names.size()) text += " (" + std::to_string(count - names.size()) + " more)";
+  return text;
+}
+
+// The point a defect of meshDefect names: its last "(x, y, z)".
+bool defectPoint(const std::string& defect, dvec3& p) {
+  const std::size_t open = defect.rfind('(');
+  return open != std::string::npos &&
+         std::sscanf(defect.c_str() + open, "(%lf, %lf, %lf)", &p.x, &p.y, &p.z) == 3;
+}
+
 // Evaluates the tree with exact constructions (Epeck): a corefinement's new
 // points are exact, so the next boolean in a chain sees them where they
 // are (CGAL's manual, PMP, "Corefinement and Boolean Operations": with
@@ -124,6 +251,7 @@ class Evaluator {
   struct Piece {
     Mesh mesh;
     Bounds box;
+    const Solid* origin = nullptr;  // the primitive or boolean it was made by
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
@@ -136,7 +264,18 @@ class Evaluator {
   Piece evaluate(const Solid& solid, const Bounds& outer) {
     const Bounds region = outer.intersected(frame_.evalBounds(solid.bounds()));
     if (region.empty()) return {};
-    if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) return leaf(*primitive, region);
+    if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) {
+      Piece piece = leaf(*primitive, region);
+      piece.origin = &solid;
+      return piece;
+    }
+    Piece piece = combine(solid, region);
+    if (piece.origin != nullptr) piece.origin = &solid;
+    return piece;
+  }
+
+  // The pieces of a boolean's operands, combined.
+  Piece combine(const Solid& solid, const Bounds& region) {
     auto* node = dynamic_cast<const Boolean*>(&solid);
     if (!node) throw std::logic_error("meshOfSolid: unknown solid " + solid.kind());
     std::span<const SolidPtr> operands = node->children();
@@ -282,37 +421,64 @@ class Evaluator {
       std::swap(a, b);
     tagsOf(a.mesh);
     tagsOf(b.mesh);
-    TagVisitor<Mesh> visitor;
-    auto np = CGAL::parameters::visitor(visitor);
-    bool ok = false;
-    const char* name = "";
+    if (booleanOf(a, b, op)) return boxAfter(a);
+    // CGAL cannot make a 2-manifold: the operands touch along an edge (or
+    // in a pattern of them). The contact is resolved as a perturbation
+    // would: a union's operands and a difference's cutter grow by a small
+    // part of the tolerance, so that touching operands of a union are
+    // joined by a thin bridge and a cut whose pieces touch goes through,
+    // leaving the minuend's parts apart; an intersection's second operand
+    // shrinks, so that a contact leaves nothing. (docs/cli.md, "Contacts")
+    // (A corefinement that fails leaves both meshes corefined: each still
+    // bounds its operand.)
+    ++stats_.contacts;
+    const double delta = kContactOffset * tolerance_;
+    if (op == Boolean::Op::Union) offsetMesh(a.mesh, delta);
+    offsetMesh(b.mesh, op == Boolean::Op::Intersection ? -delta : delta);
+    if (booleanOf(a, b, op)) return boxAfter(a);
+    const Bounds where = a.box.intersected(b.box);
+    char at[200];
+    std::snprintf(at, sizeof at, " near (%g, %g, %g)", 0.5 * (where.lo.x + where.hi.x),
+                  0.5 * (where.lo.y + where.hi.y), 0.5 * (where.lo.z + where.hi.z));
+    throw std::runtime_error(std::string("the ") + opName(op) + " of " + describe(a.origin) +
+                             " and " + describe(b.origin) + at +
+                             " is not a 2-manifold, even with their contact resolved");
+  }
+
+  static const char* opName(Boolean::Op op) {
     switch (op) {
-      case Boolean::Op::Union:
-        ok = PMP::corefine_and_compute_union(a.mesh, b.mesh, a.mesh, np);
-        name = "union";
-        break;
-      case Boolean::Op::Intersection:
-        ok = PMP::corefine_and_compute_intersection(a.mesh, b.mesh, a.mesh, np);
-        name = "intersection";
-        break;
-      case Boolean::Op::Difference:
-        ok = PMP::corefine_and_compute_difference(a.mesh, b.mesh, a.mesh, np);
-        name = "difference";
-        break;
+      case Boolean::Op::Union: return "union";
+      case Boolean::Op::Intersection: return "intersection";
+      case Boolean::Op::Difference: return "difference";
     }
-    if (!ok) {
-      Bounds where = a.box.intersected(b.box);
-      char at[160];
-      std::snprintf(at, sizeof at, "(%g, %g, %g)..(%g, %g, %g)", where.lo.x, where.lo.y, where.lo.z,
-                    where.hi.x, where.hi.y, where.hi.z);
-      throw std::runtime_error(std::string("the ") + name + " of two operands within " + at +
-                               " is not a 2-manifold: they touch along an edge or at a point; "
-                               "move one a little, or let them overlap");
-    }
+    return "";
+  }
+
+  void boxAfter(Piece& a) {
     CGAL::Bbox_3 box = PMP::bbox(a.mesh);
     a.box = a.empty() ? Bounds{}
                       : Bounds{dvec3(box.xmin(), box.ymin(), box.zmin()),
                                dvec3(box.xmax(), box.ymax(), box.zmax())};
+  }
+
+  // a = a op b by CGAL's corefinement; false when the result would not be
+  // a 2-manifold (the meshes are then corefined, not combined).
+  static bool booleanOf(Piece& a, Piece& b, Boolean::Op op) {
+    TagVisitor<Mesh> visitor;
+    auto np = CGAL::parameters::visitor(visitor);
+    bool ok = false;
+    switch (op) {
+      case Boolean::Op::Union:
+        ok = PMP::corefine_and_compute_union(a.mesh, b.mesh, a.mesh, np);
+        break;
+      case Boolean::Op::Intersection:
+        ok = PMP::corefine_and_compute_intersection(a.mesh, b.mesh, a.mesh, np);
+        break;
+      case Boolean::Op::Difference:
+        ok = PMP::corefine_and_compute_difference(a.mesh, b.mesh, a.mesh, np);
+        break;
+    }
+    return ok;
   }
 
   double tolerance_;
@@ -409,6 +575,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // them lose their area. CGAL collapses such edges and flips such faces
   // away without moving any other point.
   PMP::remove_degenerate_faces(rounded);
+  counts.contacts += separateCoincidentVertices(rounded, kContactOffset * tolerance) > 0;
   PartMesh part = partOf(rounded, evaluator.materials);
 
   const auto start = std::chrono::steady_clock::now();
@@ -424,6 +591,13 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
     // within a hundredth of the tolerance of the faces it replaces, or the
     // crossing stays and the export fails.
     ++counts.repairs;
+    PMP::experimental::remove_almost_degenerate_faces(
+        rounded, -0.9999, 1e3, 0.01 * tolerance,
+        CGAL::parameters::flip_triangle_height_threshold(0.01 * tolerance));
+    PMP::remove_degenerate_faces(rounded);
+    part = partOf(rounded, evaluator.materials);
+    defect = meshDefect(part.mesh);
+    if (!defect.empty())
     PMP::experimental::remove_self_intersections(
         rounded, CGAL::parameters::polyhedral_envelope_epsilon(0.01 * tolerance));
     PMP::remove_degenerate_faces(rounded);
@@ -432,7 +606,13 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   }
   counts.checkSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!defect.empty()) throw std::runtime_error("the mesh would not be printable: " + defect);
+  if (!defect.empty()) {
+    dvec3 at;
+    std::string near;
+    if (defectPoint(defect, at)) near = primitivesNear(solid, at, tolerance);
+    throw std::runtime_error("the mesh would not be printable: " + defect +
+                             (near.empty() ? "" : ", made by " + near));
+  }
   return part;
 }
 

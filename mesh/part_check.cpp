@@ -11,6 +11,7 @@
 #include <glm/matrix.hpp>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "mesh/mesh_validity.h"
 #include "mesh/mesh_writer.h"
 #include "modeler/boolean.h"
+#include "modeler/mesh_shells.h"
 #include "modeler/primitive.h"
 
 namespace csgray {
@@ -649,12 +651,21 @@ class Checker {
       }
       scanOperands(operand, ray, tally);
     }
+    // Operands of a union that share a face or stand on one another are
+    // ordinary modelling, which the export joins: only a difference's or
+    // an intersection's faces that coincide change what the part is.
+    // Cutters of a difference that meet each other only make one larger
+    // cutter; what matters is where they meet what they cut.
+    auto* boolean = dynamic_cast<const Boolean*>(&node);
+    if (boolean && boolean->op() == Boolean::Op::Union) return;
+    const bool difference = boolean && boolean->op() == Boolean::Op::Difference;
     std::sort(marks.begin(), marks.end(), [](const Mark& a, const Mark& b) { return a.t < b.t; });
     for (std::size_t a = 0; a < marks.size(); ++a)
       for (std::size_t b = a + 1; b < marks.size() && marks[b].t - marks[a].t <= epsilon_; ++b) {
         const Mark& m = marks[a];
         const Mark& n = marks[b];
         if (m.operand == n.operand) continue;
+        if (difference && m.operand != 0 && n.operand != 0) continue;
         const dvec3 at = ray.at(m.t);
         // Outside the part's box the part is empty all around: faces that
         // meet there (the ends of cutters that reach past it) shape nothing.
@@ -775,6 +786,38 @@ void classify(const Solid& solid, const MeshProbe& probe, const Checker& checker
   }
 }
 
+// The pieces a part is meant to be: a union's operands (unions within it
+// looked through) joined where their boxes overlap; any other solid is one.
+std::size_t modelPieces(const Solid& solid) {
+  std::vector<Bounds> boxes;
+  std::vector<const Solid*> pending = {&solid};
+  while (!pending.empty()) {
+    const Solid* s = pending.back();
+    pending.pop_back();
+    auto* node = dynamic_cast<const Boolean*>(s);
+    if (node && node->op() == Boolean::Op::Union) {
+      for (const SolidPtr& child : node->children()) pending.push_back(child.get());
+    } else if (!s->bounds().empty()) {
+      boxes.push_back(s->bounds());
+    }
+  }
+  // Groups of overlapping boxes, by union-find.
+  std::vector<std::size_t> parent(boxes.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto root = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t pieces = boxes.size();
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]) && root(i) != root(j)) {
+        parent[root(j)] = root(i);
+        --pieces;
+      }
+  return std::max<std::size_t>(pieces, 1);
+}
+
 }  // namespace
 
 CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
@@ -798,6 +841,9 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     return report;
   }
   report.meshDefect = meshDefect(mesh);
+  const MeshShells shells = meshShells(mesh);
+  report.shells = shells.count;
+  report.modelPieces = modelPieces(solid);
   solid.prepare();
   const MeshProbe probe(mesh);
   report.meshVolume = probe.volume();
@@ -844,6 +890,17 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     m << what << " " << s->thickness << " thick at " << format(s->location) << ", under " << limit;
     report.warnings.push_back({kind, m.str(), s->location, 1});
   };
+  if (report.shells > report.modelPieces) {
+    const ShellApproach near = nearestShells(mesh, shells);
+    std::ostringstream m;
+    m << "the export falls into " << report.shells << " separate shells, more than the "
+      << report.modelPieces << " piece" << (report.modelPieces == 1 ? "" : "s")
+      << " the model is made of: two come within " << near.distance << " of each other at "
+      << format(0.5 * (near.a + near.b))
+      << ": a cut goes through there, or the model's pieces meet in an edge or a point";
+    report.warnings.insert(report.warnings.begin(),
+                           {"separate shells", m.str(), 0.5 * (near.a + near.b), 1});
+  }
   thin(report.thinnestWall, options.minWall, "thin wall", "a wall");
   thin(report.narrowestGap, options.minGap, "narrow gap", "a gap");
   return report;

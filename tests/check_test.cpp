@@ -455,7 +455,7 @@ TEST(Check, WarningsTellCallsOfOneFunctionApart) {
       "end\n"
       "local left = block(0)\n"
       "local right = block(10)\n"  // touches left along x = 10
-      "return left + right\n");
+      "return left - right\n");
   const CheckReport report = checkPart(*scene.objects[0], quick());
   ASSERT_TRUE(hasWarning(report, "touching faces")) << checkReportText(report, "part");
   EXPECT_NE(report.warnings.front().message.find(
@@ -466,16 +466,21 @@ TEST(Check, WarningsTellCallsOfOneFunctionApart) {
 }
 
 TEST(Check, TwentyBooleanWarningsAreListedAndTheRestCounted) {
-  // 24 cubes in a row, each made on its own line: 23 pairs touch.
-  std::string source = "local cubes = {}\n";
+  // A bar cut by 24 notches, each made on its own line and flush with its
+  // top: 24 pairs of script lines share a face.
+  std::string source = "local notches = {}\n";
   for (int i = 0; i < 24; ++i)
-    source += "cubes[" + std::to_string(i + 1) + "] = box(1):translate(" + std::to_string(i) +
-              ", 0, 0)\n";
-  source += "return union(cubes)\n";
+    source += "notches[" + std::to_string(i + 1) + "] = box{size={0.5, 2, 0.5}}:translate(" +
+              std::to_string(i) + ".25, -0.5, 0.5)\n";
+  source += "return difference(box{size={24, 1, 1}}, notches)\n";
   const CheckReport report = checkPart(*script(source).objects[0], quick());
-  EXPECT_EQ(report.warnings.size(), 20u) << checkReportText(report, "row");
-  EXPECT_EQ(report.warningsLeftOut, 3u);
-  EXPECT_NE(checkReportText(report, "row").find("(3 more warnings of coinciding faces left out)"),
+  // (The notches' 0.5 walls add a thin-wall warning after the twenty.)
+  EXPECT_EQ(std::count_if(report.warnings.begin(), report.warnings.end(),
+                          [](const CheckWarning& w) { return w.kind == "coincident faces"; }),
+            20)
+      << checkReportText(report, "row");
+  EXPECT_EQ(report.warningsLeftOut, 4u);
+  EXPECT_NE(checkReportText(report, "row").find("(4 more warnings of coinciding faces left out)"),
             std::string::npos);
 }
 
@@ -502,12 +507,45 @@ TEST(Check, CuttersThatShareFacesOutsideThePartDoNotWarn) {
   EXPECT_TRUE(report.warnings.empty()) << checkReportText(report, "slot");
 }
 
-TEST(Check, BoxesStackedFaceToFaceTouch) {
+TEST(Check, BoxesStackedFaceToFaceInAUnionAreOrdinaryModelling) {
   const Scene scene = script("return box(10) + box(10):translate(0, 0, 10)\n");
   const CheckReport report = checkPart(*scene.objects[0], quick());
   EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+  EXPECT_TRUE(report.warnings.empty()) << checkReportText(report, "part");
+  EXPECT_EQ(report.shells, 1u);
+}
+
+TEST(Check, ABoxLessABoxThatTouchesItWarns) {
+  // The cutter stands on the block's top face: it cuts nothing, and leaves
+  // a face of no thickness in the difference.
+  const Scene scene = script("return box(10) - box(10):translate(0, 0, 10)\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
   EXPECT_TRUE(hasWarning(report, "touching faces")) << checkReportText(report, "part");
-  EXPECT_FALSE(hasWarning(report, "coincident faces")) << checkReportText(report, "part");
+}
+
+TEST(Check, ASlotThatCutsThePartInTwoIsWarnedOf) {
+  // The slot reaches through the base: two shells where the model is one
+  // object, and the warning says where the cut is.
+  const Scene scene = script(
+      "local base = box{size={20, 10, 4}}\n"
+      "local slot = box{size={0.16, 12, 6}}:translate(10, -1, -1)\n"
+      "return base - slot\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_EQ(report.shells, 2u) << checkReportText(report, "part");
+  EXPECT_EQ(report.modelPieces, 1u);
+  ASSERT_TRUE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
+  const CheckWarning& w = report.warnings.front();
+  EXPECT_NEAR(w.location.x, 10.08, 1e-6) << w.message;
+  EXPECT_NE(w.message.find("within 0.16 of each other"), std::string::npos) << w.message;
+}
+
+TEST(Check, PartsApartInAUnionAreNotACut) {
+  const Scene scene = script("return box(10) + box(10):translate(20, 0, 0)\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_EQ(report.shells, 2u);
+  EXPECT_EQ(report.modelPieces, 2u);
+  EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
 }
 
 TEST(Check, ThinWallsAndNarrowGapsAreMeasured) {

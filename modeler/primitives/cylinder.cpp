@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "modeler/primitives/check.h"
+#include "modeler/polygon_triangulation.h"
 #include "modeler/quadratic.h"
 #include "modeler/tessellation.h"
 
@@ -73,16 +74,22 @@ Bounds Cylinder::objectBounds() const {
   return {dvec3(-r, -r, 0.0), dvec3(r, r, height_)};
 }
 
-// The profile axis → bottom rim → top rim → axis, turned: the caps are fans
-// about their centres and a cone's apex is a pole. Every cross-section of
-// the side is a regular n-gon about a circle of radius ρ(z), and the caps
-// are the end sections, so the whole error is that of the n-gon: placed
-// with its vertices a factor k = 2/(1 + cos(π/n)) out, its vertices lie
-// ρ(1 − c)/(1 + c) outside the circle and its edge midpoints as far inside
-// (c = cos(π/n); the minimax placement, as for the sphere), which needs
-// √2 fewer segments than an inscribed polygon: ρ(1 − c)/(1 + c) ≤ t is an
-// inscribed sagitta ρ(1 − c) of at most 2ρt/(ρ + t). The caps and the
-// generators stay exact.
+// Two rims of `segments` points (one point where a radius is 0, a cone's
+// apex), the side between them, and each rim's disc as a cap. Every
+// cross-section of the side is a regular n-gon about a circle of radius
+// ρ(z), and the caps are the end sections, so the whole error is that of
+// the n-gon: placed with its vertices a factor k = 2/(1 + cos(π/n)) out,
+// its vertices lie ρ(1 − c)/(1 + c) outside the circle and its edge
+// midpoints as far inside (c = cos(π/n); the minimax placement, as for the
+// sphere), which needs √2 fewer segments than an inscribed polygon:
+// ρ(1 − c)/(1 + c) ≤ t is an inscribed sagitta ρ(1 − c) of at most
+// 2ρt/(ρ + t). The caps and the generators stay exact.
+//
+// A cap is cut as a zig-zag strip, not as a fan about its centre: a fan's
+// triangles all meet at the centre, so two cylinders stacked face to face
+// put every triangle of one cap against every triangle of the other, and
+// CGAL's corefinement of such coplanar fans grows as n⁴ (a shaft on a hub,
+// r = 30: 40 s; as strips each triangle meets a few; docs/performance.md).
 //
 // The rim points are then moved in or out by at most a part in 10⁹ of the
 // radius, differently at each step, so that no four of them lie on one
@@ -100,24 +107,53 @@ TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
   // The shift is of the pushed-out radius, at most 2/(1 + cos(π/8)) < 2 r.
   const double error = tolerance - 2.0 * shift * r;
   const int segments = arcSegments(r, 2.0 * std::numbers::pi, 2.0 * r * error / (r + error));
-  requireTriangleBudget(kind(), revolvedTriangles(3, segments), tolerance);
+  requireTriangleBudget(kind(), 4.0 * segments, tolerance);
   const double out = 2.0 / (1.0 + std::cos(std::numbers::pi / segments));
-  std::vector<glm::dvec2> profile = {{0.0, 0.0}};
-  if (r1_ > 0.0) profile.emplace_back(r1_ * out, 0.0);
-  if (r2_ > 0.0) profile.emplace_back(r2_ * out, height_);
-  profile.emplace_back(0.0, height_);
-  TriangleMesh mesh = revolveProfile(profile, segments, false);
-  // revolveProfile lays out each rim as `segments` points from step 0; the
-  // same factor at a step on both rims keeps each side quad on its plane.
-  for (dvec3& p : mesh.points) {
-    if (p.x == 0.0 && p.y == 0.0) continue;
-    double angle = std::atan2(p.y, p.x);
-    if (angle < 0.0) angle += 2.0 * std::numbers::pi;
-    const auto step =
-        unsigned(std::lround(angle / (2.0 * std::numbers::pi) * segments)) % unsigned(segments);
-    const double factor = 1.0 + shift * (double((step * 7919u) % 17u) - 8.0) / 8.0;
-    p.x *= factor;
-    p.y *= factor;
+  const auto n = std::uint32_t(segments);
+  TriangleMesh mesh;
+  // Rim k (0 bottom, 1 top): its first vertex; a rim of radius 0 is one.
+  std::uint32_t first[2];
+  const double radius[2] = {r1_, r2_}, z[2] = {0.0, height_};
+  for (int k = 0; k < 2; ++k) {
+    first[k] = std::uint32_t(mesh.points.size());
+    if (radius[k] == 0.0) {
+      mesh.points.emplace_back(0.0, 0.0, z[k]);
+      continue;
+    }
+    for (std::uint32_t s = 0; s < n; ++s) {
+      const double theta = 2.0 * std::numbers::pi * s / segments;
+      // The same factor at a step on both rims keeps each side quad planar.
+      const double factor = 1.0 + shift * (double((s * 7919u) % 17u) - 8.0) / 8.0;
+      const double rho = radius[k] * out * factor;
+      mesh.points.emplace_back(rho * std::cos(theta), rho * std::sin(theta), z[k]);
+    }
+  }
+  auto vertex = [&](int k, std::uint32_t s) {
+    return radius[k] == 0.0 ? first[k] : first[k] + s % n;
+  };
+  // The side: the quad a b c d, a → b along the bottom rim (θ growing),
+  // then up; (b − a) × (d − a) points out.
+  for (std::uint32_t s = 0; s < n; ++s) {
+    const std::uint32_t a = vertex(0, s), b = vertex(0, s + 1);
+    const std::uint32_t c = vertex(1, s + 1), d = vertex(1, s);
+    if (a != b) mesh.triangles.push_back({a, b, c});
+    if (c != d) mesh.triangles.push_back({a, c, d});
+  }
+  // The caps: the top counter-clockwise seen from above; the bottom is the
+  // same strip reversed, so that a cylinder standing on another's top face
+  // meets it triangle for triangle.
+  std::vector<std::uint32_t> ring(n);
+  auto addTriangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    mesh.triangles.push_back({a, b, c});
+  };
+  for (int k = 0; k < 2; ++k) {
+    if (radius[k] == 0.0) continue;
+    for (std::uint32_t s = 0; s < n; ++s) ring[s] = first[k] + s;
+    const std::size_t before = mesh.triangles.size();
+    triangulatePolygon(mesh.points, ring, addTriangle);
+    if (k == 0)
+      for (std::size_t t = before; t < mesh.triangles.size(); ++t)
+        std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
   }
   return mesh;
 }

@@ -1,0 +1,140 @@
+// The parts of bench/export_parts/*.lua built with Manifold's WebAssembly
+// build (the npm package manifold-3d), with csgray's segment counts at the
+// same chord tolerance, and written as a binary STL: the anchor of the
+// export table in `make bench`.
+//   node bench/manifold/parts.mjs <part> [n] -o out.stl
+import Module from 'manifold-3d';
+import {writeFileSync} from 'node:fs';
+
+const wasm = await Module();
+wasm.setup();
+const {Manifold, CrossSection} = wasm;
+const tolerance = 0.01;
+
+// csgray's segment counts (modeler/tessellation.cpp arcSegments and the
+// primitives' objectTessellate).
+function arcSegments(radius, angle, tol, min = 8) {
+  if (!(radius > tol)) return min;
+  const step = 2 * Math.acos(1 - tol / radius);
+  return Math.max(min, Math.ceil(angle / step));
+}
+function cylinderSegments(r) {
+  const shift = tolerance > 4e-9 * r ? 1e-9 : 0;
+  const e = tolerance - 2 * shift * r;
+  return arcSegments(r, 2 * Math.PI, 2 * r * e / (r + e));
+}
+// csgray's geodesic sphere has 20 f² triangles, Manifold's n²/2: n = √40 f,
+// a multiple of 4; f as csgray first tries it (within one refinement).
+function sphereSegments(r) {
+  const edge = Math.sqrt(12 * r * Math.min(tolerance, r));
+  const f = Math.max(2, Math.ceil(1.1071 * r / edge));
+  return 4 * Math.round(Math.sqrt(40) * f / 4);
+}
+// Minimax placement as csgray's: vertices k = 2/(1 + cos(π/n)) out.
+const out = n => 2 / (1 + Math.cos(Math.PI / n));
+function cylinder(r1, r2, h) {
+  const n = cylinderSegments(Math.max(r1, r2));
+  return Manifold.cylinder(h, r1 * out(n), r2 * out(n), n);
+}
+function sphere(r) { return Manifold.sphere(r, sphereSegments(r)); }
+function torus(R, r) {
+  const segments = arcSegments(R + r, 2 * Math.PI, tolerance / 2);
+  const chords = arcSegments(r, 2 * Math.PI, tolerance / 2, 8);
+  return CrossSection.circle(r, chords).translate([R, 0]).revolve(segments);
+}
+const box = (x, y, z) => Manifold.cube([x, y, z]);
+
+const parts = {
+  plate(n = 8) {
+    const p = 100 / n, spheres = [], holes = [];
+    for (let i = 0; i < n; ++i)
+      for (let j = 0; j < n; ++j) {
+        const x = p / 2 + i * p, y = p / 2 + j * p;
+        spheres.push(sphere(0.32 * p).translate([x, y, 10]));
+        holes.push(cylinder(0.2 * p, 0.2 * p, 20).translate([x, y, -1]));
+      }
+    return Manifold.union([box(100, 100, 10), ...spheres]).subtract(Manifold.union(holes));
+  },
+  shaft_on_hub() {
+    return cylinder(30, 30, 30).add(cylinder(30, 30, 30).translate([0, 0, 30]));
+  },
+  two_frustums() {
+    return cylinder(30, 25, 10).add(cylinder(25, 28, 10).translate([0, 0, 10]));
+  },
+  frustum_stack() {
+    return Manifold.union(frustums(40, 0, 0));
+  },
+  vase() {
+    const outer = Manifold.union(frustums(40, 0, 0));
+    const inner = Manifold.union(frustums(40, 2, 2));
+    return outer.subtract(inner).add(torus(radius(40) - 1, 1).translate([0, 0, 80]));
+  },
+  rounded_box() {
+    const [x, y, z, r] = [40, 30, 20, 3];
+    const list = [box(x, y - 2 * r, z - 2 * r).translate([0, r, r]),
+                  box(x - 2 * r, y, z - 2 * r).translate([r, 0, r]),
+                  box(x - 2 * r, y - 2 * r, z).translate([r, r, 0])];
+    for (const cx of [r, x - r]) for (const cy of [r, y - r]) for (const cz of [r, z - r])
+      list.push(sphere(r).translate([cx, cy, cz]));
+    for (const cy of [r, y - r]) for (const cz of [r, z - r])
+      list.push(cylinder(r, r, x - 2 * r).rotate([0, 90, 0]).translate([r, cy, cz]));
+    for (const cx of [r, x - r]) for (const cz of [r, z - r])
+      list.push(cylinder(r, r, y - 2 * r).rotate([-90, 0, 0]).translate([cx, r, cz]));
+    for (const cx of [r, x - r]) for (const cy of [r, y - r])
+      list.push(cylinder(r, r, z - 2 * r).translate([cx, cy, r]));
+    return Manifold.union(list);
+  },
+  pixel_knob() {
+    const glyph = ['X...X', 'XX..X', 'X.X.X', 'X..XX', 'X...X'], p = 2, pixels = [];
+    glyph.forEach((line, row) => [...line].forEach((c, col) => {
+      if (c === 'X') pixels.push(box(p, p, 2).translate([(col - 2.5) * p, (2.5 - row) * p - p, 9]));
+    }));
+    return cylinder(15, 15, 10).subtract(Manifold.union(pixels));
+  },
+  knurled_knob() {
+    const [R, H, f] = [15, 12, 2];
+    const body = Manifold.union([cylinder(R, R, H - f), cylinder(R - f, R - f, H),
+                                 torus(R - f, f).translate([0, 0, H - f])]);
+    const grooves = [];
+    for (let i = 0; i < 24; ++i)
+      grooves.push(cylinder(0.6, 0.6, H - f).translate([R, 0, 0]).rotate([0, 0, i * 15]));
+    return body.subtract(Manifold.union(grooves));
+  },
+};
+function radius(i) { return 20 + 6 * Math.sin(i * 0.25); }
+function frustums(n, inset, lift) {
+  const list = [];
+  for (let i = 0; i < n; ++i)
+    list.push(cylinder(radius(i) - inset, radius(i + 1) - inset, 2).translate([0, 0, 2 * i + lift]));
+  return list;
+}
+
+// A binary STL of the mesh.
+function writeStl(path, mesh) {
+  const tris = mesh.numTri, buf = Buffer.alloc(84 + 50 * tris);
+  buf.writeUInt32LE(tris, 80);
+  const v = (k, a) => mesh.vertProperties[mesh.numProp * mesh.triVerts[3 * k + a]];
+  for (let t = 0, o = 84; t < tris; ++t, o += 50)
+    for (let a = 0; a < 3; ++a)
+      for (let c = 0; c < 3; ++c)
+        buf.writeFloatLE(mesh.vertProperties[mesh.numProp * mesh.triVerts[3 * t + a] + c],
+                         o + 12 + 12 * a + 4 * c);
+  writeFileSync(path, buf);
+}
+
+const args = process.argv.slice(2);
+const outIndex = args.indexOf('-o');
+const path = outIndex >= 0 ? args.splice(outIndex, 2)[1] : null;
+const [name, n] = args;
+if (!parts[name]) {
+  console.error(`manifold parts: unknown part ${name}; one of ${Object.keys(parts).join(', ')}`);
+  process.exit(2);
+}
+const part = n ? parts[name](Number(n)) : parts[name]();
+const mesh = part.getMesh();
+if (part.status() !== 'NoError') {
+  console.error(`manifold parts: ${name}: ${part.status()}`);
+  process.exit(1);
+}
+if (path) writeStl(path, mesh);
+console.log(`${name}: ${mesh.numTri} triangles, volume ${part.volume().toFixed(3)}`);

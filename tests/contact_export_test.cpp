@@ -1,0 +1,192 @@
+// Parts whose solids touch at a point, along an edge or over a face, or
+// meet tangentially, export at the default tolerance to meshes that are
+// closed, 2-manifold, outward and free of self-intersections, that pass
+// csgray check, and whose volumes agree with the exact ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "check_support.h"
+#include "mesh/mesh_boolean.h"
+#include "mesh/mesh_validity.h"
+#include "modeler/boolean.h"
+#include "modeler/mesh_shells.h"
+#include "modeler/script/script.h"
+#include "test_support.h"
+
+namespace csgray {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTolerance = 0.01;
+
+SolidPtr part(const std::string& source) {
+  const Scene scene = runScript(source, "part.lua", test::exampleOptions());
+  return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
+}
+
+// Exports at the default tolerance, expects a valid mesh within
+// `volumeSlack` of `volume` (the chord error is within tolerance × area),
+// and the check; returns the mesh.
+// The export at the default tolerance, or nothing (and a failure) when
+// meshOfSolid refuses it.
+std::optional<TriangleMesh> exported(const Solid& solid) {
+  try {
+    return meshOfSolid(solid, kTolerance).mesh;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not exported: " << e.what();
+    return std::nullopt;
+  }
+}
+
+TriangleMesh exportsValid(const std::string& source, double volume, double volumeSlack) {
+  SCOPED_TRACE(source);
+  const SolidPtr solid = part(source);
+  const std::optional<TriangleMesh> made = exported(*solid);
+  if (!made) return {};
+  const TriangleMesh& mesh = *made;
+  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_NEAR(mesh.volume(), volume, volumeSlack);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  return mesh;
+}
+
+// ---- Face to face ------------------------------------------------------------
+
+TEST(ContactExport, StackedBoxesAreOneShell) {
+  const TriangleMesh mesh =
+      exportsValid("return box(10) + box(10):translate(0, 0, 10)", 2000.0, 1e-9);
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+}
+
+TEST(ContactExport, CylindersStackedFaceToFace) {
+  // A shaft on a hub: r = 30, 60 high; the minimax polygon's area is within
+  // tolerance × perimeter of the circle's.
+  const double exact = kPi * 30 * 30 * 60;
+  const TriangleMesh mesh = exportsValid(
+      "return cylinder{r=30, h=30} + cylinder{r=30, h=30}:translate(0, 0, 30)", exact,
+      kTolerance * (2 * kPi * 30 * 60 + 2 * kPi * 30 * 30));
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+}
+
+TEST(ContactExport, FrustumsStackedOnSharedRims) {
+  // Volume of a frustum: πh(r1² + r1 r2 + r2²)/3.
+  auto frustum = [](double r1, double r2, double h) {
+    return kPi * h * (r1 * r1 + r1 * r2 + r2 * r2) / 3;
+  };
+  const double exact = frustum(30, 25, 10) + frustum(25, 28, 10);
+  exportsValid(
+      "return cylinder{r1=30, r2=25, h=10} + cylinder{r1=25, r2=28, h=10}:translate(0, 0, 10)",
+      exact, kTolerance * 4000);
+}
+
+// ---- Along an edge, at a point --------------------------------------------------
+
+TEST(ContactExport, BoxesTouchingAlongAnEdgeAreJoined) {
+  // The union's operands grow by a hundredth of the tolerance: a bridge of
+  // that width joins them along the edge, one shell.
+  const TriangleMesh mesh =
+      exportsValid("return box(10) + box(10):translate(10, 10, 0)", 2000.0, 1.0);
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+}
+
+TEST(ContactExport, BoxesTouchingAtAPointStayApartThere) {
+  // CGAL gives each box its own vertex at (10, 10, 10); each is pulled a
+  // hundredth of the tolerance into its own box (taking some 0.01 of volume
+  // with the large triangles around it).
+  const TriangleMesh mesh =
+      exportsValid("return box(10) + box(10):translate(10, 10, 10)", 2000.0, 0.1);
+  EXPECT_EQ(meshShells(mesh).count, 2u);
+}
+
+TEST(ContactExport, ACutWhosePiecesTouchAlongAnEdgeGoesThrough) {
+  // Two cutters touch along the edge x = y = 5: the block's material that
+  // meets there is cut apart, so that the mesh stays a 2-manifold.
+  exportsValid(
+      "return box(10) - (box{size={5, 5, 20}}:translate(0, 0, 5) + "
+      "box{size={5, 5, 20}}:translate(5, 5, 5))",
+      1000.0 - 2 * 125.0, 1.0);
+}
+
+TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
+  // Four boxes, every pair touching along an edge: the volume is the
+  // boxes', plus the bridges (each union's operands grow by a hundredth
+  // of the tolerance, at most twice here, over 600 of area).
+  exportsValid(
+      "return union(box(5), box(5):translate(5, 5, 0), box(5):translate(5, 0, 5), "
+      "box(5):translate(0, 5, 5))",
+      500.0, 3 * 0.01 * kTolerance * 600.0);
+}
+
+// ---- Concentric and tangent ---------------------------------------------------
+
+TEST(ContactExport, ConcentricSpheresMakeAShell) {
+  const double exact = 4.0 / 3.0 * kPi * (125.0 - 27.0);
+  exportsValid("return sphere(5) - sphere(3)", exact, kTolerance * 4 * kPi * (25.0 + 9.0));
+}
+
+TEST(ContactExport, SpheresTangentAtAPoint) {
+  const double exact = 2 * 4.0 / 3.0 * kPi * 125.0;
+  exportsValid("return sphere(5) + sphere(5):translate(10, 0, 0)", exact,
+               kTolerance * 2 * 4 * kPi * 25.0);
+}
+
+TEST(ContactExport, ASphereTangentToAPlane) {
+  const double exact = 4.0 / 3.0 * kPi * 125.0 + 20 * 20 * 2;
+  exportsValid("return sphere(5):translate(0, 0, 5) + box{size={20, 20, 2}}:translate(-10, -10, -2)",
+               exact, kTolerance * (4 * kPi * 25.0 + 2 * 400 + 160));
+}
+
+// ---- The parts of examples/ and bench/parts/ ---------------------------------------
+
+TEST(ContactExport, TheRoundedBoxOfTangentParts) {
+  // examples/rounded_box.lua, 40 × 30 × 20 with radius 3: the inner box
+  // (a, b, c) grown by a ball of radius r, abc + 2r(ab + bc + ca) +
+  // πr²(a + b + c) + 4πr³/3 (Steiner's formula).
+  const double r = 3, a = 40 - 2 * r, b = 30 - 2 * r, c = 20 - 2 * r;
+  const double exact = a * b * c + 2 * r * (a * b + b * c + c * a) + kPi * r * r * (a + b + c) +
+                       4.0 / 3.0 * kPi * r * r * r;
+  const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/examples/rounded_box.lua",
+                                    test::exampleOptions());
+  const SolidPtr solid = scene.objects[0];
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance).mesh;
+  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_NEAR(mesh.volume(), exact, kTolerance * 2 * (40 * 30 + 30 * 20 + 40 * 20));
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+}
+
+TEST(ContactExport, FortyFrustumsStackedOnSharedRims) {
+  // bench/parts/frustum_stack.lua: the volume of each frustum is
+  // πh(r1² + r1 r2 + r2²)/3.
+  const auto radius = [](int i) { return 20 + 6 * std::sin(i * 0.25); };
+  double exact = 0.0, side = 0.0;
+  for (int i = 0; i < 40; ++i) {
+    const double r1 = radius(i), r2 = radius(i + 1);
+    exact += kPi * 2 * (r1 * r1 + r1 * r2 + r2 * r2) / 3;
+    side += kPi * (r1 + r2) * 2;
+  }
+  const Scene scene = runScriptFile(
+      std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/frustum_stack.lua", test::exampleOptions());
+  const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance).mesh;
+  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_NEAR(mesh.volume(), exact, kTolerance * (side + 2 * kPi * 26 * 26));
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_TRUE(test::checksOut(*scene.objects[0], kTolerance, 5000));
+}
+
+TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
+  // bench/parts/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
+  // 1 deep.
+  const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/pixel_knob.lua",
+                                    test::exampleOptions());
+  const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance).mesh;
+  EXPECT_EQ(meshDefect(mesh), "");
+  const double exact = kPi * 15 * 15 * 10 - 13 * 4.0;
+  EXPECT_NEAR(mesh.volume(), exact, kTolerance * (2 * kPi * 15 * 10 + 2 * kPi * 15 * 15 + 13 * 12));
+}
+
+}  // namespace
+}  // namespace csgray
