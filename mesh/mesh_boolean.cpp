@@ -9,9 +9,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <tuple>
 #include <chrono>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 
 #include "mesh/mesh_validity.h"
@@ -447,9 +447,12 @@ class Evaluator {
 
   static const char* opName(Boolean::Op op) {
     switch (op) {
-      case Boolean::Op::Union: return "union";
-      case Boolean::Op::Intersection: return "intersection";
-      case Boolean::Op::Difference: return "difference";
+      case Boolean::Op::Union:
+        return "union";
+      case Boolean::Op::Intersection:
+        return "intersection";
+      case Boolean::Op::Difference:
+        return "difference";
     }
     return "";
   }
@@ -598,8 +601,8 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
     part = partOf(rounded, evaluator.materials);
     defect = meshDefect(part.mesh);
     if (!defect.empty())
-    PMP::experimental::remove_self_intersections(
-        rounded, CGAL::parameters::polyhedral_envelope_epsilon(0.01 * tolerance));
+      PMP::experimental::remove_self_intersections(
+          rounded, CGAL::parameters::polyhedral_envelope_epsilon(0.01 * tolerance));
     PMP::remove_degenerate_faces(rounded);
     part = partOf(rounded, evaluator.materials);
     defect = meshDefect(part.mesh);

@@ -74,8 +74,8 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
   s << "  mesh            " << mark(r.meshOk()) << "  " << r.triangles << " triangles: "
     << (r.meshDefect.empty() ? "closed, 2-manifold, outward, no self-intersections" : r.meshDefect)
     << "\n";
-  s << "  shells                  " << r.shells << " (the model is " << r.modelPieces
-    << " piece" << (r.modelPieces == 1 ? "" : "s") << ")\n";
+  s << "  shells                  " << r.shells << " (the model is " << r.modelPieces << " piece"
+    << (r.modelPieces == 1 ? "" : "s") << ")\n";
   if (r.points == 0 && r.options.samples > 0) {
     s << "  classification  " << mark(false)
       << "  not done: the mesh is not a closed 2-manifold, so it has no inside\n";

@@ -65,9 +65,9 @@ TEST(ContactExport, CylindersStackedFaceToFace) {
   // A shaft on a hub: r = 30, 60 high; the minimax polygon's area is within
   // tolerance × perimeter of the circle's.
   const double exact = kPi * 30 * 30 * 60;
-  const TriangleMesh mesh = exportsValid(
-      "return cylinder{r=30, h=30} + cylinder{r=30, h=30}:translate(0, 0, 30)", exact,
-      kTolerance * (2 * kPi * 30 * 60 + 2 * kPi * 30 * 30));
+  const TriangleMesh mesh =
+      exportsValid("return cylinder{r=30, h=30} + cylinder{r=30, h=30}:translate(0, 0, 30)", exact,
+                   kTolerance * (2 * kPi * 30 * 60 + 2 * kPi * 30 * 30));
   EXPECT_EQ(meshShells(mesh).count, 1u);
 }
 
@@ -135,8 +135,9 @@ TEST(ContactExport, SpheresTangentAtAPoint) {
 
 TEST(ContactExport, ASphereTangentToAPlane) {
   const double exact = 4.0 / 3.0 * kPi * 125.0 + 20 * 20 * 2;
-  exportsValid("return sphere(5):translate(0, 0, 5) + box{size={20, 20, 2}}:translate(-10, -10, -2)",
-               exact, kTolerance * (4 * kPi * 25.0 + 2 * 400 + 160));
+  exportsValid(
+      "return sphere(5):translate(0, 0, 5) + box{size={20, 20, 2}}:translate(-10, -10, -2)", exact,
+      kTolerance * (4 * kPi * 25.0 + 2 * 400 + 160));
 }
 
 // ---- The parts of examples/ and bench/parts/ ---------------------------------------

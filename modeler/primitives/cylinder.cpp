@@ -5,8 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "modeler/primitives/check.h"
 #include "modeler/polygon_triangulation.h"
+#include "modeler/primitives/check.h"
 #include "modeler/quadratic.h"
 #include "modeler/tessellation.h"
 
