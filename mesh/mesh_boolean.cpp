@@ -1,20 +1,17 @@
 #include "mesh/mesh_boolean.h"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
 
+#include "mesh/exact_boolean.h"
 #include "mesh/mesh_validity.h"
+#include "mesh/rounded_repair.h"
 #include "modeler/boolean.h"
 #include "modeler/primitive.h"
 
@@ -23,12 +20,7 @@ namespace csgray {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
-using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
-// The result, rounded to what a file holds.
-using RoundedMesh = CGAL::Surface_mesh<Inexact::Point_3>;
 
-constexpr const char* kTag = "f:material";
 // How far operands that touch are moved to resolve the contact, in
 // tolerances: far above the rounding of a file's floats at a part's size
 // (7.6·10⁻⁶ at 100 mm), far below what a printer makes.
@@ -36,30 +28,6 @@ constexpr double kContactOffset = 0.01;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
-
-template <class Mesh>
-auto tagsOf(Mesh& mesh) {
-  return mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kTag, 0).first;
-}
-template <class Mesh>
-auto tagsOf(const Mesh& mesh) {
-  return const_cast<Mesh&>(mesh)
-      .template property_map<typename Mesh::Face_index, std::uint32_t>(kTag)
-      .first;
-}
-
-// A corefinement cuts faces into triangles and copies faces from one mesh
-// into the other; each new face keeps the material tag it came from.
-template <class Mesh>
-struct TagVisitor : PMP::Corefinement::Default_visitor<Mesh> {
-  using Face = typename Mesh::Face_index;
-  std::uint32_t splitTag = 0;
-  void before_subface_creations(Face split, Mesh& mesh) { splitTag = tagsOf(mesh)[split]; }
-  void after_subface_created(Face created, Mesh& mesh) { tagsOf(mesh)[created] = splitTag; }
-  void after_face_copy(Face from, const Mesh& source, Face to, Mesh& target) {
-    tagsOf(target)[to] = tagsOf(source)[from];
-  }
-};
 
 // The frame the booleans are evaluated in. A part turned as a whole (or
 // mirrored) has that turn folded into every primitive's frame, where it is
@@ -169,9 +137,10 @@ void offsetMesh(Mesh& mesh, double delta) {
 // by giving each of them a vertex of its own there, at one place, which the
 // validity check rightly finds touching. Each such vertex is moved by delta
 // into its own solid, so that the contact becomes a gap of about 2·delta.
-// Returns how many were moved.
+// The moved points are rounded as the file will store them. Returns how
+// many were moved.
 template <class Mesh>
-std::size_t separateCoincidentVertices(Mesh& mesh, double delta) {
+std::size_t separateCoincidentVertices(Mesh& mesh, double delta, StoredCoordinate stored) {
   std::vector<std::pair<dvec3, typename Mesh::Vertex_index>> order;
   order.reserve(mesh.number_of_vertices());
   for (auto v : mesh.vertices()) order.emplace_back(pointOf(mesh, v), v);
@@ -189,7 +158,9 @@ std::size_t separateCoincidentVertices(Mesh& mesh, double delta) {
                            order[k].first + vertexOffset(mesh, order[k].second, -delta));
     i = j;
   }
-  for (auto& [v, q] : moved) mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
+  auto round = [stored](double d) { return stored ? stored(d) : d; };
+  for (auto& [v, q] : moved)
+    mesh.point(v) = typename Mesh::Point(round(q.x), round(q.y), round(q.z));
   return moved.size();
 }
 
@@ -242,8 +213,8 @@ bool defectPoint(const std::string& defect, dvec3& p) {
 // faster: CGAL computes the intersection points exactly either way.
 class Evaluator {
  public:
-  using K = Exact;
-  using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
+  using Mesh = ExactMesh;
+  using K = CGAL::Epeck;
   using Face = typename Mesh::Face_index;
   using Vertex = typename Mesh::Vertex_index;
 
@@ -252,6 +223,7 @@ class Evaluator {
     Mesh mesh;
     Bounds box;
     const Solid* origin = nullptr;  // the primitive or boolean it was made by
+    std::size_t shape = 0;          // of a primitive's mesh: a hash of its points
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
@@ -291,6 +263,7 @@ class Evaluator {
           pieces.push_back(evaluate(*s, region));
           if (pieces.back().empty()) return {};
         }
+        dropRepeats(pieces);
         return balanced(std::move(pieces), Boolean::Op::Intersection);
       }
       case Boolean::Op::Difference: {
@@ -351,6 +324,9 @@ class Evaluator {
       tags[f] = tag;
     }
     piece.box = triangles.bounds();
+    for (const dvec3& p : triangles.points)
+      for (double x : {p.x, p.y, p.z})
+        piece.shape = piece.shape * 1099511628211u ^ std::hash<double>{}(x);
     return piece;
   }
 
@@ -368,6 +344,7 @@ class Evaluator {
   // is corefined more than log₂(groups) times. (Boxes are closed,
   // Bounds::overlaps: operands that touch are corefined, not joined.)
   Piece unite(std::vector<Piece> pieces) {
+    dropRepeats(pieces);
     std::vector<Piece> groups;
     std::vector<std::vector<Bounds>> members;
     for (Piece& piece : pieces) {
@@ -410,6 +387,39 @@ class Evaluator {
     return std::move(pieces[0]);
   }
 
+  // A union or intersection of a primitive with itself is that primitive,
+  // but CGAL's corefinement of two equal meshes handles every pair of
+  // coincident triangles (two equal spheres: 0.4 s for 320 triangles; a
+  // grid of parts that repeats some: 17 s against 0.03 s), so a piece whose
+  // mesh is another's, point for point, is dropped.
+  static void dropRepeats(std::vector<Piece>& pieces) {
+    std::vector<Piece> kept;
+    for (Piece& piece : pieces) {
+      const bool repeat =
+          piece.shape != 0 && std::any_of(kept.begin(), kept.end(), [&](const Piece& k) {
+            return k.shape == piece.shape && sameMesh(k.mesh, piece.mesh);
+          });
+      if (!repeat) kept.push_back(std::move(piece));
+    }
+    pieces = std::move(kept);
+  }
+
+  static bool sameMesh(const Mesh& a, const Mesh& b) {
+    if (a.number_of_vertices() != b.number_of_vertices() ||
+        a.number_of_faces() != b.number_of_faces())
+      return false;
+    for (auto [v, w] = std::pair(a.vertices().begin(), b.vertices().begin());
+         v != a.vertices().end(); ++v, ++w)
+      if (*v != *w || a.point(*v) != b.point(*w)) return false;
+    for (auto [f, g] = std::pair(a.faces().begin(), b.faces().begin()); f != a.faces().end();
+         ++f, ++g) {
+      auto h = a.halfedge(*f), k = b.halfedge(*g);
+      for (int corner = 0; corner < 3; ++corner, h = a.next(h), k = b.next(k))
+        if (a.target(h) != b.target(k)) return false;
+    }
+    return true;
+  }
+
   // a = a op b, in place.
   void corefine(Piece& a, Piece& b, Boolean::Op op) {
     ++stats_.corefinements;
@@ -419,8 +429,6 @@ class Evaluator {
     // grid of spheres copies the box's faces, not the spheres').
     if (op != Boolean::Op::Difference && b.mesh.number_of_faces() > a.mesh.number_of_faces())
       std::swap(a, b);
-    tagsOf(a.mesh);
-    tagsOf(b.mesh);
     if (booleanOf(a, b, op)) return boxAfter(a);
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
     // in a pattern of them). The contact is resolved as a perturbation
@@ -464,24 +472,8 @@ class Evaluator {
                                dvec3(box.xmax(), box.ymax(), box.zmax())};
   }
 
-  // a = a op b by CGAL's corefinement; false when the result would not be
-  // a 2-manifold (the meshes are then corefined, not combined).
   static bool booleanOf(Piece& a, Piece& b, Boolean::Op op) {
-    TagVisitor<Mesh> visitor;
-    auto np = CGAL::parameters::visitor(visitor);
-    bool ok = false;
-    switch (op) {
-      case Boolean::Op::Union:
-        ok = PMP::corefine_and_compute_union(a.mesh, b.mesh, a.mesh, np);
-        break;
-      case Boolean::Op::Intersection:
-        ok = PMP::corefine_and_compute_intersection(a.mesh, b.mesh, a.mesh, np);
-        break;
-      case Boolean::Op::Difference:
-        ok = PMP::corefine_and_compute_difference(a.mesh, b.mesh, a.mesh, np);
-        break;
-    }
-    return ok;
+    return exactBoolean(a.mesh, b.mesh, op);
   }
 
   double tolerance_;
@@ -577,8 +569,8 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // another onto it, or onto the line through two others: the faces between
   // them lose their area. CGAL collapses such edges and flips such faces
   // away without moving any other point.
-  PMP::remove_degenerate_faces(rounded);
-  counts.contacts += separateCoincidentVertices(rounded, kContactOffset * tolerance) > 0;
+  removeDegenerateFaces(rounded);
+  counts.contacts += separateCoincidentVertices(rounded, kContactOffset * tolerance, stored) > 0;
   PartMesh part = partOf(rounded, evaluator.materials);
 
   const auto start = std::chrono::steady_clock::now();
@@ -587,25 +579,18 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // as they are, not "repaired" into something else.)
   if (defect.starts_with("self-intersecting") || defect.starts_with("degenerate")) {
     // Rounding can also fold a sliver over its neighbour where faces meet
-    // at a hair's breadth (coplanar faces of a rotated union): CGAL removes
-    // the faces that cross and fills the holes they leave. Its smoothing
-    // and hole filling may move the surface far (a vertex of a rotated
-    // union moved 1.2 mm: csgray check found it), so every patch must stay
-    // within a hundredth of the tolerance of the faces it replaces, or the
-    // crossing stays and the export fails.
+    // at a hair's breadth (coplanar faces of a rotated union): the slivers
+    // go first, then what still crosses, each change within a hundredth of
+    // the tolerance, or the crossing stays and the export fails.
     ++counts.repairs;
-    PMP::experimental::remove_almost_degenerate_faces(
-        rounded, -0.9999, 1e3, 0.01 * tolerance,
-        CGAL::parameters::flip_triangle_height_threshold(0.01 * tolerance));
-    PMP::remove_degenerate_faces(rounded);
+    removeSlivers(rounded, 0.01 * tolerance);
     part = partOf(rounded, evaluator.materials);
     defect = meshDefect(part.mesh);
-    if (!defect.empty())
-      PMP::experimental::remove_self_intersections(
-          rounded, CGAL::parameters::polyhedral_envelope_epsilon(0.01 * tolerance));
-    PMP::remove_degenerate_faces(rounded);
-    part = partOf(rounded, evaluator.materials);
-    defect = meshDefect(part.mesh);
+    if (!defect.empty()) {
+      removeCrossings(rounded, 0.01 * tolerance);
+      part = partOf(rounded, evaluator.materials);
+      defect = meshDefect(part.mesh);
+    }
   }
   counts.checkSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

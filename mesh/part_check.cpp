@@ -97,6 +97,9 @@ const std::vector<dvec3> kAroundDirections = fibonacciSphere(kSearchAround);
 // offset by the tolerance, which moves the crease by 1 / cos(φ/2)
 // tolerances, cos(φ/2) = √((1 + cos φ)/2); a knife edge is allowed ten.
 double creaseStretch(double cosine) { return 1.0 / std::max(std::sqrt(0.5 * (1.0 + cosine)), 0.1); }
+// Faces whose normals are further apart than this meet at a knife edge,
+// where creaseStretch is capped: cos(φ/2) = 0.1.
+constexpr double kKnifeCosine = 2.0 * 0.1 * 0.1 - 1.0;
 
 // splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
 // generators", OOPSLA 2014): a jitter per ray that does not depend on
@@ -450,11 +453,58 @@ class Checker {
             near.push_back({b->primitive, b->face, outwardNormal(*b, line.at(b->t))});
     }
     double cosine = 1.0;  // of the widest angle between two faces
+    const Face* widest[2] = {nullptr, nullptr};
     for (std::size_t i = 0; i < near.size(); ++i)
       for (std::size_t j = i + 1; j < near.size(); ++j)
-        if (near[i].primitive != near[j].primitive || near[i].face != near[j].face)
-          cosine = std::min(cosine, glm::dot(near[i].normal, near[j].normal));
-    return tolerance * creaseStretch(cosine);
+        if (near[i].primitive != near[j].primitive || near[i].face != near[j].face) {
+          const double c = glm::dot(near[i].normal, near[j].normal);
+          if (c < cosine) {
+            cosine = c;
+            widest[0] = &near[i];
+            widest[1] = &near[j];
+          }
+        }
+    const double allowed = tolerance * creaseStretch(cosine);
+    if (cosine > kKnifeCosine) return allowed;
+    return std::max(allowed, tolerance + wedgeDepth(p, *widest[0]->primitive, widest[0]->face,
+                                                    *widest[1]->primitive, widest[1]->face));
+  }
+
+  // Two faces that meet tangentially (a torus round a cylinder, a sphere on
+  // a plane) close a wedge that no offset of the tolerance bounds: each
+  // face's mesh may stand a tolerance into it, so the meshes fill it as far
+  // as its two sides are less than two tolerances apart, and the crease of
+  // the mesh lies that far from the exact one (about 2√(tolerance·r) for a
+  // side of curvature radius r against a plane). This is that distance
+  // from p, the nearest way out of the wedge: along each of 16 directions
+  // of the faces' tangent plane, the two faces are projected on from points
+  // ever further out until they stand two tolerances apart; a direction
+  // along the crease never gets there, nor one where a face ends. Faces
+  // that lie on each other (boxes face to face) never part: no wedge, 0.
+  double wedgeDepth(const dvec3& p, const Primitive& a, std::uint32_t faceA, const Primitive& b,
+                    std::uint32_t faceB) const {
+    const double tolerance = options_.tolerance;
+    const double reach = kFidelityReach * tolerance;
+    dvec3 onA = p;
+    if (!projectOnto(a, int(faceA), onA, reach)) return 0.0;
+    const dvec3 n = glm::normalize(a.normal(onA, int(faceA)));
+    const dvec3 u =
+        glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    const dvec3 v = glm::cross(n, u);
+    double depth = reach;
+    for (int k = 0; k < 16; ++k) {
+      const double angle = std::numbers::pi * k / 8.0;
+      const dvec3 t = std::cos(angle) * u + std::sin(angle) * v;
+      for (double s = tolerance; s < depth; s *= std::sqrt(2.0)) {
+        dvec3 x = onA + s * t, y = x;
+        if (!projectOnto(a, int(faceA), x, reach) || !projectOnto(b, int(faceB), y, reach)) break;
+        if (glm::distance(x, y) >= 2.0 * tolerance) {
+          depth = std::min(depth, glm::distance(p, x));
+          break;
+        }
+      }
+    }
+    return depth < reach ? depth : 0.0;
   }
 
   // One ray of a grid: its spans' length, the distances between the two

@@ -1,0 +1,37 @@
+// The meshes the exporter's booleans work on: exact ones while the tree is
+// evaluated, rounded ones (doubles) once it is done, each face tagged with
+// the material of the primitive it came from. The heavy CGAL algorithms on
+// them live in exact_boolean.cpp and rounded_repair.cpp, each compiled
+// once, so that the evaluator around them builds in seconds.
+#pragma once
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdint>
+
+namespace csgray {
+
+// Exact constructions (Epeck): a corefinement's new points are exact, so
+// the next boolean in a chain sees them where they are.
+using ExactMesh = CGAL::Surface_mesh<CGAL::Epeck::Point_3>;
+// The result, rounded to what a file holds.
+using RoundedMesh = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
+
+inline constexpr const char* kMaterialTag = "f:material";
+
+// A mesh's material tags, added (as 0) where it has none yet.
+template <class Mesh>
+auto tagsOf(Mesh& mesh) {
+  return mesh.template add_property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialTag, 0)
+      .first;
+}
+template <class Mesh>
+auto tagsOf(const Mesh& mesh) {
+  return const_cast<Mesh&>(mesh)
+      .template property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialTag)
+      .first;
+}
+
+}  // namespace csgray
