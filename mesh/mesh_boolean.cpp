@@ -25,6 +25,12 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // tolerances: far above the rounding of a file's floats at a part's size
 // (7.6·10⁻⁶ at 100 mm), far below what a printer makes.
 constexpr double kContactOffset = 0.01;
+// How far from the point of a defect a primitive's box may end and the
+// error still name it, in tolerances: the point CGAL's self-intersection
+// test gives is where two faces cross, which can lie some tolerances from
+// the primitive whose face caused it (a groove's flush top, 9 tolerances
+// below the crossing of a fillet's faces that it made).
+constexpr double kBlameReach = 10.0;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
@@ -597,7 +603,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   if (!defect.empty()) {
     dvec3 at;
     std::string near;
-    if (defectPoint(defect, at)) near = primitivesNear(solid, at, tolerance);
+    if (defectPoint(defect, at)) near = primitivesNear(solid, at, kBlameReach * tolerance);
     throw std::runtime_error("the mesh would not be printable: " + defect +
                              (near.empty() ? "" : ", made by " + near));
   }

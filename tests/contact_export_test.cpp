@@ -151,6 +151,26 @@ TEST(ContactExport, ATorusTangentToACylinder) {
                kTolerance * (2 * kPi * 10 * 20 + 2 * kPi * 100 + 4 * kPi * kPi * 12 * 2));
 }
 
+TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
+  // A knurl groove whose flush top ends on the line where a torus fillet
+  // meets the knob's side (bench/parts/knurled_knob.lua, one groove): if
+  // the export cannot be made, the error names the groove's and the
+  // fillet's lines, not only the box of the whole part.
+  const std::string source =
+      "local body = cylinder{r=15, h=10} + cylinder{r=13, h=12}\n"
+      "  + torus{R=13, r=2}:translate(0, 0, 10)\n"
+      "return body - cylinder{r=0.6, h=10}:translate(15, 0, 0):rotate(0, 0, 105)\n";
+  const SolidPtr solid = part(source);
+  try {
+    const TriangleMesh mesh = meshOfSolid(*solid, kTolerance).mesh;
+    EXPECT_EQ(meshDefect(mesh), "");
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cylinder (part.lua:3)"), std::string::npos) << what;
+    EXPECT_NE(what.find("torus (part.lua:2)"), std::string::npos) << what;
+  }
+}
+
 // ---- The same primitive twice ---------------------------------------------------
 
 TEST(ContactExport, APrimitiveRepeatedIsExportedOnce) {
