@@ -27,19 +27,13 @@ bool exactBoolean(ExactMesh& a, ExactMesh& b, Boolean::Op op) {
   tagsOf(b);
   TagVisitor visitor;
   auto np = CGAL::parameters::visitor(visitor);
-  try {
-    switch (op) {
-      case Boolean::Op::Union:
-        return PMP::corefine_and_compute_union(a, b, a, np);
-      case Boolean::Op::Intersection:
-        return PMP::corefine_and_compute_intersection(a, b, a, np);
-      case Boolean::Op::Difference:
-        return PMP::corefine_and_compute_difference(a, b, a, np);
-    }
-  } catch (const std::exception&) {
-    // CGAL's triangulation of a face refuses constraints that cross
-    // ("Unauthorized intersections of constraints"): the operands touch in
-    // a way it cannot cut. The caller resolves the contact or reports it.
+  switch (op) {
+    case Boolean::Op::Union:
+      return PMP::corefine_and_compute_union(a, b, a, np);
+    case Boolean::Op::Intersection:
+      return PMP::corefine_and_compute_intersection(a, b, a, np);
+    case Boolean::Op::Difference:
+      return PMP::corefine_and_compute_difference(a, b, a, np);
   }
   return false;
 }

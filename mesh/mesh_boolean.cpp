@@ -86,6 +86,9 @@ struct EvaluationFrame {
   }
 };
 
+// A coordinate as the file stores it (doubles when `stored` is null).
+double storedAs(StoredCoordinate stored, double d) { return stored ? stored(d) : d; }
+
 // A vertex's point, rounded to doubles.
 template <class Mesh>
 dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
@@ -164,9 +167,9 @@ std::size_t separateCoincidentVertices(Mesh& mesh, double delta, StoredCoordinat
                            order[k].first + vertexOffset(mesh, order[k].second, -delta));
     i = j;
   }
-  auto round = [stored](double d) { return stored ? stored(d) : d; };
   for (auto& [v, q] : moved)
-    mesh.point(v) = typename Mesh::Point(round(q.x), round(q.y), round(q.z));
+    mesh.point(v) =
+        typename Mesh::Point(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
   return moved.size();
 }
 
@@ -450,13 +453,7 @@ class Evaluator {
     if (op == Boolean::Op::Union) offsetMesh(a.mesh, delta);
     offsetMesh(b.mesh, op == Boolean::Op::Intersection ? -delta : delta);
     if (booleanOf(a, b, op)) return boxAfter(a);
-    const Bounds where = a.box.intersected(b.box);
-    char at[200];
-    std::snprintf(at, sizeof at, " near (%g, %g, %g)", 0.5 * (where.lo.x + where.hi.x),
-                  0.5 * (where.lo.y + where.hi.y), 0.5 * (where.lo.z + where.hi.z));
-    throw std::runtime_error(std::string("the ") + opName(op) + " of " + describe(a.origin) +
-                             " and " + describe(b.origin) + at +
-                             " is not a 2-manifold, even with their contact resolved");
+    unresolved(a, b, op);
   }
 
   static const char* opName(Boolean::Op op) {
@@ -478,8 +475,25 @@ class Evaluator {
                                dvec3(box.xmax(), box.ymax(), box.zmax())};
   }
 
-  static bool booleanOf(Piece& a, Piece& b, Boolean::Op op) {
-    return exactBoolean(a.mesh, b.mesh, op);
+  // a = a op b by exactBoolean; a CGAL failure (a face it cannot cut,
+  // which leaves the meshes half cut) is reported as a contact that cannot
+  // be resolved, naming the operands.
+  bool booleanOf(Piece& a, Piece& b, Boolean::Op op) {
+    try {
+      return exactBoolean(a.mesh, b.mesh, op);
+    } catch (const std::exception&) {
+      unresolved(a, b, op);
+    }
+  }
+
+  [[noreturn]] void unresolved(const Piece& a, const Piece& b, Boolean::Op op) {
+    const Bounds where = a.box.intersected(b.box);
+    char at[200];
+    std::snprintf(at, sizeof at, " near (%g, %g, %g)", 0.5 * (where.lo.x + where.hi.x),
+                  0.5 * (where.lo.y + where.hi.y), 0.5 * (where.lo.z + where.hi.z));
+    throw std::runtime_error(std::string("the ") + opName(op) + " of " + describe(a.origin) +
+                             " and " + describe(b.origin) + at +
+                             " is not a 2-manifold, even with their contact resolved");
   }
 
   double tolerance_;
@@ -497,12 +511,12 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
   rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
   std::vector<RoundedMesh::Vertex_index> vertex(exact.number_of_vertices() +
                                                 exact.number_of_removed_vertices());
-  auto round = [stored](double d) { return stored ? stored(d) : d; };
   for (auto v : exact.vertices()) {
     const auto& p = exact.point(v);
     dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!frame.identity) q = frame.worldFromEval * q;
-    vertex[v] = rounded.add_vertex({round(q.x), round(q.y), round(q.z)});
+    vertex[v] =
+        rounded.add_vertex({storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z)});
   }
   // A mirror turns the faces inside out on the way back.
   const bool flip = !frame.identity && glm::determinant(frame.worldFromEval) < 0.0;
