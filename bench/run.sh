@@ -112,9 +112,9 @@ if [ -d bench/manifold/node_modules/manifold-3d ] && command -v node >/dev/null;
   # part:parameter=value:script[:all]; the value goes to parts.mjs too.
   rows="plate:n=8:bench/plate.lua plate:n=16:bench/plate.lua plate:n=32:bench/plate.lua
         shaft_on_hub::bench/parts/shaft_on_hub.lua two_frustums::bench/parts/two_frustums.lua
-        frustum_stack::bench/parts/frustum_stack.lua vase:layers=40:bench/parts/vase.lua
-        rounded_box::examples/rounded_box.lua pixel_knob::bench/parts/pixel_knob.lua
-        knurled_knob::bench/parts/knurled_knob.lua plate:n=32:bench/plate.lua:all"
+        frustum_stack::bench/parts/frustum_stack.lua vase:layers=40:examples/vase.lua
+        rounded_box::examples/rounded_box.lua pixel_knob::examples/pixel_knob.lua
+        knurled_knob::examples/knurled_knob.lua plate:n=32:bench/plate.lua:all"
   for row in $rows; do
     IFS=: read -r name parameter script cores <<<"$row"
     pin=$one_core

@@ -81,10 +81,10 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
     std::fprintf(stderr,
                  "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
                  "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one, %zu "
-                 "rounding repair%s, %zu contact%s resolved\n",
+                 "glued face to face, %zu rounding repair%s, %zu contact%s resolved\n",
                  scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
                  secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges,
-                 counts.repairs, counts.repairs == 1 ? "" : "s", counts.contacts,
+                 counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s", counts.contacts,
                  counts.contacts == 1 ? "" : "s");
   std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
               mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));

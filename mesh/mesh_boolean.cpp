@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "mesh/exact_boolean.h"
+#include "mesh/glued_union.h"
 #include "mesh/mesh_validity.h"
 #include "mesh/rounded_repair.h"
 #include "modeler/boolean.h"
@@ -354,6 +355,7 @@ class Evaluator {
   // Bounds::overlaps: operands that touch are corefined, not joined.)
   Piece unite(std::vector<Piece> pieces) {
     dropRepeats(pieces);
+    glueStacked(pieces);
     std::vector<Piece> groups;
     std::vector<std::vector<Bounds>> members;
     for (Piece& piece : pieces) {
@@ -372,6 +374,41 @@ class Evaluator {
       }
     }
     return balanced(std::move(groups), Boolean::Op::Union);
+  }
+
+  // Operands that stand on each other on the same faces are glued first
+  // (glueAcrossPlane): grouped by their boxes they would be corefined as
+  // parts of larger meshes (a stack's even and odd frustums). Candidates
+  // are the pairs where one box's top face is in the plane of another's
+  // bottom face, on any axis, looked up by that coordinate; a piece glued
+  // into another leaves an empty piece behind.
+  void glueStacked(std::vector<Piece>& pieces) {
+    std::unordered_multimap<double, std::size_t> byTop[3];
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (!pieces[i].empty())
+        for (int k = 0; k < 3; ++k) byTop[k].emplace(pieces[i].box.hi[k], i);
+    std::vector<std::size_t> into(pieces.size());  // where each piece went
+    for (std::size_t i = 0; i < pieces.size(); ++i) into[i] = i;
+    auto home = [&](std::size_t i) {
+      while (into[i] != i) i = into[i];
+      return i;
+    };
+    for (std::size_t j = 0; j < pieces.size(); ++j) {
+      for (int k = 0; k < 3 && !pieces[j].empty(); ++k) {
+        auto [first, last] = byTop[k].equal_range(pieces[j].box.lo[k]);
+        for (auto it = first; it != last; ++it) {
+          const std::size_t i = home(it->second);
+          if (i == j || pieces[i].empty()) continue;
+          if (!glueAcrossPlane(pieces[i].mesh, pieces[j].mesh, pieces[i].box, pieces[j].box))
+            continue;
+          ++stats_.glued;
+          pieces[i].box.include(pieces[j].box);
+          pieces[j] = Piece{};
+          into[j] = i;
+          break;
+        }
+      }
+    }
   }
 
   Piece balanced(std::vector<Piece> pieces, Boolean::Op op) {
@@ -431,13 +468,20 @@ class Evaluator {
 
   // a = a op b, in place.
   void corefine(Piece& a, Piece& b, Boolean::Op op) {
-    ++stats_.corefinements;
     // The result is built in the first mesh: its faces that stay are kept
     // where they are, the other's are copied. A union or intersection is
     // symmetric, so the larger mesh takes that place (a box united with a
     // grid of spheres copies the box's faces, not the spheres').
     if (op != Boolean::Op::Difference && b.mesh.number_of_faces() > a.mesh.number_of_faces())
       std::swap(a, b);
+    // Solids stacked face to face on the same triangles need no
+    // corefinement (a frustum on the one below it).
+    if (op == Boolean::Op::Union && glueAcrossPlane(a.mesh, b.mesh, a.box, b.box)) {
+      ++stats_.glued;
+      a.box.include(b.box);
+      return;
+    }
+    ++stats_.corefinements;
     if (booleanOf(a, b, op)) return boxAfter(a);
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
     // in a pattern of them). The contact is resolved as a perturbation

@@ -18,6 +18,7 @@ struct MeshBooleanStats {
   std::size_t primitives = 0;     // primitives tessellated
   std::size_t corefinements = 0;  // CGAL boolean operations
   std::size_t merges = 0;         // operands joined without one (boxes apart)
+  std::size_t glued = 0;          // unions of solids stacked on the same faces
   std::size_t repairs = 0;        // self-intersections from rounding removed
   std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
   double checkSeconds = 0.0;      // in meshDefect

@@ -29,6 +29,29 @@ int arcSegments(double radius, double angle, double tolerance, int minSegments) 
   return std::max(minSegments, static_cast<int>(n));
 }
 
+int circleSegments(int n) {
+  // The rungs between 2^(b+1)·s and 2^(b+2)·s are the multiples of s.
+  int scale = 1;
+  while (n > (2 << kCircleLadderBits) * scale && scale < (1 << 28)) scale *= 2;
+  return (n + scale - 1) / scale * scale;
+}
+
+CirclePolygon circlePolygon(double radius, double tolerance) {
+  constexpr double kShift = 1e-9;  // of the radius, at most
+  CirclePolygon polygon;
+  polygon.shift = tolerance > 4.0 * kShift * radius ? kShift : 0.0;
+  // The shift is of the pushed-out radius, at most 2/(1 + cos(π/8)) < 2 r.
+  // A tenth of the tolerance is left for the tube of a torus turned on
+  // the same polygon.
+  const double error = 0.9 * tolerance - 2.0 * polygon.shift * radius;
+  polygon.segments = circleSegments(
+      arcSegments(radius, 2.0 * std::numbers::pi, 2.0 * radius * error / (radius + error)));
+  const double c = std::cos(std::numbers::pi / polygon.segments);
+  polygon.out = 2.0 / (1.0 + c);
+  polygon.error = radius * (1.0 - c) / (1.0 + c) + 2.0 * polygon.shift * radius;
+  return polygon;
+}
+
 void requireTolerance(const std::string& kind, double tolerance) {
   if (tolerance > 0.0 && std::isfinite(tolerance)) return;
   std::ostringstream msg;
@@ -42,7 +65,8 @@ double revolvedTriangles(double profileEdges, double segments) {
   return 2.0 * profileEdges * segments;
 }
 
-TriangleMesh revolveProfile(const std::vector<glm::dvec2>& profile, int segments, bool closed) {
+TriangleMesh revolveProfile(const std::vector<glm::dvec2>& profile, int segments, bool closed,
+                            const CirclePolygon* circle) {
   const std::size_t n = profile.size();
   const auto steps = static_cast<std::uint32_t>(segments);
   if (n < 2 || segments < 3) throw std::logic_error("revolveProfile: too few points");
@@ -67,8 +91,10 @@ TriangleMesh revolveProfile(const std::vector<glm::dvec2>& profile, int segments
       mesh.points.emplace_back(0.0, 0.0, q.y);
       continue;
     }
-    for (std::uint32_t s = 0; s < steps; ++s)
-      mesh.points.emplace_back(q.x * cosines[s], q.x * sines[s], q.y);
+    for (std::uint32_t s = 0; s < steps; ++s) {
+      const double rho = circle ? circle->radiusAt(q.x, s) : q.x;
+      mesh.points.emplace_back(rho * cosines[s], rho * sines[s], q.y);
+    }
   }
   auto vertex = [&](std::size_t k, std::uint32_t s) {
     return onAxis(k) ? first[k] : first[k] + s % steps;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <string>
 #include <vector>
@@ -23,6 +24,49 @@ constexpr std::size_t kMaxTessellationTriangles = 20'000'000;
 // than minSegments, so that a tiny hole at a coarse tolerance stays a hole
 // with a recognisable shape.
 int arcSegments(double radius, double angle, double tolerance, int minSegments = 8);
+
+// The segments of a full circle that solids standing on each other may
+// share (a cylinder's or cone's rim): n rounded up to the next number of
+// the form m·2^k with m in [2^b, 2^(b+1)) (b = kCircleLadderBits: 8, 10,
+// 12, 14, 16, 20, 24, 28, 32, 40, ...), at most a quarter more. Rims of
+// nearby radii then get the same polygon, so that frustums stacked on a
+// shared rim meet triangle for triangle and are glued instead of
+// corefined (a 40-frustum stack exported 5× faster for it, the plates
+// with their holes no slower; docs/performance.md).
+constexpr int kCircleLadderBits = 2;
+int circleSegments(int n);
+
+// How the cylinder, the cone and the torus tessellate a circle about their
+// axis, so that a torus fillet on a cylinder of its outer radius, or a
+// frustum on another's rim, puts its circle on the same points: `segments`
+// steps (circleSegments), each point a factor `out` = 2/(1 + cos(π/n))
+// outside the circle, which puts the polygon's edge midpoints as far
+// inside (the minimax placement, which needs √2 fewer segments than an
+// inscribed polygon: ρ(1 − c)/(1 + c) <= t is an inscribed sagitta
+// ρ(1 − c) of at most 2ρt/(ρ + t), c = cos(π/n)).
+//
+// The points are also moved in or out by at most a part in 10⁹ of the
+// radius (`shift`), differently at each step, so that no four of them lie
+// on one circle: a hole through a plate puts its rim into the plate's
+// face, and CGAL's triangulation of that face must otherwise settle every
+// in-circle test of cocircular points in exact arithmetic (a plate with
+// 64 holes exported a quarter faster for it; shifting both ways did
+// better than inwards only: 1.7 s against 2.3 s for examples/bracket.lua).
+// The segments are chosen for nine tenths of the tolerance less that
+// shift, so that a torus turned on the same polygon has at least a tenth
+// left for its tube.
+struct CirclePolygon {
+  int segments = 0;
+  double out = 1.0;
+  double shift = 0.0;
+  double error = 0.0;  // how far the polygon of the radius it was made for strays
+  // The distance from the axis of step s's point, for a circle of radius rho.
+  double radiusAt(double rho, std::uint32_t s) const {
+    return rho * out * (1.0 + shift * (double((s * 7919u) % 17u) - 8.0) / 8.0);
+  }
+};
+// The polygon of circles of radius up to `radius`, within `tolerance`.
+CirclePolygon circlePolygon(double radius, double tolerance);
 
 // Throws std::invalid_argument when a tessellation of kind would need more
 // than kMaxTessellationTriangles triangles at this tolerance.
@@ -55,7 +99,13 @@ double revolvedTriangles(double profileEdges, double segments);
 //   dist(p, surface) <= dist(q, profile curve) + ρmax·(1 − cos(π/segments)):
 // the profile's chord error plus the sagitta of the largest circle. A
 // doubly curved surface splits its tolerance between the two.
-TriangleMesh revolveProfile(const std::vector<glm::dvec2>& profile, int segments, bool closed);
+//
+// With a circle polygon, each ring is that polygon's (CirclePolygon::
+// radiusAt, the minimax placement): a mesh point is then q moved off the
+// axis by a factor within 1 ± (1 − c)/(1 + c), so the bound's second term
+// is the polygon's error at ρmax instead.
+TriangleMesh revolveProfile(const std::vector<glm::dvec2>& profile, int segments, bool closed,
+                            const CirclePolygon* circle = nullptr);
 
 // ---- Convex polytopes -----------------------------------------------------------
 

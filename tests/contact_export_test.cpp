@@ -85,6 +85,54 @@ TEST(ContactExport, FrustumsStackedOnSharedRims) {
 
 // ---- Along an edge, at a point --------------------------------------------------
 
+TEST(ContactExport, SolidsStackedOnTheSameFacesAreGluedNotCorefined) {
+  // A shaft on a hub of its radius, and two frustums on a shared rim of
+  // nearby radii (one rung of the segment ladder): their faces in the
+  // plane of contact are the same triangles, which the union drops.
+  for (const char* source :
+       {"return cylinder{r=30, h=30} + cylinder{r=30, h=30}:translate(0, 0, 30)",
+        "return cylinder{r1=20, r2=20.5, h=2} + cylinder{r1=20.5, r2=21.5, h=2}:translate(0, 0, 2)",
+        "return (cylinder{r=5, h=2} + cylinder{r=5, h=3}:translate(0, 0, 2)):rotate(90, 30, 0)"}) {
+    SCOPED_TRACE(source);
+    MeshBooleanStats stats;
+    const SolidPtr solid = part(source);
+    const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(stats.glued, 1u);
+    EXPECT_EQ(stats.corefinements, 0u);
+    EXPECT_EQ(meshShells(mesh).count, 1u);
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  }
+}
+
+TEST(ContactExport, SolidsStackedOnFacesThatDifferAreCorefined) {
+  // The same segments but another radius, a smaller box on a larger one,
+  // a cylinder turned about its axis: the faces in the plane differ, so
+  // the glue refuses and the corefinement makes the union.
+  const double h = 10;
+  struct Case {
+    const char* source;
+    double volume;
+    double slack;
+  };
+  const Case cases[] = {
+      {"return cylinder{r=30, h=10} + cylinder{r=29.9, h=10}:translate(0, 0, 10)",
+       kPi * (30 * 30 + 29.9 * 29.9) * h, kTolerance * 4 * kPi * 30 * (30 + h)},
+      {"return box(10) + box(4):translate(3, 3, 10)", 1000.0 + 64.0, 1e-9},
+      {"return cylinder{r=8, h=10} + cylinder{r=8, h=10}:rotate(0, 0, 1):translate(0, 0, 10)",
+       kPi * 64 * 2 * h, kTolerance * 4 * kPi * 8 * (8 + h)},
+  };
+  for (const Case& c : cases) {
+    MeshBooleanStats stats;
+    SCOPED_TRACE(c.source);
+    const TriangleMesh mesh = exportsValid(c.source, c.volume, c.slack);
+    meshOfSolid(*part(c.source), kTolerance, nullptr, &stats);
+    EXPECT_EQ(stats.glued, 0u);
+    EXPECT_EQ(stats.corefinements, 1u);
+    EXPECT_EQ(meshShells(mesh).count, 1u);
+  }
+}
+
 TEST(ContactExport, BoxesTouchingAlongAnEdgeAreJoined) {
   // The union's operands grow by a hundredth of the tolerance: a bridge of
   // that width joins them along the edge, one shell.
@@ -153,7 +201,7 @@ TEST(ContactExport, ATorusTangentToACylinder) {
 
 TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
   // A knurl groove whose flush top ends on the line where a torus fillet
-  // meets the knob's side (bench/parts/knurled_knob.lua, one groove): if
+  // meets the knob's side (examples/knurled_knob.lua, one groove): if
   // the export cannot be made, the error names the groove's and the
   // fillet's lines, not only the box of the whole part.
   const std::string source =
@@ -225,17 +273,49 @@ TEST(ContactExport, FortyFrustumsStackedOnSharedRims) {
   }
   const Scene scene = runScriptFile(
       std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/frustum_stack.lua", test::exampleOptions());
-  const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance).mesh;
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance, nullptr, &stats).mesh;
   EXPECT_EQ(meshDefect(mesh), "");
   EXPECT_NEAR(mesh.volume(), exact, kTolerance * (side + 2 * kPi * 26 * 26));
+  // Most neighbours share a rung of the segment ladder and are glued; the
+  // rest are corefined.
+  EXPECT_GE(stats.glued, 30u);
+  EXPECT_EQ(stats.glued + stats.merges + stats.corefinements, 39u);
   EXPECT_EQ(meshShells(mesh).count, 1u);
   EXPECT_TRUE(test::checksOut(*scene.objects[0], kTolerance, 5000));
 }
 
+TEST(ContactExport, TheKnurledKnobsGroovesEndOnTheFilletsTangentLine) {
+  // examples/knurled_knob.lua: a cylinder r = 15, 10 high, a cylinder
+  // r = 13 on it to 12, a torus R = 13, r = 2 at 10 (the part of it outside
+  // both: a quarter of its tube, turned at its centroid 13 + 4r/(3π),
+  // Pappus), less 24 grooves r = 0.6, 10 high, centred on the side: each
+  // takes the lens where its disc overlaps the knob's.
+  const double a = 0.6, R = 15, d = 15;
+  const double lens = a * a * std::acos((d * d + a * a - R * R) / (2 * d * a)) +
+                      R * R * std::acos((d * d + R * R - a * a) / (2 * d * R)) -
+                      0.5 * std::sqrt((-d + a + R) * (d + a - R) * (d - a + R) * (d + a + R));
+  const double exact = kPi * 225 * 10 + kPi * 169 * 2 +
+                       2 * kPi * (13 + 4 * 2 / (3 * kPi)) * (kPi * 4 / 4) - 24 * 10 * lens;
+  const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/examples/knurled_knob.lua",
+                                    test::exampleOptions());
+  const SolidPtr solid = scene.objects[0];
+  for (double tolerance : {0.003, 0.005, kTolerance, 0.02}) {
+    SCOPED_TRACE(tolerance);
+    const TriangleMesh mesh = meshOfSolid(*solid, tolerance).mesh;
+    EXPECT_EQ(meshDefect(mesh), "");
+    // Area: the side and the top, the grooves' walls and the fillet.
+    EXPECT_NEAR(mesh.volume(), exact,
+                tolerance * (2 * kPi * 15 * 12 + 2 * kPi * 15 * 15 + 24 * 2 * kPi * 0.6 * 10));
+    EXPECT_EQ(meshShells(mesh).count, 1u);
+  }
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+}
+
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
-  // bench/parts/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
+  // examples/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
   // 1 deep.
-  const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/pixel_knob.lua",
+  const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/examples/pixel_knob.lua",
                                     test::exampleOptions());
   const double exact = kPi * 15 * 15 * 10 - 13 * 4.0;
   // In doubles, and as a binary STL stores it (floats): the vertices moved

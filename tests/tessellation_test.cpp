@@ -347,9 +347,50 @@ TEST(Tessellation, CylinderMeshStraddlesTheSurfaceWithFewerSegments) {
   EXPECT_LE(outside, tolerance);
   EXPECT_LE(inside, tolerance);
   EXPECT_NEAR(outside, inside, 1e-8);  // the rim's shift of 10⁻⁹ r
-  EXPECT_GT(outside, 0.5 * tolerance);
+  // The minimax count, rounded up to the ladder of circleSegments (at most
+  // a quarter more segments, so at least 1/1.25² of the error).
+  EXPECT_GT(outside, 0.5 * tolerance / (1.25 * 1.25));
   const double inscribedSegments = std::ceil(kPi / std::acos(1.0 - tolerance / r));
-  EXPECT_NEAR(double(rim) * std::sqrt(2.0), inscribedSegments, 0.05 * inscribedSegments);
+  EXPECT_GE(double(rim) * std::sqrt(2.0), 0.95 * inscribedSegments);
+  EXPECT_LE(double(rim) * std::sqrt(2.0), 1.25 * 1.05 * inscribedSegments);
+  EXPECT_EQ(circleSegments(int(rim)), int(rim));
+}
+
+TEST(Tessellation, CircleSegmentsClimbALadderOfAtMostAQuarter) {
+  int previous = 0;
+  for (int n = 8; n < 100'000; ++n) {  // a circle has at least 8
+    const int rung = circleSegments(n);
+    EXPECT_GE(rung, n);
+    EXPECT_LE(rung, 1.25 * n);
+    EXPECT_GE(rung, previous);
+    EXPECT_EQ(circleSegments(rung), rung);
+    // m·2^k with m in [4, 8)
+    int m = rung;
+    while (m >= 8) {
+      ASSERT_EQ(m % 2, 0) << rung;
+      m /= 2;
+    }
+    EXPECT_GE(m, 4) << rung;
+    previous = rung;
+  }
+  EXPECT_EQ(circleSegments(33), 40);
+  EXPECT_EQ(circleSegments(100), 112);
+}
+
+TEST(Tessellation, FrustumsOnASharedRimOfNearbyRadiiMeetOnTheSamePolygon) {
+  // A frustum's segments follow its larger radius: 20.5 and 21.5 differ,
+  // but rounded up the ladder they are one rung, so the top rim of the
+  // lower frustum is the bottom rim of the upper one, point for point.
+  const double tolerance = 0.01;
+  TriangleMesh lower = cone(20.0, 20.5, 2.0)->tessellate(tolerance, Bounds::everything());
+  TriangleMesh upper = cone(20.5, 21.5, 2.0)->tessellate(tolerance, Bounds::everything());
+  std::set<std::tuple<double, double>> top, bottom;
+  for (const dvec3& p : lower.points)
+    if (p.z == 2.0) top.emplace(p.x, p.y);
+  for (const dvec3& p : upper.points)
+    if (p.z == 0.0) bottom.emplace(p.x, p.y);
+  EXPECT_EQ(top.size(), 80u);  // 72 and 73 segments, both up to 80
+  EXPECT_EQ(top, bottom);
 }
 
 TEST(Tessellation, VertexCountFollowsTheTolerance) {

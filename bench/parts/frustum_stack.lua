@@ -1,4 +1,4 @@
--- The outer stack of bench/parts/vase.lua alone: 40 frustums, each standing
+-- The outer stack of examples/vase.lua alone: 40 frustums, each standing
 -- on the one below on a shared rim.
 local function radius(i) return 20 + 6 * math.sin(i * 0.25) end
 local layers = {}

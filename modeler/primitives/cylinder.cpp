@@ -77,38 +77,21 @@ Bounds Cylinder::objectBounds() const {
 // Two rims of `segments` points (one point where a radius is 0, a cone's
 // apex), the side between them, and each rim's disc as a cap. Every
 // cross-section of the side is a regular n-gon about a circle of radius
-// ρ(z), and the caps are the end sections, so the whole error is that of
-// the n-gon: placed with its vertices a factor k = 2/(1 + cos(π/n)) out,
-// its vertices lie ρ(1 − c)/(1 + c) outside the circle and its edge
-// midpoints as far inside (c = cos(π/n); the minimax placement, as for the
-// sphere), which needs √2 fewer segments than an inscribed polygon:
-// ρ(1 − c)/(1 + c) ≤ t is an inscribed sagitta ρ(1 − c) of at most
-// 2ρt/(ρ + t). The caps and the generators stay exact.
+// ρ(z), placed as circlePolygon places it, and the caps are the end
+// sections, so the whole error is that of the n-gon; the caps and the
+// generators stay exact. The same step on both rims has the same factor,
+// which keeps each side quad planar.
 //
 // A cap is cut as a zig-zag strip, not as a fan about its centre: a fan's
 // triangles all meet at the centre, so two cylinders stacked face to face
 // put every triangle of one cap against every triangle of the other, and
 // CGAL's corefinement of such coplanar fans grows as n⁴ (a shaft on a hub,
 // r = 30: 40 s; as strips each triangle meets a few; docs/performance.md).
-//
-// The rim points are then moved in or out by at most a part in 10⁹ of the
-// radius, differently at each step, so that no four of them lie on one
-// circle: a hole through a plate puts its rim into the plate's face, and
-// CGAL's triangulation of that face must otherwise settle every in-circle
-// test of cocircular points in exact arithmetic (a plate with 64 holes
-// exported a quarter faster for it). The segments are chosen for the
-// tolerance less that shift, so the bound holds. (Shifting both ways did
-// better than inwards only: 1.7 s against 2.3 s for examples/bracket.lua.)
 TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
-  const double r = std::max(r1_, r2_);
-  constexpr double kShift = 1e-9;  // of the radius, at most
-  const double shift = tolerance > 4.0 * kShift * r ? kShift : 0.0;
-  // The shift is of the pushed-out radius, at most 2/(1 + cos(π/8)) < 2 r.
-  const double error = tolerance - 2.0 * shift * r;
-  const int segments = arcSegments(r, 2.0 * std::numbers::pi, 2.0 * r * error / (r + error));
+  const CirclePolygon circle = circlePolygon(std::max(r1_, r2_), tolerance);
+  const int segments = circle.segments;
   requireTriangleBudget(kind(), 4.0 * segments, tolerance);
-  const double out = 2.0 / (1.0 + std::cos(std::numbers::pi / segments));
   const auto n = std::uint32_t(segments);
   TriangleMesh mesh;
   // Rim k (0 bottom, 1 top): its first vertex; a rim of radius 0 is one.
@@ -122,9 +105,7 @@ TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
     }
     for (std::uint32_t s = 0; s < n; ++s) {
       const double theta = 2.0 * std::numbers::pi * s / segments;
-      // The same factor at a step on both rims keeps each side quad planar.
-      const double factor = 1.0 + shift * (double((s * 7919u) % 17u) - 8.0) / 8.0;
-      const double rho = radius[k] * out * factor;
+      const double rho = circle.radiusAt(radius[k], s);
       mesh.points.emplace_back(rho * std::cos(theta), rho * std::sin(theta), z[k]);
     }
   }

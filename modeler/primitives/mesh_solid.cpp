@@ -1,6 +1,7 @@
 #include "modeler/primitives/mesh_solid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -30,6 +31,35 @@ struct MeshSolid::Mesh {
 };
 
 namespace {
+
+// Whether three points lie on one line, exactly: each component of the
+// cross product (b − a) × (c − a) is zero when its two products are equal.
+// In quadruple precision (113 bits) the differences of doubles of nearby
+// exponents and their products are exact, so a sliver that doubles would
+// round to no area at all (a float STL's, from an export) is told apart
+// from a face that truly has none.
+using Quad = __float128;
+std::array<Quad, 3> quadCross(const dvec3& a, const dvec3& b, const dvec3& c) {
+  const Quad ux = Quad(b.x) - Quad(a.x), uy = Quad(b.y) - Quad(a.y), uz = Quad(b.z) - Quad(a.z);
+  const Quad vx = Quad(c.x) - Quad(a.x), vy = Quad(c.y) - Quad(a.y), vz = Quad(c.z) - Quad(a.z);
+  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+}
+bool collinear(const dvec3& a, const dvec3& b, const dvec3& c) {
+  const std::array<Quad, 3> n = quadCross(a, b, c);
+  return n[0] == 0 && n[1] == 0 && n[2] == 0;
+}
+
+// The unit normal of a triangle that is not collinear; in quadruple
+// precision where doubles round its cross product to nothing.
+dvec3 unitNormal(const dvec3& a, const dvec3& b, const dvec3& c) {
+  const dvec3 n = glm::cross(b - a, c - a);
+  if (n != dvec3(0.0)) return glm::normalize(n);
+  const std::array<Quad, 3> q = quadCross(a, b, c);
+  Quad largest = 0;
+  for (Quad x : q) largest = std::max(largest, x < 0 ? -x : x);
+  if (largest == 0) return n;
+  return glm::normalize(dvec3(double(q[0] / largest), double(q[1] / largest), double(q[2] / largest)));
+}
 
 [[noreturn]] void refuse(const std::string& message) {
   throw std::invalid_argument("polyhedron: " + message);
@@ -334,8 +364,7 @@ MeshSolid::MeshSolid(const std::vector<dvec3>& points,
     // No area at all. A sliver whose area rounds to almost nothing is
     // kept: exported booleans have them (CGAL's exact check accepts them),
     // and a ray meets such a triangle rarely and exactly, as any other.
-    const dvec3 n = glm::cross(b - a, c - a);
-    if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
+    if (collinear(a, b, c)) {
       std::uint32_t f = mesh->faceOfTriangle[i];
       // Named as the face runs in the input (clockwise).
       if (faces[f].size() == 3)
@@ -508,7 +537,7 @@ bool MeshSolid::objectContains(const dvec3& p) const {
 dvec3 MeshSolid::objectNormal(const dvec3&, int face) const {
   const Triangle& tri = mesh_->triangles[std::size_t(face)];
   const dvec3 &a = mesh_->points[tri[0]], &b = mesh_->points[tri[1]], &c = mesh_->points[tri[2]];
-  return glm::normalize(glm::cross(b - a, c - a));
+  return unitNormal(a, b, c);
 }
 
 Bounds MeshSolid::objectBounds() const { return mesh_->bounds; }

@@ -2,8 +2,8 @@
 -- radius is the next one's bottom radius), hollowed by a similar stack 2
 -- thinner, with a torus lip. The frustums stand face to face; the export
 -- joins them along their shared rims.
---   csgray render bench/parts/vase.lua -o vase.png
---   csgray export bench/parts/vase.lua -o vase.stl
+--   csgray render examples/vase.lua -o vase.png
+--   csgray export examples/vase.lua -o vase.stl
 
 local layers = layers or 40
 local height = 80

@@ -2,7 +2,7 @@
 -- pixels. The diagonal pixels touch only along an edge: the cut goes
 -- through there, so the export stays a 2-manifold (docs/cli.md,
 -- "Contacts").
---   csgray export bench/parts/pixel_knob.lua -o pixel_knob.stl
+--   csgray export examples/pixel_knob.lua -o pixel_knob.stl
 
 local glyph = {
   "X...X",
