@@ -19,6 +19,32 @@ using ExactMesh = CGAL::Surface_mesh<CGAL::Epeck::Point_3>;
 // The result, rounded to what a file holds.
 using RoundedMesh = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
 
+}  // namespace csgray
+
+// CGAL 5.5's intersection of coplanar faces in a corefinement asks for the
+// point where two edges' lines cross also where the edges overlap or run
+// parallel (seen with cylinders on a grid of boxes, tests/contact_export_
+// test.cpp), and dereferences the answer that is not a point: a crash.
+// These specialisations of the kernel's functor, for the interval and the
+// exact kernel that Epeck evaluates with, throw instead (exact_boolean.cpp),
+// and the export reports the operands.
+namespace CGAL::CommonKernelFunctors {
+template <>
+CGAL::Epeck::Approximate_kernel::Point_3
+Construct_line_line_intersection_point_3<CGAL::Epeck::Approximate_kernel>::operator()(
+    const CGAL::Epeck::Approximate_kernel::Point_3&,
+    const CGAL::Epeck::Approximate_kernel::Point_3&,
+    const CGAL::Epeck::Approximate_kernel::Point_3&,
+    const CGAL::Epeck::Approximate_kernel::Point_3&) const;
+template <>
+CGAL::Epeck::Exact_kernel::Point_3
+Construct_line_line_intersection_point_3<CGAL::Epeck::Exact_kernel>::operator()(
+    const CGAL::Epeck::Exact_kernel::Point_3&, const CGAL::Epeck::Exact_kernel::Point_3&,
+    const CGAL::Epeck::Exact_kernel::Point_3&, const CGAL::Epeck::Exact_kernel::Point_3&) const;
+}  // namespace CGAL::CommonKernelFunctors
+
+namespace csgray {
+
 inline constexpr const char* kMaterialTag = "f:material";
 
 // A mesh's material tags, added (as 0) where it has none yet.

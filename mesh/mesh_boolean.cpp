@@ -482,22 +482,56 @@ class Evaluator {
       return;
     }
     ++stats_.corefinements;
-    if (booleanOf(a, b, op)) return boxAfter(a);
+    // The operands as they were, for another try.
+    const Mesh keptA = a.mesh, keptB = b.mesh;
+    if (attempt(a, b, op)) return boxAfter(a);
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
-    // in a pattern of them). The contact is resolved as a perturbation
-    // would: a union's operands and a difference's cutter grow by a small
-    // part of the tolerance, so that touching operands of a union are
-    // joined by a thin bridge and a cut whose pieces touch goes through,
-    // leaving the minuend's parts apart; an intersection's second operand
-    // shrinks, so that a contact leaves nothing. (docs/cli.md, "Contacts")
-    // (A corefinement that fails leaves both meshes corefined: each still
-    // bounds its operand.)
+    // in a pattern of them), or CGAL stopped half way (two coplanar edges
+    // that overlap). The contact is resolved as a perturbation would: a
+    // union's operands and a difference's cutter grow by a small part of
+    // the tolerance, so that touching operands of a union are joined by a
+    // thin bridge and a cut whose pieces touch goes through, leaving the
+    // minuend's parts apart; an intersection's second operand shrinks, so
+    // that a contact leaves nothing (docs/cli.md, "Contacts"). Where the
+    // operands' faces lie in one plane, growing both keeps them there; a
+    // union then grows one of them only, which moves its faces off the
+    // other's.
     ++stats_.contacts;
     const double delta = kContactOffset * tolerance_;
-    if (op == Boolean::Op::Union) offsetMesh(a.mesh, delta);
-    offsetMesh(b.mesh, op == Boolean::Op::Intersection ? -delta : delta);
-    if (booleanOf(a, b, op)) return boxAfter(a);
+    struct Offsets {
+      double a, b;
+    };
+    std::vector<Offsets> tries;
+    switch (op) {
+      case Boolean::Op::Union:
+        tries = {{delta, delta}, {0.0, delta}, {delta, 0.0}};
+        break;
+      case Boolean::Op::Difference:
+        tries = {{0.0, delta}};
+        break;
+      case Boolean::Op::Intersection:
+        tries = {{0.0, -delta}};
+        break;
+    }
+    for (const Offsets& offsets : tries) {
+      a.mesh = keptA;
+      b.mesh = keptB;
+      if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a);
+      if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b);
+      if (attempt(a, b, op)) return boxAfter(a);
+    }
     unresolved(a, b, op);
+  }
+
+  // a = a op b by exactBoolean; false when CGAL cannot make a 2-manifold,
+  // or throws (a face it cannot cut: the meshes are then half cut, and the
+  // caller takes them again as they were).
+  static bool attempt(Piece& a, Piece& b, Boolean::Op op) {
+    try {
+      return exactBoolean(a.mesh, b.mesh, op);
+    } catch (const std::exception&) {
+      return false;
+    }
   }
 
   static const char* opName(Boolean::Op op) {
@@ -517,17 +551,6 @@ class Evaluator {
     a.box = a.empty() ? Bounds{}
                       : Bounds{dvec3(box.xmin(), box.ymin(), box.zmin()),
                                dvec3(box.xmax(), box.ymax(), box.zmax())};
-  }
-
-  // a = a op b by exactBoolean; a CGAL failure (a face it cannot cut,
-  // which leaves the meshes half cut) is reported as a contact that cannot
-  // be resolved, naming the operands.
-  bool booleanOf(Piece& a, Piece& b, Boolean::Op op) {
-    try {
-      return exactBoolean(a.mesh, b.mesh, op);
-    } catch (const std::exception&) {
-      unresolved(a, b, op);
-    }
   }
 
   [[noreturn]] void unresolved(const Piece& a, const Piece& b, Boolean::Op op) {

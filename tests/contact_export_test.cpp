@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <random>
+#include <string>
 
 #include "check_support.h"
 #include "mesh/mesh_boolean.h"
@@ -216,6 +218,67 @@ TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
     const std::string what = e.what();
     EXPECT_NE(what.find("cylinder (part.lua:3)"), std::string::npos) << what;
     EXPECT_NE(what.find("torus (part.lua:2)"), std::string::npos) << what;
+  }
+}
+
+// ---- Random parts ------------------------------------------------------------------
+
+// A union of ten solids on a grid of 2: boxes 2 and 4 long that share
+// faces, edges and corners, balls of radius 1 and cylinders r = 1, h = 2
+// in the grid's cells, tangent to the boxes' faces, to each other and to
+// the cells' walls; less two balls or rods placed anywhere.
+std::string randomContactPart(unsigned seed) {
+  std::mt19937 random(seed);
+  auto cell = [&] { return 2 * int(random() % 4); };
+  auto anywhere = [&](double lo, double hi) {
+    return lo + (hi - lo) * std::uniform_real_distribution<double>(0.0, 1.0)(random);
+  };
+  std::string source = "return union{\n";
+  char line[160];
+  for (int k = 0; k < 10; ++k) {
+    const int x = cell(), y = cell(), z = cell();
+    switch (random() % 4) {
+      case 0:
+        std::snprintf(line, sizeof line, "  box(2):translate(%d, %d, %d),\n", x, y, z);
+        break;
+      case 1:
+        std::snprintf(line, sizeof line, "  box{size={4, 2, 2}}:translate(%d, %d, %d),\n", x, y, z);
+        break;
+      case 2:
+        std::snprintf(line, sizeof line, "  sphere(1):translate(%d, %d, %d),\n", x + 1, y + 1,
+                      z + 1);
+        break;
+      default:
+        std::snprintf(line, sizeof line, "  cylinder{r=1, h=2}:translate(%d, %d, %d),\n", x + 1,
+                      y + 1, z);
+    }
+    source += line;
+  }
+  source += "} - union{\n";
+  for (int k = 0; k < 2; ++k) {
+    const double x = anywhere(0, 8), y = anywhere(0, 8), z = anywhere(0, 8);
+    if (random() % 2)
+      std::snprintf(line, sizeof line, "  sphere(%.3f):translate(%.3f, %.3f, %.3f),\n",
+                    anywhere(0.5, 1.5), x, y, z);
+    else
+      std::snprintf(line, sizeof line, "  cylinder{r=%.3f, h=10}:translate(%.3f, %.3f, -1),\n",
+                    anywhere(0.3, 1.0), x, y);
+    source += line;
+  }
+  return source + "}\n";
+}
+
+TEST(ContactExport, RandomPartsWithSharedFacesAndTangenciesCheckOut) {
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    const std::string source = randomContactPart(seed);
+    SCOPED_TRACE(source);
+    const SolidPtr solid = part(source);
+    const std::optional<TriangleMesh> mesh = exported(*solid);
+    if (!mesh) continue;
+    EXPECT_EQ(meshDefect(*mesh), "");
+    // Classification, the volume by ray grids against the mesh's, the
+    // distance between the surfaces, and the shells.
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
   }
 }
 

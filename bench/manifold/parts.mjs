@@ -11,36 +11,78 @@ wasm.setup();
 const {Manifold, CrossSection} = wasm;
 const tolerance = 0.01;
 
-// csgray's segment counts (modeler/tessellation.cpp arcSegments and the
-// primitives' objectTessellate).
+// csgray's segment counts (modeler/tessellation.cpp arcSegments,
+// circleSegments and circlePolygon, and the primitives' objectTessellate).
 function arcSegments(radius, angle, tol, min = 8) {
   if (!(radius > tol)) return min;
   const step = 2 * Math.acos(1 - tol / radius);
   return Math.max(min, Math.ceil(angle / step));
 }
-function cylinderSegments(r) {
-  const shift = tolerance > 4e-9 * r ? 1e-9 : 0;
-  const e = tolerance - 2 * shift * r;
-  return arcSegments(r, 2 * Math.PI, 2 * r * e / (r + e));
+// Rounded up to m·2^k, m in 4..7.
+function circleSegments(n) {
+  let scale = 1;
+  while (n > 8 * scale) scale *= 2;
+  return Math.ceil(n / scale) * scale;
 }
-// csgray's geodesic sphere has 20 f² triangles, Manifold's n²/2: n = √40 f,
-// a multiple of 4; f as csgray first tries it (within one refinement).
+// A circle's polygon, made for nine tenths of the tolerance; its error.
+function circlePolygon(r) {
+  const shift = tolerance > 4e-9 * r ? 1e-9 : 0;
+  const e = 0.9 * tolerance - 2 * shift * r;
+  const segments = circleSegments(arcSegments(r, 2 * Math.PI, 2 * r * e / (r + e)));
+  const c = Math.cos(Math.PI / segments);
+  return {segments, error: r * (1 - c) / (1 + c) + 2 * shift * r};
+}
+// csgray's geodesic sphere of frequency f has 20 f² triangles, Manifold's
+// sphere of n segments n²/2: n = √40 f, a multiple of 4. f as csgray picks
+// it: from the largest triangle, raised by a tenth until the sphere's
+// measured sag (the largest circumradius of a triangle of one face of the
+// unit icosahedron cut f × f) is within the tolerance.
+const phi = (1 + Math.sqrt(5)) / 2;
+const face = [[-1, phi, 0], [-phi, 0, 1], [0, 1, phi]];  // csgray's face {0, 11, 5}
+function geodesicSag(f) {
+  const point = (i, j) => {
+    const w = [f - i, i - j, j], p = [0, 0, 0];
+    for (let k = 0; k < 3; ++k) for (let a = 0; a < 3; ++a) p[a] += w[k] * face[k][a];
+    const l = Math.hypot(...p);
+    return p.map(x => x / l);
+  };
+  const sub = (a, b) => a.map((x, k) => x - b[k]);
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  let worst = 0;
+  const sag = (a, b, c) => {
+    const rho = Math.hypot(...sub(b, a)) * Math.hypot(...sub(c, b)) * Math.hypot(...sub(a, c)) /
+                (2 * Math.hypot(...cross(sub(b, a), sub(c, a))));
+    worst = Math.max(worst, 1 - Math.sqrt(Math.max(0, 1 - rho * rho)));
+  };
+  for (let i = 0; i < f; ++i)
+    for (let j = 0; j <= i; ++j) {
+      sag(point(i, j), point(i + 1, j), point(i + 1, j + 1));
+      if (j < i) sag(point(i, j), point(i + 1, j + 1), point(i, j + 1));
+    }
+  return worst;
+}
 function sphereSegments(r) {
   const edge = Math.sqrt(12 * r * Math.min(tolerance, r));
-  const f = Math.max(2, Math.ceil(1.1071 * r / edge));
+  let f = Math.max(2, Math.ceil(1.1071 * r / edge));
+  for (;;) {
+    const c = 1 - geodesicSag(f);
+    if (r * (1 - c) / (1 + c) <= tolerance) break;
+    f = Math.ceil(f * 1.1);
+  }
   return 4 * Math.round(Math.sqrt(40) * f / 4);
 }
 // Minimax placement as csgray's: vertices k = 2/(1 + cos(π/n)) out.
 const out = n => 2 / (1 + Math.cos(Math.PI / n));
 function cylinder(r1, r2, h) {
-  const n = cylinderSegments(Math.max(r1, r2));
+  const n = circlePolygon(Math.max(r1, r2)).segments;
   return Manifold.cylinder(h, r1 * out(n), r2 * out(n), n);
 }
 function sphere(r) { return Manifold.sphere(r, sphereSegments(r)); }
+// The turn on the circle polygon of R + r, the tube within what it leaves.
 function torus(R, r) {
-  const segments = arcSegments(R + r, 2 * Math.PI, tolerance / 2);
-  const chords = arcSegments(r, 2 * Math.PI, tolerance / 2, 8);
-  return CrossSection.circle(r, chords).translate([R, 0]).revolve(segments);
+  const circle = circlePolygon(R + r);
+  const chords = arcSegments(r, 2 * Math.PI, tolerance - circle.error, 8);
+  return CrossSection.circle(r, chords).translate([R, 0]).revolve(circle.segments);
 }
 const box = (x, y, z) => Manifold.cube([x, y, z]);
 
