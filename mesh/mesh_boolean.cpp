@@ -183,24 +183,28 @@ std::string describe(const Solid* solid) {
 }
 
 // The primitives of the part whose boxes (grown by the tolerance) hold p,
-// the first four by their script lines: who to look at when the mesh
-// fails near p.
+// the first four by their script lines, or else the one whose box is
+// nearest: who to look at when the mesh fails near p.
 std::string primitivesNear(const Solid& solid, const dvec3& p, double tolerance) {
   std::vector<std::string> names;
   std::size_t count = 0;
+  const Solid* nearest = nullptr;
+  double nearestDistance = kInfinity;
   std::vector<const Solid*> pending = {&solid};
   while (!pending.empty()) {
     const Solid* s = pending.back();
     pending.pop_back();
     const Bounds b = s->bounds();
-    if (b.empty() || !Bounds{b.lo - dvec3(tolerance), b.hi + dvec3(tolerance)}.contains(p))
-      continue;
+    if (b.empty()) continue;
     if (dynamic_cast<const Primitive*>(s) == nullptr) {
       for (const SolidPtr& child : s->children()) pending.push_back(child.get());
       continue;
     }
-    if (++count <= 4) names.push_back(describe(s));
+    const double distance = glm::length(glm::max(glm::max(b.lo - p, p - b.hi), dvec3(0.0)));
+    if (distance < nearestDistance) nearestDistance = distance, nearest = s;
+    if (distance <= tolerance && ++count <= 4) names.push_back(describe(s));
   }
+  if (count == 0 && nearest != nullptr) names.push_back(describe(nearest));
   std::string text;
   for (std::size_t k = 0; k < names.size(); ++k)
     text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];

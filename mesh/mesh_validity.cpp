@@ -148,6 +148,31 @@ std::string meetingPoint(const TriangleMesh& mesh, std::uint32_t f, std::uint32_
       if (mesh.points[v] == mesh.points[w])
         return " at " + coordinates(mesh.points[v]) +
                ", where two parts touch at a point or an edge";
+  // Else a point of their crossing (computed in doubles: a place to
+  // look, not a proof), or the middle of their corners if that fails.
+  const Kernel::Triangle_3 s(point(mesh.points[a[0]]), point(mesh.points[a[1]]),
+                             point(mesh.points[a[2]]));
+  const Kernel::Triangle_3 t(point(mesh.points[b[0]]), point(mesh.points[b[1]]),
+                             point(mesh.points[b[2]]));
+  if (!s.is_degenerate() && !t.is_degenerate())
+    if (const auto crossing = CGAL::intersection(s, t)) {
+      // The middle of the crossing: a point, a segment, a triangle or a
+      // polygon where the faces overlap in one plane.
+      std::vector<Kernel::Point_3> corners;
+      if (const auto* p = boost::get<Kernel::Point_3>(&*crossing)) corners = {*p};
+      if (const auto* segment = boost::get<Kernel::Segment_3>(&*crossing))
+        corners = {segment->source(), segment->target()};
+      if (const auto* triangle = boost::get<Kernel::Triangle_3>(&*crossing))
+        corners = {triangle->vertex(0), triangle->vertex(1), triangle->vertex(2)};
+      if (const auto* polygon = boost::get<std::vector<Kernel::Point_3>>(&*crossing))
+        corners = *polygon;
+      if (!corners.empty()) {
+        dvec3 middle(0.0);
+        for (const Kernel::Point_3& c : corners)
+          middle += dvec3(c.x(), c.y(), c.z()) / double(corners.size());
+        return " near " + coordinates(middle);
+      }
+    }
   dvec3 sum(0.0);
   for (std::uint32_t v : a) sum += mesh.points[v] / 6.0;
   for (std::uint32_t v : b) sum += mesh.points[v] / 6.0;
