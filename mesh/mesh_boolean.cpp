@@ -13,6 +13,7 @@
 #include "mesh/glued_union.h"
 #include "mesh/mesh_validity.h"
 #include "mesh/rounded_repair.h"
+#include "mesh/stray_shells.h"
 #include "modeler/boolean.h"
 #include "modeler/primitive.h"
 
@@ -130,17 +131,19 @@ dvec3 vertexOffset(const Mesh& mesh, typename Mesh::Vertex_index v, double delta
   return shift;
 }
 
-// Every face of a closed mesh moved by delta along its normal (vertexOffset).
+// The faces of a closed mesh moved by delta along their normals
+// (vertexOffset) where they come within `near` (the other operand's box):
+// a contact is resolved where it is, and the rest of the mesh keeps its
+// exact points, so that a later cut flush with a face far from the
+// contact takes all of it instead of leaving a sheet delta thick.
 template <class Mesh>
-void offsetMesh(Mesh& mesh, double delta) {
-  std::vector<dvec3> moved;
-  moved.reserve(mesh.number_of_vertices());
-  for (auto v : mesh.vertices()) moved.push_back(pointOf(mesh, v) + vertexOffset(mesh, v, delta));
-  std::size_t k = 0;
+void offsetMesh(Mesh& mesh, double delta, const Bounds& near) {
+  std::vector<std::pair<typename Mesh::Vertex_index, dvec3>> moved;
   for (auto v : mesh.vertices()) {
-    const dvec3& q = moved[k++];
-    mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
+    const dvec3 p = pointOf(mesh, v);
+    if (near.contains(p)) moved.emplace_back(v, p + vertexOffset(mesh, v, delta));
   }
+  for (const auto& [v, q] : moved) mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
 }
 
 // Where solids touch at a point, CGAL's boolean keeps the mesh a 2-manifold
@@ -520,8 +523,9 @@ class Evaluator {
     for (const Offsets& offsets : tries) {
       a.mesh = keptA;
       b.mesh = keptB;
-      if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a);
-      if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b);
+      const dvec3 reach(tolerance_);
+      if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a, {b.box.lo - reach, b.box.hi + reach});
+      if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b, {a.box.lo - reach, a.box.hi + reach});
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);
@@ -662,7 +666,14 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // away without moving any other point.
   removeDegenerateFaces(rounded);
   counts.contacts += separateCoincidentVertices(rounded, kContactOffset * tolerance, stored) > 0;
-  PartMesh part = partOf(rounded, evaluator.materials);
+  // The part's mesh from the rounded one, without the slivers a cut left
+  // of solids it should have taken whole (removeStrayShells).
+  auto partFrom = [&](const RoundedMesh& mesh) {
+    PartMesh made = partOf(mesh, evaluator.materials);
+    counts.strayShells = removeStrayShells(made, solid, tolerance);
+    return made;
+  };
+  PartMesh part = partFrom(rounded);
 
   const auto start = std::chrono::steady_clock::now();
   std::string defect = meshDefect(part.mesh);
@@ -675,11 +686,11 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
     // the tolerance, or the crossing stays and the export fails.
     ++counts.repairs;
     removeSlivers(rounded, 0.01 * tolerance);
-    part = partOf(rounded, evaluator.materials);
+    part = partFrom(rounded);
     defect = meshDefect(part.mesh);
     if (!defect.empty()) {
       removeCrossings(rounded, 0.01 * tolerance);
-      part = partOf(rounded, evaluator.materials);
+      part = partFrom(rounded);
       defect = meshDefect(part.mesh);
     }
   }

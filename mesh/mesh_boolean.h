@@ -21,6 +21,7 @@ struct MeshBooleanStats {
   std::size_t glued = 0;          // unions of solids stacked on the same faces
   std::size_t repairs = 0;        // self-intersections from rounding removed
   std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
+  std::size_t strayShells = 0;    // slivers outside the exact part, removed
   double checkSeconds = 0.0;      // in meshDefect
 };
 

@@ -203,6 +203,39 @@ TEST(ContactExport, ATorusTangentToACylinder) {
                kTolerance * (2 * kPi * 10 * 20 + 2 * kPi * 100 + 4 * kPi * kPi * 12 * 2));
 }
 
+TEST(ContactExport, ABallInTheRodThatCutsItIsTakenWhole) {
+  // A ball of radius 1 inside a rod of radius 1 that is cut away, tangent
+  // to its side and caps: both meshes straddle their surfaces, so the
+  // ball's vertices stand out of the rod's chords and the cut leaves
+  // slivers of it, which the exact part does not hold and the export
+  // removes. A plate 6 × 6 × 2 with the rod's hole: 72 − 2π.
+  const std::string source =
+      "return (box{size={6, 6, 2}}:translate(-3, -3, -1) + sphere(1))\n"
+      "  - cylinder{r=1, h=2}:translate(0, 0, -1)";
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+  EXPECT_GE(stats.strayShells, 1u);
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  exportsValid(source, 72 - 2 * kPi, kTolerance * (2 * 36 + 4 * 12 + 2 * kPi * 2));
+}
+
+TEST(ContactExport, SeparatePiecesAndCavitiesAreKept) {
+  // Two balls apart, thinner than the tolerance by the measure of a
+  // sliver (volume under tolerance × area), so they are probed, and a box
+  // with a ball's cavity: shells that the part does hold stay.
+  MeshBooleanStats stats;
+  TriangleMesh mesh = meshOfSolid(*part("return sphere(0.02) + sphere(0.02):translate(1, 0, 0)"),
+                                  kTolerance, nullptr, &stats)
+                          .mesh;
+  EXPECT_EQ(meshShells(mesh).count, 2u);
+  EXPECT_EQ(stats.strayShells, 0u);
+  mesh = meshOfSolid(*part("return box(4) - sphere(1):translate(2, 2, 2)"), kTolerance, nullptr,
+                     &stats)
+             .mesh;
+  EXPECT_EQ(meshShells(mesh).count, 2u);
+  EXPECT_EQ(stats.strayShells, 0u);
+}
+
 TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
   // Boxes on a grid that meet corner to corner at (8, 8, 6), among others
   // that share faces and edges, less a box that removes exactly a cell:
