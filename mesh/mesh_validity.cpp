@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -136,9 +137,10 @@ std::size_t shellCount(const TriangleMesh& mesh, const std::vector<std::uint32_t
   return shells;
 }
 
-// Where two crossing faces are, for the message: the midpoint of their
-// centroids. (Not their intersection: constructing that overflows on the
-// huge coordinates a broken file may hold, and the message needs no more.)
+// Where two crossing faces meet, for the message: in plain doubles, and
+// only points that come out finite (CGAL's constructions in Epick may
+// overflow on the huge coordinates a broken file holds, and its exact
+// fallback then stops the process on a NaN), so a place to look.
 std::string meetingPoint(const TriangleMesh& mesh, std::uint32_t f, std::uint32_t g) {
   const auto &a = mesh.triangles[f], &b = mesh.triangles[g];
   // Two faces with a corner at one place (parts that touch at a point or
@@ -148,32 +150,35 @@ std::string meetingPoint(const TriangleMesh& mesh, std::uint32_t f, std::uint32_
       if (mesh.points[v] == mesh.points[w])
         return " at " + coordinates(mesh.points[v]) +
                ", where two parts touch at a point or an edge";
-  // Else a point of their crossing (computed in doubles: a place to
-  // look, not a proof), or the middle of their corners if that fails.
-  const Kernel::Triangle_3 s(point(mesh.points[a[0]]), point(mesh.points[a[1]]),
-                             point(mesh.points[a[2]]));
-  const Kernel::Triangle_3 t(point(mesh.points[b[0]]), point(mesh.points[b[1]]),
-                             point(mesh.points[b[2]]));
-  if (!s.is_degenerate() && !t.is_degenerate())
-    if (const auto crossing = CGAL::intersection(s, t)) {
-      // The middle of the crossing: a point, a segment, a triangle or a
-      // polygon where the faces overlap in one plane.
-      std::vector<Kernel::Point_3> corners;
-      if (const auto* p = boost::get<Kernel::Point_3>(&*crossing)) corners = {*p};
-      if (const auto* segment = boost::get<Kernel::Segment_3>(&*crossing))
-        corners = {segment->source(), segment->target()};
-      if (const auto* triangle = boost::get<Kernel::Triangle_3>(&*crossing))
-        corners = {triangle->vertex(0), triangle->vertex(1), triangle->vertex(2)};
-      if (const auto* polygon = boost::get<std::vector<Kernel::Point_3>>(&*crossing))
-        corners = *polygon;
-      if (!corners.empty()) {
-        dvec3 middle(0.0);
-        for (const Kernel::Point_3& c : corners)
-          middle += dvec3(c.x(), c.y(), c.z()) / double(corners.size());
-        return " near " + coordinates(middle);
-      }
-    }
+  // Else the middle of where the edges of each pierce the other (in
+  // doubles: a place to look, not a proof), or of their corners if none
+  // does (faces folded onto each other in one plane).
   dvec3 sum(0.0);
+  int found = 0;
+  for (int side = 0; side < 2; ++side) {
+    const auto& edges = side == 0 ? a : b;
+    const auto& face = side == 0 ? b : a;
+    const dvec3 &f0 = mesh.points[face[0]], &f1 = mesh.points[face[1]], &f2 = mesh.points[face[2]];
+    const dvec3 normal = glm::cross(f1 - f0, f2 - f0);
+    const double area2 = glm::dot(normal, normal);
+    if (!(area2 > 0.0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const dvec3 &p = mesh.points[edges[k]], &q = mesh.points[edges[(k + 1) % 3]];
+      const double dp = glm::dot(normal, p - f0), dq = glm::dot(normal, q - f0);
+      if ((dp > 0.0 && dq > 0.0) || (dp < 0.0 && dq < 0.0) || dp == dq) continue;
+      const dvec3 x = p + (dp / (dp - dq)) * (q - p);
+      // Inside the face: on the inner side of each of its edges.
+      const double u = glm::dot(glm::cross(f1 - x, f2 - x), normal);
+      const double v = glm::dot(glm::cross(f2 - x, f0 - x), normal);
+      const double w = glm::dot(glm::cross(f0 - x, f1 - x), normal);
+      const double slack = -1e-9 * area2;
+      if (!(u >= slack && v >= slack && w >= slack) || !std::isfinite(x.x + x.y + x.z)) continue;
+      sum += x;
+      ++found;
+    }
+  }
+  if (found > 0) return " near " + coordinates(sum / double(found));
+  sum = dvec3(0.0);
   for (std::uint32_t v : a) sum += mesh.points[v] / 6.0;
   for (std::uint32_t v : b) sum += mesh.points[v] / 6.0;
   return " near " + coordinates(sum);

@@ -399,9 +399,10 @@ TEST(ContactExport, FortyFrustumsStackedOnSharedRims) {
   const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance, nullptr, &stats).mesh;
   EXPECT_EQ(meshDefect(mesh), "");
   EXPECT_NEAR(mesh.volume(), exact, kTolerance * (side + 2 * kPi * 26 * 26));
-  // Most neighbours share a rung of the segment ladder and are glued; the
-  // rest are corefined.
-  EXPECT_GE(stats.glued, 30u);
+  // Each rim is the polygon of its own radius, so neighbours meet on the
+  // same points and are glued, but where the side between two rims of
+  // different segments would stray past the tolerance.
+  EXPECT_GE(stats.glued, 38u);
   EXPECT_EQ(stats.glued + stats.merges + stats.corefinements, 39u);
   EXPECT_EQ(meshShells(mesh).count, 1u);
   EXPECT_TRUE(test::checksOut(*scene.objects[0], kTolerance, 5000));

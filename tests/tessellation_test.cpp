@@ -393,6 +393,55 @@ TEST(Tessellation, FrustumsOnASharedRimOfNearbyRadiiMeetOnTheSamePolygon) {
   EXPECT_EQ(top, bottom);
 }
 
+// The points of a rim at height z, and the largest distance of the mesh's
+// triangles (sampled 30 × 30) from the cone through (r1, 0) and (r2, h).
+std::set<std::tuple<double, double>> rimAt(const TriangleMesh& mesh, double z) {
+  std::set<std::tuple<double, double>> rim;
+  for (const dvec3& p : mesh.points)
+    if (p.z == z && (p.x != 0.0 || p.y != 0.0)) rim.emplace(p.x, p.y);
+  return rim;
+}
+double coneDistance(const TriangleMesh& mesh, double r1, double r2, double h) {
+  double worst = 0.0;
+  for (const auto& t : mesh.triangles)
+    for (int u = 0; u <= 30; ++u)
+      for (int v = 0; u + v <= 30; ++v) {
+        const dvec3 p = (double(u) * mesh.points[t[0]] + double(v) * mesh.points[t[1]] +
+                         double(30 - u - v) * mesh.points[t[2]]) /
+                        30.0;
+        if (p.z <= 0.0 || p.z >= h) continue;  // the caps are flat and exact
+        worst = std::max(worst, std::abs((std::hypot(p.x, p.y) - r1) * h - (r2 - r1) * p.z) /
+                                    std::hypot(h, r2 - r1));
+      }
+  return worst;
+}
+
+TEST(Tessellation, AFrustumsRimsAreThePolygonsOfTheirOwnRadii) {
+  // 14 and 16 take 64 and 80 segments, each rim its own, so that frustums
+  // stacked on any rim meet on the same points; the side between them
+  // stays within the tolerance of the cone.
+  const double tolerance = 0.01;
+  const TriangleMesh frustum = cone(14.0, 16.0, 2.0)->tessellate(tolerance, Bounds::everything());
+  const TriangleMesh below = cone(12.0, 14.0, 2.0)->tessellate(tolerance, Bounds::everything());
+  const TriangleMesh above = cone(16.0, 15.0, 2.0)->tessellate(tolerance, Bounds::everything());
+  EXPECT_EQ(rimAt(frustum, 0.0).size(), 64u);
+  EXPECT_EQ(rimAt(frustum, 2.0).size(), 80u);
+  EXPECT_EQ(rimAt(frustum, 0.0), rimAt(below, 2.0));
+  EXPECT_EQ(rimAt(frustum, 2.0), rimAt(above, 0.0));
+  EXPECT_LE(coneDistance(frustum, 14.0, 16.0, 2.0), tolerance);
+  EXPECT_EQ(meshDefect(frustum), "");
+}
+
+TEST(Tessellation, ASteepConeKeepsOnePolygonForBothRims) {
+  // 10 and 1 would take 56 and 20 segments; a side zipped between them
+  // strays past the tolerance, so both rims take the larger radius's.
+  const double tolerance = 0.01;
+  const TriangleMesh steep = cone(10.0, 1.0, 5.0)->tessellate(tolerance, Bounds::everything());
+  EXPECT_EQ(rimAt(steep, 0.0).size(), rimAt(steep, 5.0).size());
+  EXPECT_LE(coneDistance(steep, 10.0, 1.0, 5.0), tolerance);
+  EXPECT_EQ(meshDefect(steep), "");
+}
+
 TEST(Tessellation, VertexCountFollowsTheTolerance) {
   // A quarter of the tolerance: about twice the segments in each curved
   // direction (segments ∝ 1/√tol), so 4× the vertices of a doubly curved

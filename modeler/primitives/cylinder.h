@@ -4,6 +4,7 @@
 #pragma once
 
 #include "modeler/primitive.h"
+#include "modeler/tessellation.h"
 
 namespace csgray {
 
@@ -25,6 +26,7 @@ class Cylinder : public Primitive {
 
  private:
   double radiusAt(double z) const { return r1_ + slope_ * z; }
+  TriangleMesh rimsAndSides(const CirclePolygon rim[2], double tolerance) const;
 
   double r1_, r2_, height_;
   double slope_;  // dr/dz
