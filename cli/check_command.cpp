@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cli/crash_guard.h"
 #include "cli/export_command.h"
 #include "cli/heap_reserve.h"
 #include "mesh/part_check.h"
@@ -13,7 +14,10 @@ int checkScene(const Scene& scene, const CheckCommandOptions& options) {
   const SolidPtr part = printedPart(scene, options.script, "check");
   // The export's booleans, as in csgray export (cli/heap_reserve.h).
   reserveHugePageHeap(std::size_t(512) << 20);
-  const CheckReport report = checkPart(*part, options.check);
+  const CheckReport report = [&] {
+    const CrashGuard guard(options.script);
+    return checkPart(*part, options.check);
+  }();
   const std::string text = options.json ? checkReportJson(report, options.script)
                                         : checkReportText(report, options.script);
   std::fputs(text.c_str(), stdout);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "cli/crash_guard.h"
 #include "cli/heap_reserve.h"
 #include "io/atomic_file.h"
 #include "mesh/mesh_boolean.h"
@@ -62,6 +63,7 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
   reserveHugePageHeap(std::size_t(512) << 20);
   MeshBooleanStats counts;
   PartMesh mesh = [&] {
+    const CrashGuard guard(options.script);
     try {
       return meshOfSolid(*part, options.tolerance, storedCoordinate(format, options.ascii),
                          &counts);

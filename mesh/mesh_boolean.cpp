@@ -185,6 +185,12 @@ std::string describe(const Solid* solid) {
   return line.empty() ? solid->kind() : solid->kind() + " (" + line + ")";
 }
 
+// What booleanInProgress() returns.
+char inProgress[600] = "the booleans";
+void setBooleanInProgress(const std::string& text) {
+  std::snprintf(inProgress, sizeof inProgress, "%s", text.c_str());
+}
+
 // The primitives of the part whose boxes (grown by the tolerance) hold p,
 // the first four by their script lines, or else the one whose box is
 // nearest: who to look at when the mesh fails near p.
@@ -489,6 +495,7 @@ class Evaluator {
       return;
     }
     ++stats_.corefinements;
+    setBooleanInProgress(booleanText(a, b, op));
     // The operands as they were, for another try.
     const Mesh keptA = a.mesh, keptB = b.mesh;
     if (attempt(a, b, op)) return boxAfter(a);
@@ -561,13 +568,18 @@ class Evaluator {
                                dvec3(box.xmax(), box.ymax(), box.zmax())};
   }
 
-  [[noreturn]] void unresolved(const Piece& a, const Piece& b, Boolean::Op op) {
+  // "the union of box (part.lua:3) and cylinder (part.lua:5) near (x, y, z)"
+  static std::string booleanText(const Piece& a, const Piece& b, Boolean::Op op) {
     const Bounds where = a.box.intersected(b.box);
     char at[200];
     std::snprintf(at, sizeof at, " near (%g, %g, %g)", 0.5 * (where.lo.x + where.hi.x),
                   0.5 * (where.lo.y + where.hi.y), 0.5 * (where.lo.z + where.hi.z));
-    throw std::runtime_error(std::string("the ") + opName(op) + " of " + describe(a.origin) +
-                             " and " + describe(b.origin) + at +
+    return std::string("the ") + opName(op) + " of " + describe(a.origin) + " and " +
+           describe(b.origin) + at;
+  }
+
+  [[noreturn]] void unresolved(const Piece& a, const Piece& b, Boolean::Op op) {
+    throw std::runtime_error(booleanText(a, b, op) +
                              " is not a 2-manifold, even with their contact resolved");
   }
 
@@ -642,6 +654,8 @@ PartMesh partOf(const RoundedMesh& rounded, std::vector<MaterialPtr> materials) 
 }
 
 }  // namespace
+
+const char* booleanInProgress() { return inProgress; }
 
 PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored,
                      MeshBooleanStats* stats) {

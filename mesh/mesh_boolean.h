@@ -35,6 +35,12 @@ struct MeshBooleanStats {
 // file will hold: floats for binary STL, ...); faces that rounding leaves
 // without area are removed. The result is checked with meshDefect (closed, 2-manifold,
 // outward, no self-intersections); std::runtime_error says why it fails.
+// The boolean meshOfSolid is evaluating ("the union of box (part.lua:3) and
+// cylinder (part.lua:5) near (1, 2, 3)"), or "the booleans" outside one:
+// for a message when the process must end in the middle of it. A fixed
+// buffer, safe to read from a signal handler.
+const char* booleanInProgress();
+
 PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored = nullptr,
                      MeshBooleanStats* stats = nullptr);
 
