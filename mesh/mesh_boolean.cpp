@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
 
+#include "mesh/convex_intersection.h"
 #include "mesh/exact_boolean.h"
 #include "mesh/glued_union.h"
 #include "mesh/mesh_validity.h"
@@ -16,6 +19,7 @@
 #include "mesh/stray_shells.h"
 #include "modeler/boolean.h"
 #include "modeler/primitive.h"
+#include "modeler/tessellation.h"
 
 namespace csgray {
 
@@ -281,6 +285,10 @@ class Evaluator {
         return unite(std::move(pieces));
       }
       case Boolean::Op::Intersection: {
+        if (std::optional<Piece> convex = convexIntersection(operands, region)) {
+          if (!convex->empty()) convex->origin = &solid;
+          return std::move(*convex);
+        }
         std::vector<Piece> pieces;
         for (const SolidPtr& s : operands) {
           pieces.push_back(evaluate(*s, region));
@@ -333,17 +341,23 @@ class Evaluator {
                     kMaxExportTriangles, tolerance_);
       throw std::invalid_argument(text);
     }
+    return pieceOf(triangles, primitive.material(), primitive.kind());
+  }
+
+  // The exact mesh of triangles, its faces tagged with one material.
+  Piece pieceOf(const TriangleMesh& triangles, const MaterialPtr& material,
+                const std::string& kind) {
     Piece piece;
     if (triangles.empty()) return piece;
     Mesh& mesh = piece.mesh;
     mesh.reserve(triangles.points.size(), triangles.size() * 3 / 2, triangles.size());
     for (const dvec3& p : triangles.points) mesh.add_vertex(typename K::Point_3(p.x, p.y, p.z));
     auto tags = tagsOf(mesh);
-    const std::uint32_t tag = tagOf(primitive.material());
+    const std::uint32_t tag = tagOf(material);
     for (const TriangleMesh::Triangle& t : triangles.triangles) {
       Face f = mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2]));
       if (f == Mesh::null_face())
-        throw std::logic_error(primitive.kind() + ": its tessellation is not a 2-manifold");
+        throw std::logic_error(kind + ": its tessellation is not a 2-manifold");
       tags[f] = tag;
     }
     piece.box = triangles.bounds();
@@ -351,6 +365,31 @@ class Evaluator {
       for (double x : {p.x, p.y, p.z})
         piece.shape = piece.shape * 1099511628211u ^ std::hash<double>{}(x);
     return piece;
+  }
+
+  // An intersection of convex primitives of one material (a box cut by a
+  // half-space) as the convex polytope of all their planes, its corners
+  // where three planes meet (convex_intersection.h); nothing when an
+  // operand is not such a primitive. Closed by the faces of the region
+  // grown by a margin where the planes leave it open.
+  std::optional<Piece> convexIntersection(std::span<const SolidPtr> operands,
+                                          const Bounds& region) {
+    std::vector<BoundingPlane> planes;
+    const MaterialPtr* material = nullptr;
+    for (const SolidPtr& operand : operands) {
+      auto* primitive = dynamic_cast<const Primitive*>(operand.get());
+      if (primitive == nullptr) return std::nullopt;
+      if (material != nullptr && primitive->material() != *material) return std::nullopt;
+      material = &primitive->material();
+      auto own = boundingPlanes(*primitive, frame_.evalFrame(primitive->frame()));
+      if (!own) return std::nullopt;
+      planes.insert(planes.end(), own->begin(), own->end());
+    }
+    if (material == nullptr || !region.finite()) return std::nullopt;
+    stats_.primitives += operands.size();
+    const TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
+    triangles_ += triangles.size();
+    return pieceOf(triangles, *material, "intersection");
   }
 
   // Adds b's shells to a: their boxes are apart, so no face of one meets

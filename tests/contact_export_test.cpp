@@ -280,6 +280,45 @@ TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
   }
 }
 
+// ---- Convex intersections ---------------------------------------------------------
+
+TEST(ContactExport, ABoxCutByAHalfSpaceIsOneConvexPolytope) {
+  // The unit cube below x + y + z = 1.5 is half of it, by symmetry; turned
+  // and moved, it stays half. No corefinement: the planes' polytope.
+  for (const char* source : {"return box(1) * half_space{normal={1, 1, 1}, offset=1.5}",
+                             "return (box(1) * half_space{normal={1, 1, 1}, offset=1.5})"
+                             ":rotate(10, 20, 30):translate(3, 4, 5)",
+                             "return box(1) * half_space{normal={1, 1, 1}, offset=1.5} * box(2)"}) {
+    SCOPED_TRACE(source);
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(stats.corefinements, 0u);
+    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_NEAR(mesh.volume(), 0.5, 1e-9);
+    EXPECT_TRUE(test::checksOut(*part(source), kTolerance));
+  }
+  // Operands of two colours keep their faces' colours through CGAL.
+  MeshBooleanStats stats;
+  const std::string coloured =
+      "return box(1):material{color={1, 0, 0}}"
+      " * half_space{normal={1, 1, 1}, offset=1.5}:material{color={0, 0, 1}}";
+  const PartMesh mesh = meshOfSolid(*part(coloured), kTolerance, nullptr, &stats);
+  EXPECT_EQ(stats.corefinements, 1u);
+  EXPECT_EQ(mesh.materials.size(), 2u);
+  EXPECT_NEAR(mesh.mesh.volume(), 0.5, 1e-9);
+}
+
+TEST(ContactExport, AnEmptyConvexIntersectionIsNothing) {
+  // A box above the half-space: the planes leave no volume.
+  MeshBooleanStats stats;
+  const PartMesh mesh =
+      meshOfSolid(*part("return box(1):translate(0, 0, 2) * half_space{normal={0, 0, 1}, offset=1}"
+                        " + sphere(1)"),
+                  kTolerance, nullptr, &stats);
+  EXPECT_EQ(meshDefect(mesh.mesh), "");
+  EXPECT_NEAR(mesh.mesh.volume(), 4.0 / 3.0 * kPi, kTolerance * 4 * kPi);
+}
+
 // ---- Random parts ------------------------------------------------------------------
 
 // A union of ten solids on a grid of 2: boxes 2 and 4 long that share

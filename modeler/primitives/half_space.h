@@ -10,6 +10,8 @@ class HalfSpace : public Primitive {
  public:
   HalfSpace(const dvec3& normal, double offset);
   std::string kind() const override { return "half_space"; }
+  const dvec3& planeNormal() const { return normal_; }  // unit
+  double planeOffset() const { return offset_; }
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
