@@ -432,32 +432,41 @@ class Evaluator {
   // (glueAcrossPlane): grouped by their boxes they would be corefined as
   // parts of larger meshes (a stack's even and odd frustums). Candidates
   // are the pairs where one box's top face is in the plane of another's
-  // bottom face, on any axis, looked up by that coordinate; a piece glued
-  // into another leaves an empty piece behind.
+  // bottom face, on any axis, looked up by that coordinate. A glue costs
+  // the size of both meshes, so it goes in rounds in which each piece is
+  // glued once at most and tried a few times, as a balanced tree would:
+  // a stack of n costs n log n, not n², and a grid of cubes, whose merged
+  // blocks soon stop matching, no more than without gluing (50 × 50
+  // cubes: 4.1 s glued one by one, 2.0 s in rounds, 2.0 s before gluing
+  // was tried). A piece glued into another leaves an empty piece behind.
   void glueStacked(std::vector<Piece>& pieces) {
-    std::unordered_multimap<double, std::size_t> byTop[3];
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (!pieces[i].empty())
-        for (int k = 0; k < 3; ++k) byTop[k].emplace(pieces[i].box.hi[k], i);
-    std::vector<std::size_t> into(pieces.size());  // where each piece went
-    for (std::size_t i = 0; i < pieces.size(); ++i) into[i] = i;
-    auto home = [&](std::size_t i) {
-      while (into[i] != i) i = into[i];
-      return i;
-    };
-    for (std::size_t j = 0; j < pieces.size(); ++j) {
-      for (int k = 0; k < 3 && !pieces[j].empty(); ++k) {
-        auto [first, last] = byTop[k].equal_range(pieces[j].box.lo[k]);
-        for (auto it = first; it != last; ++it) {
-          const std::size_t i = home(it->second);
-          if (i == j || pieces[i].empty()) continue;
-          if (!glueAcrossPlane(pieces[i].mesh, pieces[j].mesh, pieces[i].box, pieces[j].box))
-            continue;
-          ++stats_.glued;
-          pieces[i].box.include(pieces[j].box);
-          pieces[j] = Piece{};
-          into[j] = i;
-          break;
+    constexpr int kTriesPerRound = 6;  // a box's faces
+    for (bool glued = true; glued;) {
+      glued = false;
+      std::unordered_multimap<double, std::size_t> byTop[3];
+      for (std::size_t i = 0; i < pieces.size(); ++i)
+        if (!pieces[i].empty())
+          for (int k = 0; k < 3; ++k) byTop[k].emplace(pieces[i].box.hi[k], i);
+      std::vector<bool> used(pieces.size(), false);
+      std::vector<int> tries(pieces.size(), 0);
+      for (std::size_t j = 0; j < pieces.size(); ++j) {
+        for (int k = 0; k < 3 && !pieces[j].empty() && !used[j]; ++k) {
+          auto [first, last] = byTop[k].equal_range(pieces[j].box.lo[k]);
+          for (auto it = first; it != last; ++it) {
+            const std::size_t i = it->second;
+            if (i == j || used[i] || pieces[i].empty() || tries[i] >= kTriesPerRound ||
+                tries[j] >= kTriesPerRound)
+              continue;
+            ++tries[i];
+            ++tries[j];
+            if (!glueAcrossPlane(pieces[i].mesh, pieces[j].mesh, pieces[i].box, pieces[j].box))
+              continue;
+            ++stats_.glued;
+            pieces[i].box.include(pieces[j].box);
+            pieces[j] = Piece{};
+            used[i] = used[j] = glued = true;
+            break;
+          }
         }
       }
     }

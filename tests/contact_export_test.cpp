@@ -109,6 +109,21 @@ TEST(ContactExport, SolidsStackedOnTheSameFacesAreGluedNotCorefined) {
   }
 }
 
+TEST(ContactExport, AGridOfCubesIsOneSolid) {
+  // 12 × 12 unit cubes side by side: a slab of volume 144, one shell,
+  // partly glued and partly corefined.
+  const std::string source =
+      "local cubes = {}\n"
+      "for i = 0, 11 do for j = 0, 11 do cubes[#cubes + 1] = box(1):translate(i, j, 0) end end\n"
+      "return union(cubes)";
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+  EXPECT_GT(stats.glued, 0u);
+  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_NEAR(mesh.volume(), 144.0, 1e-9);
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+}
+
 TEST(ContactExport, SolidsStackedOnFacesThatDifferAreCorefined) {
   // The same segments but another radius, a smaller box on a larger one,
   // a cylinder turned about its axis: the faces in the plane differ, so
