@@ -91,7 +91,7 @@ std::optional<PlaneFaces> facesInPlane(const ExactMesh& mesh, const ContactPlane
     bool flat = true;
     for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
       flat = flat && inPlane(v);
-      if (flat) corners[k] = *doublesOf(mesh.point(v));
+      if (flat && k < 3) corners[k] = *doublesOf(mesh.point(v));
       ++k;
     }
     if (!flat || k != 3) continue;
