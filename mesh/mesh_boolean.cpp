@@ -250,7 +250,7 @@ class Evaluator {
     Mesh mesh;
     Bounds box;
     const Solid* origin = nullptr;  // the primitive or boolean it was made by
-    std::size_t shape = 0;          // of a primitive's mesh: a hash of its points
+    std::size_t shape = 0;  // of a primitive's mesh: a hash of its points; 0 after a boolean
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
@@ -398,6 +398,7 @@ class Evaluator {
     tagsOf(b.mesh);
     a.mesh.join(b.mesh);
     a.box.include(b.box);
+    a.shape = 0;
     ++stats_.merges;
   }
 
@@ -463,6 +464,7 @@ class Evaluator {
               continue;
             ++stats_.glued;
             pieces[i].box.include(pieces[j].box);
+            pieces[i].shape = 0;
             pieces[j] = Piece{};
             used[i] = used[j] = glued = true;
             break;
@@ -540,6 +542,7 @@ class Evaluator {
     if (op == Boolean::Op::Union && glueAcrossPlane(a.mesh, b.mesh, a.box, b.box)) {
       ++stats_.glued;
       a.box.include(b.box);
+      a.shape = 0;
       return;
     }
     ++stats_.corefinements;
@@ -610,6 +613,7 @@ class Evaluator {
   }
 
   void boxAfter(Piece& a) {
+    a.shape = 0;
     CGAL::Bbox_3 box = PMP::bbox(a.mesh);
     a.box = a.empty() ? Bounds{}
                       : Bounds{dvec3(box.xmin(), box.ymin(), box.zmin()),

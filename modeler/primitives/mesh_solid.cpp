@@ -58,7 +58,8 @@ dvec3 unitNormal(const dvec3& a, const dvec3& b, const dvec3& c) {
   Quad largest = 0;
   for (Quad x : q) largest = std::max(largest, x < 0 ? -x : x);
   if (largest == 0) return n;
-  return glm::normalize(dvec3(double(q[0] / largest), double(q[1] / largest), double(q[2] / largest)));
+  return glm::normalize(
+      dvec3(double(q[0] / largest), double(q[1] / largest), double(q[2] / largest)));
 }
 
 [[noreturn]] void refuse(const std::string& message) {
