@@ -251,6 +251,9 @@ class Evaluator {
     Bounds box;
     const Solid* origin = nullptr;  // the primitive or boolean it was made by
     std::size_t shape = 0;  // of a primitive's mesh: a hash of its points; 0 after a boolean
+    // How far a contact's offset (corefine) moved some of its faces, at
+    // most: 0 while every face is where the model puts it.
+    double grown = 0.0;
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
@@ -306,6 +309,16 @@ class Evaluator {
         for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
         Piece cut = unite(std::move(cutters));
         if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
+        // A contact's offset moved some of the minuend's faces off the
+        // model's: a cut flush with such a face (a grid cell cut out next
+        // to two cells that touch along an edge) would leave a sheet of
+        // that thickness, so the cutter grows past it.
+        if (minuend.grown > 0.0) {
+          const dvec3 reach(tolerance_);
+          offsetMesh(cut.mesh, minuend.grown + kContactOffset * tolerance_,
+                     {minuend.box.lo - reach, minuend.box.hi + reach});
+          cut.shape = 0;
+        }
         corefine(minuend, cut, Boolean::Op::Difference);
         return minuend;
       }
@@ -399,6 +412,7 @@ class Evaluator {
     a.mesh.join(b.mesh);
     a.box.include(b.box);
     a.shape = 0;
+    a.grown = std::max(a.grown, b.grown);
     ++stats_.merges;
   }
 
@@ -465,6 +479,7 @@ class Evaluator {
             ++stats_.glued;
             pieces[i].box.include(pieces[j].box);
             pieces[i].shape = 0;
+            pieces[i].grown = std::max(pieces[i].grown, pieces[j].grown);
             pieces[j] = Piece{};
             used[i] = used[j] = glued = true;
             break;
@@ -543,12 +558,15 @@ class Evaluator {
       ++stats_.glued;
       a.box.include(b.box);
       a.shape = 0;
+      a.grown = std::max(a.grown, b.grown);
       return;
     }
     ++stats_.corefinements;
     setBooleanInProgress(booleanText(a, b, op));
     // The operands as they were, for another try.
     const Mesh keptA = a.mesh, keptB = b.mesh;
+    const double grown = std::max(a.grown, b.grown);
+    a.grown = grown;
     if (attempt(a, b, op)) return boxAfter(a);
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
     // in a pattern of them), or CGAL stopped half way (two coplanar edges
@@ -584,6 +602,7 @@ class Evaluator {
       const dvec3 reach(tolerance_);
       if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a, {b.box.lo - reach, b.box.hi + reach});
       if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b, {a.box.lo - reach, a.box.hi + reach});
+      a.grown = grown + std::max(std::abs(offsets.a), std::abs(offsets.b));
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);

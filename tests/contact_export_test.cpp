@@ -178,6 +178,18 @@ TEST(ContactExport, ACutWhosePiecesTouchAlongAnEdgeGoesThrough) {
       1000.0 - 2 * 125.0, 1.0);
 }
 
+TEST(ContactExport, ACutFlushWithAFaceThatAContactMovedLeavesNoSheet) {
+  // The first two boxes touch along the edge y = 6, z = 2; the union moves
+  // the faces there by a hundredth of the tolerance, and with them the
+  // upper box's face y = 6, which the cutter (x 6..10, y 6..8, z 2..4) is
+  // flush with. The cutter grows past the moved face: no sheet of the
+  // upper box is left standing in the cut (8 of its 32 taken).
+  exportsValid(
+      "return (box{size={2,2,2}}:translate(6,4,0) + box{size={4,4,2}}:translate(4,6,2)) - "
+      "box{size={4,2,2}}:translate(6,6,2)",
+      8.0 + 24.0, 0.1);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
