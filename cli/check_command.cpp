@@ -6,7 +6,7 @@
 #include "cli/crash_guard.h"
 #include "cli/export_command.h"
 #include "cli/heap_reserve.h"
-#include "mesh/part_check.h"
+#include "check/part_check.h"
 
 namespace csgray {
 

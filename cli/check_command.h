@@ -1,11 +1,11 @@
 // csgray check: a part script's export held against its exact model
-// (mesh/part_check.h), printed as text or JSON.
+// (check/part_check.h), printed as text or JSON.
 #pragma once
 
 #include <string>
 
-#include "modeler/check_report.h"
-#include "modeler/scene.h"
+#include "check/check_report.h"
+#include "scene/scene.h"
 
 namespace csgray {
 

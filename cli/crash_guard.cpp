@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include "mesh/mesh_boolean.h"
+#include "export/cgal/mesh_boolean.h"
 
 namespace csgray {
 

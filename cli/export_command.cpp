@@ -10,9 +10,9 @@
 #include "cli/crash_guard.h"
 #include "cli/heap_reserve.h"
 #include "io/atomic_file.h"
-#include "mesh/mesh_boolean.h"
-#include "mesh/mesh_writer.h"
-#include "modeler/boolean.h"
+#include "export/cgal/mesh_boolean.h"
+#include "meshfile/mesh_writer.h"
+#include "engine/boolean.h"
 
 namespace csgray {
 

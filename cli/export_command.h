@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-#include "modeler/scene.h"
+#include "scene/scene.h"
 
 namespace csgray {
 

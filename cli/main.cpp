@@ -19,8 +19,8 @@
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_plugin.h"
-#include "modeler/primitive.h"
-#include "modeler/script/script.h"
+#include "engine/primitive.h"
+#include "script/script.h"
 #include "raytrace/renderer.h"
 
 using namespace csgray;

@@ -3,8 +3,8 @@
 #include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/mesh_plugin.h"
-#include "mesh/mesh_import.h"
-#include "mesh/part_check.h"
+#include "meshfile/mesh_import.h"
+#include "check/part_check.h"
 
 extern "C" __attribute__((visibility("default"))) const csgray::MeshPlugin* csgray_mesh_plugin() {
   static const csgray::MeshPlugin plugin{csgray::checkExportOutput, csgray::exportScene,

@@ -10,13 +10,13 @@
 
 #include "cli/check_command.h"
 #include "cli/export_command.h"
-#include "modeler/triangle_mesh.h"
+#include "tessellation/triangle_mesh.h"
 
 namespace csgray {
 
 struct MeshPlugin {
   // As declared in cli/export_command.h, cli/check_command.h,
-  // mesh/mesh_import.h and mesh/part_check.h.
+  // meshfile/mesh_import.h and check/part_check.h.
   void (*checkExportOutput)(const ExportOptions& options);
   void (*exportScene)(const Scene& scene, const ExportOptions& options, double scriptSeconds);
   int (*checkScene)(const Scene& scene, const CheckCommandOptions& options);

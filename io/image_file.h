@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/png_file.h"
-#include "modeler/texture.h"
+#include "scene/texture.h"
 
 namespace csgray {
 

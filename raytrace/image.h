@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "modeler/ray.h"
+#include "engine/ray.h"
 
 namespace csgray {
 

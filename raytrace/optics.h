@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "modeler/ray.h"
+#include "engine/ray.h"
 
 namespace csgray {
 

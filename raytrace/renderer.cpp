@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "modeler/primitive.h"
+#include "engine/primitive.h"
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "modeler/bvh.h"
-#include "modeler/scene.h"
-#include "raytrace/camera.h"
+#include "engine/bvh.h"
+#include "scene/scene.h"
+#include "scene/camera.h"
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
 

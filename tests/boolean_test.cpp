@@ -2,7 +2,7 @@
 // predicates, spans against contains() on random lines for nested trees,
 // provenance and orientation of boundaries (flip on the faces of holes),
 // and the tree utilities (mapPrimitives, withDefaultMaterial, treeStats).
-#include "modeler/boolean.h"
+#include "engine/boolean.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/cylinder.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/sphere.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/half_space.h"
+#include "primitives/sphere.h"
 #include "test_support.h"
 
 namespace csgray {

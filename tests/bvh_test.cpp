@@ -1,7 +1,7 @@
 // The bounding volume hierarchy: it visits exactly the items whose boxes a
 // ray meets, and boolean nodes that traverse it give the same span lists
 // as the plain fold of every operand's spans, on random rays and windows.
-#include "modeler/bvh.h"
+#include "engine/bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <set>
 #include <vector>
 
-#include "modeler/boolean.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/cylinder.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/sphere.h"
+#include "engine/boolean.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/half_space.h"
+#include "primitives/sphere.h"
 #include "raytrace/renderer.h"
 #include "test_support.h"
 

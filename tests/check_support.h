@@ -1,12 +1,12 @@
 // The one-line check for our own tests: a solid is valid, and its export
-// agrees with it (csgray check, mesh/part_check.h):
+// agrees with it (csgray check, check/part_check.h):
 //   EXPECT_TRUE(test::checksOut(*part));
 // On failure the whole report is the message.
 #pragma once
 
 #include <gtest/gtest.h>
 
-#include "mesh/part_check.h"
+#include "check/part_check.h"
 
 namespace csgray::test {
 

@@ -1,4 +1,4 @@
-// csgray check (mesh/part_check.h): it passes sound parts with figures that
+// csgray check (check/part_check.h): it passes sound parts with figures that
 // match the analytic ones, fails broken meshes and says why, and warns of
 // operands that share faces and of walls and gaps too thin to print.
 #include <gtest/gtest.h>
@@ -10,15 +10,15 @@
 #include <sstream>
 
 #include "check_support.h"
-#include "mesh/axis_crossings.h"
-#include "mesh/mesh_boolean.h"
-#include "mesh/mesh_writer.h"
-#include "mesh/part_check.h"
-#include "modeler/boolean.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/cylinder.h"
-#include "modeler/primitives/sphere.h"
-#include "modeler/script/script.h"
+#include "check/axis_crossings.h"
+#include "export/cgal/mesh_boolean.h"
+#include "meshfile/mesh_writer.h"
+#include "check/part_check.h"
+#include "engine/boolean.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/sphere.h"
+#include "script/script.h"
 
 namespace csgray {
 namespace {

@@ -13,12 +13,12 @@
 #include <string>
 
 #include "check_support.h"
-#include "mesh/mesh_boolean.h"
-#include "mesh/mesh_validity.h"
-#include "mesh/mesh_writer.h"
-#include "modeler/boolean.h"
-#include "modeler/mesh_shells.h"
-#include "modeler/script/script.h"
+#include "export/cgal/mesh_boolean.h"
+#include "export/cgal/mesh_validity.h"
+#include "meshfile/mesh_writer.h"
+#include "engine/boolean.h"
+#include "tessellation/mesh_shells.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

@@ -16,10 +16,10 @@
 #include <utility>
 #include <vector>
 
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/convex_polyhedron.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/script/script.h"
+#include "primitives/box.h"
+#include "primitives/convex_polyhedron.h"
+#include "primitives/half_space.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "check_support.h"
-#include "modeler/boolean.h"
-#include "modeler/script/script.h"
+#include "engine/boolean.h"
+#include "script/script.h"
 #include "raytrace/renderer.h"
 #include "test_support.h"
 

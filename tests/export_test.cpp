@@ -14,13 +14,13 @@
 #include <numbers>
 
 #include "io/image_file.h"
-#include "mesh/mesh_boolean.h"
-#include "mesh/mesh_import.h"
-#include "mesh/mesh_reader.h"
-#include "mesh/mesh_validity.h"
-#include "mesh/mesh_writer.h"
-#include "modeler/boolean.h"
-#include "modeler/script/script.h"
+#include "export/cgal/mesh_boolean.h"
+#include "meshfile/mesh_import.h"
+#include "meshfile/mesh_reader.h"
+#include "export/cgal/mesh_validity.h"
+#include "meshfile/mesh_writer.h"
+#include "engine/boolean.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

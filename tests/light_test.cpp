@@ -1,6 +1,6 @@
 // Lights against their formulas: 1/d² falloff, the Warn spot light's cone
 // and cosⁿ falloff, and area lights whose samples cover the light evenly.
-#include "modeler/light.h"
+#include "scene/light.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // mesh that is not a solid is refused naming the faces, repair=true fixes
 // what it can and says so, and mesh{} in a script is a solid that takes
 // part in booleans, with its file kept inside the script's folder.
-#include "mesh/mesh_reader.h"
+#include "meshfile/mesh_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/mesh_import.h"
-#include "mesh/mesh_repair.h"
-#include "mesh/mesh_validity.h"
-#include "modeler/script/script.h"
+#include "meshfile/mesh_import.h"
+#include "export/cgal/mesh_repair.h"
+#include "export/cgal/mesh_validity.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

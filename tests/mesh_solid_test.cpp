@@ -4,7 +4,7 @@
 // through vertices and edges (watertightness), contains() against spans,
 // volumes, a 20 000-triangle sphere, no allocation per ray, and every
 // refusal, in C++ and through the script API.
-#include "modeler/primitives/mesh_solid.h"
+#include "primitives/mesh_solid.h"
 
 #include <gtest/gtest.h>
 
@@ -21,11 +21,11 @@
 #include <vector>
 
 #include "allocation_counter.h"
-#include "modeler/boolean.h"
-#include "modeler/polygon_triangulation.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/sphere.h"
-#include "modeler/script/script.h"
+#include "engine/boolean.h"
+#include "tessellation/polygon_triangulation.h"
+#include "primitives/box.h"
+#include "primitives/sphere.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

@@ -1,7 +1,7 @@
 // meshDefect's test for self-intersections against CGAL's own
 // (PMP::does_self_intersect) on meshes that fold and cross in every way:
 // faces apart, faces that share a corner, faces that share an edge.
-#include "mesh/mesh_validity.h"
+#include "export/cgal/mesh_validity.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -11,7 +11,7 @@
 
 #include <random>
 
-#include "modeler/primitives/sphere.h"
+#include "primitives/sphere.h"
 
 namespace csgray {
 namespace {

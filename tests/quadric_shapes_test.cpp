@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "modeler/boolean.h"
-#include "modeler/primitive.h"
-#include "modeler/primitives/quadric.h"
-#include "modeler/script/script.h"
+#include "engine/boolean.h"
+#include "engine/primitive.h"
+#include "primitives/quadric.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

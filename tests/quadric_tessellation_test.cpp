@@ -16,10 +16,10 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/mesh_validity.h"
-#include "modeler/primitives/quadric.h"
-#include "modeler/quadric_form.h"
-#include "modeler/script/script.h"
+#include "export/cgal/mesh_validity.h"
+#include "primitives/quadric.h"
+#include "engine/solvers/quadric_form.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "allocation_counter.h"
-#include "modeler/script/script.h"
-#include "raytrace/camera.h"
+#include "script/script.h"
+#include "scene/camera.h"
 #include "raytrace/renderer.h"
 
 namespace csgray {

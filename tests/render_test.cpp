@@ -9,9 +9,9 @@
 #include <numbers>
 #include <vector>
 
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/sphere.h"
+#include "primitives/box.h"
+#include "primitives/half_space.h"
+#include "primitives/sphere.h"
 #include "raytrace/renderer.h"
 
 namespace csgray {

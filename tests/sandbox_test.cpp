@@ -5,7 +5,7 @@
 
 #include <chrono>
 
-#include "modeler/script/script.h"
+#include "script/script.h"
 
 namespace csgray {
 namespace {

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "io/image_file.h"
-#include "modeler/boolean.h"
-#include "modeler/primitive.h"
-#include "modeler/script/script.h"
+#include "engine/boolean.h"
+#include "engine/primitive.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray {

@@ -1,14 +1,14 @@
 // The script front end: the API builds the solids it says, parameters are
 // checked, errors name the file and line, -D sets globals.
-#include "modeler/script/script.h"
+#include "script/script.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "modeler/boolean.h"
-#include "modeler/primitive.h"
+#include "engine/boolean.h"
+#include "engine/primitive.h"
 #include "test_support.h"
 
 namespace csgray {

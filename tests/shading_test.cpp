@@ -11,10 +11,10 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-#include "modeler/boolean.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/sphere.h"
+#include "engine/boolean.h"
+#include "primitives/box.h"
+#include "primitives/half_space.h"
+#include "primitives/sphere.h"
 #include "raytrace/renderer.h"
 
 namespace csgray {

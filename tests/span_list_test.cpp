@@ -2,7 +2,7 @@
 // booleans of the point sets on the line, checked against a brute-force
 // reference on random lists; plus the boundary bookkeeping (which operand a
 // boundary comes from, flip in a difference) and the container itself.
-#include "modeler/span_list.h"
+#include "engine/span_list.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "modeler/primitives/sphere.h"
+#include "primitives/sphere.h"
 #include "test_support.h"
 
 namespace csgray {

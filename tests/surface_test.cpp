@@ -5,7 +5,7 @@
 // rays (also within 1e-6 of every edge), parallel rays, hits behind the
 // origin, tMin/tMax, normals, bounds, transforms, kinds, refused inputs and
 // texture space.
-#include "modeler/surface.h"
+#include "scene/surface.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // every point is within the tolerance of the exact surface, with the
 // volume that implies, segment counts that follow the tolerance, and the
 // refusals (too fine, unbounded, horn torus).
-#include "modeler/tessellation.h"
+#include "tessellation/tessellation.h"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +17,15 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "mesh/mesh_validity.h"
-#include "modeler/affine.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/convex_polyhedron.h"
-#include "modeler/primitives/cylinder.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/mesh_solid.h"
-#include "modeler/primitives/sphere.h"
-#include "modeler/primitives/torus.h"
+#include "export/cgal/mesh_validity.h"
+#include "engine/affine.h"
+#include "primitives/box.h"
+#include "primitives/convex_polyhedron.h"
+#include "primitives/cylinder.h"
+#include "primitives/half_space.h"
+#include "primitives/mesh_solid.h"
+#include "primitives/sphere.h"
+#include "primitives/torus.h"
 
 namespace csgray {
 namespace {

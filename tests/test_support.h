@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "io/image_file.h"
-#include "mesh/mesh_import.h"
-#include "mesh/part_check.h"
-#include "modeler/script/script.h"
-#include "modeler/solid.h"
+#include "meshfile/mesh_import.h"
+#include "check/part_check.h"
+#include "script/script.h"
+#include "engine/solid.h"
 
 namespace csgray::test {
 

@@ -4,7 +4,7 @@
 // Perlin's improved noise (zero on the lattice, bounded, continuous, equal
 // to the reference implementation); and texture images read back from
 // files as linear RGB, with one-line errors naming the file.
-#include "modeler/texture.h"
+#include "scene/texture.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // grazing and near-tangent rays (no lost or invented spans), far-away tori,
 // horn and spindle tori, the script function, and an edge-on rendering whose
 // every pixel is checked against the silhouette computed independently.
-#include "modeler/primitives/torus.h"
+#include "primitives/torus.h"
 
 #include <gtest/gtest.h>
 
@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "modeler/boolean.h"
-#include "modeler/primitives/sphere.h"
-#include "modeler/quartic.h"
-#include "modeler/script/script.h"
-#include "raytrace/camera.h"
+#include "engine/boolean.h"
+#include "primitives/sphere.h"
+#include "engine/solvers/quartic.h"
+#include "script/script.h"
+#include "scene/camera.h"
 #include "raytrace/renderer.h"
 #include "test_support.h"
 

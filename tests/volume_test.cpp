@@ -8,12 +8,12 @@
 #include <glm/mat4x4.hpp>
 #include <numbers>
 
-#include "modeler/boolean.h"
-#include "modeler/primitives/box.h"
-#include "modeler/primitives/cylinder.h"
-#include "modeler/primitives/half_space.h"
-#include "modeler/primitives/quadric.h"
-#include "modeler/primitives/sphere.h"
+#include "engine/boolean.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/half_space.h"
+#include "primitives/quadric.h"
+#include "primitives/sphere.h"
 #include "test_support.h"
 
 namespace csgray {

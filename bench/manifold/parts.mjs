@@ -11,7 +11,7 @@ wasm.setup();
 const {Manifold, CrossSection} = wasm;
 const tolerance = 0.01;
 
-// csgray's segment counts (modeler/tessellation.cpp arcSegments,
+// csgray's segment counts (tessellation/tessellation.cpp arcSegments,
 // circleSegments and circlePolygon, and the primitives' objectTessellate).
 function arcSegments(radius, angle, tol, min = 8) {
   if (!(radius > tol)) return min;

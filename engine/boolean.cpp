@@ -1,0 +1,318 @@
+#include "engine/boolean.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace csgray {
+
+Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
+  if (operands.empty()) throw std::invalid_argument(kind() + ": needs at least one operand");
+  for (size_t i = 0; i < operands.size(); ++i) {
+    const SolidPtr& s = operands[i];
+    if (!s) throw std::invalid_argument(kind() + ": operand is not a solid");
+    // Union and intersection are associative; a difference is so in its
+    // first operand: (a - b) - c = a - b - c.
+    auto* same = dynamic_cast<const Boolean*>(s.get());
+    bool splice = same && same->op_ == op_ && (op_ != Op::Difference || i == 0);
+    if (splice) {
+      operands_.insert(operands_.end(), same->operands_.begin(), same->operands_.end());
+    } else {
+      operands_.push_back(s);
+    }
+  }
+  primitives_ = 0;
+  booleans_ = 1;
+  insideBeyondWindow_ = op_ != Op::Difference;
+  holesInsideBeyondWindow_ = true;
+  for (size_t i = 0; i < operands_.size(); ++i) {
+    const SolidPtr& s = operands_[i];
+    insideBeyondWindow_ = insideBeyondWindow_ && s->insideBeyondWindow();
+    if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s->insideBeyondWindow();
+    primitives_ += s->primitiveCount();
+    booleans_ += s->booleanCount();
+    depth_ = std::max(depth_, s->depth() + 1);
+    // Checked per operand, before the sums could overflow.
+    if (primitives_ > kMaxPrimitives)
+      throw std::invalid_argument(kind() + ": the part would have more than " +
+                                  std::to_string(kMaxPrimitives) +
+                                  " primitives (counting each use of a shared part)");
+  }
+  if (depth_ > kMaxDepth)
+    throw std::invalid_argument(
+        kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
+        " levels; build long chains with union(list) or difference(a, list)");
+  switch (op_) {
+    case Op::Union:
+      for (const SolidPtr& s : operands_) bounds_.include(s->bounds());
+      break;
+    case Op::Intersection:
+      bounds_ = operands_[0]->bounds();
+      for (const SolidPtr& s : operands_) bounds_ = bounds_.intersected(s->bounds());
+      break;
+    case Op::Difference:
+      bounds_ = operands_[0]->bounds();
+      break;
+  }
+}
+
+const Bvh& Boolean::bvh() const {
+  // Once the tree is built (by prepare, before a render's threads start), a
+  // ray pays one flag read: std::call_once costs a library call and
+  // thread-local writes every time (2 % of a plate(8) render).
+  if (bvhReady_.load(std::memory_order_acquire)) return bvh_;
+  std::call_once(bvhBuilt_, [this] {
+    if (op_ != Op::Intersection && operands_.size() - firstInBvh() > kBvhOperands) {
+      std::vector<Bounds> boxes;
+      boxes.reserve(operands_.size() - firstInBvh());
+      for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
+        boxes.push_back(operands_[i]->bounds());
+      bvh_ = Bvh(boxes);
+    }
+    bvhReady_.store(true, std::memory_order_release);
+  });
+  return bvh_;
+}
+
+void Boolean::prepare() const {
+  bvh();
+  for (const SolidPtr& s : operands_) s->prepare();
+}
+
+std::string Boolean::kind() const {
+  switch (op_) {
+    case Op::Union:
+      return "union";
+    case Op::Intersection:
+      return "intersection";
+    case Op::Difference:
+      return "difference";
+  }
+  return "boolean";
+}
+
+void Boolean::spans(const Ray& ray, SpanList& out) const {
+  out.clear();
+  // (A union with a BVH tests its box as the BVH's root.)
+  if ((op_ != Op::Union || bvh().empty()) && !bounds_.hitBy(ray)) return;
+  // The result so far is *result; each operand's spans are merged into the
+  // other list and the two swap roles, so nothing is copied per operand.
+  SpanList operand, spare;
+  SpanList* result = &out;
+  SpanList* other = &spare;
+  auto fold = [&](const SpanList& in) {
+    switch (op_) {
+      case Op::Union:
+        unite(*result, in, *other);
+        break;
+      case Op::Intersection:
+        intersect(*result, in, *other);
+        break;
+      case Op::Difference:
+        subtract(*result, in, *other);
+        break;
+    }
+    std::swap(result, other);
+  };
+  auto finish = [&] {
+    if (result != &out) out = *result;
+  };
+
+  if (op_ == Op::Union) {
+    auto add = [&](const Solid& s, const Ray& r) {
+      if (result->empty()) {
+        s.spans(r, *result);
+        return;
+      }
+      s.spans(r, operand);
+      if (!operand.empty()) fold(operand);
+    };
+    if (const Bvh& tree = bvh(); tree.empty()) {
+      for (const SolidPtr& s : operands_)
+        if (s->bounds().hitBy(ray)) add(*s, ray);
+    } else {
+      double tMax = ray.tMax;
+      tree.traverse(ray, tMax, [&](std::uint32_t i, double) {
+        add(*operands_[i], ray);
+        return true;
+      });
+    }
+    finish();
+    return;
+  }
+
+  // Intersection and difference: the result lies within the first
+  // operand's spans, so the others are asked only about the stretch from
+  // its first boundary to its last (a window that shrinks as the result
+  // does), and the fold stops once the result is empty.
+  // (A difference's box is its first operand's, tested above.)
+  const Solid& first = *operands_[0];
+  if (op_ == Op::Intersection && !first.bounds().hitBy(ray)) return;
+  first.spans(ray, out);
+  Ray window = ray;
+  auto narrow = [&] {
+    if (result->empty()) return false;
+    window.tMin = std::max(ray.tMin, result->front().in.t);
+    window.tMax = std::min(ray.tMax, result->back().out.t);
+    return true;
+  };
+  if (!narrow()) return;
+  if (op_ == Op::Intersection) {
+    for (std::size_t i = 1; i < operands_.size(); ++i) {
+      const Solid& s = *operands_[i];
+      if (!s.bounds().hitBy(window)) {
+        out.clear();
+        return;
+      }
+      s.spans(window, operand);
+      fold(operand);
+      if (!narrow()) break;
+    }
+    finish();
+    return;
+  }
+  forEachHole(window, [&](const Solid& s) {
+    s.spans(window, operand);
+    if (!operand.empty()) fold(operand);
+    return narrow();
+  });
+  finish();
+}
+
+template <class Cut>
+void Boolean::forEachHole(Ray& window, Cut&& cut) const {
+  if (const Bvh& tree = bvh(); tree.empty()) {
+    for (std::size_t i = 1; i < operands_.size(); ++i)
+      if (operands_[i]->bounds().hitBy(window) && !cut(*operands_[i])) return;
+  } else {
+    tree.traverse(window, window.tMax,
+                  [&](std::uint32_t i, double) { return cut(*operands_[i + 1]); });
+  }
+}
+
+void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  if (op_ == Op::Union) {
+    unionToFirstBoundary(ray, out);
+    return;
+  }
+  if (op_ != Op::Difference || !holesInsideBeyondWindow_) {
+    spans(ray, out);
+    return;
+  }
+  out.clear();
+  if (!bounds_.hitBy(ray)) return;
+  operands_[0]->spans(ray, out);
+  SpanList operand, spare;
+  SpanList* result = &out;
+  SpanList* other = &spare;
+  while (!result->empty()) {
+    // The result starts where the first operand's spans, less the holes
+    // cut so far, start: the answer, unless a hole covers that point.
+    const double start = result->front().in.t;
+    if (!(start > ray.tMin)) {  // the ray starts inside: where it leaves needs every hole
+      spans(ray, out);
+      return;
+    }
+    if (start > ray.tMax) break;  // no boundary within the window
+    // The holes that meet the start, or lie within the distance at which
+    // boundaries are one point (span_list.h); the spans they give are
+    // theirs beyond that, so the cut is exact as far as it reaches.
+    Ray point = ray;
+    point.tMin = start;
+    point.tMax = std::min(ray.tMax, start + 2.0 * kSameT * std::abs(start));
+    forEachHole(point, [&](const Solid& hole) {
+      hole.spans(point, operand);
+      if (operand.empty()) return true;
+      subtract(*result, operand, *other);
+      std::swap(result, other);
+      return !result->empty();
+    });
+    if (result->empty() || result->front().in.t == start) break;
+  }
+  if (result != &out) out = *result;
+}
+
+void Boolean::unionToFirstBoundary(const Ray& ray, SpanList& out) const {
+  out.clear();
+  const Bvh& tree = bvh();
+  if (tree.empty() && !bounds_.hitBy(ray)) return;
+  // A ray that starts outside every operand first meets the union where it
+  // first enters one of them: the operands are asked for their first
+  // boundaries only, and those whose boxes it enters beyond the best so far
+  // not at all. An operand the ray starts inside makes that an exit, which
+  // needs all of them.
+  SpanList operand;
+  double best = ray.tMax;
+  bool startsInside = false;
+  Ray window = ray;
+  auto visit = [&](const Solid& s) {
+    window.tMax = best;
+    s.spansToFirstBoundary(window, operand);
+    for (const Span& span : operand) {
+      if (span.out.t <= ray.tMin) continue;
+      if (!(span.in.t > ray.tMin)) {
+        startsInside = true;
+        return false;
+      }
+      // Entries within the distance at which boundaries are one point go
+      // to the operand met first, as in the merge of the whole spans
+      // (span_list.h), so that coplanar faces show the same operand.
+      if (span.in.t <= best && span.in.t + kSameT * std::abs(span.in.t) < best) {
+        best = span.in.t;
+        out = operand;
+      }
+      break;
+    }
+    return true;
+  };
+  if (tree.empty()) {
+    for (const SolidPtr& s : operands_) {
+      window.tMax = best;
+      if (s->bounds().hitBy(window) && !visit(*s)) break;
+    }
+  } else {
+    tree.traverse(window, best, [&](std::uint32_t i, double) { return visit(*operands_[i]); });
+  }
+  if (startsInside) spans(ray, out);
+}
+
+bool Boolean::contains(const dvec3& p) const {
+  switch (op_) {
+    case Op::Union:
+      for (const SolidPtr& s : operands_)
+        if (s->contains(p)) return true;
+      return false;
+    case Op::Intersection:
+      for (const SolidPtr& s : operands_)
+        if (!s->contains(p)) return false;
+      return true;
+    case Op::Difference:
+      if (!operands_[0]->contains(p)) return false;
+      for (size_t i = 1; i < operands_.size(); ++i)
+        if (operands_[i]->contains(p)) return false;
+      return true;
+  }
+  return false;
+}
+
+SolidPtr Boolean::mapPrimitives(const PrimitiveMap& f) const {
+  std::vector<SolidPtr> mapped;
+  mapped.reserve(operands_.size());
+  for (const SolidPtr& s : operands_) mapped.push_back(s->mapPrimitives(f));
+  auto copy = std::make_shared<Boolean>(op_, std::move(mapped));
+  copy->setOrigin(origin());
+  return copy;
+}
+
+SolidPtr unionOf(std::vector<SolidPtr> operands) {
+  return std::make_shared<Boolean>(Boolean::Op::Union, std::move(operands));
+}
+SolidPtr intersectionOf(std::vector<SolidPtr> operands) {
+  return std::make_shared<Boolean>(Boolean::Op::Intersection, std::move(operands));
+}
+SolidPtr differenceOf(std::vector<SolidPtr> operands) {
+  return std::make_shared<Boolean>(Boolean::Op::Difference, std::move(operands));
+}
+
+}  // namespace csgray

@@ -1,0 +1,79 @@
+// An n-ary boolean node: union, intersection or difference (the first
+// operand minus all others). Each node keeps its bounding box, skips
+// operands whose box the ray misses, and stops as soon as an intersection
+// or difference is empty. A node with many operands keeps a BVH over them
+// (over the subtracted ones, for a difference), so that a ray visits only
+// the operands it can hit; the operands that cut the first are asked only
+// about the stretch of the ray where the first has spans.
+#pragma once
+
+#include <atomic>
+#include <mutex>
+#include <vector>
+
+#include "engine/bvh.h"
+#include "engine/solid.h"
+
+namespace csgray {
+
+class Boolean : public Solid {
+ public:
+  enum class Op { Union, Intersection, Difference };
+
+  // Limits that keep rays and destructors off the end of the stack, and
+  // trees whose shared subtrees multiply out within reach.
+  static constexpr int kMaxDepth = 1000;
+  static constexpr std::size_t kMaxPrimitives = 1'000'000;
+  // Nodes with more operands than this keep a BVH over them.
+  static constexpr std::size_t kBvhOperands = 4;
+
+  // A chain of the same operation is kept flat: (a - b) - c becomes
+  // a - b - c, and a union operand of a union is spliced in, so a script
+  // that drills holes one at a time in a loop builds a wide node, not a
+  // deep one. Throws std::invalid_argument for an empty operand list, a
+  // tree deeper than kMaxDepth or larger than kMaxPrimitives.
+  Boolean(Op op, std::vector<SolidPtr> operands);
+
+  Op op() const { return op_; }
+  const Bounds& bounds() const override { return bounds_; }
+  void spans(const Ray& ray, SpanList& out) const override;
+  // For a difference: the first operand's spans, cut only by the holes that
+  // cover the point where the result would start, again from where a cut
+  // moved it, so that a ray meets the holes at a point or two rather than
+  // along all of the first operand. For a union: the first boundary of the
+  // operand the ray enters first, the others asked only up to it.
+  void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool contains(const dvec3& p) const override;
+  std::span<const SolidPtr> children() const override { return operands_; }
+  std::string kind() const override;
+  SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+  void prepare() const override;
+
+ private:
+  // Operands from this index on are found through the BVH.
+  std::size_t firstInBvh() const { return op_ == Op::Difference ? 1 : 0; }
+  // Calls cut(hole) for each subtracted operand whose box meets the window
+  // until it returns false; cut may narrow the window as it goes.
+  template <class Cut>
+  void forEachHole(Ray& window, Cut&& cut) const;
+  void unionToFirstBoundary(const Ray& ray, SpanList& out) const;
+
+  Op op_;
+  std::vector<SolidPtr> operands_;
+  Bounds bounds_;
+  // spansToFirstBoundary takes each hole's spans beyond the point it asks
+  // about as they come, so they must lie inside the hole there (solid.h).
+  bool holesInsideBeyondWindow_ = true;
+  // Built on first use (or by prepare), so that the intermediate nodes of a
+  // script that adds operands one at a time never build one.
+  const Bvh& bvh() const;
+  mutable std::once_flag bvhBuilt_;
+  mutable std::atomic<bool> bvhReady_{false};
+  mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
+};
+
+SolidPtr unionOf(std::vector<SolidPtr> operands);
+SolidPtr intersectionOf(std::vector<SolidPtr> operands);
+SolidPtr differenceOf(std::vector<SolidPtr> operands);
+
+}  // namespace csgray

@@ -1,0 +1,57 @@
+#include "engine/primitive.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <stdexcept>
+
+namespace csgray {
+
+void Primitive::spans(const Ray& ray, SpanList& out) const {
+  out.clear();
+  if (frame_.isIdentity()) {
+    objectSpans(ray, out);
+  } else {
+    objectSpans(frame_.rayToObject(ray), out);
+  }
+}
+
+bool Primitive::contains(const dvec3& p) const {
+  return objectContains(frame_.isIdentity() ? p : frame_.pointToObject(p));
+}
+
+SolidPtr Primitive::withFrame(const Affine& worldFromObject) const {
+  std::shared_ptr<Primitive> copy = clone();
+  copy->frame_ = worldFromObject;
+  copy->updateBounds();
+  return copy;
+}
+
+SolidPtr Primitive::withMaterial(const MaterialPtr& material) const {
+  std::shared_ptr<Primitive> copy = clone();
+  copy->material_ = material;
+  copy->textureFromObject_ = frame_;
+  return copy;
+}
+
+void Primitive::updateBounds() {
+  Bounds local = objectBounds();
+  if (local.empty()) {
+    bounds_ = local;
+    return;
+  }
+  if (!local.finite()) {
+    // An unbounded shape may reach anywhere once rotated.
+    bounds_ = frame_.isIdentity() ? local : Bounds::everything();
+    return;
+  }
+  // The box of the eight transformed corners.
+  bounds_ = Bounds{};
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? local.hi.x : local.lo.x, i & 2 ? local.hi.y : local.lo.y,
+                 i & 4 ? local.hi.z : local.lo.z);
+    bounds_.include(frame_.pointToWorld(corner));
+  }
+}
+
+}  // namespace csgray

@@ -1,0 +1,29 @@
+#include "engine/solid.h"
+
+#include "engine/primitive.h"
+
+namespace csgray {
+
+SolidPtr Solid::transformed(const Affine& worldFromObject) const {
+  return mapPrimitives(
+      [&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
+}
+
+SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
+  return mapPrimitives([&](const Primitive& p) -> SolidPtr {
+    if (p.material()) return p.shared_from_this();
+    return p.withMaterial(material);
+  });
+}
+
+std::string SourceLine::text() const {
+  if (!known()) return std::string();
+  std::string text = *file + ":" + std::to_string(line);
+  return via > 0 && via != line ? text + " via line " + std::to_string(via) : text;
+}
+
+TreeStats treeStats(const Solid& solid) {
+  return TreeStats{solid.primitiveCount(), solid.booleanCount()};
+}
+
+}  // namespace csgray

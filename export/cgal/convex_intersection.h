@@ -1,0 +1,26 @@
+// The planes of a convex primitive, for the exporter's intersection of
+// convex primitives. A box cut by a half-space (a chamfer, a gusset) is a
+// convex polytope, whose corners are where three planes meet; CGAL's
+// corefinement of the two meshes instead puts extra points where the
+// half-space mesh's diagonal crosses the box's faces, exact rationals on
+// the cut's edges, and every later boolean then computes with rationals
+// built on them (examples/bracket.lua: 2 s for one union of 1 700
+// triangles with two such gussets).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "engine/affine.h"
+#include "engine/primitive.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray {
+
+// The half-spaces whose intersection is `primitive` placed by `frame`
+// (normal·p <= offset, unit normals), or nothing for a primitive that is
+// not a box, a half-space, a convex polyhedron or a Platonic solid.
+std::optional<std::vector<BoundingPlane>> boundingPlanes(const Primitive& primitive,
+                                                         const Affine& frame);
+
+}  // namespace csgray

@@ -1,0 +1,47 @@
+// A solid's boolean tree evaluated on meshes, for export: every primitive
+// tessellates itself within the chord tolerance, and the booleans are
+// computed by CGAL's corefinement (Polygon Mesh Processing) with exact
+// predicates and exact constructions, so that chained operations stay
+// consistent.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "export/part_mesh.h"
+#include "engine/solid.h"
+
+namespace csgray {
+
+// What the evaluation did, for --stats and the benchmarks.
+struct MeshBooleanStats {
+  std::size_t primitives = 0;     // primitives tessellated
+  std::size_t corefinements = 0;  // CGAL boolean operations
+  std::size_t merges = 0;         // operands joined without one (boxes apart)
+  std::size_t glued = 0;          // unions of solids stacked on the same faces
+  std::size_t repairs = 0;        // self-intersections from rounding removed
+  std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
+  std::size_t strayShells = 0;    // slivers outside the exact part, removed
+  double checkSeconds = 0.0;      // in meshDefect
+};
+
+// The closed mesh of the solid. Operands whose boxes do not overlap are
+// joined without a boolean; an n-ary node is evaluated in a balanced order.
+// Unbounded primitives are tessellated within the box of the bounded solid
+// they are cut by. Throws std::invalid_argument for an unbounded part or a
+// primitive that cannot be tessellated, std::runtime_error when CGAL cannot
+// make a 2-manifold result (operands that touch along an edge or a point).
+// The exact result is rounded to doubles and then by `stored` (to what the
+// file will hold: floats for binary STL, ...); faces that rounding leaves
+// without area are removed. The result is checked with meshDefect (closed, 2-manifold,
+// outward, no self-intersections); std::runtime_error says why it fails.
+// The boolean meshOfSolid is evaluating ("the union of box (part.lua:3) and
+// cylinder (part.lua:5) near (1, 2, 3)"), or "the booleans" outside one:
+// for a message when the process must end in the middle of it. A fixed
+// buffer, safe to read from a signal handler.
+const char* booleanInProgress();
+
+PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored = nullptr,
+                     MeshBooleanStats* stats = nullptr);
+
+}  // namespace csgray

@@ -1,0 +1,24 @@
+// What rounding an exact boolean's result to doubles can break, mended by
+// CGAL's Polygon Mesh Processing without moving the surface further than
+// the caller allows.
+#pragma once
+
+#include "export/cgal/exact_mesh.h"
+
+namespace csgray {
+
+// Faces left without area (a point rounded onto another, or onto the line
+// through two others): their edges collapsed and faces flipped away; no
+// other point moves.
+void removeDegenerateFaces(RoundedMesh& mesh);
+
+// Slivers (a face thinner than `reach`, or with an angle within 0.8° of
+// 180°) collapsed or flipped away.
+void removeSlivers(RoundedMesh& mesh, double reach);
+
+// The faces that cross removed and their holes filled, each patch within
+// `reach` of the faces it replaces (CGAL's smoothing and hole filling may
+// otherwise move the surface far: a vertex of a rotated union moved 1.2 mm).
+void removeCrossings(RoundedMesh& mesh, double reach);
+
+}  // namespace csgray

@@ -1,0 +1,28 @@
+#include "meshfile/mesh_import.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "meshfile/mesh_reader.h"
+#include "export/cgal/mesh_repair.h"
+#include "export/cgal/mesh_validity.h"
+
+namespace csgray {
+
+TriangleMesh importMesh(const std::string& path, bool repair, std::string& repairReport) {
+  repairReport.clear();
+  TriangleMesh mesh = readMeshFile(path);
+  if (repair) mesh = repairMesh(mesh, repairReport);
+  std::string defect = meshDefect(mesh);
+  if (defect.empty()) return mesh;
+  const std::string name = std::filesystem::path(path).filename().string();
+  // Repairs cannot fill holes or resolve crossing faces.
+  const bool repairable = !defect.starts_with("self-intersecting") && !defect.starts_with("open");
+  std::string hint =
+      !repair && repairable ? " (repair=true may fix this)"
+      : repair ? " (after repair" + (repairReport.empty() ? "" : ": " + repairReport) + ")"
+               : "";
+  throw std::invalid_argument(name + ": " + defect + hint);
+}
+
+}  // namespace csgray

@@ -1,0 +1,35 @@
+// A capped cylinder or cone frustum along +z from z = 0 to z = h, with
+// radius r1 at the bottom and r2 at the top (OpenSCAD's cylinder). Either
+// radius may be zero for a cone, not both. Faces: 0 side, 1 bottom, 2 top.
+#pragma once
+
+#include "engine/primitive.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray {
+
+class Cylinder : public Primitive {
+ public:
+  Cylinder(double r1, double r2, double height);
+  double r1() const { return r1_; }
+  double r2() const { return r2_; }
+  double height() const { return height_; }
+  std::string kind() const override { return r1_ == r2_ ? "cylinder" : "cone"; }
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Cylinder>(*this); }
+
+ private:
+  double radiusAt(double z) const { return r1_ + slope_ * z; }
+  TriangleMesh rimsAndSides(const CirclePolygon rim[2], double tolerance) const;
+
+  double r1_, r2_, height_;
+  double slope_;  // dr/dz
+};
+
+}  // namespace csgray

@@ -1,0 +1,77 @@
+#include "primitives/half_space.h"
+
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+#include "primitives/check.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray {
+
+HalfSpace::HalfSpace(const dvec3& normal, double offset) : offset_(offset) {
+  requireFinite("half_space", "offset", offset);
+  double len = glm::length(normal);
+  if (!(len > 0.0) || !std::isfinite(len))
+    throw std::invalid_argument("half_space: normal must be a non-zero finite vector");
+  normal_ = normal / len;
+  offset_ = offset / len;
+}
+
+void HalfSpace::objectSpans(const Ray& ray, SpanList& out) const {
+  // Ray-plane (seed 000, 17.3.2): n·(o + t d) = offset.
+  double denom = glm::dot(normal_, ray.dir);
+  double num = offset_ - glm::dot(normal_, ray.origin);
+  Boundary lo{-kInfinity, nullptr, 0, false}, hi{kInfinity, nullptr, 0, false};
+  if (denom == 0.0) {
+    if (num < 0.0) return;
+  } else if (denom > 0.0) {
+    hi = boundary(num / denom);
+  } else {
+    lo = boundary(num / denom);
+  }
+  if (hi.t < ray.tMin || lo.t > ray.tMax) return;
+  out.push_back(lo, hi);
+}
+
+bool HalfSpace::objectContains(const dvec3& p) const { return glm::dot(normal_, p) <= offset_; }
+
+dvec3 HalfSpace::objectNormal(const dvec3&, int) const { return normal_; }
+
+Bounds HalfSpace::objectBounds() const {
+  // Tight on the axis of an axis-aligned half-space, unbounded otherwise.
+  Bounds b = Bounds::everything();
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(normal_[axis]) != 1.0) continue;
+    if (normal_[axis] > 0.0)
+      b.hi[axis] = offset_;
+    else
+      b.lo[axis] = -offset_;
+  }
+  return b;
+}
+
+// The region's box, grown by a margin, cut by the plane: exact, and every
+// face but the plane's lies outside the region. A region wholly inside the
+// half-space gives that box, one wholly outside gives nothing.
+TriangleMesh HalfSpace::objectTessellate(double tolerance, const Bounds& region) const {
+  requireTolerance(kind(), tolerance);
+  requireFiniteRegion(kind(), region);
+  if (region.empty()) return {};
+  // The plane is left out only if the whole box the mesh is made in lies
+  // inside: a plane on the region's side (a part made of half-spaces alone,
+  // whose box their planes make) still bounds the mesh, which reaches a
+  // little past the region.
+  const Bounds box = regionWithMargin(region, tolerance);
+  bool anyInside = false, anyOutside = false;
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                 i & 4 ? box.hi.z : box.lo.z);
+    (glm::dot(normal_, corner) <= offset_ ? anyInside : anyOutside) = true;
+  }
+  if (!anyInside) return {};
+  std::vector<BoundingPlane> planes;
+  if (anyOutside) planes.push_back({normal_, offset_});
+  return convexPolytopeMesh(planes, box);
+}
+
+}  // namespace csgray

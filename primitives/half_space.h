@@ -1,0 +1,29 @@
+// The closed half-space {p : n·p <= offset}: an unbounded solid, mostly
+// useful to cut other solids.
+#pragma once
+
+#include "engine/primitive.h"
+
+namespace csgray {
+
+class HalfSpace : public Primitive {
+ public:
+  HalfSpace(const dvec3& normal, double offset);
+  std::string kind() const override { return "half_space"; }
+  const dvec3& planeNormal() const { return normal_; }  // unit
+  double planeOffset() const { return offset_; }
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+  std::shared_ptr<Primitive> clone() const override { return std::make_shared<HalfSpace>(*this); }
+
+ private:
+  dvec3 normal_;  // unit
+  double offset_;
+};
+
+}  // namespace csgray

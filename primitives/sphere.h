@@ -1,0 +1,27 @@
+// A ball of radius r about the object origin. Ellipsoids are spheres under a
+// non-uniform scale (see script ellipsoid{}), which stays exact.
+#pragma once
+
+#include "engine/primitive.h"
+
+namespace csgray {
+
+class Sphere : public Primitive {
+ public:
+  explicit Sphere(double radius);
+  double radius() const { return radius_; }
+  std::string kind() const override { return "sphere"; }
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Sphere>(*this); }
+
+ private:
+  double radius_;
+};
+
+}  // namespace csgray

@@ -1,0 +1,266 @@
+#include "primitives/torus.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "primitives/check.h"
+#include "engine/solvers/quartic.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray {
+
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// Where the solver starts looking: just outside the bounding sphere, where
+// the torus function is clearly positive (by at least 2·r·kMargin).
+constexpr double kMargin = 1e-3;
+
+// Newton steps that polish a root on the ray as given.
+constexpr int kPolishSteps = 4;
+
+// Signed distance from p to the surface along the meridian: the distance
+// from the core circle minus r. Its sign is the torus's inside test, it has
+// the same zeros as the quartic, and its slope along a unit direction is at
+// most 1, which Newton likes. The slope is NaN on the axis (the bracketed
+// solver bisects there).
+struct MeridianDistance {
+  double value, slope;
+};
+
+MeridianDistance meridianDistance(const dvec3& p, const dvec3& u, double R, double r) {
+  double rho = std::sqrt(p.x * p.x + p.y * p.y);
+  double w = rho - R;
+  double d = std::sqrt(w * w + p.z * p.z);
+  double slope = (w * (p.x * u.x + p.y * u.y) / rho + p.z * u.z) / d;
+  return {d - r, slope};
+}
+
+}  // namespace
+
+Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minorRadius) {
+  requireFinite("torus", "R", majorRadius);
+  requirePositive("torus", "r", minorRadius);
+  if (majorRadius < 0.0) {
+    std::ostringstream msg;
+    msg << "torus: R must be >= 0 (got " << majorRadius << ")";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+// The ray meets the surface where f(o + t·d) = 0, with
+//   f(p) = (|p|² + R² − r²)² − 4R²(x² + y²)
+//        = ((ρ − R)² + z² − r²)·((ρ + R)² + z² − r²),   ρ = √(x² + y²),
+// a quartic in t (Cychosz, "Intersecting a ray with an elliptical torus",
+// Graphics Gems II, 1991). The first factor is the torus; the second is
+// positive except inside the lemon of a spindle torus (R < r), which lies
+// inside the solid, so the quartic's roots are the surface's, plus, for a
+// spindle, the lemon's. Steps:
+//  1. Condition the quartic: move the origin to the point of the line
+//     closest to the centre, make the direction unit and scale lengths so
+//     the bounding sphere has radius 1. Then |p|² = s² + c with c <= 1 and
+//     all coefficients are O(1), however far away the ray starts.
+//  2. Isolate the roots (quartic.h): the roots of the derivative split the
+//     chord of the bounding sphere into pieces where the quartic is
+//     monotone, so each piece holds at most one root of f, and at most one
+//     of the torus's own factor. The inside test (the sign of the meridian
+//     distance, as objectContains) at the ends of each piece says whether it
+//     holds a boundary; the lemon's roots never change that sign and are
+//     passed over. A safeguarded Newton–bisection finds the boundary.
+//  3. Polish each boundary by Newton on f along the ray as given, kept
+//     inside its piece, taking a step only while |f| decreases.
+//  4. Pair the boundaries (outside at both ends of the chord) into spans;
+//     spans that polishing left empty are dropped and ones that touch are
+//     joined, so a tangent ray gives a tiny span or nothing.
+void Torus::objectSpans(const Ray& ray, SpanList& out) const {
+  const dvec3& o = ray.origin;
+  const dvec3& d = ray.dir;
+  double dd = glm::dot(d, d);
+  if (!(dd > 0.0)) return;
+  // 1. The closest point to the centre, t = t0; a second pass removes what
+  // rounding left of its component along d.
+  double t0 = -glm::dot(o, d) / dd;
+  dvec3 closest = o + t0 * d;
+  double again = glm::dot(closest, d) / dd;
+  t0 -= again;
+  closest -= again * d;
+  double size = R_ + r_;
+  double len = std::sqrt(dd);
+  dvec3 b = closest / size;  // the origin of s, in units of the bounding radius
+  dvec3 u = d / len;         // unit direction
+  double R = R_ / size, r = r_ / size;
+  double c = glm::dot(b, b);
+  if (!(c < 1.0)) return;  // misses the bounding sphere (or touches it on the equator)
+  double reach = std::sqrt((1.0 + kMargin) * (1.0 + kMargin) - c);
+  double scale = size / len;  // t = t0 + s·scale
+  if (t0 + reach * scale < ray.tMin || t0 - reach * scale > ray.tMax) return;
+
+  // The quartic in s: with P(s) = |p|² + R² − r² = s² + 2e·s + k (e ≈ 0
+  // is what is left of b·u) and x² + y² = a·s² + 2h·s + g,
+  //   q(s) = P² − 4R²(a·s² + 2h·s + g),
+  // and its derivative, whose sign changes split [−reach, reach].
+  double e = glm::dot(b, u);
+  double k = c + R * R - r * r;
+  double a = u.x * u.x + u.y * u.y;
+  double h = b.x * u.x + b.y * u.y;
+  double quadratic = 4.0 * e * e + 2.0 * k - 4.0 * R * R * a;
+  double linear = 4.0 * e * k - 8.0 * R * R * h;
+  const double derivative[4] = {linear, 2.0 * quadratic, 12.0 * e, 4.0};
+  double breaks[5];
+  int count = 0;
+  breaks[count++] = -reach;
+  double critical[3];
+  int n = polynomialSublevelBoundaries(derivative, 3, -reach, reach, critical);
+  for (int i = 0; i < n; ++i)
+    if (critical[i] > breaks[count - 1] && critical[i] < reach) breaks[count++] = critical[i];
+  breaks[count++] = reach;
+
+  // 2. The boundaries, each with the piece it lies in.
+  auto distance = [&](double s) {
+    MeridianDistance m = meridianDistance(b + s * u, u, R, r);
+    return std::pair<double, double>(m.value, m.slope);
+  };
+  struct Root {
+    double s, lo, hi;
+  };
+  Root roots[4];
+  int found = 0;
+  bool inside = distance(breaks[0]).first <= 0.0;  // false: outside the bounding sphere
+  bool startsInside = inside;
+  for (int i = 1; i < count; ++i) {
+    bool next = distance(breaks[i]).first <= 0.0;
+    if (next != inside) {
+      double s = bracketedRoot(distance, breaks[i - 1], breaks[i], inside, 4.0 * kEpsilon);
+      roots[found++] = {s, breaks[i - 1], breaks[i]};
+    }
+    inside = next;
+  }
+  if (startsInside || inside) return;  // cannot happen: the chord's ends are outside
+
+  // 3. Polish on f(o + t·d) = first factor · second factor, with its
+  // gradient 4(|p|² + R² − r²)·p − 8R²·(x, y, 0) for the slope.
+  double R2 = R_ * R_, r2 = r_ * r_;
+  auto f = [&](double t) {
+    dvec3 p = o + t * d;
+    double rho2 = p.x * p.x + p.y * p.y;
+    double rho = std::sqrt(rho2);
+    double z2r2 = p.z * p.z - r2;
+    double value = ((rho - R_) * (rho - R_) + z2r2) * ((rho + R_) * (rho + R_) + z2r2);
+    double P = rho2 + p.z * p.z + R2 - r2;
+    dvec3 gradient = 4.0 * P * p - 8.0 * R2 * dvec3(p.x, p.y, 0.0);
+    return std::pair<double, double>(value, glm::dot(gradient, d));
+  };
+  double t[4];
+  for (int i = 0; i < found; ++i) {
+    double lo = t0 + roots[i].lo * scale, hi = t0 + roots[i].hi * scale;
+    double x = std::clamp(t0 + roots[i].s * scale, lo, hi);
+    auto [value, slope] = f(x);
+    for (int step = 0; step < kPolishSteps && value != 0.0; ++step) {
+      double next = x - value / slope;
+      if (!(next >= lo && next <= hi) || next == x) break;
+      auto [v, s] = f(next);
+      if (!(std::abs(v) < std::abs(value))) break;
+      x = next;
+      value = v;
+      slope = s;
+    }
+    t[i] = x;
+  }
+  // Keep the order the pieces gave (polishing stays within them).
+  for (int i = 1; i < found; ++i) t[i] = std::max(t[i], t[i - 1]);
+
+  // 4. Spans: boundaries alternate in, out.
+  Span spans[2];
+  int made = 0;
+  for (int i = 0; i + 1 < found; i += 2) {
+    if (!(t[i] < t[i + 1])) continue;  // a tangency polished to a point
+    if (made > 0 && t[i] <= spans[made - 1].out.t) {
+      spans[made - 1].out = boundary(t[i + 1]);  // a gap polished away
+      continue;
+    }
+    spans[made++] = Span{boundary(t[i]), boundary(t[i + 1])};
+  }
+  for (int i = 0; i < made; ++i) {
+    if (spans[i].out.t < ray.tMin || spans[i].in.t > ray.tMax) continue;
+    out.push_back(spans[i]);
+  }
+}
+
+bool Torus::objectContains(const dvec3& p) const {
+  double w = std::sqrt(p.x * p.x + p.y * p.y) - R_;
+  return w * w + p.z * p.z <= r_ * r_;
+}
+
+// Half the gradient of (ρ − R)² + z² − r². On the surface the gradient of
+// the quartic f is this times 2·((ρ + R)² + z² − r²) = 8Rρ >= 0, the same
+// direction, but it vanishes where that factor does (R = 0, a ball), so the
+// torus's own factor is used.
+dvec3 Torus::objectNormal(const dvec3& p, int) const {
+  double rho = std::sqrt(p.x * p.x + p.y * p.y);
+  if (rho == 0.0) {
+    // On the axis: a pole of the ball (R = 0) or a cusp of a spindle.
+    return {0.0, 0.0, p.z < 0.0 ? -1.0 : 1.0};
+  }
+  double radial = 1.0 - R_ / rho;
+  dvec3 n(radial * p.x, radial * p.y, p.z);
+  if (n == dvec3(0.0)) return {p.x, p.y, 0.0};  // on the core circle: not on the surface
+  return n;
+}
+
+Bounds Torus::objectBounds() const {
+  double outer = R_ + r_;
+  return {dvec3(-outer, -outer, -r_), dvec3(outer, outer, r_)};
+}
+
+// The meridian circle of the tube, centre (R, 0) and radius r in the
+// (ρ, z) half-plane, counter-clockwise from v = −v0 to v0, turned about the
+// axis. For a ring torus (R > r) it is the whole circle (v0 = π, a closed
+// profile). For R < r (the spindle, and the ball at R = 0) the surface is
+// the part of the circle at ρ >= 0, cos v >= −R/r, which ends on the axis
+// at the dimples z = ±√(r² − R²): poles of the mesh.
+//
+// The turn about the axis is a cylinder's of radius R + r (circlePolygon),
+// so that a torus that rounds the edge of a cylinder of its outer radius
+// has its outer equator on the cylinder's rim, point for point, and its
+// lower half inside the cylinder: the two meet along the rim's edges
+// instead of crossing in slivers all round it. By revolveProfile's bound a
+// point of the mesh is within the tube's sagitta plus that polygon's error
+// of the surface; the tube gets what the polygon leaves, at least a tenth
+// of the tolerance.
+TriangleMesh Torus::objectTessellate(double tolerance, const Bounds&) const {
+  requireTolerance(kind(), tolerance);
+  if (R_ == r_) {
+    throw std::invalid_argument(
+        "torus: a horn torus (R = r) cannot be tessellated: its surface pinches to a point at "
+        "the centre, which no closed 2-manifold mesh can have; make R a little larger or "
+        "smaller than r");
+  }
+  const bool ring = R_ > r_;
+  const double v0 = ring ? std::numbers::pi : std::acos(-R_ / r_);
+  const CirclePolygon circle = circlePolygon(R_ + r_, tolerance);
+  const int segments = circle.segments;
+  // At least as many chords per angle as the 8 of a full circle.
+  int minChords = std::max(4, int(std::ceil(8.0 * v0 / std::numbers::pi)));
+  int chords = arcSegments(r_, 2.0 * v0, tolerance - circle.error, minChords);
+  requireTriangleBudget(kind(), revolvedTriangles(chords, segments), tolerance);
+  std::vector<glm::dvec2> profile;
+  profile.reserve(std::size_t(chords) + 1);
+  auto at = [&](double v) { return glm::dvec2(R_ + r_ * std::cos(v), r_ * std::sin(v)); };
+  if (ring) {
+    for (int k = 0; k < chords; ++k) profile.push_back(at(2.0 * std::numbers::pi * k / chords));
+    return revolveProfile(profile, segments, true, &circle);
+  }
+  const double dimple = std::sqrt(r_ * r_ - R_ * R_);
+  profile.emplace_back(0.0, -dimple);
+  for (int k = 1; k < chords; ++k) profile.push_back(at(-v0 + 2.0 * v0 * k / chords));
+  profile.emplace_back(0.0, dimple);
+  return revolveProfile(profile, segments, false, &circle);
+}
+
+}  // namespace csgray

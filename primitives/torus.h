@@ -1,0 +1,32 @@
+// A torus about the z axis: the points whose distance from the circle of
+// radius R in the xy plane (the core circle) is at most r, that is
+// (√(x² + y²) − R)² + z² ≤ r². Any R >= 0 is a solid: R > r is the ring
+// torus; R = r closes the hole to a point (horn torus); R < r makes the tube
+// overlap itself across the axis (spindle torus, whose dimples at the poles
+// are part of the surface and whose inner lemon is solid); R = 0 is a ball.
+#pragma once
+
+#include "engine/primitive.h"
+
+namespace csgray {
+
+class Torus : public Primitive {
+ public:
+  Torus(double majorRadius, double minorRadius);
+  double majorRadius() const { return R_; }
+  double minorRadius() const { return r_; }
+  std::string kind() const override { return "torus"; }
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Torus>(*this); }
+
+ private:
+  double R_, r_;
+};
+
+}  // namespace csgray

@@ -1,0 +1,29 @@
+// The cameras: the pinhole camera of seed 001, 2.1.1 (rays from the eye
+// through the centres of square pixels on a screen whose width spans the
+// horizontal view angle), and an orthographic camera whose parallel rays
+// start on a screen through the eye, orthoWidth wide.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace csgray {
+
+class Camera {
+ public:
+  Camera(const CameraSpec& spec, int width, int height);
+
+  // Unit-direction ray through image point (x, y), in pixels from the top
+  // left corner; pixel (i, j) has its centre at (i + 0.5, j + 0.5).
+  Ray ray(double x, double y) const;
+
+  const dvec3& eye() const { return eye_; }
+  const dvec3& forward() const { return forward_; }
+
+ private:
+  dvec3 eye_, forward_, right_, up_;
+  double pixel_;  // screen size of one pixel: at unit distance, or in model units if orthographic
+  int width_, height_;
+  bool orthographic_;
+};
+
+}  // namespace csgray

@@ -1,0 +1,44 @@
+// Light sources (seed 001, 2.2, 2.4 and 3.3; seed 000, 17.2.4): coloured
+// point lights of any intensity, Warn spot lights, and area lights (a
+// rectangle or a sphere) that cast soft shadows through sampling.
+#pragma once
+
+#include "engine/ray.h"
+
+namespace csgray {
+
+struct Light {
+  enum class Kind { Point, Spot, Rectangle, Sphere };
+  Kind kind = Kind::Point;
+  dvec3 position{0.0};  // the point; the centre of an area light
+  dvec3 color{1.0};
+  double intensity = 1.0;
+  // Divide by the squared distance d² (seed 001, 2.2.1). Off by default, so
+  // that intensity 1 means full strength at any distance.
+  bool inverseSquare = false;
+
+  // Spot (Warn 1983, seed 001 3.3): light along direction, cos^exponent of
+  // the angle off the axis, nothing beyond coneDegrees off it.
+  dvec3 direction{0.0, 0.0, -1.0};
+  double coneDegrees = 30.0;
+  double exponent = 1.0;
+
+  // Rectangle: position ± edgeU/2 ± edgeV/2. Sphere: radius about position.
+  dvec3 edgeU{1.0, 0.0, 0.0}, edgeV{0.0, 1.0, 0.0};
+  double radius = 1.0;
+  int samples = 16;  // shadow rays per shaded point for an area light
+
+  bool isArea() const { return kind == Kind::Rectangle || kind == Kind::Sphere; }
+  // The number of points samplePoint is called for at each shaded point.
+  // samples rounded to a square k², the strata of a k × k grid.
+  int sampleCount() const;
+  // Sample i of sampleCount() as seen from point p, with (u, v) in [0, 1)²
+  // jittering it within its stratum.
+  dvec3 samplePoint(int i, double u, double v, const dvec3& p) const;
+  // The light's colour times intensity reaching p from the sample point s,
+  // before shadows: spot cone and falloff, 1/d², and the share of one
+  // sample of an area light.
+  dvec3 radianceAt(const dvec3& p, const dvec3& s) const;
+};
+
+}  // namespace csgray

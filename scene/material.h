@@ -1,0 +1,37 @@
+// Surface appearance of a solid or surface: the seeds' material model
+// (seed 000, 17.2.3; seed 001, 2.2 and 3.1) in any combination. Colours are
+// linear RGB (as in POV-Ray 3.7 with assumed_gamma 1): the renderer shades
+// in linear light and encodes 8-bit images as sRGB.
+#pragma once
+
+#include <memory>
+
+#include "scene/texture.h"
+
+namespace csgray {
+
+struct Material {
+  dvec3 color{0.8, 0.8, 0.8};
+  TexturePtr texture;       // when set, gives the colour in place of color
+  double ambient = 0.1;     // share of the colour seen without any light (seed 001, 2.2.1: Koh)
+  double diffuse = 0.9;     // Lambert factor κ (seed 000, 17.4.2; seed 001, 2.2.1: Kod)
+  double specular = 0.0;    // Phong highlight factor (seed 001, 2.2.2: r(α, λ))
+  double shininess = 20.0;  // Phong exponent f of cos^f β (seed 001, 2.2.2 and 3.3)
+  double reflection = 0.0;  // share of the mirrored ray's colour
+  // Share of the light behind that passes through one stretch of the solid
+  // (seed 001, 3.1.1: I = k·Iv), tinted by filter.
+  double transparency = 0.0;
+  dvec3 filter{1.0, 1.0, 1.0};
+  double ior = 1.0;      // index of refraction; 1 passes rays straight through
+  bool fresnel = false;  // weigh reflection and refraction by the Fresnel equations
+
+  // The colour at a point in texture space with the normal there.
+  dvec3 colorAt(const dvec3& texturePoint, const dvec3& textureNormal) const {
+    return texture ? texture->colorAt(texturePoint, textureNormal) : color;
+  }
+  bool refracts() const { return transparency > 0.0 && ior != 1.0; }
+};
+
+using MaterialPtr = std::shared_ptr<const Material>;
+
+}  // namespace csgray

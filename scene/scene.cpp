@@ -1,0 +1,59 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <stdexcept>
+
+namespace csgray {
+
+Bounds Scene::bounds() const {
+  Bounds b;
+  for (const SolidPtr& s : objects) b.include(s->bounds());
+  // An infinite plane is a floor or a wall, not part of what to frame.
+  for (const SurfacePtr& s : surfaces)
+    if (s->bounds().finite()) b.include(s->bounds());
+  return b;
+}
+
+CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees) {
+  if (box.empty()) throw std::invalid_argument("nothing to frame: the solid is empty");
+  if (!box.finite())
+    throw std::invalid_argument(
+        "cannot frame an unbounded solid: return scene{objects=..., camera=camera{...}}");
+  CameraSpec camera;
+  camera.lookAt = box.center();
+  camera.fovDegrees = fovDegrees;
+  // Look from the front, right and above; back off until every corner of
+  // the box is inside both view angles: a corner at (x, y) across and z
+  // along the view from the centre needs distance D with |x| <= tanH·(D + z)
+  // and |y| <= tanV·(D + z).
+  dvec3 forward = glm::normalize(dvec3(-0.55, 1.0, -0.75));
+  dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+  dvec3 up = glm::cross(right, forward);
+  double tanH = std::tan(0.5 * fovDegrees * std::numbers::pi / 180.0);
+  double tanV = tanH / aspect;
+  double distance = 0.5 * glm::length(box.size()) + 1e-9;  // eye outside the box
+  for (int i = 0; i < 8; ++i) {
+    dvec3 corner(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                 i & 4 ? box.hi.z : box.lo.z);
+    dvec3 d = corner - camera.lookAt;
+    double x = glm::dot(d, right), y = glm::dot(d, up), z = glm::dot(d, forward);
+    distance = std::max({distance, std::abs(x) / tanH - z, std::abs(y) / tanV - z});
+  }
+  camera.eye = camera.lookAt - 1.08 * distance * forward;
+  return camera;
+}
+
+Light defaultLight(const CameraSpec& camera) {
+  dvec3 view = camera.lookAt - camera.eye;
+  dvec3 right = glm::normalize(glm::cross(view, camera.up));
+  dvec3 up = glm::normalize(glm::cross(right, view));
+  double d = glm::length(view);
+  Light light;
+  light.position = camera.eye + d * (0.6 * up - 0.4 * right) - 0.2 * view;
+  return light;
+}
+
+}  // namespace csgray

@@ -1,0 +1,55 @@
+// What a script describes: solids to show, and how to look at them. The
+// renderer turns this into pixels; the exporter uses only the solids.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "scene/light.h"
+#include "engine/solid.h"
+#include "scene/surface.h"
+
+namespace csgray {
+
+// A camera: eye point, the point looked at and the up direction. A
+// perspective camera is the pinhole of seed 001, 2.1.1 with a horizontal
+// view angle in degrees; an orthographic one sends parallel rays along the
+// view direction from a screen orthoWidth wide (what a CAD preview shows).
+struct CameraSpec {
+  dvec3 eye{0.0, -10.0, 0.0};
+  dvec3 lookAt{0.0};
+  dvec3 up{0.0, 0.0, 1.0};
+  double fovDegrees = 45.0;
+  bool orthographic = false;
+  double orthoWidth = 10.0;
+};
+
+// Bounds on recursion (seed 001, 5.3: two mirrors facing each other would
+// reflect forever): at most maxDepth reflected or refracted rays in a chain,
+// and none whose share of the pixel falls below minWeight.
+struct TraceLimits {
+  int maxDepth = 8;
+  double minWeight = 1.0 / 512.0;
+};
+
+struct Scene {
+  std::vector<SolidPtr> objects;
+  std::vector<SurfacePtr> surfaces;  // open surfaces: planes, discs, triangles, ...
+  std::optional<CameraSpec> camera;  // none: frame the objects' bounds
+  std::vector<Light> lights;         // none: a default light beside the camera
+  dvec3 background{0.05, 0.05, 0.08};
+  TraceLimits limits;
+
+  // The union of the objects' and the bounded surfaces' bounds.
+  Bounds bounds() const;
+};
+
+// A camera that looks at the box from the front-right-top and sees all of
+// it at the given aspect ratio (width / height). Throws std::invalid_argument
+// for an empty or unbounded box.
+CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees = 45.0);
+
+// The light used when a scene names none: above and behind the eye, to the left.
+Light defaultLight(const CameraSpec& camera);
+
+}  // namespace csgray

@@ -1,0 +1,79 @@
+// Planar surfaces that are not solids (seed 000, 17.3.2): an infinite
+// plane, a disc, a triangle and a parallelogram (a rectangle and a square
+// are parallelograms with right angles). They enclose nothing, so they are
+// scene objects with a material and never operands of a boolean.
+//
+// Each shape is the unit shape in the plane z = 0 of its own frame, placed
+// by an affine frame: the frame's x and y columns span the supporting plane,
+// so the object-space (x, y) of a hit are the linear factors (ϑ, φ) of the
+// seed's intersection test.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/affine.h"
+#include "engine/bounds.h"
+#include "scene/material.h"
+
+namespace csgray {
+
+class Surface;
+using SurfacePtr = std::shared_ptr<const Surface>;
+
+class Surface : public std::enable_shared_from_this<Surface> {
+ public:
+  enum class Shape {
+    Plane,          // all (ϑ, φ)
+    Disc,           // ϑ² + φ² ≤ 1
+    Triangle,       // ϑ, φ ≥ 0 and ϑ + φ ≤ 1
+    Parallelogram,  // ϑ, φ ∈ [0, 1]
+  };
+
+  // worldFromObject maps the unit shape into place; it must be invertible.
+  Surface(Shape shape, const Affine& worldFromObject, std::string kind);
+
+  // A plane through point with the given normal.
+  static SurfacePtr plane(const dvec3& point, const dvec3& normal);
+  // A disc about center with the given normal and radius.
+  static SurfacePtr disc(const dvec3& center, const dvec3& normal, double radius);
+  // The triangle a, b, c. Throws std::invalid_argument if it has no area.
+  static SurfacePtr triangle(const dvec3& a, const dvec3& b, const dvec3& c);
+  // origin + ϑ·u + φ·v for ϑ, φ ∈ [0, 1]; kind names it ("parallelogram",
+  // "rectangle", "square"). Throws if u and v are parallel or zero.
+  static SurfacePtr parallelogram(const dvec3& origin, const dvec3& u, const dvec3& v,
+                                  const std::string& kind = "parallelogram");
+
+  // The ray parameter λ of the hit with tMin < λ < tMax, if any (seed 000,
+  // 17.3.2: λ = −n·w / n·r; a ray parallel to the plane misses).
+  std::optional<double> hit(const Ray& ray) const;
+  // Unit normal in world space (the frame's z axis through the normal
+  // matrix); the renderer turns it towards the viewer.
+  const dvec3& normal() const { return normal_; }
+  const Bounds& bounds() const { return bounds_; }
+  Shape shape() const { return shape_; }
+  const std::string& kind() const { return kind_; }
+  const Affine& frame() const { return frame_; }
+
+  const MaterialPtr& material() const { return material_; }
+  // Texture space: the world as it was when the material was given.
+  dvec3 texturePoint(const dvec3& worldPoint) const;
+  dvec3 textureNormal() const;
+
+  SurfacePtr transformed(const Affine& worldFromObject) const;
+  SurfacePtr withMaterial(const MaterialPtr& material) const;
+
+ private:
+  void update();
+
+  Shape shape_;
+  Affine frame_;
+  std::string kind_;
+  MaterialPtr material_;
+  Affine textureFromObject_;
+  dvec3 normal_;
+  Bounds bounds_;
+};
+
+}  // namespace csgray

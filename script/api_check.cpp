@@ -1,0 +1,145 @@
+// check(solid, {samples=, tolerance=, ...}): the report of `csgray check`
+// as a table, so that a script, or a user's test, can assert that a part's
+// booleans are sound and its export agrees with it (docs/check.md).
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "script/api.h"
+#include "script/lua_args.h"
+#include "script/lua_values.h"
+
+namespace csgray {
+
+namespace {
+
+void setNumber(lua_State* L, const char* key, double value) {
+  lua_pushnumber(L, value);
+  lua_setfield(L, -2, key);
+}
+void setInteger(lua_State* L, const char* key, std::size_t value) {
+  lua_pushinteger(L, static_cast<lua_Integer>(value));
+  lua_setfield(L, -2, key);
+}
+void setBoolean(lua_State* L, const char* key, bool value) {
+  lua_pushboolean(L, value);
+  lua_setfield(L, -2, key);
+}
+void setString(lua_State* L, const char* key, const std::string& value) {
+  lua_pushlstring(L, value.data(), value.size());
+  lua_setfield(L, -2, key);
+}
+void setPoint(lua_State* L, const char* key, const dvec3& p) {
+  pushVec3(L, p);
+  lua_setfield(L, -2, key);
+}
+void setStretch(lua_State* L, const char* key, const std::optional<Stretch>& s) {
+  if (!s) return;  // nil: none found
+  lua_createtable(L, 0, 2);
+  setNumber(L, "thickness", s->thickness);
+  setPoint(L, "at", s->location);
+  lua_setfield(L, -2, key);
+}
+
+// A whole number within [lo, hi] from the options table.
+template <class T>
+std::optional<T> wholeArg(LuaArgs& args, const char* key, double lo, double hi) {
+  std::optional<double> v = args.number(key);
+  if (!v) return std::nullopt;
+  if (!(*v >= lo && *v <= hi) || std::floor(*v) != *v)
+    throw std::invalid_argument("check: " + std::string(key) + " must be a whole number from " +
+                                std::to_string(static_cast<long long>(lo)) + " to " +
+                                std::to_string(static_cast<long long>(hi)));
+  return static_cast<T>(*v);
+}
+
+std::optional<double> positiveArg(LuaArgs& args, const char* key, double lo, double hi) {
+  std::optional<double> v = args.number(key);
+  if (v && !(*v >= lo && *v <= hi))
+    throw std::invalid_argument("check: " + std::string(key) + " must be from " +
+                                std::to_string(lo) + " to " + std::to_string(hi));
+  return v;
+}
+
+void pushReport(lua_State* L, const CheckReport& r) {
+  lua_createtable(L, 0, 12);
+  setBoolean(L, "ok", r.ok());
+  // What csgray check prints, for assert(report.ok, report.summary).
+  setString(L, "summary", checkReportText(r, "check()"));
+  if (!r.failure.empty()) {
+    setString(L, "failure", r.failure);
+    return;
+  }
+  lua_createtable(L, 0, 3);
+  setBoolean(L, "ok", r.meshOk());
+  setInteger(L, "triangles", r.triangles);
+  setString(L, "defect", r.meshDefect);
+  lua_setfield(L, -2, "mesh");
+
+  lua_createtable(L, 0, 5);
+  setBoolean(L, "ok", r.classificationOk());
+  setInteger(L, "points", r.points);
+  setInteger(L, "agree", r.agree);
+  setInteger(L, "in_band", r.inBand);
+  setInteger(L, "disagree", r.disagreementCount);
+  lua_setfield(L, -2, "classification");
+
+  lua_createtable(L, 0, 8);
+  setBoolean(L, "ok", r.volumeOk());
+  setNumber(L, "exact", r.exactVolume);
+  setNumber(L, "x", r.volumeAlong[0]);
+  setNumber(L, "y", r.volumeAlong[1]);
+  setNumber(L, "z", r.volumeAlong[2]);
+  setNumber(L, "mesh", r.meshVolume);
+  setNumber(L, "mesh_area", r.meshArea);
+  setNumber(L, "allowed", r.volumeAllowed);
+  lua_setfield(L, -2, "volume");
+
+  lua_createtable(L, 0, 3);
+  setBoolean(L, "ok", r.fidelityOk());
+  setNumber(L, "distance", r.fidelity);
+  setNumber(L, "allowed", r.fidelityAllowed);
+  setPoint(L, "at", r.fidelityAt);
+  lua_setfield(L, -2, "fidelity");
+
+  setStretch(L, "thinnest_wall", r.thinnestWall);
+  setStretch(L, "narrowest_gap", r.narrowestGap);
+
+  lua_createtable(L, static_cast<int>(r.warnings.size()), 0);
+  for (std::size_t k = 0; k < r.warnings.size(); ++k) {
+    const CheckWarning& w = r.warnings[k];
+    lua_createtable(L, 0, 4);
+    setString(L, "kind", w.kind);
+    setString(L, "message", w.message);
+    setPoint(L, "at", w.location);
+    setInteger(L, "rays", w.rays);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  lua_setfield(L, -2, "warnings");
+  setInteger(L, "warnings_left_out", r.warningsLeftOut);
+}
+
+int check(lua_State* L) {
+  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "check: the first argument");
+  LuaArgs args(L, 2, "check");
+  CheckOptions options;
+  options.samples = wholeArg<std::size_t>(args, "samples", 0, double(CheckOptions::kMaxSamples))
+                        .value_or(options.samples);
+  options.grid = wholeArg<int>(args, "grid", 2, CheckOptions::kMaxGrid).value_or(options.grid);
+  options.seed = wholeArg<std::uint64_t>(args, "seed", 0, 9e15).value_or(options.seed);
+  options.tolerance = positiveArg(args, "tolerance", 1e-6, 1e3).value_or(options.tolerance);
+  options.minWall = positiveArg(args, "min_wall", 0.0, 1e6).value_or(options.minWall);
+  options.minGap = positiveArg(args, "min_gap", 0.0, 1e6).value_or(options.minGap);
+  options.strict = args.boolean("strict").value_or(false);
+  args.finish();
+  const ScriptOptions& script = scriptOptionsOf(L);
+  if (!script.checkSolid) throw std::invalid_argument("check: this program cannot check solids");
+  pushReport(L, script.checkSolid(*solid, options));
+  return 1;
+}
+
+}  // namespace
+
+void registerCheckApi(lua_State* L) { lua_register(L, "check", guarded<check>); }
+
+}  // namespace csgray

@@ -1,0 +1,156 @@
+// polyhedron{points=..., faces=...}: OpenSCAD's polyhedron, a closed
+// triangle mesh from points and faces (docs/script.md, Polyhedron), and
+// mesh{file=...}: the same solid from a mesh file.
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "primitives/mesh_solid.h"
+#include "script/api.h"
+#include "script/lua_args.h"
+#include "script/lua_values.h"
+#include "script/sandbox.h"
+
+namespace csgray {
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) {
+  throw std::invalid_argument("polyhedron: " + message);
+}
+
+// The length of a list, or an error naming what it should have been.
+lua_Unsigned listLength(lua_State* L, int index, const std::string& what,
+                        const std::string& expected) {
+  if (lua_type(L, index) != LUA_TTABLE)
+    refuse(what + " must be " + expected + ", got " + luaL_typename(L, index));
+  return lua_rawlen(L, index);
+}
+
+// points={{x, y, z}, ...}; point i of the script's list is point i − 1 of
+// the faces, as in OpenSCAD.
+std::vector<dvec3> readPoints(lua_State* L, int index) {
+  index = lua_absindex(L, index);
+  lua_Unsigned n = listLength(L, index, "points", "a list of points {{x, y, z}, ...}");
+  std::vector<dvec3> points;
+  points.reserve(n);
+  for (lua_Unsigned i = 0; i < n; ++i) {
+    std::string what = "point " + std::to_string(i);
+    lua_rawgeti(L, index, lua_Integer(i + 1));
+    if (listLength(L, -1, what, "a list of three numbers {x, y, z}") != 3)
+      refuse(what + " must be a list of three numbers {x, y, z}");
+    dvec3 p;
+    for (int k = 0; k < 3; ++k) {
+      lua_rawgeti(L, -1, k + 1);
+      // toNumber refuses NaN and infinities, naming the coordinate.
+      p[k] = toNumber(L, -1, "polyhedron: " + what + ": " + "xyz"[k]);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// faces={{i, j, k, ...}, ...} of point indices from 0.
+std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index) {
+  index = lua_absindex(L, index);
+  lua_Unsigned n =
+      listLength(L, index, "faces", "a list of faces {{i, j, k}, ...} (point indices from 0)");
+  std::vector<std::vector<std::int64_t>> faces(n);
+  for (lua_Unsigned f = 0; f < n; ++f) {
+    std::string what = "face " + std::to_string(f);
+    lua_rawgeti(L, index, lua_Integer(f + 1));
+    lua_Unsigned count = listLength(L, -1, what, "a list of point indices {i, j, k, ...}");
+    faces[f].reserve(count);
+    for (lua_Unsigned k = 0; k < count; ++k) {
+      lua_rawgeti(L, -1, lua_Integer(k + 1));
+      int isInteger = 0;
+      lua_Integer v = lua_tointegerx(L, -1, &isInteger);
+      if (lua_type(L, -1) != LUA_TNUMBER || !isInteger) {
+        std::string value = lua_type(L, -1) == LUA_TNUMBER
+                                ? std::string(lua_tostring(L, -1))
+                                : std::string("a ") + luaL_typename(L, -1);
+        refuse(what + ": " + value + " is not a point index (an integer from 0)");
+      }
+      lua_pop(L, 1);
+      faces[f].push_back(std::int64_t(v));
+    }
+    lua_pop(L, 1);
+  }
+  return faces;
+}
+
+int polyhedron(lua_State* L) {
+  LuaArgs args(L, 1, "polyhedron");
+  if (!args.push("points")) refuse("needs points={{x, y, z}, ...}");
+  std::vector<dvec3> points = readPoints(L, -1);
+  lua_pop(L, 1);
+  if (!args.push("faces"))
+    refuse("needs faces={{i, j, k}, ...} (point indices from 0, clockwise seen from outside)");
+  std::vector<std::vector<std::int64_t>> faces = readFaces(L, -1);
+  lua_pop(L, 1);
+  // OpenSCAD's hint for its preview renderer; rays need none.
+  args.number("convexity");
+  args.finish();
+  auto mesh = Primitive::create<MeshSolid>(points, faces);
+  // The mesh is charged once for the rest of the run, not with the value
+  // returned here: transformed copies share it and may outlive that value,
+  // so refunding it when the value is collected would let a loop keep many
+  // meshes uncharged.
+  Sandbox::of(L).charge(L, mesh->memoryBytes());
+  pushSolid(L, mesh);
+  return 1;
+}
+
+// mesh{file="part.stl", repair=false}: the file is read by the program
+// (ScriptOptions::loadMesh), which refuses a mesh that is not a solid.
+int meshFn(lua_State* L) {
+  LuaArgs args(L, 1, "mesh");
+  std::optional<std::string> file = args.string("file");
+  const bool repair = args.boolean("repair").value_or(false);
+  args.finish();
+  if (!file) throw std::invalid_argument("mesh: needs file=\"part.stl\" (STL, OBJ, OFF or PLY)");
+  const ScriptOptions& options = scriptOptionsOf(L);
+  if (!options.loadMesh) throw std::invalid_argument("mesh: this program cannot read mesh files");
+  const std::string path = scriptFile(L, "mesh", *file);
+  std::string report;
+  std::shared_ptr<MeshSolid> mesh;
+  try {
+    TriangleMesh loaded = options.loadMesh(path, repair, report);
+    // MeshSolid takes OpenSCAD's clockwise faces.
+    std::vector<std::vector<std::int64_t>> faces;
+    faces.reserve(loaded.triangles.size());
+    for (const auto& t : loaded.triangles) faces.push_back({t[0], t[2], t[1]});
+    mesh = Primitive::create<MeshSolid>(loaded.points, faces);
+  } catch (const std::invalid_argument& e) {
+    // The loader's message begins with the file's name; MeshSolid's with
+    // "polyhedron: ", which would mislead here.
+    std::string message = e.what();
+    if (message.starts_with("polyhedron: ")) message = *file + ": " + message.substr(12);
+    throw std::invalid_argument("mesh: " + message);
+  }
+  if (!report.empty() && options.warn) {
+    // "part.lua:3: ", as an error would begin.
+    luaL_where(L, 1);
+    std::string where = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    options.warn(where + "mesh: " + *file + ": " + report);
+  }
+  Sandbox::of(L).charge(L, mesh->memoryBytes());
+  pushSolid(L, mesh);
+  return 1;
+}
+
+}  // namespace
+
+void registerMeshApi(lua_State* L) {
+  lua_register(L, "polyhedron", guarded<polyhedron>);
+  lua_register(L, "mesh", guarded<meshFn>);
+}
+
+}  // namespace csgray

@@ -1,0 +1,128 @@
+#include "script/lua_args.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace csgray {
+
+LuaArgs::LuaArgs(lua_State* L, int index, std::string function)
+    : L_(L), index_(lua_absindex(L, index)), function_(std::move(function)) {
+  int type = lua_type(L, index_);
+  if (type != LUA_TTABLE && type != LUA_TNIL && type != LUA_TNONE)
+    throw std::invalid_argument(function_ + ": expected a table of named parameters, got " +
+                                luaL_typename(L, index_));
+  if (type == LUA_TTABLE && lua_rawlen(L, index_) > 0)
+    throw std::invalid_argument(function_ + ": unexpected value without a name; use name=value");
+}
+
+bool LuaArgs::push(const char* key) {
+  used_.insert(key);
+  if (lua_type(L_, index_) != LUA_TTABLE) return false;
+  lua_getfield(L_, index_, key);
+  if (lua_isnil(L_, -1)) {
+    lua_pop(L_, 1);
+    return false;
+  }
+  return true;
+}
+
+std::optional<double> LuaArgs::number(const char* key) {
+  if (!push(key)) return std::nullopt;
+  double v = toNumber(L_, -1, function_ + ": " + key);
+  lua_pop(L_, 1);
+  return v;
+}
+
+std::optional<dvec3> LuaArgs::vec3(const char* key) {
+  if (!push(key)) return std::nullopt;
+  dvec3 v = toVec3(L_, -1, function_ + ": " + key);
+  lua_pop(L_, 1);
+  return v;
+}
+
+std::optional<bool> LuaArgs::boolean(const char* key) {
+  if (!push(key)) return std::nullopt;
+  if (!lua_isboolean(L_, -1))
+    throw std::invalid_argument(function_ + ": " + key + " must be true or false");
+  bool v = lua_toboolean(L_, -1);
+  lua_pop(L_, 1);
+  return v;
+}
+
+std::optional<std::string> LuaArgs::string(const char* key) {
+  if (!push(key)) return std::nullopt;
+  if (lua_type(L_, -1) != LUA_TSTRING)
+    throw std::invalid_argument(function_ + ": " + key + " must be a string, got " +
+                                luaL_typename(L_, -1));
+  std::size_t length = 0;
+  const char* text = lua_tolstring(L_, -1, &length);
+  std::string v(text, length);
+  lua_pop(L_, 1);
+  return v;
+}
+
+void LuaArgs::finish() {
+  if (lua_type(L_, index_) != LUA_TTABLE) return;
+  lua_pushnil(L_);
+  while (lua_next(L_, index_)) {
+    lua_pop(L_, 1);  // value
+    std::string key = lua_type(L_, -1) == LUA_TSTRING ? lua_tostring(L_, -1) : "";
+    if (key.empty()) {
+      lua_pop(L_, 1);
+      throw std::invalid_argument(function_ + ": unexpected value without a name; use name=value");
+    }
+    if (!used_.count(key)) {
+      lua_pop(L_, 1);
+      throw std::invalid_argument(function_ + ": unknown parameter '" + key + "'");
+    }
+  }
+}
+
+// Does the table at index have a string key (a named parameter)?
+bool hasStringKey(lua_State* L, int index) {
+  lua_pushnil(L);
+  while (lua_next(L, index)) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      lua_pop(L, 1);
+      return true;
+    }
+  }
+  return false;
+}
+
+double toNumber(lua_State* L, int index, const std::string& what) {
+  int isNumber = 0;
+  double v = lua_tonumberx(L, index, &isNumber);
+  if (!isNumber || lua_type(L, index) != LUA_TNUMBER)
+    throw std::invalid_argument(what + " must be a number, got " + luaL_typename(L, index));
+  if (!std::isfinite(v)) throw std::invalid_argument(what + " must be finite");
+  return v;
+}
+
+dvec3 toVec3(lua_State* L, int index, const std::string& what) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) == LUA_TNUMBER) {
+    double v = toNumber(L, index, what);
+    return dvec3(v);
+  }
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3)
+    throw std::invalid_argument(what + " must be a list of three numbers {x, y, z}");
+  dvec3 v;
+  for (int i = 0; i < 3; ++i) {
+    lua_rawgeti(L, index, i + 1);
+    v[i] = toNumber(L, -1, what + "[" + std::to_string(i + 1) + "]");
+    lua_pop(L, 1);
+  }
+  return v;
+}
+
+void pushVec3(lua_State* L, const dvec3& v) {
+  lua_createtable(L, 3, 0);
+  for (int i = 0; i < 3; ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+}
+
+}  // namespace csgray

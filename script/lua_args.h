@@ -1,0 +1,47 @@
+// Reading the arguments of a script function from a Lua table of named
+// parameters, with messages that name the function and the parameter.
+// Unknown parameter names are errors: a typo must not be silently ignored.
+#pragma once
+
+#include <lua.hpp>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "engine/ray.h"
+
+namespace csgray {
+
+class LuaArgs {
+ public:
+  // index: a table of named parameters, or nil/none for no parameters.
+  LuaArgs(lua_State* L, int index, std::string function);
+
+  std::optional<double> number(const char* key);
+  std::optional<dvec3> vec3(const char* key);
+  std::optional<bool> boolean(const char* key);
+  std::optional<std::string> string(const char* key);
+  // True if the key is present; leaves its value on top of the stack.
+  bool push(const char* key);
+  // Throws if the table has a key that no getter asked for.
+  void finish();
+
+  const std::string& function() const { return function_; }
+
+ private:
+  lua_State* L_;
+  int index_;
+  std::string function_;
+  std::set<std::string> used_;
+};
+
+// Does the table at index have a key that is a string (a named parameter)?
+bool hasStringKey(lua_State* L, int index);
+
+// Values at a stack index, with errors that name what was expected.
+double toNumber(lua_State* L, int index, const std::string& what);
+dvec3 toVec3(lua_State* L, int index, const std::string& what);
+// Pushes {x, y, z}.
+void pushVec3(lua_State* L, const dvec3& v);
+
+}  // namespace csgray

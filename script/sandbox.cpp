@@ -1,0 +1,335 @@
+#include "script/sandbox.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace csgray {
+
+namespace {
+constexpr int kHookInterval = 10000;  // instructions between budget checks
+
+std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+// The edit distance between two names (Levenshtein 1966): insertions,
+// deletions and substitutions, one row of the table at a time.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The name of the function nearest `name` (two edits at most) among the
+// string keys of the table on top of the stack whose values are functions,
+// written with `prefix` ("math."), or `nearest` if none is nearer. Ties go
+// to the first name in alphabetical order: a table's own order follows a
+// hash that is seeded anew every run.
+void nearestFunction(lua_State* L, const std::string& name, std::string& nearest, std::size_t& best,
+                     const std::string& prefix = "") {
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
+      const std::string key = lua_tostring(L, -2), candidate = prefix + key;
+      const std::size_t d = editDistance(name, key);
+      if (d < best || (d == best && !nearest.empty() && candidate < nearest))
+        best = d, nearest = candidate;
+    }
+    lua_pop(L, 1);
+  }
+}
+
+// What to add to Lua's "attempt to call a nil value (global 'name')": what
+// csgray calls it, for the names OpenSCAD users type by habit, or else the
+// global function whose name is nearest, as in "sphre(1)". For a method
+// ("(method 'translat')"), the nearest method of any of the script API's
+// types (the __index tables of the metatables in the registry); for a
+// field ("math.sine(x)": "(field 'sine')"), the nearest library function. Reads
+// tables only, so it is safe after any error.
+std::string unknownCallHint(lua_State* L, const std::string& message) {
+  static const std::string kNil = "attempt to call a nil value (";
+  const std::size_t at = message.find(kNil);
+  if (at == std::string::npos) return "";
+  const std::size_t kindBegin = at + kNil.size(), kindEnd = message.find(" '", kindBegin);
+  if (kindEnd == std::string::npos) return "";
+  const std::string kind = message.substr(kindBegin, kindEnd - kindBegin);
+  const std::size_t begin = kindEnd + 2, end = message.find('\'', begin);
+  if (end == std::string::npos) return "";
+  const std::string name = message.substr(begin, end - begin);
+  std::string nearest;
+  std::size_t best = 3;
+  if (kind == "global") {
+    if (name == "cube") return "; OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here";
+    for (const char* transform : {"translate", "rotate", "scale", "mirror", "multmatrix"})
+      if (name == transform)
+        return "; transforms are methods of a solid here: s:" +
+               std::string(name == "multmatrix" ? "transform" : name) + "(...)";
+    if (name == "color") return "; a colour is a material here: s:material{color={r, g, b}}";
+    lua_pushglobaltable(L);
+    nearestFunction(L, name, nearest, best);
+    lua_pop(L, 1);
+  } else if (kind == "field") {
+    // The table is not named in the message: the nearest function of any
+    // library table (math, string, table, utf8), named with its table.
+    lua_pushglobaltable(L);
+    lua_pushnil(L);
+    while (lua_next(L, -2) != 0) {
+      if (lua_type(L, -2) == LUA_TSTRING && lua_istable(L, -1) &&
+          std::string(lua_tostring(L, -2)) != LUA_GNAME)
+        nearestFunction(L, name, nearest, best, std::string(lua_tostring(L, -2)) + ".");
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);  // the global table
+  } else if (kind == "method") {
+    lua_pushnil(L);
+    while (lua_next(L, LUA_REGISTRYINDEX) != 0) {
+      if (lua_type(L, -2) == LUA_TSTRING && lua_istable(L, -1)) {
+        lua_pushliteral(L, "__index");
+        if (lua_rawget(L, -2) == LUA_TTABLE) nearestFunction(L, name, nearest, best);
+        lua_pop(L, 1);  // __index
+      }
+      lua_pop(L, 1);  // the registry's value
+    }
+  }
+  return nearest.empty() ? "" : "; did you mean " + nearest + "?";
+}
+}  // namespace
+
+Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
+  L_ = lua_newstate(&Sandbox::allocate, this);
+  if (!L_) throw ScriptError("cannot create a Lua state");
+  lua_sethook(L_, &Sandbox::countHook, LUA_MASKCOUNT, kHookInterval);
+
+  // Only libraries that compute; no io, os, package, debug or coroutine.
+  static const luaL_Reg libraries[] = {{LUA_GNAME, luaopen_base},
+                                       {LUA_STRLIBNAME, luaopen_string},
+                                       {LUA_TABLIBNAME, luaopen_table},
+                                       {LUA_MATHLIBNAME, luaopen_math},
+                                       {LUA_UTF8LIBNAME, luaopen_utf8}};
+  for (const luaL_Reg& lib : libraries) {
+    luaL_requiref(L_, lib.name, lib.func, 1);
+    lua_pop(L_, 1);
+  }
+  // Remove what loads code from files or strings, controls the collector,
+  // or writes warnings; string.dump makes binary chunks.
+  for (const char* name : {"dofile", "loadfile", "load", "require", "collectgarbage", "warn"}) {
+    lua_pushnil(L_);
+    lua_setglobal(L_, name);
+  }
+  lua_getglobal(L_, LUA_STRLIBNAME);
+  lua_pushnil(L_);
+  lua_setfield(L_, -2, "dump");
+  lua_pop(L_, 1);
+  // Protected calls that cannot swallow an abort; print goes to stderr so
+  // that standard output stays for csgray's own results.
+  lua_register(L_, "pcall", &Sandbox::safePcall);
+  lua_register(L_, "xpcall", &Sandbox::safeXpcall);
+  lua_register(L_, "print", &Sandbox::printToStderr);
+  // No finalizers for scripts: Lua runs __gc with hooks off, so a finalizer
+  // escapes the instruction budget, and it could hand a collected value
+  // back to the script. Lua marks a table for finalization only if its
+  // metatable has __gc when set, so checking here is enough.
+  lua_getglobal(L_, "setmetatable");
+  lua_pushcclosure(L_, &Sandbox::setmetatableWithoutGc, 1);
+  lua_setglobal(L_, "setmetatable");
+  // Reproducible scripts: the same random numbers on every run.
+  lua_getglobal(L_, LUA_MATHLIBNAME);
+  lua_getfield(L_, -1, "randomseed");
+  lua_pushvalue(L_, -1);
+  lua_pushinteger(L_, 42);
+  lua_call(L_, 1, 0);
+  // randomseed() without a seed would take one from the clock.
+  lua_pushcclosure(L_, &Sandbox::seededRandomseed, 1);
+  lua_setfield(L_, -2, "randomseed");
+  lua_pop(L_, 1);
+}
+
+Sandbox::~Sandbox() {
+  if (L_) lua_close(L_);
+}
+
+Sandbox& Sandbox::of(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return *static_cast<Sandbox*>(ud);
+}
+
+void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize) {
+  auto* self = static_cast<Sandbox*>(ud);
+  std::size_t old = ptr ? oldSize : 0;  // oldSize is a type tag when ptr is null
+  if (newSize == 0) {
+    std::free(ptr);
+    self->used_ -= old;
+    return nullptr;
+  }
+  // While an abort builds its message ("file:line: reason"), a little room
+  // past the cap, so that the message keeps its line.
+  std::size_t cap = self->limits_.memoryBytes + (self->aborting_ ? kAbortReserve : 0);
+  if (newSize > old && self->used_ - old + newSize > cap) {
+    if (self->abortReason_.empty())
+      self->abortReason_ =
+          "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
+    return nullptr;  // Lua raises "not enough memory"
+  }
+  void* block = std::realloc(ptr, newSize);
+  if (block) self->used_ = self->used_ - old + newSize;
+  return block;
+}
+
+void Sandbox::charge(lua_State* L, std::size_t bytes) {
+  // Lua's collector paces itself by Lua's own allocations and does not see
+  // what solids hold; a step per mebibyte charged lets it free dead solids
+  // (and refund them) before they add up to the cap.
+  sinceCollectorStep_ += bytes;
+  if (sinceCollectorStep_ >= (std::size_t{1} << 20)) {
+    lua_gc(L, LUA_GCSTEP, static_cast<int>(sinceCollectorStep_ >> 10));
+    sinceCollectorStep_ = 0;
+  }
+  // Checked before counting, so that used_ stays within the cap and the
+  // abort's message fits in the allocator's reserve.
+  if (bytes > limits_.memoryBytes - std::min(used_, limits_.memoryBytes))
+    abort(L, "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes), 1);
+  used_ += bytes;
+}
+
+void Sandbox::abort(lua_State* L, const std::string& reason, int level) {
+  if (abortReason_.empty()) abortReason_ = reason;
+  aborting_ = true;  // the script is over: pcall cannot catch an abort
+  luaL_where(L, level);
+  lua_pushstring(L, abortReason_.c_str());
+  lua_concat(L, 2);
+  lua_error(L);
+  std::abort();  // luaL_error does not return
+}
+
+void Sandbox::countHook(lua_State* L, lua_Debug*) {
+  Sandbox& self = of(L);
+  self.executed_ += kHookInterval;
+  if (self.executed_ > self.limits_.instructions || !self.abortReason_.empty()) {
+    // Level 0: inside a hook that is the Lua function being run.
+    self.abort(L,
+               "script exceeded the instruction budget of " +
+                   std::to_string(self.limits_.instructions) + " (endless loop?)",
+               0);
+  }
+}
+
+int Sandbox::finishProtectedCall(lua_State* L, int status, int base) {
+  if (!abortReason_.empty()) abort(L, abortReason_, 1);
+  lua_pushboolean(L, status == LUA_OK);
+  lua_insert(L, base);
+  return lua_gettop(L) - base + 1;
+}
+
+// pcall(f, ...): like Lua's, but an abort propagates.
+int Sandbox::safePcall(lua_State* L) {
+  luaL_checkany(L, 1);
+  int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
+  return of(L).finishProtectedCall(L, status, 1);
+}
+
+// xpcall(f, handler, ...): like Lua's, but an abort propagates.
+int Sandbox::safeXpcall(lua_State* L) {
+  int n = lua_gettop(L);
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lua_pushvalue(L, 1);  // f
+  lua_pushvalue(L, 2);  // handler
+  lua_replace(L, 1);    // handler at 1
+  lua_replace(L, 2);    // f at 2, arguments follow
+  int status = lua_pcall(L, n - 2, LUA_MULTRET, 1);
+  return of(L).finishProtectedCall(L, status, 2);
+}
+
+namespace {
+// Calls the function a wrapper closes over (upvalue 1: the original
+// setmetatable or randomseed) with the wrapper's arguments.
+int callWrapped(lua_State* L) {
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+}  // namespace
+
+int Sandbox::seededRandomseed(lua_State* L) {
+  if (lua_isnoneornil(L, 1))
+    return luaL_error(L,
+                      "math.randomseed needs a seed here, so that every run builds the same part");
+  return callWrapped(L);
+}
+
+int Sandbox::setmetatableWithoutGc(lua_State* L) {
+  if (lua_type(L, 2) == LUA_TTABLE) {
+    lua_pushstring(L, "__gc");
+    if (lua_rawget(L, 2) != LUA_TNIL)
+      return luaL_error(L, "__gc metamethods are not available in the sandbox");
+    lua_pop(L, 1);
+  }
+  return callWrapped(L);
+}
+
+int Sandbox::printToStderr(lua_State* L) {
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    std::size_t len = 0;
+    const char* s = luaL_tolstring(L, i, &len);
+    if (i > 1) std::fputc('\t', stderr);
+    std::fwrite(s, 1, len, stderr);
+    lua_pop(L, 1);
+  }
+  std::fputc('\n', stderr);
+  return 0;
+}
+
+SourceLine Sandbox::callerLine(lua_State* L) {
+  // The nearest Lua frame: a C function in between (pcall, table.sort's
+  // comparator caller) has no line of its own.
+  SourceLine where;
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "l", &ar) || ar.currentline <= 0) continue;
+    if (!where.known())
+      where = SourceLine{chunkName_, ar.currentline, 0};
+    else
+      where.via = ar.currentline;  // the outermost Lua frame, the main chunk, comes last
+  }
+  return where;
+}
+
+int Sandbox::run(const std::string& source, const std::string& chunkName) {
+  int base = lua_gettop(L_);
+  chunkName_ = std::make_shared<const std::string>(chunkName);
+  int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
+  if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
+  if (status != LUA_OK) {
+    std::string message =
+        lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
+            ? lua_tostring(L_, -1)
+            : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
+    lua_settop(L_, base);
+    // An abort raised as a memory error carries Lua's generic text; say why.
+    if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)
+      message = abortReason_;
+    if (abortReason_.empty()) message += unknownCallHint(L_, message);
+    // Every message names the script, also those Lua gives without a
+    // position (binary chunks, C stack overflow, non-string errors).
+    if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
+    // One line: a message with line breaks of its own is folded.
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw ScriptError(message);
+  }
+  return lua_gettop(L_) - base;
+}
+
+}  // namespace csgray

@@ -1,0 +1,113 @@
+#include "script/script.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "script/api.h"
+#include "script/sandbox.h"
+
+namespace csgray {
+
+namespace {
+
+// -D values: numbers, true/false, or strings with optional quotes.
+void pushDefine(lua_State* L, const std::string& name, const std::string& value) {
+  if (value == "true" || value == "false") {
+    lua_pushboolean(L, value == "true");
+    return;
+  }
+  if (!value.empty()) {
+    char* end = nullptr;
+    errno = 0;
+    double number = std::strtod(value.c_str(), &end);
+    if (*end == '\0') {
+      if (errno != 0 || !std::isfinite(number))
+        throw ScriptError("-D " + name + "=" + value + ": not a finite number");
+      lua_pushnumber(L, number);
+      return;
+    }
+  }
+  std::string text = value;
+  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') &&
+      text.back() == text.front())
+    text = text.substr(1, text.size() - 2);
+  lua_pushlstring(L, text.data(), text.size());
+}
+
+constexpr std::size_t kMaxScriptBytes = std::size_t{16} << 20;
+
+// A Lua name that is not a keyword.
+bool isIdentifier(const std::string& name) {
+  static const std::set<std::string> keywords = {
+      "and",      "break",  "do",   "else", "elseif", "end",  "false", "for",
+      "function", "goto",   "if",   "in",   "local",  "nil",  "not",   "or",
+      "repeat",   "return", "then", "true", "until",  "while"};
+  if (keywords.count(name)) return false;
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+}  // namespace
+
+Scene runScript(const std::string& source, const std::string& chunkName,
+                const ScriptOptions& options) {
+  Sandbox sandbox(options.limits);
+  lua_State* L = sandbox.state();
+  registerScriptApi(L, options);
+  for (const auto& [name, value] : options.defines) {
+    if (!isIdentifier(name))
+      throw ScriptError("-D " + name + "=...: '" + name + "' is not a valid Lua name");
+    bool builtIn = lua_getglobal(L, name.c_str()) != LUA_TNIL;
+    lua_pop(L, 1);
+    if (builtIn) throw ScriptError("-D " + name + "=...: '" + name + "' is a built-in name");
+    pushDefine(L, name, value);
+    lua_setglobal(L, name.c_str());
+  }
+  int results = sandbox.run(source, chunkName);
+  if (results == 0)
+    throw ScriptError(chunkName +
+                      ": the script returned nothing; end it with 'return <solid>' or "
+                      "'return scene{...}'");
+  try {
+    return sceneFromValue(L, -results);
+  } catch (const std::invalid_argument& e) {
+    throw ScriptError(chunkName + ": " + e.what());
+  }
+}
+
+Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw ScriptError(path + ": is a folder, not a script");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw ScriptError(path + ": cannot open script: " + std::strerror(errno));
+  // Read at most kMaxScriptBytes + 1 bytes, a block at a time (a script is
+  // usually a few kilobytes): /dev/zero is not a script.
+  std::string text;
+  char block[1 << 16];
+  while (text.size() <= kMaxScriptBytes && file.read(block, sizeof block).gcount() > 0)
+    text.append(block, static_cast<std::size_t>(file.gcount()));
+  if (file.bad()) throw ScriptError(path + ": cannot read script");
+  if (text.size() > kMaxScriptBytes)
+    throw ScriptError(path + ": script is larger than " + std::to_string(kMaxScriptBytes >> 20) +
+                      " MiB");
+  // A UTF-8 byte-order mark, and a first line "#!..." (as lua itself allows);
+  // the line is kept empty so that line numbers stay right.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  if (text.starts_with("#"))
+    text.erase(0, text.find('\n') == std::string::npos ? text.size() : text.find('\n'));
+  ScriptOptions withFolder = options;
+  withFolder.folder = std::filesystem::path(path).parent_path().string();
+  if (withFolder.folder.empty()) withFolder.folder = ".";
+  return runScript(text, path, withFolder);
+}
+
+}  // namespace csgray

@@ -1,0 +1,65 @@
+// Runs a part script: sandboxed Lua 5.4 that returns a solid or a scene.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "check/check_report.h"
+#include "scene/scene.h"
+#include "tessellation/triangle_mesh.h"
+
+namespace csgray {
+
+// Resource caps that end a runaway script with a clear error.
+struct ScriptLimits {
+  std::size_t memoryBytes = std::size_t{1} << 30;  // Lua heap plus solids built
+  std::uint64_t instructions = 1'000'000'000;      // Lua VM instructions, a few seconds
+};
+
+struct ScriptOptions {
+  // Globals set before the script runs (-D name=value): numbers, true/false,
+  // or strings (quotes optional).
+  std::vector<std::pair<std::string, std::string>> defines;
+  ScriptLimits limits;
+  // The folder that file names in the script (image textures, meshes) are
+  // relative to, and may not leave; runScriptFile sets it to the script's
+  // folder.
+  std::string folder = ".";
+  // Further folders (--allow-path) that file names may lead into, by a
+  // relative path from `folder` or an absolute one.
+  std::vector<std::string> allowedFolders;
+  // Reads an image file for image_texture{}; without it, image textures
+  // are an error. (The modeler does not read images itself: io/ does.)
+  std::function<TextureImage(const std::string& path)> loadImage;
+  // Reads a mesh file for mesh{}, repairing it when asked and saying what
+  // it did in repairReport; throws std::invalid_argument for a bad file or
+  // a mesh that is not a solid. Without it, mesh{} is an error. (importMesh
+  // of meshfile/mesh_import.h fits.)
+  std::function<TriangleMesh(const std::string& path, bool repair, std::string& repairReport)>
+      loadMesh;
+  // Checks a solid's export against it for check(solid, options)
+  // (checkPart of check/part_check.h fits); without it, check() is an error.
+  std::function<CheckReport(const Solid& solid, const CheckOptions& options)> checkSolid;
+  // Receives what the script should be told but does not stop it, such as
+  // what mesh{repair=true} repaired; without it these are dropped.
+  std::function<void(const std::string& message)> warn;
+};
+
+// A script that failed: the message names the file and line where known.
+class ScriptError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Runs the script file at path. Throws ScriptError.
+Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
+// Runs source text; chunkName is used in messages in place of a file name.
+Scene runScript(const std::string& source, const std::string& chunkName,
+                const ScriptOptions& options = {});
+
+}  // namespace csgray

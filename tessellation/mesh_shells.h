@@ -1,0 +1,31 @@
+// The separate shells of a triangle mesh (its pieces connected through
+// shared vertices), and where two of them come nearest: what `csgray
+// check` says of an export that falls apart.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tessellation/triangle_mesh.h"
+
+namespace csgray {
+
+struct MeshShells {
+  std::size_t count = 0;
+  std::vector<std::uint32_t> shellOfPoint;  // by point index; unused points get their own
+};
+
+MeshShells meshShells(const TriangleMesh& mesh);
+
+// The nearest two points of different shells, through their vertices
+// (infinite distance for fewer than two shells)
+// (the gap between two shells is at most this, and at a cut made by a
+// boolean, where both sides have vertices on the cut's rim, about it).
+struct ShellApproach {
+  double distance = 0.0;
+  dvec3 a{0.0}, b{0.0};
+};
+
+ShellApproach nearestShells(const TriangleMesh& mesh, const MeshShells& shells);
+
+}  // namespace csgray
