@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace csgray {
+namespace csgray::detail {
 
 AxisCrossings::AxisCrossings(const TriangleMesh& mesh, const Bounds& box, int axis, int n)
     : mesh_(mesh), axis_(axis), u_((axis + 1) % 3), v_((axis + 2) % 3), n_(n) {
@@ -72,4 +72,4 @@ double AxisCrossings::distance(const dvec3& p, const Crossing& c) const {
   return pointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]]);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

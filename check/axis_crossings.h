@@ -10,7 +10,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class AxisCrossings {
  public:
@@ -38,4 +38,4 @@ class AxisCrossings {
   std::vector<std::uint32_t> triangles_;  // triangle indices, cell by cell
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

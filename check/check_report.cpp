@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -170,4 +170,4 @@ std::string checkReportJson(const CheckReport& r, const std::string& name) {
   return s.str();
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct CheckOptions {
   // Limits that keep a check within memory and minutes.
@@ -108,4 +108,4 @@ std::string checkReportText(const CheckReport& report, const std::string& name);
 // The same as one JSON object.
 std::string checkReportJson(const CheckReport& report, const std::string& name);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -26,7 +26,7 @@
 #include "tessellation/mesh_shells.h"
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -970,4 +970,4 @@ CheckReport checkPart(const Solid& solid, const CheckOptions& options) {
   return checkMeshAgainstSolid(solid, mesh, options);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

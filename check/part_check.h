@@ -9,7 +9,7 @@
 #include "engine/solid.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Makes the export of the solid in memory (meshOfSolid at the options'
 // tolerance, rounded to floats as an STL file holds it) and checks it. A part that cannot be
@@ -22,4 +22,4 @@ CheckReport checkPart(const Solid& solid, const CheckOptions& options);
 CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
                                   const CheckOptions& options);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 #include "cli/heap_reserve.h"
 #include "check/part_check.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 int checkScene(const Scene& scene, const CheckCommandOptions& options) {
   const SolidPtr part = printedPart(scene, options.script, "check");
@@ -24,4 +24,4 @@ int checkScene(const Scene& scene, const CheckCommandOptions& options) {
   return report.ok() ? 0 : 1;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

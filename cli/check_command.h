@@ -7,7 +7,7 @@
 #include "check/check_report.h"
 #include "scene/scene.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct CheckCommandOptions {
   std::string script;  // for messages
@@ -21,4 +21,4 @@ struct CheckCommandOptions {
 // solid to check.
 int checkScene(const Scene& scene, const CheckCommandOptions& options);
 
-}  // namespace csgray
+}  // namespace csgray::detail

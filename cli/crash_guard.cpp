@@ -8,7 +8,7 @@
 
 #include "export/cgal/mesh_boolean.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -53,4 +53,4 @@ CrashGuard::~CrashGuard() {
   for (int signal : kSignals) ::signal(signal, SIG_DFL);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

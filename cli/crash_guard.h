@@ -14,7 +14,7 @@
 
 #include <string>
 
-namespace csgray {
+namespace csgray::detail {
 
 class CrashGuard {
  public:
@@ -24,4 +24,4 @@ class CrashGuard {
   CrashGuard& operator=(const CrashGuard&) = delete;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

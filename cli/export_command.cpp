@@ -14,7 +14,7 @@
 #include "meshfile/mesh_writer.h"
 #include "engine/boolean.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 void checkExportOutput(const ExportOptions& options) {
   meshFormatFor(options.output);  // throws for an unknown extension
@@ -94,4 +94,4 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
               mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

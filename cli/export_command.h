@@ -6,7 +6,7 @@
 
 #include "scene/scene.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct ExportOptions {
   std::string script;  // for messages
@@ -32,4 +32,4 @@ SolidPtr printedPart(const Scene& scene, const std::string& script, const char* 
 // leaves any old output file as it was.
 void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds);
 
-}  // namespace csgray
+}  // namespace csgray::detail

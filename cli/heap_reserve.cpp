@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace csgray {
+namespace csgray::detail {
 
 void reserveHugePageHeap(std::size_t bytes) {
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
@@ -33,4 +33,4 @@ void reserveHugePageHeap(std::size_t bytes) {
 #endif
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

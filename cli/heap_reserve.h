@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-namespace csgray {
+namespace csgray::detail {
 
 // Grows the main heap by about `bytes` and marks it for transparent huge
 // pages (madvise); blocks of up to 32 MiB are then taken from it too.
@@ -18,4 +18,4 @@ namespace csgray {
 // does not support it.
 void reserveHugePageHeap(std::size_t bytes);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -23,7 +23,7 @@
 #include "script/script.h"
 #include "raytrace/renderer.h"
 
-using namespace csgray;
+using namespace csgray::detail;
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include "meshfile/mesh_import.h"
 #include "check/part_check.h"
 
-extern "C" __attribute__((visibility("default"))) const csgray::MeshPlugin* csgray_mesh_plugin() {
-  static const csgray::MeshPlugin plugin{csgray::checkExportOutput, csgray::exportScene,
-                                         csgray::checkScene, csgray::importMesh, csgray::checkPart};
+extern "C" __attribute__((visibility("default"))) const csgray::detail::MeshPlugin* csgray_mesh_plugin() {
+  static const csgray::detail::MeshPlugin plugin{csgray::detail::checkExportOutput, csgray::detail::exportScene,
+                                         csgray::detail::checkScene, csgray::detail::importMesh, csgray::detail::checkPart};
   return &plugin;
 }

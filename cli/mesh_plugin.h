@@ -12,7 +12,7 @@
 #include "cli/export_command.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct MeshPlugin {
   // As declared in cli/export_command.h, cli/check_command.h,
@@ -28,6 +28,6 @@ struct MeshPlugin {
 // std::runtime_error if it cannot be loaded.
 const MeshPlugin& meshPlugin();
 
-}  // namespace csgray
+}  // namespace csgray::detail
 
-extern "C" const csgray::MeshPlugin* csgray_mesh_plugin();
+extern "C" const csgray::detail::MeshPlugin* csgray_mesh_plugin();

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace csgray {
+namespace csgray::detail {
 
 ProgressBar::ProgressBar(const char* label)
     : label_(label),
@@ -34,4 +34,4 @@ void ProgressBar::update(double fraction) {
   std::fflush(stderr);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

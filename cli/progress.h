@@ -5,7 +5,7 @@
 #include <chrono>
 #include <mutex>
 
-namespace csgray {
+namespace csgray::detail {
 
 class ProgressBar {
  public:
@@ -26,4 +26,4 @@ class ProgressBar {
   std::mutex mutex_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

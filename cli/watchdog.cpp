@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -47,4 +47,4 @@ Watchdog::~Watchdog() {
   ::signal(SIGALRM, SIG_DFL);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

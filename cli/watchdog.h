@@ -12,7 +12,7 @@
 
 #include <string>
 
-namespace csgray {
+namespace csgray::detail {
 
 class Watchdog {
  public:
@@ -27,4 +27,4 @@ class Watchdog {
   bool armed_ = false;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

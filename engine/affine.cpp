@@ -6,7 +6,7 @@
 #include <glm/matrix.hpp>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 Affine::Affine(const glm::dmat4& worldFromObject)
     : worldFromObject_(worldFromObject),
@@ -83,4 +83,4 @@ dvec3 Affine::normalToWorld(const dvec3& n) const {
   return glm::normalize(translation_ ? n : normalFromObject_ * n);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -9,7 +9,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Affine {
  public:
@@ -59,4 +59,4 @@ class Affine {
   bool translation_ = true;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

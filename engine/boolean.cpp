@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-namespace csgray {
+namespace csgray::detail {
 
 Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
   if (operands.empty()) throw std::invalid_argument(kind() + ": needs at least one operand");
@@ -315,4 +315,4 @@ SolidPtr differenceOf(std::vector<SolidPtr> operands) {
   return std::make_shared<Boolean>(Boolean::Op::Difference, std::move(operands));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

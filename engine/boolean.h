@@ -14,7 +14,7 @@
 #include "engine/bvh.h"
 #include "engine/solid.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Boolean : public Solid {
  public:
@@ -76,4 +76,4 @@ SolidPtr unionOf(std::vector<SolidPtr> operands);
 SolidPtr intersectionOf(std::vector<SolidPtr> operands);
 SolidPtr differenceOf(std::vector<SolidPtr> operands);
 
-}  // namespace csgray
+}  // namespace csgray::detail

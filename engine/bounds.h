@@ -8,7 +8,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct Bounds {
   dvec3 lo{kInfinity};
@@ -62,4 +62,4 @@ struct Bounds {
   bool hitBy(const Ray& ray) const { return entry(ray, ray.tMin, ray.tMax) != kInfinity; }
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

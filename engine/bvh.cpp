@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -136,4 +136,4 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
   build(left + 1, boxes, centres, nodeBoxes, mid, end, depth + 1);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

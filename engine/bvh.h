@@ -17,7 +17,7 @@
 
 #include "engine/bounds.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Where a ray enters a box within [tMin, tMax]: the entry t (tMin if the
 // ray starts inside), or +inf if it misses (Bounds::entry).
@@ -150,4 +150,4 @@ inline void Bvh::childEntries(const ChildBoxes& c, const Ray& ray, const bool ne
 #endif
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

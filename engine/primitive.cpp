@@ -5,7 +5,7 @@
 #include <glm/mat3x3.hpp>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 void Primitive::spans(const Ray& ray, SpanList& out) const {
   out.clear();
@@ -54,4 +54,4 @@ void Primitive::updateBounds() {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 
 #include "engine/solid.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // A primitive's mesh (tessellation/triangle_mesh.h), made by the
 // tessellation layer above this one.
@@ -82,4 +82,4 @@ class Primitive : public Solid {
   Bounds bounds_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -6,7 +6,7 @@
 #include <glm/vec3.hpp>
 #include <limits>
 
-namespace csgray {
+namespace csgray::detail {
 
 using glm::dvec3;
 
@@ -39,4 +39,4 @@ struct Ray {
   dvec3 at(double t) const { return origin + t * dir; }
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

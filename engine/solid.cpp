@@ -2,7 +2,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 SolidPtr Solid::transformed(const Affine& worldFromObject) const {
   return mapPrimitives(
@@ -26,4 +26,4 @@ TreeStats treeStats(const Solid& solid) {
   return TreeStats{solid.primitiveCount(), solid.booleanCount()};
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

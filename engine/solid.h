@@ -13,7 +13,7 @@
 #include "engine/bounds.h"
 #include "engine/span_list.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // What a primitive is made of (scene/material.h): the engine only carries
 // it from the script to the renderer and the exporter.
@@ -111,4 +111,4 @@ struct TreeStats {
 };
 TreeStats treeStats(const Solid& solid);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace csgray {
+namespace csgray::detail {
 
 SpanList& SpanList::operator=(const SpanList& other) {
   if (this == &other) return *this;
@@ -128,4 +128,4 @@ void subtract(const SpanList& a, const SpanList& b, SpanList& out) {
   merge(Op::Difference, a, b, out);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Primitive;
 
@@ -85,4 +85,4 @@ void unite(const SpanList& a, const SpanList& b, SpanList& out);
 void intersect(const SpanList& a, const SpanList& b, SpanList& out);
 void subtract(const SpanList& a, const SpanList& b, SpanList& out);
 
-}  // namespace csgray
+}  // namespace csgray::detail

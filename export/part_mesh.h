@@ -8,7 +8,7 @@
 #include "scene/material.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct PartMesh {
   TriangleMesh mesh;
@@ -19,4 +19,4 @@ struct PartMesh {
 // How a file stores a coordinate: the value it reads back as.
 using StoredCoordinate = double (*)(double);
 
-}  // namespace csgray
+}  // namespace csgray::detail

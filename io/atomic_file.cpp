@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 std::atomic<unsigned> counter{0};
@@ -64,4 +64,4 @@ void AtomicFile::commit() {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace csgray {
+namespace csgray::detail {
 
 // Why a file cannot be written at path (its folder is missing or not
 // writable, or the path is a folder), or "" when it can: checked before
@@ -31,4 +31,4 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -16,7 +16,7 @@
 #include "io/png_file.h"
 #include "io/srgb.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -84,4 +84,4 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
 
 TextureImage readTextureImage(const std::string& path) { return imagePlugin().read(path); }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -6,7 +6,7 @@
 #include "io/png_file.h"
 #include "scene/texture.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Can an image be written to this path: a known format, an existing
 // writable folder? Returns an empty string if so, else why not; checked
@@ -35,4 +35,4 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
 // is missing, unreadable, not an image, empty or over 16384 pixels a side.
 TextureImage readTextureImage(const std::string& path);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include "io/plugin_module.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 const ImagePlugin& imagePlugin() {
   return pluginOf<ImagePlugin>("libcsgray_images.so", CSGRAY_IMAGE_PLUGIN, "csgray_image_plugin",
@@ -21,4 +21,4 @@ ImagePluginPreload::ImagePluginPreload()
         }
       }) {}
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 
 #include "io/image_file.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct ImagePlugin {
   // Why an image of this format cannot be written, or "".
@@ -38,6 +38,6 @@ class ImagePluginPreload {
   std::thread thread_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail
 
-extern "C" const csgray::ImagePlugin* csgray_image_plugin();
+extern "C" const csgray::detail::ImagePlugin* csgray_image_plugin();

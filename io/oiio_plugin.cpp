@@ -15,7 +15,7 @@
 #include "io/image_plugin.h"
 #include "io/srgb.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -113,9 +113,9 @@ TextureImage read(const std::string& path) {
 
 }  // namespace
 
-}  // namespace csgray
+}  // namespace csgray::detail
 
-extern "C" __attribute__((visibility("default"))) const csgray::ImagePlugin* csgray_image_plugin() {
-  static const csgray::ImagePlugin plugin{csgray::outputProblem, csgray::write, csgray::read};
+extern "C" __attribute__((visibility("default"))) const csgray::detail::ImagePlugin* csgray_image_plugin() {
+  static const csgray::detail::ImagePlugin plugin{csgray::detail::outputProblem, csgray::detail::write, csgray::detail::read};
   return &plugin;
 }

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 const void* loadPluginModule(const std::string& fileName, const std::string& builtPath,
                              const char* entry, const std::string& what) {
@@ -31,4 +31,4 @@ const void* loadPluginModule(const std::string& fileName, const std::string& bui
                            (why.empty() ? std::string() : ": " + why));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace csgray {
+namespace csgray::detail {
 
 // The address that the module's function `entry` returns. The module is
 // looked for beside the executable (where the build puts it next to
@@ -37,4 +37,4 @@ const T& pluginOf(const char* fileName, const char* builtPath, const char* entry
   return *plugin;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

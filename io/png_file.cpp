@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -137,4 +137,4 @@ std::string encodePng(int width, int height, const PngRowSource& rows, int threa
   return PngEncoder(width, height).finish(rows, threads);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

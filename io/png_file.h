@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 // Writes the 8-bit RGB bytes of image row y (width · 3 of them) to out.
 using PngRowSource = std::function<void(int y, std::uint8_t* out)>;
@@ -58,4 +58,4 @@ class PngEncoder {
 // to `threads` threads. Throws std::runtime_error if compression fails.
 std::string encodePng(int width, int height, const PngRowSource& rows, int threads = 1);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace csgray {
+namespace csgray::detail {
 
 inline float encodeSrgb(float linear) {
   float v = std::clamp(linear, 0.0f, 1.0f);
@@ -42,4 +42,4 @@ class SrgbEncoder {
   std::array<std::uint8_t, kBuckets> start_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

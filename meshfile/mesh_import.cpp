@@ -7,7 +7,7 @@
 #include "export/cgal/mesh_repair.h"
 #include "export/cgal/mesh_validity.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 TriangleMesh importMesh(const std::string& path, bool repair, std::string& repairReport) {
   repairReport.clear();
@@ -25,4 +25,4 @@ TriangleMesh importMesh(const std::string& path, bool repair, std::string& repai
   throw std::invalid_argument(name + ": " + defect + hint);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -6,7 +6,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Reads the mesh file at path (STL, OBJ, OFF or PLY by its extension);
 // with repair, makes the repairs of repairMesh and puts what they did in
@@ -16,4 +16,4 @@ namespace csgray {
 // ScriptOptions::loadMesh.
 TriangleMesh importMesh(const std::string& path, bool repair, std::string& repairReport);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -17,7 +17,7 @@
 
 #include "tessellation/polygon_triangulation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -887,4 +887,4 @@ TriangleMesh readMeshFile(const std::string& path, const MeshReadLimits& limits)
   return readMesh(bytes, name, limits);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -15,7 +15,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct MeshReadLimits {
   std::uint64_t maxFileBytes = std::uint64_t{2} << 30;
@@ -41,4 +41,4 @@ TriangleMesh readMesh(std::string_view bytes, const std::string& name,
 // it); messages name the file by its file name.
 TriangleMesh readMeshFile(const std::string& path, const MeshReadLimits& limits = {});
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -16,7 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/srgb.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -243,4 +243,4 @@ void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii) {
   file.commit();
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

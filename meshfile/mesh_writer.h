@@ -7,7 +7,7 @@
 
 #include "export/part_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 enum class MeshFormat { Stl, Obj, Off, Ply, ThreeMf };
 
@@ -27,4 +27,4 @@ StoredCoordinate storedCoordinate(MeshFormat format, bool ascii);
 // write leaves any old file as it was.
 void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -3,7 +3,7 @@
 #include "primitives/check.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 Box::Box(const dvec3& size) : size_(size) {
   requirePositive("box", "size x", size.x);
@@ -67,4 +67,4 @@ TriangleMesh Box::objectTessellate(double tolerance, const Bounds&) const {
   return mesh;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

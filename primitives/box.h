@@ -4,7 +4,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Box : public Primitive {
  public:
@@ -24,4 +24,4 @@ class Box : public Primitive {
   dvec3 size_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

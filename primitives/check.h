@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace csgray {
+namespace csgray::detail {
 
 inline void requirePositive(const char* shape, const char* name, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
@@ -25,4 +25,4 @@ inline void requireFinite(const char* shape, const char* name, double value) {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

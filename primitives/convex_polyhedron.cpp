@@ -12,7 +12,7 @@
 #include "primitives/check.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // A face index is the plane's index, up to kMaxPlanes - 1, so Boundary::face
 // must hold more than 8 bits; widening it kept a Boundary at 24 bytes (the
@@ -444,4 +444,4 @@ TriangleMesh ConvexPolyhedron::objectTessellate(double tolerance, const Bounds& 
   return convexPolytopeMesh(planes, box);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -14,7 +14,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class ConvexPolyhedron : public Primitive {
  public:
@@ -99,4 +99,4 @@ std::vector<ConvexPolyhedron::Plane> platonicPlanes(Platonic solid, double R);
 // and "r", the script's parameter).
 std::shared_ptr<ConvexPolyhedron> platonicSolid(Platonic solid, double R);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -10,7 +10,7 @@
 #include "engine/solvers/quadratic.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 enum Face { kSide = 0, kBottom = 1, kTop = 2 };
@@ -201,4 +201,4 @@ TriangleMesh Cylinder::rimsAndSides(const CirclePolygon rim[2], double tolerance
   return mesh;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -6,7 +6,7 @@
 #include "engine/primitive.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Cylinder : public Primitive {
  public:
@@ -32,4 +32,4 @@ class Cylinder : public Primitive {
   double slope_;  // dr/dz
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

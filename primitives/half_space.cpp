@@ -6,7 +6,7 @@
 #include "primitives/check.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 HalfSpace::HalfSpace(const dvec3& normal, double offset) : offset_(offset) {
   requireFinite("half_space", "offset", offset);
@@ -74,4 +74,4 @@ TriangleMesh HalfSpace::objectTessellate(double tolerance, const Bounds& region)
   return convexPolytopeMesh(planes, box);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -4,7 +4,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class HalfSpace : public Primitive {
  public:
@@ -26,4 +26,4 @@ class HalfSpace : public Primitive {
   double offset_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 #include "tessellation/polygon_triangulation.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct MeshSolid::Mesh {
   std::vector<dvec3> points;
@@ -565,4 +565,4 @@ TriangleMesh MeshSolid::objectTessellate(double tolerance, const Bounds&) const 
   return mesh;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -29,7 +29,7 @@
 #include "engine/bvh.h"
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class MeshSolid : public Primitive {
  public:
@@ -69,4 +69,4 @@ class MeshSolid : public Primitive {
   std::shared_ptr<const Mesh> mesh_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -14,7 +14,7 @@
 #include "engine/solvers/quadric_form.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 Quadric::Quadric(const glm::dmat4& m) : m_(m) {
   bool zero = true;
@@ -564,4 +564,4 @@ TriangleMesh Quadric::objectTessellate(double tolerance, const Bounds& region) c
   return QuadricMesher(canonicalQuadricForm(m_), tolerance, region).run();
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

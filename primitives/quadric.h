@@ -7,7 +7,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Quadric : public Primitive {
  public:
@@ -31,4 +31,4 @@ class Quadric : public Primitive {
   glm::dmat4 m_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

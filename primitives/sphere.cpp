@@ -14,7 +14,7 @@
 #include "primitives/check.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 Sphere::Sphere(double radius) : radius_(radius) { requirePositive("sphere", "radius", radius); }
 
@@ -190,4 +190,4 @@ TriangleMesh Sphere::objectTessellate(double tolerance, const Bounds&) const {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

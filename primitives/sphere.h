@@ -4,7 +4,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Sphere : public Primitive {
  public:
@@ -24,4 +24,4 @@ class Sphere : public Primitive {
   double radius_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

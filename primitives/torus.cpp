@@ -12,7 +12,7 @@
 #include "engine/solvers/quartic.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -263,4 +263,4 @@ TriangleMesh Torus::objectTessellate(double tolerance, const Bounds&) const {
   return revolveProfile(profile, segments, false, &circle);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 
 #include "engine/primitive.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Torus : public Primitive {
  public:
@@ -29,4 +29,4 @@ class Torus : public Primitive {
   double R_, r_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Vectors that leave their new elements uninitialised when no value is
 // given (resize(n)), and construct them as std::allocator does otherwise.
@@ -56,4 +56,4 @@ struct Image {
   }
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

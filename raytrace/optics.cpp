@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace csgray {
+namespace csgray::detail {
 
 dvec3 reflect(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
@@ -28,4 +28,4 @@ double fresnelReflectance(double cosIncidence, double n1, double n2) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // d mirrored in the plane with unit normal n: d − 2(d·n)n.
 dvec3 reflect(const dvec3& d, const dvec3& n);
@@ -24,4 +24,4 @@ std::optional<dvec3> refract(const dvec3& d, const dvec3& n, double n1, double n
 // angle.
 double fresnelReflectance(double cosIncidence, double n1, double n2);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include <sched.h>
 #endif
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -105,4 +105,4 @@ void RenderThreads::serve(int index) {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

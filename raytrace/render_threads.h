@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 class RenderThreads {
  public:
@@ -60,4 +60,4 @@ class RenderThreads {
   std::exception_ptr error_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -11,7 +11,7 @@
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // What one pixel's rays share: their random numbers and the ray counts.
 struct TraceContext {
@@ -445,4 +445,4 @@ RenderResult Renderer::renderAll() const {
   return result;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -16,12 +16,12 @@
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
 
-namespace csgray {
+namespace csgray::detail {
 class Sampler;
 struct TraceContext;
-}  // namespace csgray
+}  // namespace csgray::detail
 
-namespace csgray {
+namespace csgray::detail {
 
 struct RenderOptions {
   RenderOptions(int w = 800, int h = 600, int threadCount = 0)
@@ -139,4 +139,4 @@ class Renderer {
   double scale_;                  // a length for the size of the scene
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace csgray {
+namespace csgray::detail {
 
 class Sampler {
  public:
@@ -29,4 +29,4 @@ class Sampler {
   std::uint64_t state_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-namespace csgray {
+namespace csgray::detail {
 
 Camera::Camera(const CameraSpec& spec, int width, int height)
     : eye_(spec.eye), width_(width), height_(height), orthographic_(spec.orthographic) {
@@ -24,4 +24,4 @@ Ray Camera::ray(double x, double y) const {
   return Ray(eye_, glm::normalize(forward_ + u * right_ + v * up_));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

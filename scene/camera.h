@@ -6,7 +6,7 @@
 
 #include "scene/scene.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Camera {
  public:
@@ -26,4 +26,4 @@ class Camera {
   bool orthographic_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -54,4 +54,4 @@ dvec3 Light::radianceAt(const dvec3& p, const dvec3& s) const {
   return scale * color;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct Light {
   enum class Kind { Point, Spot, Rectangle, Sphere };
@@ -41,4 +41,4 @@ struct Light {
   dvec3 radianceAt(const dvec3& p, const dvec3& s) const;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

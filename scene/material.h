@@ -8,7 +8,7 @@
 
 #include "scene/texture.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct Material {
   dvec3 color{0.8, 0.8, 0.8};
@@ -34,4 +34,4 @@ struct Material {
 
 using MaterialPtr = std::shared_ptr<const Material>;
 
-}  // namespace csgray
+}  // namespace csgray::detail

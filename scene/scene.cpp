@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 Bounds Scene::bounds() const {
   Bounds b;
@@ -56,4 +56,4 @@ Light defaultLight(const CameraSpec& camera) {
   return light;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

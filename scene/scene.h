@@ -9,7 +9,7 @@
 #include "engine/solid.h"
 #include "scene/surface.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // A camera: eye point, the point looked at and the up direction. A
 // perspective camera is the pinhole of seed 001, 2.1.1 with a horizontal
@@ -52,4 +52,4 @@ CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees = 45.
 // The light used when a scene names none: above and behind the eye, to the left.
 Light defaultLight(const CameraSpec& camera);
 
-}  // namespace csgray
+}  // namespace csgray::detail

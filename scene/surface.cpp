@@ -11,7 +11,7 @@
 
 #include "primitives/check.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -220,4 +220,4 @@ void Surface::update() {
   bounds_.hi += pad;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

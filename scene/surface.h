@@ -17,7 +17,7 @@
 #include "engine/bounds.h"
 #include "scene/material.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Surface;
 using SurfacePtr = std::shared_ptr<const Surface>;
@@ -76,4 +76,4 @@ class Surface : public std::enable_shared_from_this<Surface> {
   Bounds bounds_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-namespace csgray {
+namespace csgray::detail {
 
 dvec3 Texture::colorAt(const dvec3& p, const dvec3& n) const {
   if (placement_.isIdentity()) return pattern(p, n);
@@ -284,4 +284,4 @@ TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octa
   return std::make_shared<NoiseTexture>(kind, a, b, octaves, strength);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -10,7 +10,7 @@
 
 #include "engine/affine.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // A bitmap in linear RGB floats, row-major from the top left.
 struct TextureImage {
@@ -71,4 +71,4 @@ TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octa
 double perlinNoise(const dvec3& p);
 double turbulence(const dvec3& p, int octaves);
 
-}  // namespace csgray
+}  // namespace csgray::detail

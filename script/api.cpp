@@ -20,7 +20,7 @@
 #include "script/lua_values.h"
 #include "script/sandbox.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -416,4 +416,4 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerCheckApi(L);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include "scene/scene.h"
 #include "script/script.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Registers the API's globals and metatables in a sandboxed state. The
 // options must outlive the script's run.
@@ -38,4 +38,4 @@ int solidMaterial(lua_State* L);
 // std::invalid_argument if it is not a solid, a surface or a scene.
 Scene sceneFromValue(lua_State* L, int index);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -9,7 +9,7 @@
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -142,4 +142,4 @@ int check(lua_State* L) {
 
 void registerCheckApi(lua_State* L) { lua_register(L, "check", guarded<check>); }
 
-}  // namespace csgray
+}  // namespace csgray::detail

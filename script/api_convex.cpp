@@ -10,7 +10,7 @@
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -105,4 +105,4 @@ void registerConvexApi(lua_State* L) {
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

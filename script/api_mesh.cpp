@@ -15,7 +15,7 @@
 #include "script/lua_values.h"
 #include "script/sandbox.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -153,4 +153,4 @@ void registerMeshApi(lua_State* L) {
   lua_register(L, "mesh", guarded<meshFn>);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -16,7 +16,7 @@
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -272,4 +272,4 @@ void registerQuadricApi(lua_State* L) {
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -15,7 +15,7 @@
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -614,4 +614,4 @@ Scene sceneFromValue(lua_State* L, int index) {
                               luaL_typename(L, index));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

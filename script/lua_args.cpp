@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 LuaArgs::LuaArgs(lua_State* L, int index, std::string function)
     : L_(L), index_(lua_absindex(L, index)), function_(std::move(function)) {
@@ -125,4 +125,4 @@ void pushVec3(lua_State* L, const dvec3& v) {
   }
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -10,7 +10,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class LuaArgs {
  public:
@@ -44,4 +44,4 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what);
 // Pushes {x, y, z}.
 void pushVec3(lua_State* L, const dvec3& v);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -13,7 +13,7 @@
 #include "scene/scene.h"
 #include "script/sandbox.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // ---- C++ values held in Lua userdata ---------------------------------------
 
@@ -158,4 +158,4 @@ inline void newMetatable(lua_State* L) {
   lua_setfield(L, -2, "__metatable");
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 constexpr int kHookInterval = 10000;  // instructions between budget checks
@@ -332,4 +332,4 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   return lua_gettop(L_) - base;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

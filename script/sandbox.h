@@ -14,7 +14,7 @@
 #include "script/script.h"
 #include "engine/solid.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class Sandbox {
  public:
@@ -68,4 +68,4 @@ class Sandbox {
   static constexpr std::size_t kAbortReserve = std::size_t{1} << 20;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 #include "script/api.h"
 #include "script/sandbox.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -110,4 +110,4 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
   return runScript(text, path, withFolder);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

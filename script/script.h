@@ -13,7 +13,7 @@
 #include "scene/scene.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Resource caps that end a runaway script with a clear error.
 struct ScriptLimits {
@@ -62,4 +62,4 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
 Scene runScript(const std::string& source, const std::string& chunkName,
                 const ScriptOptions& options = {});
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-namespace csgray {
+namespace csgray::detail {
 
 MeshShells meshShells(const TriangleMesh& mesh) {
   // Union-find over the points, joined along every triangle's edges.
@@ -62,4 +62,4 @@ ShellApproach nearestShells(const TriangleMesh& mesh, const MeshShells& shells) 
   return best;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

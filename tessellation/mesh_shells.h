@@ -8,7 +8,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct MeshShells {
   std::size_t count = 0;
@@ -28,4 +28,4 @@ struct ShellApproach {
 
 ShellApproach nearestShells(const TriangleMesh& mesh, const MeshShells& shells);
 
-}  // namespace csgray
+}  // namespace csgray::detail

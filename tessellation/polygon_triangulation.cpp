@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -133,4 +133,4 @@ bool triangulatePolygon(
   return true;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -9,7 +9,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Polygons with more corners than this are not ear clipped: they are cut as
 // if convex (triangulatePolygon).
@@ -28,4 +28,4 @@ bool triangulatePolygon(
     std::span<const dvec3> points, std::span<const std::uint32_t> polygon,
     const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& triangle);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include "engine/primitive.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -51,4 +51,4 @@ TriangleMesh Primitive::tessellate(double tolerance, const Bounds& region) const
   return mesh;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace csgray {
+namespace csgray::detail {
 
 void requireTriangleBudget(const std::string& kind, double triangles, double tolerance) {
   if (triangles <= double(kMaxTessellationTriangles)) return;
@@ -275,4 +275,4 @@ Bounds regionWithMargin(const Bounds& region, double tolerance) {
   return {region.lo - dvec3(margin), region.hi + dvec3(margin)};
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 #include "engine/bounds.h"
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // No primitive is tessellated to more triangles than this: a tolerance far
 // too fine for the part is an error, not hours of work and a full memory.
@@ -132,4 +132,4 @@ void requireFiniteRegion(const std::string& kind, const Bounds& region);
 // lie outside the region, and nothing the region holds is on them.
 Bounds regionWithMargin(const Bounds& region, double tolerance);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-namespace csgray {
+namespace csgray::detail {
 
 void TriangleMesh::append(const TriangleMesh& other) {
   const auto offset = static_cast<std::uint32_t>(points.size());
@@ -67,4 +67,4 @@ double pointTriangleDistance(const dvec3& p, const dvec3& a, const dvec3& b, con
   return glm::length(ap - v * ab - w * ac);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 
 #include "engine/bounds.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 struct TriangleMesh {
   using Triangle = std::array<std::uint32_t, 3>;
@@ -35,4 +35,4 @@ struct TriangleMesh {
 // The distance from p to the nearest point of the triangle abc.
 double pointTriangleDistance(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,14 +7,14 @@
 #include <cstdlib>
 #include <new>
 
-namespace csgray::test {
+namespace csgray::detail::test {
 inline std::atomic<long> gAllocations{0};
 // operator new calls so far.
 inline long allocations() { return gAllocations.load(); }
-}  // namespace csgray::test
+}  // namespace csgray::detail::test
 
 [[gnu::noinline]] void* operator new(std::size_t n) {
-  ++csgray::test::gAllocations;
+  ++csgray::detail::test::gAllocations;
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }

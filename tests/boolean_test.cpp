@@ -18,7 +18,7 @@
 #include "primitives/sphere.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectSpansAgreeWithContainsOnRandomLines;
@@ -504,4 +504,4 @@ TEST(BooleanSpans, CoincidentFacesStayRegularUnderRotation) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

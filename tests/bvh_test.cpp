@@ -19,7 +19,7 @@
 #include "raytrace/renderer.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::randomDirection;
@@ -340,4 +340,4 @@ TEST(SceneBvh, FirstHitIsTheNearestOfAllObjects) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

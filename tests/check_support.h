@@ -8,7 +8,7 @@
 
 #include "check/part_check.h"
 
-namespace csgray::test {
+namespace csgray::detail::test {
 
 inline ::testing::AssertionResult checksOut(const Solid& solid, double tolerance = 0.01,
                                             std::size_t samples = 20'000) {
@@ -20,4 +20,4 @@ inline ::testing::AssertionResult checksOut(const Solid& solid, double tolerance
   return ::testing::AssertionFailure() << checkReportText(report, solid.kind());
 }
 
-}  // namespace csgray::test
+}  // namespace csgray::detail::test

@@ -20,7 +20,7 @@
 #include "primitives/sphere.h"
 #include "script/script.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -641,4 +641,4 @@ TEST(CheckScript, BadArgumentsAreNamed) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -21,7 +21,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -519,4 +519,4 @@ TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

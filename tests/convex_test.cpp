@@ -22,7 +22,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectSpansAgreeWithContainsOnRandomLines;
@@ -675,4 +675,4 @@ TEST(ConvexScript, ErrorsNameTheLineFunctionAndParameter) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

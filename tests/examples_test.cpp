@@ -12,7 +12,7 @@
 #include "raytrace/renderer.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 class Example : public ::testing::TestWithParam<std::string> {};
@@ -53,4 +53,4 @@ TEST(Examples, ShowcaseIsAmongThem) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

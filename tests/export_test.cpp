@@ -23,7 +23,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -341,4 +341,4 @@ TEST(Export, AWriteThatFailsPartWayLeavesTheOldFile) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 TEST(Light, PointLightIsConstantWithoutFalloffAndInverseSquareWithIt) {
@@ -94,4 +94,4 @@ TEST(Light, SphereSamplesLieOnTheDiscFacingThePoint) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -23,7 +23,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -549,4 +549,4 @@ TEST_F(MeshScript, FilesOutsideTheFolderNeedAllowPath) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

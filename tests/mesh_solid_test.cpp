@@ -28,7 +28,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectAgreementOnLinesThrough;
@@ -926,4 +926,4 @@ TEST(MeshSolidScript, MeshesCountAgainstTheMemoryCap) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

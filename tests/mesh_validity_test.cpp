@@ -13,7 +13,7 @@
 
 #include "primitives/sphere.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 bool cgalSaysItCrosses(const TriangleMesh& mesh) {
@@ -82,4 +82,4 @@ TEST(MeshValidity, CrossingsAgreeWithCgalOnRandomlyCrumpledSpheres) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

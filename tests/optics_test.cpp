@@ -14,7 +14,7 @@
 
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -216,4 +216,4 @@ TEST(Optics, FresnelIsReciprocal) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

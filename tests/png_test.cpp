@@ -15,7 +15,7 @@
 #include "io/png_file.h"
 #include "io/srgb.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 std::vector<std::uint8_t> readBack(const std::string& path, int& w, int& h) {
@@ -113,4 +113,4 @@ TEST(Png, WriteImageEncodesLinearColoursAsSrgb) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -18,7 +18,7 @@
 #include "engine/solvers/quadratic.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectAgreementOnLinesThrough;
@@ -858,4 +858,4 @@ TEST(QuadricPrimitive, RejectsDegenerateMatrix) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -18,7 +18,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -561,4 +561,4 @@ TEST(NamedQuadrics, ExampleIsASceneOfBoundedParts) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

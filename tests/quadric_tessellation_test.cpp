@@ -22,7 +22,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -567,4 +567,4 @@ TEST(QuadricTessellation, RefusesWhatCannotBeAClosedManifold) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -11,7 +11,7 @@
 #include "scene/camera.h"
 #include "raytrace/renderer.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 TEST(Rays, TracingThePlateAllocatesNothing) {
@@ -37,4 +37,4 @@ TEST(Rays, TracingThePlateAllocatesNothing) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -14,7 +14,7 @@
 #include "primitives/sphere.h"
 #include "raytrace/renderer.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -170,4 +170,4 @@ TEST(Render, UnboundedSolidNeedsACamera) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 TEST(RenderThreads, EveryThreadRunsEachJobOnce) {
@@ -102,4 +102,4 @@ TEST(RenderThreads, FinishLetsTheWorkersEndBeforeThePoolGoes) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 
 #include "script/script.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 std::string errorOf(const std::string& source, const ScriptLimits& limits = {}) {
@@ -140,4 +140,4 @@ TEST(Sandbox, ScriptWithinLimitsRuns) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -20,7 +20,7 @@
 #include "script/script.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -958,4 +958,4 @@ TEST(ScriptScene, HugeListsAreCharged) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

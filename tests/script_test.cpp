@@ -11,7 +11,7 @@
 #include "engine/primitive.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 SolidPtr solidOf(const std::string& source, const ScriptOptions& options = {}) {
@@ -319,4 +319,4 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

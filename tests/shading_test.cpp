@@ -17,7 +17,7 @@
 #include "primitives/sphere.h"
 #include "raytrace/renderer.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -931,4 +931,4 @@ TEST(Shading, DiscAndTriangleRenderWhereTheirFormulasSay) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

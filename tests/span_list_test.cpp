@@ -15,7 +15,7 @@
 #include "primitives/sphere.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 // Two real primitives used only as tags: a boundary's primitive says which
@@ -447,4 +447,4 @@ TEST(SpanList, BooleansOnLongLists) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

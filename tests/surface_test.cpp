@@ -24,7 +24,7 @@
 
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectVecNear;
@@ -699,4 +699,4 @@ TEST(Surface, TextureStaysOnTheSurfaceWhenMoved) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

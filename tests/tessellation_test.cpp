@@ -27,7 +27,7 @@
 #include "primitives/sphere.h"
 #include "primitives/torus.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using glm::dvec2;
@@ -655,4 +655,4 @@ TEST(Tessellation, UnboundedConvexIsCutByTheGrownRegion) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -18,7 +18,7 @@
 #include "script/script.h"
 #include "engine/solid.h"
 
-namespace csgray::test {
+namespace csgray::detail::test {
 
 // The scripts in examples/, sorted: every one is rendered and exported.
 inline std::vector<std::string> exampleScripts() {
@@ -172,4 +172,4 @@ inline void expectAgreementOnLinesThrough(const Solid& solid, const dvec3& p, in
   }
 }
 
-}  // namespace csgray::test
+}  // namespace csgray::detail::test

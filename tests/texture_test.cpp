@@ -24,7 +24,7 @@
 #include "io/image_file.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectVecNear;
@@ -637,4 +637,4 @@ TEST_F(ReadTextureImage, ReadsIntoATextureThatFetchesThePixels) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -24,7 +24,7 @@
 #include "raytrace/renderer.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectSpansAgreeWithContains;
@@ -795,4 +795,4 @@ TEST(TorusRender, ExampleScriptRenders) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

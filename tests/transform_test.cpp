@@ -20,7 +20,7 @@
 #include "primitives/sphere.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 using test::expectSpansAgreeWithContainsOnRandomLines;
@@ -450,4 +450,4 @@ TEST(TransformBounds, BoundsHoldTransformedSolid) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

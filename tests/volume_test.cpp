@@ -16,7 +16,7 @@
 #include "primitives/sphere.h"
 #include "test_support.h"
 
-namespace csgray {
+namespace csgray::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -188,4 +188,4 @@ TEST(Volume, UnboundedQuadricsClippedByBox) {
 }
 
 }  // namespace
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 int quadraticSublevel(double a, double b, double c, Interval out[2]) {
   if (a == 0.0) {
@@ -46,4 +46,4 @@ int quadraticSublevel(double a, double b, double c, Interval out[2]) {
   return 2;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -2,7 +2,7 @@
 // quadric surface (seed 000, 17.3.3: uλ² + vλ + w = 0) reduces to this.
 #pragma once
 
-namespace csgray {
+namespace csgray::detail {
 
 struct Interval {
   double lo, hi;
@@ -13,4 +13,4 @@ struct Interval {
 // q = -(b + sign(b)·sqrt(b² - 4ac))/2, t = q/a and c/q (Numerical Recipes 5.6).
 int quadraticSublevel(double a, double b, double c, Interval out[2]);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -7,7 +7,7 @@
 #include <glm/matrix.hpp>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -148,4 +148,4 @@ QuadricForm canonicalQuadricForm(const glm::dmat4& m) {
   return form;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -9,7 +9,7 @@
 
 #include "engine/ray.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // p = origin + axes · y (axes' columns are orthonormal, in either handedness)
 // and pᵀMp = scale · (Σ λᵢ yᵢ² + 2 linear · y₂ + constant) with scale > 0,
@@ -46,4 +46,4 @@ void symmetricEigen(const glm::dmat3& a, dvec3& values, glm::dmat3& vectors);
 // M must be symmetric and not zero (as Quadric's constructor ensures).
 QuadricForm canonicalQuadricForm(const glm::dmat4& m);
 
-}  // namespace csgray
+}  // namespace csgray::detail

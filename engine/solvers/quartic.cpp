@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace csgray {
+namespace csgray::detail {
 
 int polynomialSublevelBoundaries(const double* c, int n, double lo, double hi, double* roots) {
   while (n > 0 && c[n] == 0.0) --n;
@@ -49,4 +49,4 @@ int quarticRoots(double c3, double c2, double c1, double c0, double lo, double h
   return polynomialSublevelBoundaries(c, 4, lo, hi, roots);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <utility>
 
-namespace csgray {
+namespace csgray::detail {
 
 // The root of a function in [lo, hi] whose sign changes once there:
 // f(t) returns {value, slope}; "inside" means value <= 0, and loInside says
@@ -78,4 +78,4 @@ int polynomialSublevelBoundaries(const double* c, int n, double lo, double hi, d
 // [lo, hi]: the real roots of a monic quartic that the sign changes at.
 int quarticRoots(double c3, double c2, double c1, double c0, double lo, double hi, double roots[4]);
 
-}  // namespace csgray
+}  // namespace csgray::detail

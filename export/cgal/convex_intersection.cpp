@@ -7,7 +7,7 @@
 #include "primitives/convex_polyhedron.h"
 #include "primitives/half_space.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 std::optional<std::vector<BoundingPlane>> boundingPlanes(const Primitive& primitive,
                                                          const Affine& frame) {
@@ -41,4 +41,4 @@ std::optional<std::vector<BoundingPlane>> boundingPlanes(const Primitive& primit
   return placed;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

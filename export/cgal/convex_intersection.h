@@ -15,7 +15,7 @@
 #include "engine/primitive.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // The half-spaces whose intersection is `primitive` placed by `frame`
 // (normal·p <= offset, unit normals), or nothing for a primitive that is
@@ -23,4 +23,4 @@ namespace csgray {
 std::optional<std::vector<BoundingPlane>> boundingPlanes(const Primitive& primitive,
                                                          const Affine& frame);
 
-}  // namespace csgray
+}  // namespace csgray::detail

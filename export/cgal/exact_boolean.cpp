@@ -41,7 +41,7 @@ Construct_line_line_intersection_point_3<CGAL::Epeck::Exact_kernel>::operator()(
 }
 }  // namespace CGAL::CommonKernelFunctors
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -77,4 +77,4 @@ bool exactBoolean(ExactMesh& a, ExactMesh& b, Boolean::Op op) {
   return false;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 #include "export/cgal/exact_mesh.h"
 #include "engine/boolean.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // a = a op b, in place; the faces keep their material tags. False when the
 // result would not be a 2-manifold (the operands touch along an edge or at
@@ -14,4 +14,4 @@ namespace csgray {
 // intersections of constraints"); the meshes may then be half cut.
 bool exactBoolean(ExactMesh& a, ExactMesh& b, Boolean::Op op);
 
-}  // namespace csgray
+}  // namespace csgray::detail

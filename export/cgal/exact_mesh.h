@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-namespace csgray {
+namespace csgray::detail {
 
 // Exact constructions (Epeck): a corefinement's new points are exact, so
 // the next boolean in a chain sees them where they are.
@@ -19,7 +19,7 @@ using ExactMesh = CGAL::Surface_mesh<CGAL::Epeck::Point_3>;
 // The result, rounded to what a file holds.
 using RoundedMesh = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
 
-}  // namespace csgray
+}  // namespace csgray::detail
 
 // CGAL 5.5's intersection of coplanar faces in a corefinement asks for the
 // point where two edges' lines cross also where the edges overlap or run
@@ -43,7 +43,7 @@ Construct_line_line_intersection_point_3<CGAL::Epeck::Exact_kernel>::operator()(
     const CGAL::Epeck::Exact_kernel::Point_3&, const CGAL::Epeck::Exact_kernel::Point_3&) const;
 }  // namespace CGAL::CommonKernelFunctors
 
-namespace csgray {
+namespace csgray::detail {
 
 inline constexpr const char* kMaterialTag = "f:material";
 
@@ -60,4 +60,4 @@ auto tagsOf(const Mesh& mesh) {
       .first;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

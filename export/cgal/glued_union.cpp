@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -176,4 +176,4 @@ bool glueAcrossPlane(ExactMesh& a, const ExactMesh& b, const Bounds& boxA, const
   return true;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -8,7 +8,7 @@
 #include "export/cgal/exact_mesh.h"
 #include "engine/bounds.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // a = a ∪ b when a and b meet only in one axis-aligned plane (boxA and
 // boxB, the boxes of their points, touch in that plane and nowhere
@@ -21,4 +21,4 @@ namespace csgray {
 // 2-manifold; the caller then corefines. Faces keep their material tags.
 bool glueAcrossPlane(ExactMesh& a, const ExactMesh& b, const Bounds& boxA, const Bounds& boxB);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -21,7 +21,7 @@
 #include "engine/primitive.h"
 #include "tessellation/tessellation.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -791,4 +791,4 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   return part;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

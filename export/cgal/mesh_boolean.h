@@ -11,7 +11,7 @@
 #include "export/part_mesh.h"
 #include "engine/solid.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // What the evaluation did, for --stats and the benchmarks.
 struct MeshBooleanStats {
@@ -44,4 +44,4 @@ const char* booleanInProgress();
 PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored = nullptr,
                      MeshBooleanStats* stats = nullptr);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <optional>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -102,4 +102,4 @@ double MeshProbe::distance(const dvec3& p) const {
   return std::sqrt(CGAL::to_double(impl_->soupTree.squared_distance(point(p))));
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

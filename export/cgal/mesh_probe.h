@@ -9,7 +9,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 class MeshProbe {
  public:
@@ -39,4 +39,4 @@ class MeshProbe {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -15,7 +15,7 @@
 #include <set>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -146,4 +146,4 @@ TriangleMesh repairMesh(const TriangleMesh& mesh, std::string& report) {
   return repaired;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

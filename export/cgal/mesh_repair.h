@@ -10,11 +10,11 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // The repaired mesh; `report` says what was done in one line ("stitched 12
 // edges, removed 3 degenerate faces, reversed 1 shell"), or is empty when
 // the mesh needed nothing.
 TriangleMesh repairMesh(const TriangleMesh& mesh, std::string& report);
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -17,7 +17,7 @@
 #include <optional>
 #include <vector>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -344,4 +344,4 @@ std::string meshDefect(const TriangleMesh& mesh) {
   return "";
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

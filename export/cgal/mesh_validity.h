@@ -7,7 +7,7 @@
 
 #include "tessellation/triangle_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // An empty string when the mesh is valid; otherwise one line that says what
 // the first problem found is and where (face or vertex indices from 0 and a
@@ -15,4 +15,4 @@ namespace csgray {
 // one face".
 std::string meshDefect(const TriangleMesh& mesh);
 
-}  // namespace csgray
+}  // namespace csgray::detail

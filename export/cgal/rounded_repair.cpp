@@ -3,7 +3,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -23,4 +23,4 @@ void removeCrossings(RoundedMesh& mesh, double reach) {
   PMP::remove_degenerate_faces(mesh);
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -5,7 +5,7 @@
 
 #include "export/cgal/exact_mesh.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Faces left without area (a point rounded onto another, or onto the line
 // through two others): their edges collapsed and faces flipped away; no
@@ -21,4 +21,4 @@ void removeSlivers(RoundedMesh& mesh, double reach);
 // otherwise move the surface far: a vertex of a rotated union moved 1.2 mm).
 void removeCrossings(RoundedMesh& mesh, double reach);
 
-}  // namespace csgray
+}  // namespace csgray::detail

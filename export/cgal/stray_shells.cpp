@@ -7,7 +7,7 @@
 
 #include "tessellation/mesh_shells.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 namespace {
 
@@ -118,4 +118,4 @@ std::size_t removeStrayShells(PartMesh& part, const Solid& solid, double toleran
   return removed;
 }
 
-}  // namespace csgray
+}  // namespace csgray::detail

@@ -12,7 +12,7 @@
 #include "export/part_mesh.h"
 #include "engine/solid.h"
 
-namespace csgray {
+namespace csgray::detail {
 
 // Removes from the part the thin shells (of two or more: volume at most
 // the tolerance times the area) whose inside the exact solid classifies as
@@ -23,4 +23,4 @@ namespace csgray {
 // how many shells were removed.
 std::size_t removeStrayShells(PartMesh& part, const Solid& solid, double tolerance);
 
-}  // namespace csgray
+}  // namespace csgray::detail
