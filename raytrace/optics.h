@@ -13,8 +13,8 @@ namespace csgray::detail {
 dvec3 reflect(const dvec3& d, const dvec3& n);
 
 // The refracted direction of the unit direction d at a surface with unit
-// normal n facing against d, going from index n1 into index n2 (seed 001,
-// 3.1.2: n2/n1 = sin α / sin β). None past the critical angle: total
+// normal n facing against d, going from index n1 into index n2 (Snell's
+// law: n1 sin α = n2 sin β; Hecht, Optics, 4.4). None past the critical angle: total
 // internal reflection.
 std::optional<dvec3> refract(const dvec3& d, const dvec3& n, double n1, double n2);
 

@@ -205,7 +205,8 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   // point (~1e-16 relative), far below any feature a part could have.
   dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
   // I = Koh·O + Σ Fᵢ·(Kod·O·cos α + r·cos^f β) over the light that shadow
-  // rays let through (seed 001, 2.2.1, 2.2.2 and 2.3; seed 000, 17.4.2).
+  // rays let through: Lambert's diffuse term and Phong's highlight (Phong,
+  // "Illumination for Computer Generated Pictures", 1975; docs/theory.md).
   dvec3 color = m.ambient * sp.color;
   for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {

@@ -1,4 +1,5 @@
-// Whitted-style recursive ray tracing of a scene (seed 000, 17.1): a primary
+// Whitted-style recursive ray tracing of a scene (Whitted, "An Improved
+// Illumination Model for Shaded Display", 1980; docs/theory.md): a primary
 // ray through each pixel; at the first surface, ambient, Lambert and Phong
 // terms from every light that shadow rays reach (dimmed, not blocked, by
 // transparent solids), plus the colours of the mirrored and the refracted
