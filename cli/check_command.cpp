@@ -1,17 +1,17 @@
 #include "cli/check_command.h"
 
 #include <cstdio>
-#include <stdexcept>
 
-#include "cli/crash_guard.h"
-#include "cli/export_command.h"
-#include "cli/heap_reserve.h"
 #include "check/part_check.h"
+#include "cli/crash_guard.h"
+#include "cli/heap_reserve.h"
+#include "cli/warning.h"
+#include "export/printed_part.h"
 
 namespace csgray::detail {
 
 int checkScene(const Scene& scene, const CheckCommandOptions& options) {
-  const SolidPtr part = printedPart(scene, options.script, "check");
+  const SolidPtr part = printedPart(scene, options.script, "check", printWarning);
   // The export's booleans, as in csgray export (cli/heap_reserve.h).
   reserveHugePageHeap(std::size_t(512) << 20);
   const CheckReport report = [&] {

@@ -16,12 +16,13 @@
 #include "cli/heap_reserve.h"
 #include "cli/mesh_plugin.h"
 #include "cli/progress.h"
+#include "cli/warning.h"
 #include "cli/watchdog.h"
+#include "engine/primitive.h"
 #include "io/image_file.h"
 #include "io/image_plugin.h"
-#include "engine/primitive.h"
-#include "script/script.h"
 #include "raytrace/renderer.h"
+#include "script/script.h"
 
 using namespace csgray::detail;
 
@@ -309,9 +310,7 @@ int main(int argc, char** argv) {
       return meshPlugin().checkPart(solid, options);
     };
     scriptOptions.allowedFolders = allowedFolders;
-    scriptOptions.warn = [](const std::string& message) {
-      std::cerr << "csgray: warning: " << message << "\n";
-    };
+    scriptOptions.warn = printWarning;
     // Runs the script under the watchdog: nothing is written meanwhile.
     auto runScript = [&] {
       char limit[32];
