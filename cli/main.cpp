@@ -14,13 +14,13 @@
 
 #include "cli/check_command.h"
 #include "cli/heap_reserve.h"
-#include "cli/mesh_plugin.h"
+#include "cli/mesh_tools.h"
 #include "cli/progress.h"
 #include "cli/warning.h"
 #include "cli/watchdog.h"
 #include "engine/primitive.h"
 #include "io/image_file.h"
-#include "io/image_plugin.h"
+#include "io/image_formats.h"
 #include "raytrace/renderer.h"
 #include "script/script.h"
 
@@ -304,10 +304,10 @@ int main(int argc, char** argv) {
     scriptOptions.defines = parseDefines(defineItems);
     scriptOptions.loadImage = readTextureImage;
     scriptOptions.loadMesh = [](const std::string& path, bool repair, std::string& report) {
-      return meshPlugin().importMesh(path, repair, report);
+      return meshTools().importMesh(path, repair, report);
     };
     scriptOptions.checkSolid = [](const Solid& solid, const CheckOptions& options) {
-      return meshPlugin().checkPart(solid, options);
+      return meshTools().checkPart(solid, options);
     };
     scriptOptions.allowedFolders = allowedFolders;
     scriptOptions.warn = printWarning;
@@ -346,7 +346,7 @@ int main(int argc, char** argv) {
       reserveHugePageHeap(std::size_t(256) << 20);
       // Formats other than PNG go through OpenImageIO, whose many libraries
       // load on another thread while the script runs and the image renders.
-      std::optional<ImagePluginPreload> preload;
+      std::optional<ImageFormatsPreload> preload;
       if (!endsWithPng(output)) preload.emplace();
       // The render's threads start while the script runs, and wake when it
       // is done, to spin while the renderer is made.
@@ -416,15 +416,15 @@ int main(int argc, char** argv) {
                   seconds.count());
     } else if (*exporter) {
       exportOptions.script = script;
-      meshPlugin().checkExportOutput(exportOptions);
+      meshTools().checkExportOutput(exportOptions);
       auto start = std::chrono::steady_clock::now();
       Scene scene = runScript();
-      meshPlugin().exportScene(
+      meshTools().exportScene(
           scene, exportOptions,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     } else if (*checker) {
       checkOptions.script = script;
-      return meshPlugin().checkScene(runScript(), checkOptions);
+      return meshTools().checkScene(runScript(), checkOptions);
     } else if (*info) {
       printInfo(script, runScript());
     }

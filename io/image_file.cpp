@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/image_plugin.h"
+#include "io/image_formats.h"
 #include "io/png_file.h"
 #include "io/srgb.h"
 
@@ -49,7 +49,7 @@ std::string imageOutputProblem(const std::string& path) {
   if (std::filesystem::path(path).extension().empty())
     return "no file extension to tell the image format (use .png, .exr, ...)";
   if (isPng(path)) return "";
-  return imagePlugin().outputProblem(path);
+  return imageFormats().outputProblem(path);
 }
 
 PngRowSource pngRows(const float* rgb, int width, ImageData data) {
@@ -68,7 +68,7 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
                 int threads, PngEncoder* started) {
   AtomicFile file(path);
   if (!isPng(path)) {
-    imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
+    imageFormats().write(file.tempPath(), path, width, height, rgb, data);
     file.commit();
     return;
   }
@@ -82,6 +82,6 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
   file.commit();
 }
 
-TextureImage readTextureImage(const std::string& path) { return imagePlugin().read(path); }
+TextureImage readTextureImage(const std::string& path) { return imageFormats().read(path); }
 
 }  // namespace csgray::detail

@@ -1,9 +1,9 @@
-// The export and check commands, check() in scripts and the mesh files
-// that scripts import, in a module
-// loaded on first use: CGAL's number types, OpenMesh and lib3MF (with
-// libzip and libcrypto) made every run of csgray, renders included, spend
-// 12 ms in the dynamic loader before main. The module and csgray are
-// built together, so C++ types and exceptions cross between them.
+// The mesh tools: the work of the export and check commands, check() in
+// scripts and the mesh files that scripts import, in a module loaded on
+// first use: CGAL's number types, OpenMesh and lib3MF (with libzip and
+// libcrypto) made every run of csgray, renders included, spend 12 ms in
+// the dynamic loader before main. The module and csgray are built
+// together, so C++ types and exceptions cross between them.
 #pragma once
 
 #include <string>
@@ -14,7 +14,7 @@
 
 namespace csgray::detail {
 
-struct MeshPlugin {
+struct MeshTools {
   // As declared in cli/export_command.h, cli/check_command.h,
   // meshfile/mesh_import.h and check/part_check.h.
   void (*checkExportOutput)(const ExportOptions& options);
@@ -24,10 +24,10 @@ struct MeshPlugin {
   CheckReport (*checkPart)(const Solid& solid, const CheckOptions& options);
 };
 
-// The plugin, loaded on the first call (thread-safe). Throws
+// The module's table, loaded on the first call (thread-safe). Throws
 // std::runtime_error if it cannot be loaded.
-const MeshPlugin& meshPlugin();
+const MeshTools& meshTools();
 
 }  // namespace csgray::detail
 
-extern "C" const csgray::detail::MeshPlugin* csgray_mesh_plugin();
+extern "C" const csgray::detail::MeshTools* csgray_mesh_tools();
