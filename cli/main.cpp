@@ -95,24 +95,12 @@ std::string aovPath(const std::string& output, const std::string& aov) {
   return (p.parent_path() / (p.stem().string() + "." + aov + p.extension().string())).string();
 }
 
-bool endsWithPng(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".png";
-}
-
-bool keepsFloat(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
-}
-
 // Depth and normal images. Float formats keep the values (depth in model
 // units, +inf where nothing was hit; normals in [-1, 1]); 8-bit formats get
 // a picture of them: depth as nearest / depth (white at the nearest
 // surface, black where nothing was hit), normals as (n + 1) / 2.
 void writeAov(const std::string& path, Image image, bool isDepth, int threads) {
-  if (!keepsFloat(path)) {
+  if (!keepsFloatValues(path)) {
     if (isDepth) {
       // nearest / depth: 1 at the nearest surface, fading with distance,
       // so an infinite floor does not squeeze the part into one grey.
@@ -347,7 +335,7 @@ int main(int argc, char** argv) {
       // Formats other than PNG go through OpenImageIO, whose many libraries
       // load on another thread while the script runs and the image renders.
       std::optional<ImageFormatsPreload> preload;
-      if (!endsWithPng(output)) preload.emplace();
+      if (!isPngFile(output)) preload.emplace();
       // The render's threads start while the script runs, and wake when it
       // is done, to spin while the renderer is made.
       RenderThreads renderThreads(threads);
@@ -359,7 +347,7 @@ int main(int argc, char** argv) {
       // A PNG file is compressed band by band on the render's threads as
       // its rows are finished, so that little is left for after the render.
       std::optional<PngEncoder> png;
-      if (endsWithPng(output)) png.emplace(width, height);
+      if (isPngFile(output)) png.emplace(width, height);
       RenderResult result = [&] {
         ProgressBar bar("rendering");
         RenderOptions options;
