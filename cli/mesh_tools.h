@@ -8,14 +8,14 @@
 
 #include <string>
 
-#include "cli/check_command.h"
-#include "cli/export_command.h"
+#include "cli/check_scene.h"
+#include "cli/export_scene.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
 
 struct MeshTools {
-  // As declared in cli/export_command.h, cli/check_command.h,
+  // As declared in cli/export_scene.h, cli/check_scene.h,
   // meshfile/mesh_import.h and check/part_check.h.
   void (*checkExportOutput)(const ExportOptions& options);
   void (*exportScene)(const Scene& scene, const ExportOptions& options, double scriptSeconds);

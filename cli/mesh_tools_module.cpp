@@ -1,8 +1,8 @@
 // The entry of the mesh tools module (cli/mesh_tools.h): the export and
 // check commands' work, mesh import and the check.
 #include "check/part_check.h"
-#include "cli/check_command.h"
-#include "cli/export_command.h"
+#include "cli/check_scene.h"
+#include "cli/export_scene.h"
 #include "cli/mesh_tools.h"
 #include "meshfile/mesh_import.h"
 

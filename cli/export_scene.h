@@ -1,4 +1,5 @@
-// csgray export: a part script's solids as a closed, printable mesh file.
+// The work of csgray export, in the mesh tools module (cli/mesh_tools.h):
+// a scene's solids as a closed, printable mesh file.
 #pragma once
 
 #include <string>
