@@ -1,27 +1,53 @@
-#include "cli/check_command.h"
+#include <CLI/CLI.hpp>
+#include <memory>
 
-#include <cstdio>
-#include <stdexcept>
-
-#include "cli/crash_guard.h"
-#include "cli/export_command.h"
-#include "cli/heap_reserve.h"
-#include "check/part_check.h"
+#include "cli/commands.h"
+#include "cli/mesh_tools.h"
+#include "cli/number_checks.h"
 
 namespace csgray::detail {
 
-int checkScene(const Scene& scene, const CheckCommandOptions& options) {
-  const SolidPtr part = printedPart(scene, options.script, "check");
-  // The export's booleans, as in csgray export (cli/heap_reserve.h).
-  reserveHugePageHeap(std::size_t(512) << 20);
-  const CheckReport report = [&] {
-    const CrashGuard guard(options.script);
-    return checkPart(*part, options.check);
-  }();
-  const std::string text = options.json ? checkReportJson(report, options.script)
-                                        : checkReportText(report, options.script);
-  std::fputs(text.c_str(), stdout);
-  return report.ok() ? 0 : 1;
+Command checkCommand(CLI::App& app, ScriptArguments& script) {
+  auto arguments = std::make_shared<CheckCommandOptions>();
+  CheckOptions& check = arguments->check;
+  CLI::App* checker = addScriptCommand(
+      app, "check",
+      "Hold a part's exported mesh against its exact model, and report on its booleans", script);
+  checker
+      ->add_option("--samples", check.samples,
+                   "Random points classified by both the exact model and the mesh")
+      ->check(decimal)
+      ->check(CLI::Range(std::size_t(0), CheckOptions::kMaxSamples))
+      ->capture_default_str();
+  checker->add_option("--tolerance", check.tolerance, "Tolerance of the export, in model units")
+      ->check(toleranceRange)
+      ->capture_default_str();
+  checker
+      ->add_option("--min-wall", check.minWall,
+                   "Warn of solid walls thinner than this (model units)")
+      ->check(lengthRange)
+      ->capture_default_str();
+  checker
+      ->add_option("--min-gap", check.minGap, "Warn of empty gaps narrower than this (model units)")
+      ->check(lengthRange)
+      ->capture_default_str();
+  checker
+      ->add_option("--grid", check.grid,
+                   "Rays per side of each of the three ray grids along x, y and z")
+      ->check(decimal)
+      ->check(CLI::Range(2, CheckOptions::kMaxGrid))
+      ->capture_default_str();
+  checker->add_option("--seed", check.seed, "Seed of the random points and rays")
+      ->check(decimal)
+      ->capture_default_str();
+  checker->add_flag("--strict", check.strict, "Fail on warnings too");
+  checker->add_flag("--json", arguments->json, "Print the report as JSON");
+  addScriptOptions(*checker, script);
+  return {checker, [arguments](const PartScript& part) {
+            CheckCommandOptions options = *arguments;
+            options.script = part.path();
+            return meshTools().checkScene(part.run(), options);
+          }};
 }
 
 }  // namespace csgray::detail

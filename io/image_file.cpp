@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/image_plugin.h"
+#include "io/image_formats.h"
 #include "io/png_file.h"
 #include "io/srgb.h"
 
@@ -20,14 +20,21 @@ namespace csgray::detail {
 
 namespace {
 
-bool isPng(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".png";
+  return ext;
 }
 
 }  // namespace
+
+bool isPngFile(const std::string& path) { return lowerExtension(path) == ".png"; }
+
+bool keepsFloatValues(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+}
 
 SrgbEncoder::SrgbEncoder() {
   // The step from code k to k + 1 is the decoding of the midpoint
@@ -48,8 +55,8 @@ std::string imageOutputProblem(const std::string& path) {
   if (std::string problem = outputPathProblem(path); !problem.empty()) return problem;
   if (std::filesystem::path(path).extension().empty())
     return "no file extension to tell the image format (use .png, .exr, ...)";
-  if (isPng(path)) return "";
-  return imagePlugin().outputProblem(path);
+  if (isPngFile(path)) return "";
+  return imageFormats().outputProblem(path);
 }
 
 PngRowSource pngRows(const float* rgb, int width, ImageData data) {
@@ -67,8 +74,8 @@ PngRowSource pngRows(const float* rgb, int width, ImageData data) {
 void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data,
                 int threads, PngEncoder* started) {
   AtomicFile file(path);
-  if (!isPng(path)) {
-    imagePlugin().write(file.tempPath(), path, width, height, rgb, data);
+  if (!isPngFile(path)) {
+    imageFormats().write(file.tempPath(), path, width, height, rgb, data);
     file.commit();
     return;
   }
@@ -82,6 +89,6 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
   file.commit();
 }
 
-TextureImage readTextureImage(const std::string& path) { return imagePlugin().read(path); }
+TextureImage readTextureImage(const std::string& path) { return imageFormats().read(path); }
 
 }  // namespace csgray::detail

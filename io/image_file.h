@@ -13,6 +13,14 @@ namespace csgray::detail {
 // before a render so that a long render is not lost at the end.
 std::string imageOutputProblem(const std::string& path);
 
+// Is the file at path a PNG file (by its extension, in any case)? csgray
+// writes those itself, without OpenImageIO.
+bool isPngFile(const std::string& path);
+
+// Does the format of path (.exr, .hdr, .pfm) keep floats as they are,
+// rather than as 8-bit codes?
+bool keepsFloatValues(const std::string& path);
+
 // What the floats of an image are: colours in linear light, or values
 // (depth, normals) that 8-bit formats store as they are, clamped to [0, 1].
 enum class ImageData { LinearColor, Values };

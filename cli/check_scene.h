@@ -1,5 +1,6 @@
-// csgray check: a part script's export held against its exact model
-// (check/part_check.h), printed as text or JSON.
+// The work of csgray check, in the mesh tools module (cli/mesh_tools.h): a
+// scene's export held against its exact model (check/part_check.h),
+// printed as text or JSON.
 #pragma once
 
 #include <string>

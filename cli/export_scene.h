@@ -1,7 +1,7 @@
-// csgray export: a part script's solids as a closed, printable mesh file.
+// The work of csgray export, in the mesh tools module (cli/mesh_tools.h):
+// a scene's solids as a closed, printable mesh file.
 #pragma once
 
-#include <functional>
 #include <string>
 
 #include "scene/scene.h"
@@ -19,12 +19,6 @@ struct ExportOptions {
 // Throws std::runtime_error when the output cannot be written (checked
 // before the script runs, so that a typo costs no time).
 void checkExportOutput(const ExportOptions& options);
-
-// What would be printed of the scene: its solids, their union when there
-// are several. Warns on stderr that open surfaces are left out; throws
-// std::runtime_error when there is no solid. verb ("export", "check") is
-// what the messages say is done.
-SolidPtr printedPart(const Scene& scene, const std::string& script, const char* verb);
 
 // Evaluates the scene's solids (their union, when there are several) on
 // meshes, checks the result with CGAL and writes it. Prints one line on

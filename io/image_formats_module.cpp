@@ -1,5 +1,5 @@
 // The part of csgray that reads and writes images through OpenImageIO,
-// built as a module that image_plugin.cpp loads only when an image format
+// built as a module that image_formats.cpp loads only when an image format
 // other than PNG is written, or a texture read: Debian's OpenImageIO pulls
 // in about 260 shared libraries, whose loading would otherwise cost every
 // run ~0.2 s and ~100 MB before any work.
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/image_plugin.h"
+#include "io/image_formats.h"
 #include "io/srgb.h"
 
 namespace csgray::detail {
@@ -115,7 +115,10 @@ TextureImage read(const std::string& path) {
 
 }  // namespace csgray::detail
 
-extern "C" __attribute__((visibility("default"))) const csgray::detail::ImagePlugin* csgray_image_plugin() {
-  static const csgray::detail::ImagePlugin plugin{csgray::detail::outputProblem, csgray::detail::write, csgray::detail::read};
-  return &plugin;
+extern "C" __attribute__((visibility("default"))) const csgray::detail::ImageFormats*
+csgray_image_formats() {
+  // Qualified: unistd.h has a write and a read of its own.
+  static const csgray::detail::ImageFormats formats{csgray::detail::outputProblem,
+                                                    csgray::detail::write, csgray::detail::read};
+  return &formats;
 }

@@ -1,0 +1,32 @@
+#include "cli/aov_images.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "io/image_file.h"
+
+namespace csgray::detail {
+
+std::string aovPath(const std::string& output, const std::string& aov) {
+  std::filesystem::path p(output);
+  return (p.parent_path() / (p.stem().string() + "." + aov + p.extension().string())).string();
+}
+
+void writeAov(const std::string& path, Image image, bool isDepth, int threads) {
+  if (!keepsFloatValues(path)) {
+    if (isDepth) {
+      // nearest / depth: 1 at the nearest surface, fading with distance,
+      // so an infinite floor does not squeeze the part into one grey.
+      float nearest = INFINITY;
+      for (float v : image.rgb)
+        if (v > 0.0f) nearest = std::min(nearest, v);
+      for (float& v : image.rgb) v = v > 0.0f && std::isfinite(v) ? nearest / v : 0.0f;
+    } else {
+      for (float& v : image.rgb) v = v == 0.0f ? 0.0f : 0.5f * (v + 1.0f);
+    }
+  }
+  writeImage(path, image.width, image.height, image.rgb.data(), ImageData::Values, threads);
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,68 @@
+#include "cli/export_scene.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "cli/crash_guard.h"
+#include "cli/heap_reserve.h"
+#include "cli/warning.h"
+#include "export/cgal/mesh_boolean.h"
+#include "export/printed_part.h"
+#include "io/atomic_file.h"
+#include "meshfile/mesh_writer.h"
+
+namespace csgray::detail {
+
+void checkExportOutput(const ExportOptions& options) {
+  meshFormatFor(options.output);  // throws for an unknown extension
+  std::error_code same;
+  if (std::filesystem::equivalent(options.script, options.output, same))
+    throw std::runtime_error("cannot write " + options.output + ": it is the script itself");
+  if (std::string problem = outputPathProblem(options.output); !problem.empty())
+    throw std::runtime_error("cannot write " + options.output + ": " + problem);
+}
+
+void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const SolidPtr part = printedPart(scene, options.script, "export", printWarning);
+  const MeshFormat format = meshFormatFor(options.output);
+  checkFloatPrecision(*part, options.tolerance, options.script);
+  // A tenth to a fifth faster (plate(8): 1.03 → 0.85 s; docs/performance.md).
+  reserveHugePageHeap(std::size_t(512) << 20);
+  MeshBooleanStats counts;
+  PartMesh mesh = [&] {
+    const CrashGuard guard(options.script);
+    try {
+      return meshOfSolid(*part, options.tolerance, storedCoordinate(format, options.ascii),
+                         &counts);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(options.script + ": " + e.what());
+    }
+  }();
+  if (mesh.mesh.empty()) throw std::runtime_error(options.script + ": the part is empty");
+  const auto evaluated = Clock::now();
+  writeMeshFile(options.output, mesh, options.ascii);
+  const auto written = Clock::now();
+
+  auto secs = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  if (options.stats)
+    std::fprintf(
+        stderr,
+        "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
+        "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one, %zu "
+        "glued face to face, %zu rounding repair%s, %zu contact%s resolved, %zu stray shell%s "
+        "removed\n",
+        scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
+        secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges,
+        counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s", counts.contacts,
+        counts.contacts == 1 ? "" : "s", counts.strayShells, counts.strayShells == 1 ? "" : "s");
+  std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
+              mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,56 @@
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "cli/commands.h"
+#include "engine/solid.h"
+#include "scene/scene.h"
+
+namespace csgray::detail {
+
+namespace {
+
+std::string formatPoint(const dvec3& p) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, "[%g, %g, %g]", p.x, p.y, p.z);
+  return buffer;
+}
+
+void printInfo(const std::string& script, const Scene& scene) {
+  TreeStats stats;
+  for (const SolidPtr& object : scene.objects) {
+    TreeStats s = treeStats(*object);
+    stats.primitives += s.primitives;
+    stats.booleans += s.booleans;
+  }
+  Bounds b = scene.bounds();
+  std::cout << script << "\n";
+  if (b.empty()) {
+    std::cout << "  bounds:        empty\n";
+  } else {
+    std::cout << "  bounds:        " << formatPoint(b.lo) << " .. " << formatPoint(b.hi) << "\n";
+    if (b.finite()) std::cout << "  size:          " << formatPoint(b.size()) << "\n";
+  }
+  std::cout << "  objects:       " << scene.objects.size() << "\n"
+            << "  primitives:    " << stats.primitives << "\n"
+            << "  boolean nodes: " << stats.booleans << "\n"
+            << "  surfaces:      " << scene.surfaces.size() << "\n"
+            << "  lights:        " << scene.lights.size()
+            << (scene.lights.empty() ? " (default)" : "") << "\n"
+            << "  camera:        " << (scene.camera ? "set" : "framed from bounds") << "\n";
+}
+
+}  // namespace
+
+Command infoCommand(CLI::App& app, ScriptArguments& script) {
+  CLI::App* info =
+      addScriptCommand(app, "info", "Print the bounds and tree size of a part script", script);
+  addScriptOptions(*info, script);
+  return {info, [](const PartScript& part) {
+            printInfo(part.path(), part.run());
+            return 0;
+          }};
+}
+
+}  // namespace csgray::detail

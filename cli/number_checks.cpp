@@ -1,0 +1,36 @@
+#include "cli/number_checks.h"
+
+#include <cstdlib>
+
+namespace csgray::detail {
+
+namespace {
+
+// A number from lo to hi in model units; NaN and words are refused
+// (CLI::Range lets NaN by). range is how the message writes lo and hi.
+CLI::Validator modelUnits(double lo, double hi, const std::string& range, const std::string& name) {
+  return CLI::Validator(
+      [=](const std::string& text) -> std::string {
+        char* end = nullptr;
+        double v = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && *end == '\0' && v >= lo && v <= hi
+                   ? ""
+                   : "must be a number from " + range + " (model units)";
+      },
+      name);
+}
+
+}  // namespace
+
+const CLI::Validator decimal(
+    [](const std::string& text) -> std::string {
+      bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+      return digits && !(text.size() > 1 && text[0] == '0') ? "" : "must be a whole number";
+    },
+    "N");
+
+const CLI::Validator toleranceRange = modelUnits(1e-6, 1e3, "1e-6 to 1000", "TOLERANCE");
+
+const CLI::Validator lengthRange = modelUnits(0.0, 1e6, "0 to 1e6", "LENGTH");
+
+}  // namespace csgray::detail

@@ -1,0 +1,16 @@
+// Checks of the numbers that more than one option takes, so that a bad one
+// is refused in the same words wherever it is given.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace csgray::detail {
+
+// Digits only: CLI11 would read 0x10 as sixteen and 010 as eight.
+extern const CLI::Validator decimal;
+// An export's tolerance: 1e-6 to 1000 model units.
+extern const CLI::Validator toleranceRange;
+// A wall or gap: 0 to 10⁶ model units.
+extern const CLI::Validator lengthRange;
+
+}  // namespace csgray::detail

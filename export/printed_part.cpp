@@ -1,0 +1,42 @@
+#include "export/printed_part.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "engine/boolean.h"
+
+namespace csgray::detail {
+
+SolidPtr printedPart(const Scene& scene, const std::string& script, const char* verb,
+                     const std::function<void(const std::string& message)>& warn) {
+  if (scene.objects.empty())
+    throw std::runtime_error(script + ": there is no solid to " + verb +
+                             " (open surfaces cannot be printed)");
+  if (const std::size_t surfaces = scene.surfaces.size(); surfaces > 0)
+    warn(script + ": " + std::to_string(surfaces) + " open surface" +
+         (surfaces == 1 ? " is" : "s are") + " not " + verb + "ed: only solids are");
+  return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
+}
+
+void checkFloatPrecision(const Solid& part, double tolerance, const std::string& script) {
+  // Far from the origin a 32-bit float (every format here stores floats)
+  // cannot hold the tolerance: half its spacing at |x| is |x|·2⁻²⁴.
+  const Bounds box = part.bounds();
+  if (!box.finite()) return;
+  double reach = 0.0;
+  for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});
+  const double precision = std::ldexp(reach, -24);
+  if (precision > 0.5 * tolerance) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "%s: the part reaches %g from the origin, where the file's 32-bit floats are "
+                  "good to %.2g only, coarser than half the tolerance %g; move it nearer the "
+                  "origin or give a larger tolerance",
+                  script.c_str(), reach, precision, tolerance);
+    throw std::runtime_error(text);
+  }
+}
+
+}  // namespace csgray::detail
