@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "tessellation/polygon_triangulation.h"
-#include "tessellation/tessellation.h"
 
 namespace csgray::detail {
 
@@ -542,27 +541,5 @@ dvec3 MeshSolid::objectNormal(const dvec3&, int face) const {
 }
 
 Bounds MeshSolid::objectBounds() const { return mesh_->bounds; }
-
-// Exact: the solid's own triangles, with the points they use.
-TriangleMesh MeshSolid::objectTessellate(double tolerance, const Bounds&) const {
-  requireTolerance(kind(), tolerance);
-  TriangleMesh mesh;
-  constexpr auto kUnused = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> index(mesh_->points.size(), kUnused);
-  mesh.triangles.reserve(mesh_->triangles.size());
-  for (const Triangle& t : mesh_->triangles) {
-    TriangleMesh::Triangle out;
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t& i = index[t[k]];
-      if (i == kUnused) {
-        i = static_cast<std::uint32_t>(mesh.points.size());
-        mesh.points.push_back(mesh_->points[t[k]]);
-      }
-      out[k] = i;
-    }
-    mesh.triangles.push_back(out);
-  }
-  return mesh;
-}
 
 }  // namespace csgray::detail

@@ -21,7 +21,7 @@ class Quadric : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   // A closed mesh of the solid within a box a little larger than the region
-  // (see quadric.cpp); throws std::invalid_argument where that cannot be a
+  // (see quadric_tessellation.cpp); throws std::invalid_argument where that cannot be a
   // 2-manifold (a cone's apex or two crossing planes inside the region) and
   // for the outside of an ellipsoid, elliptic cylinder, hyperboloid or cone.
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
