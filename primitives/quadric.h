@@ -5,11 +5,11 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class Quadric : public Primitive {
+class Quadric : public PrimitiveShape<Quadric> {
  public:
   explicit Quadric(const glm::dmat4& m);
   const glm::dmat4& matrix() const { return m_; }
@@ -25,7 +25,6 @@ class Quadric : public Primitive {
   // 2-manifold (a cone's apex or two crossing planes inside the region) and
   // for the outside of an ellipsoid, elliptic cylinder, hyperboloid or cone.
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Quadric>(*this); }
 
  private:
   glm::dmat4 m_;
