@@ -9,7 +9,6 @@ namespace csgray::detail {
 class Sphere : public PrimitiveShape<Sphere> {
  public:
   explicit Sphere(double radius);
-  double radius() const { return radius_; }
   std::string kind() const override { return "sphere"; }
 
  protected:
