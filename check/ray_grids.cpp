@@ -55,6 +55,8 @@ std::string describe(const Solid& solid) {
   return line.empty() ? solid.kind() : solid.kind() + " (" + line + ")";
 }
 
+// The rays of the grids, each through the exact model (its distances from
+// the exact surface asked of ExactDistance) and through the mesh.
 class GridTracer {
  public:
   GridTracer(const Solid& solid, const MeshProbe& probe, const ExactDistance& exact,

@@ -1,5 +1,17 @@
 // Quadric::objectTessellate: a closed mesh of a quadric solid within a
 // region (its exact part is quadric.cpp).
+//
+// In the canonical frame of quadric_form.h the solid is one of a few shapes:
+// - a loft of ellipses λ₀y₀² + λ₁y₁² <= ρ(y₂) along y₂ (ellipsoid, elliptic
+//   cylinder and paraboloid, hyperboloids, one nappe of a cone);
+// - a prism between two graphs over a rectangle: y_w between lower(y_u, y_v)
+//   and upper(y_u, y_v), where each graph is flat or the sum of an even
+//   function of y_u and one of y_v (the other paraboloids, the parabolic and
+//   hyperbolic cylinders, slabs, half-spaces, the whole space).
+// Both are built in canonical coordinates and then placed in the object
+// frame. Artificial faces (caps, walls, flat sides) lie on the region's box
+// in the canonical frame grown by a margin, or beyond it where a graph leaves
+// that box (a graph is never clipped: the box is extended past it instead).
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -14,20 +26,6 @@
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
-
-// ---- Tessellation -------------------------------------------------------------
-//
-// In the canonical frame of quadric_form.h the solid is one of a few shapes:
-// - a loft of ellipses λ₀y₀² + λ₁y₁² <= ρ(y₂) along y₂ (ellipsoid, elliptic
-//   cylinder and paraboloid, hyperboloids, one nappe of a cone);
-// - a prism between two graphs over a rectangle: y_w between lower(y_u, y_v)
-//   and upper(y_u, y_v), where each graph is flat or the sum of an even
-//   function of y_u and one of y_v (the other paraboloids, the parabolic and
-//   hyperbolic cylinders, slabs, half-spaces, the whole space).
-// Both are built in canonical coordinates and then placed in the object
-// frame. Artificial faces (caps, walls, flat sides) lie on the region's box
-// in the canonical frame grown by a margin, or beyond it where a graph leaves
-// that box (a graph is never clipped: the box is extended past it instead).
 
 namespace {
 
