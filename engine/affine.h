@@ -32,9 +32,6 @@ class Affine {
   const glm::dmat4& worldFromObject() const { return worldFromObject_; }
   const glm::dmat4& objectFromWorld() const { return objectFromWorld_; }
   bool isIdentity() const { return identity_; }
-  // A pure translation (the usual frame of a placed feature): rays keep
-  // their direction, normals are unchanged.
-  bool isTranslation() const { return translation_; }
 
   dvec3 pointToObject(const dvec3& p) const { return dvec3(objectFromWorld_ * glm::dvec4(p, 1.0)); }
   dvec3 pointToWorld(const dvec3& p) const { return dvec3(worldFromObject_ * glm::dvec4(p, 1.0)); }

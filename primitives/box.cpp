@@ -1,7 +1,6 @@
 #include "primitives/box.h"
 
 #include "primitives/check.h"
-#include "tessellation/tessellation.h"
 
 namespace csgray::detail {
 
@@ -46,25 +45,5 @@ dvec3 Box::objectNormal(const dvec3&, int face) const {
 }
 
 Bounds Box::objectBounds() const { return {dvec3(0.0), size_}; }
-
-// Exact: the eight corners, two triangles a face.
-TriangleMesh Box::objectTessellate(double tolerance, const Bounds&) const {
-  requireTolerance(kind(), tolerance);
-  TriangleMesh mesh;
-  for (int i = 0; i < 8; ++i)
-    mesh.points.emplace_back(i & 1 ? size_.x : 0.0, i & 2 ? size_.y : 0.0, i & 4 ? size_.z : 0.0);
-  // Corner i has bit a set when it is on the high side of axis a. Each face
-  // as a quad counter-clockwise from outside.
-  const std::uint32_t quads[6][4] = {
-      {0, 4, 6, 2}, {1, 3, 7, 5},  // x low, x high
-      {0, 1, 5, 4}, {2, 6, 7, 3},  // y low, y high
-      {0, 2, 3, 1}, {4, 5, 7, 6},  // z low, z high
-  };
-  for (const auto& q : quads) {
-    mesh.triangles.push_back({q[0], q[1], q[2]});
-    mesh.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return mesh;
-}
 
 }  // namespace csgray::detail

@@ -2,11 +2,11 @@
 // Faces are numbered axis·2 + (0 for the low side, 1 for the high side).
 #pragma once
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class Box : public Primitive {
+class Box : public PrimitiveShape<Box> {
  public:
   explicit Box(const dvec3& size);
   const dvec3& size() const { return size_; }
@@ -18,7 +18,6 @@ class Box : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Box>(*this); }
 
  private:
   dvec3 size_;

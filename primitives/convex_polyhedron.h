@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class ConvexPolyhedron : public Primitive {
+class ConvexPolyhedron : public PrimitiveShape<ConvexPolyhedron> {
  public:
   // The closed half-space normal·p <= offset. The normal need not be unit.
   struct Plane {
@@ -52,9 +52,6 @@ class ConvexPolyhedron : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override { return box_; }
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override {
-    return std::make_shared<ConvexPolyhedron>(*this);
-  }
 
  private:
   // Shared, so that moving or colouring a part with thousands of planes

@@ -3,12 +3,12 @@
 // radius may be zero for a cone, not both. Faces: 0 side, 1 bottom, 2 top.
 #pragma once
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
 
-class Cylinder : public Primitive {
+class Cylinder : public PrimitiveShape<Cylinder> {
  public:
   Cylinder(double r1, double r2, double height);
   double r1() const { return r1_; }
@@ -22,7 +22,6 @@ class Cylinder : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Cylinder>(*this); }
 
  private:
   double radiusAt(double z) const { return r1_ + slope_ * z; }

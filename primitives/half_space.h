@@ -2,11 +2,11 @@
 // useful to cut other solids.
 #pragma once
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class HalfSpace : public Primitive {
+class HalfSpace : public PrimitiveShape<HalfSpace> {
  public:
   HalfSpace(const dvec3& normal, double offset);
   std::string kind() const override { return "half_space"; }
@@ -19,7 +19,6 @@ class HalfSpace : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<HalfSpace>(*this); }
 
  private:
   dvec3 normal_;  // unit

@@ -6,11 +6,12 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
+#include "tessellation/mesh_edges.h"
 #include "tessellation/polygon_triangulation.h"
-#include "tessellation/tessellation.h"
 
 namespace csgray::detail {
 
@@ -222,68 +223,55 @@ void triangulate(const std::vector<dvec3>& points, const std::vector<std::uint32
 // ---- Validation of the face graph --------------------------------------------------
 
 // Every directed edge a→b must have exactly one opposite b→a, and no other
-// use. Reports the bad edge that comes first in the order of the faces.
+// use (tessellation/mesh_edges.h). Reports the bad edge that comes first in
+// the order of the faces.
 void checkEdges(const std::vector<std::vector<std::uint32_t>>& faces) {
-  struct Use {
-    std::uint64_t key;  // lo << 32 | hi
-    std::uint32_t face;
-    std::uint32_t order;  // position among all edges of all faces
-    bool forward;         // lo→hi
+  const std::vector<EdgeUse> uses = edgeUses(faces);
+  // The face of a side: the last face whose first side is not after it.
+  std::vector<std::uint32_t> firstSide(faces.size());
+  for (std::size_t f = 0, sides = 0; f < faces.size(); sides += faces[f].size(), ++f)
+    firstSide[f] = std::uint32_t(sides);
+  auto faceOf = [&](const EdgeUse& use) {
+    return std::uint32_t(std::upper_bound(firstSide.begin(), firstSide.end(), use.side) -
+                         firstSide.begin() - 1);
   };
-  std::vector<Use> uses;
-  std::size_t total = 0;
-  for (const auto& f : faces) total += f.size();
-  uses.reserve(total);
-  for (std::uint32_t face = 0; face < faces.size(); ++face) {
-    const auto& f = faces[face];
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      std::uint32_t a = f[i], b = f[(i + 1) % f.size()];
-      std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
-      uses.push_back({lo << 32 | hi, face, std::uint32_t(uses.size()), a < b});
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
-    return x.key != y.key ? x.key < y.key : x.order < y.order;
-  });
 
   std::uint32_t firstBad = std::numeric_limits<std::uint32_t>::max();
   std::string message;
   for (std::size_t g = 0; g < uses.size();) {
-    std::size_t e = g;
-    while (e < uses.size() && uses[e].key == uses[g].key) ++e;
-    const Use& first = uses[g];  // the first use in face order
-    if (first.order < firstBad) {
-      std::uint32_t lo = std::uint32_t(first.key >> 32), hi = std::uint32_t(first.key);
-      auto name = [&](bool forward) {
-        return forward ? std::to_string(lo) + "→" + std::to_string(hi)
-                       : std::to_string(hi) + "→" + std::to_string(lo);
-      };
-      std::size_t count = e - g;
-      std::string bad;
-      if (count > 2) {
-        std::string list;
-        std::size_t shown = std::min<std::size_t>(count, 6);
-        for (std::size_t k = 0; k < shown; ++k)
-          list += (k == 0                             ? ""
-                   : k + 1 == shown && shown == count ? " and "
-                                                      : ", ") +
-                  std::to_string(uses[g + k].face);
-        if (shown < count) list += ", ...";
-        bad = "non-manifold edge " + std::to_string(lo) + "–" + std::to_string(hi) +
-              ": it is used by " + std::to_string(count) + " faces (faces " + list +
-              "); every edge must join exactly two faces";
-      } else if (count == 2 && uses[g].forward == uses[g + 1].forward) {
-        bad = "inconsistent orientation: edge " + name(first.forward) +
-              " is used twice in the same direction (faces " + std::to_string(uses[g].face) +
-              " and " + std::to_string(uses[g + 1].face) +
-              "); list every face clockwise as seen from outside";
-      } else if (count == 1) {
-        bad = "open mesh: edge " + name(first.forward) + " (face " + std::to_string(first.face) +
-              ") has no opposite face " + name(!first.forward);
-      }
-      if (!bad.empty()) firstBad = first.order, message = bad;
+    const std::span<const EdgeUse> edge = usesOfEdge(uses, g);
+    g += edge.size();
+    const EdgeUse& first = edge[0];  // the first use in face order
+    const EdgeFault fault = edgeFault(edge);
+    if (fault == EdgeFault::None || first.side >= firstBad) continue;
+    std::uint32_t lo = std::uint32_t(first.edge >> 32), hi = std::uint32_t(first.edge);
+    auto name = [&](bool forward) {
+      return forward ? std::to_string(lo) + "→" + std::to_string(hi)
+                     : std::to_string(hi) + "→" + std::to_string(lo);
+    };
+    const std::size_t count = edge.size();
+    if (fault == EdgeFault::NonManifold) {
+      std::string list;
+      std::size_t shown = std::min<std::size_t>(count, 6);
+      for (std::size_t k = 0; k < shown; ++k)
+        list += (k == 0                             ? ""
+                 : k + 1 == shown && shown == count ? " and "
+                                                    : ", ") +
+                std::to_string(faceOf(edge[k]));
+      if (shown < count) list += ", ...";
+      message = "non-manifold edge " + std::to_string(lo) + "–" + std::to_string(hi) +
+                ": it is used by " + std::to_string(count) + " faces (faces " + list +
+                "); every edge must join exactly two faces";
+    } else if (fault == EdgeFault::SameWay) {
+      message = "inconsistent orientation: edge " + name(first.forward) +
+                " is used twice in the same direction (faces " + std::to_string(faceOf(edge[0])) +
+                " and " + std::to_string(faceOf(edge[1])) +
+                "); list every face clockwise as seen from outside";
+    } else {
+      message = "open mesh: edge " + name(first.forward) + " (face " +
+                std::to_string(faceOf(first)) + ") has no opposite face " + name(!first.forward);
     }
-    g = e;
+    firstBad = first.side;
   }
   if (!message.empty()) refuse(message);
 }
@@ -542,27 +530,5 @@ dvec3 MeshSolid::objectNormal(const dvec3&, int face) const {
 }
 
 Bounds MeshSolid::objectBounds() const { return mesh_->bounds; }
-
-// Exact: the solid's own triangles, with the points they use.
-TriangleMesh MeshSolid::objectTessellate(double tolerance, const Bounds&) const {
-  requireTolerance(kind(), tolerance);
-  TriangleMesh mesh;
-  constexpr auto kUnused = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> index(mesh_->points.size(), kUnused);
-  mesh.triangles.reserve(mesh_->triangles.size());
-  for (const Triangle& t : mesh_->triangles) {
-    TriangleMesh::Triangle out;
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t& i = index[t[k]];
-      if (i == kUnused) {
-        i = static_cast<std::uint32_t>(mesh.points.size());
-        mesh.points.push_back(mesh_->points[t[k]]);
-      }
-      out[k] = i;
-    }
-    mesh.triangles.push_back(out);
-  }
-  return mesh;
-}
 
 }  // namespace csgray::detail

@@ -27,11 +27,11 @@
 #include <vector>
 
 #include "engine/bvh.h"
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class MeshSolid : public Primitive {
+class MeshSolid : public PrimitiveShape<MeshSolid> {
  public:
   using Triangle = std::array<std::uint32_t, 3>;
 
@@ -63,7 +63,6 @@ class MeshSolid : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<MeshSolid>(*this); }
 
  private:
   std::shared_ptr<const Mesh> mesh_;

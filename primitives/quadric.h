@@ -5,11 +5,11 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class Quadric : public Primitive {
+class Quadric : public PrimitiveShape<Quadric> {
  public:
   explicit Quadric(const glm::dmat4& m);
   const glm::dmat4& matrix() const { return m_; }
@@ -21,11 +21,10 @@ class Quadric : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   // A closed mesh of the solid within a box a little larger than the region
-  // (see quadric.cpp); throws std::invalid_argument where that cannot be a
+  // (see quadric_tessellation.cpp); throws std::invalid_argument where that cannot be a
   // 2-manifold (a cone's apex or two crossing planes inside the region) and
   // for the outside of an ellipsoid, elliptic cylinder, hyperboloid or cone.
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Quadric>(*this); }
 
  private:
   glm::dmat4 m_;

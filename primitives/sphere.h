@@ -2,14 +2,13 @@
 // non-uniform scale (see script ellipsoid{}), which stays exact.
 #pragma once
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class Sphere : public Primitive {
+class Sphere : public PrimitiveShape<Sphere> {
  public:
   explicit Sphere(double radius);
-  double radius() const { return radius_; }
   std::string kind() const override { return "sphere"; }
 
  protected:
@@ -18,7 +17,6 @@ class Sphere : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Sphere>(*this); }
 
  private:
   double radius_;

@@ -6,11 +6,11 @@
 // are part of the surface and whose inner lemon is solid); R = 0 is a ball.
 #pragma once
 
-#include "engine/primitive.h"
+#include "primitives/primitive_shape.h"
 
 namespace csgray::detail {
 
-class Torus : public Primitive {
+class Torus : public PrimitiveShape<Torus> {
  public:
   Torus(double majorRadius, double minorRadius);
   double majorRadius() const { return R_; }
@@ -23,7 +23,6 @@ class Torus : public Primitive {
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
-  std::shared_ptr<Primitive> clone() const override { return std::make_shared<Torus>(*this); }
 
  private:
   double R_, r_;

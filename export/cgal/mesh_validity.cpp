@@ -15,7 +15,10 @@
 #include <glm/geometric.hpp>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <vector>
+
+#include "tessellation/mesh_edges.h"
 
 namespace csgray::detail {
 
@@ -41,52 +44,40 @@ Point point(const dvec3& p) { return Point(p.x, p.y, p.z); }
 
 // The faces across each side: across[3f + k] is the face on the other side
 // of the edge from corner k to corner k+1 of face f. Empty string when
-// every edge has two faces that run along it in opposite directions.
+// every edge has two faces that run along it in opposite directions
+// (tessellation/mesh_edges.h).
 std::string checkEdges(const TriangleMesh& mesh, std::vector<std::uint32_t>& across) {
-  const auto& triangles = mesh.triangles;
-  // Each side as (undirected edge lo·2³² + hi, corner 3f + k), sorted so
-  // that the sides of one edge are neighbours.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> sides;
-  sides.reserve(3 * triangles.size());
-  for (std::uint32_t f = 0; f < triangles.size(); ++f)
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      std::uint64_t a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-      sides.emplace_back(std::min(a, b) << 32 | std::max(a, b), 3 * f + k);
-    }
-  std::sort(sides.begin(), sides.end());
-  auto faceOf = [](std::uint32_t corner) { return corner / 3; };
-  auto forward = [&](std::uint32_t corner) {
-    const auto& t = triangles[corner / 3];
-    return t[corner % 3] < t[(corner % 3 + 1) % 3];
-  };
-  across.assign(3 * triangles.size(), 0);
-  for (std::size_t i = 0; i < sides.size();) {
-    std::size_t j = i;
-    while (j < sides.size() && sides[j].first == sides[i].first) ++j;
-    const auto lo = std::uint32_t(sides[i].first >> 32), hi = std::uint32_t(sides[i].first);
-    const std::uint32_t first = sides[i].second;
+  const std::vector<EdgeUse> uses = edgeUses(mesh.triangles);
+  auto faceOf = [](const EdgeUse& use) { return use.side / 3; };
+  across.assign(3 * mesh.triangles.size(), 0);
+  for (std::size_t i = 0; i < uses.size();) {
+    const std::span<const EdgeUse> edge = usesOfEdge(uses, i);
+    i += edge.size();
+    const auto lo = std::uint32_t(edge[0].edge >> 32), hi = std::uint32_t(edge[0].edge);
     // Only an edge that is reported is put in words.
-    auto edge = [&] {
+    auto where = [&] {
       return "the edge from " + vertexText(mesh, lo) + " to " + vertexText(mesh, hi);
     };
-    if (j - i == 1)
-      return "open: " + edge() + " has one face (face " + std::to_string(faceOf(first)) +
-             "); the mesh has a hole there";
-    if (j - i > 2) {
-      std::string faces;
-      for (std::size_t k = i; k < j && k < i + 4; ++k)
-        faces += (k > i ? ", " : "") + std::to_string(faceOf(sides[k].second));
-      return "non-manifold: " + edge() + " has " + std::to_string(j - i) + " faces (" + faces +
-             (j - i > 4 ? ", ...)" : ")");
+    switch (edgeFault(edge)) {
+      case EdgeFault::Open:
+        return "open: " + where() + " has one face (face " + std::to_string(faceOf(edge[0])) +
+               "); the mesh has a hole there";
+      case EdgeFault::NonManifold: {
+        std::string faces;
+        for (std::size_t k = 0; k < edge.size() && k < 4; ++k)
+          faces += (k > 0 ? ", " : "") + std::to_string(faceOf(edge[k]));
+        return "non-manifold: " + where() + " has " + std::to_string(edge.size()) + " faces (" +
+               faces + (edge.size() > 4 ? ", ...)" : ")");
+      }
+      case EdgeFault::SameWay:
+        return "inconsistent orientation: faces " + std::to_string(faceOf(edge[0])) + " and " +
+               std::to_string(faceOf(edge[1])) + " both run the same way along " + where() +
+               "; one of them is flipped";
+      case EdgeFault::None:
+        across[edge[0].side] = faceOf(edge[1]);
+        across[edge[1].side] = faceOf(edge[0]);
+        break;
     }
-    const std::uint32_t second = sides[i + 1].second;
-    if (forward(first) == forward(second))
-      return "inconsistent orientation: faces " + std::to_string(faceOf(first)) + " and " +
-             std::to_string(faceOf(second)) + " both run the same way along " + edge() +
-             "; one of them is flipped";
-    across[first] = faceOf(second);
-    across[second] = faceOf(first);
-    i = j;
   }
   return "";
 }
