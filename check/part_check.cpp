@@ -75,7 +75,7 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
                      std::to_string(CheckOptions::kMaxSamples) + ", and the tolerance be positive";
     return report;
   }
-  report.meshDefect = meshDefect(mesh);
+  report.meshDefect = meshDefect(mesh).text;
   const MeshShells shells = meshShells(mesh);
   report.shells = shells.count;
   report.modelPieces = modelPieces(solid);

@@ -14,6 +14,13 @@ const void* loadPluginModule(const std::string& fileName, const std::string& bui
   std::error_code error;
   std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) paths.push_back((exe.parent_path() / fileName).string());
+  // Installed (cmake --install), the library (libcsgray.so) finds them in
+  // csgray/ beside it, and the executable in lib/csgray/.
+  Dl_info self;
+  if (::dladdr(reinterpret_cast<const void*>(&loadPluginModule), &self) && self.dli_fname)
+    paths.push_back(
+        (std::filesystem::path(self.dli_fname).parent_path() / "csgray" / fileName).string());
+  if (!error) paths.push_back((exe.parent_path() / CSGRAY_MODULES_FROM_BIN / fileName).string());
   paths.push_back(builtPath);
   std::string why;
   for (const std::string& path : paths) {

@@ -11,7 +11,9 @@ namespace csgray::detail {
 
 // The address that the module's function `entry` returns. The module is
 // looked for beside the executable (where the build puts it next to
-// csgray), else at builtPath (for the test programs). Throws
+// csgray), where cmake --install puts it (lib/csgray/, found from the
+// executable and from the shared library that holds this code), else at
+// builtPath (for the test programs). Throws
 // std::runtime_error, naming `what` the module is needed for, if it cannot
 // be loaded.
 const void* loadPluginModule(const std::string& fileName, const std::string& builtPath,

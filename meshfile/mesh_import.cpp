@@ -13,16 +13,17 @@ TriangleMesh importMesh(const std::string& path, bool repair, std::string& repai
   repairReport.clear();
   TriangleMesh mesh = readMeshFile(path);
   if (repair) mesh = repairMesh(mesh, repairReport);
-  std::string defect = meshDefect(mesh);
-  if (defect.empty()) return mesh;
+  const MeshDefect defect = meshDefect(mesh);
+  if (defect.valid()) return mesh;
   const std::string name = std::filesystem::path(path).filename().string();
   // Repairs cannot fill holes or resolve crossing faces.
-  const bool repairable = !defect.starts_with("self-intersecting") && !defect.starts_with("open");
+  const bool repairable =
+      defect.kind != MeshDefect::Kind::SelfIntersecting && defect.kind != MeshDefect::Kind::Open;
   std::string hint =
       !repair && repairable ? " (repair=true may fix this)"
       : repair ? " (after repair" + (repairReport.empty() ? "" : ": " + repairReport) + ")"
                : "";
-  throw std::invalid_argument(name + ": " + defect + hint);
+  throw std::invalid_argument(name + ": " + defect.text + hint);
 }
 
 }  // namespace csgray::detail

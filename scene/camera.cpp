@@ -3,6 +3,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <stdexcept>
+
+#include "scene/value_checks.h"
 
 namespace csgray::detail {
 
@@ -22,6 +25,25 @@ Ray Camera::ray(double x, double y) const {
   double v = (0.5 * height_ - y) * pixel_;
   if (orthographic_) return Ray(eye_ + u * right_ + v * up_, forward_);
   return Ray(eye_, glm::normalize(forward_ + u * right_ + v * up_));
+}
+
+CameraSpec checkedCamera(CameraSpec c, std::optional<double> width) {
+  checkFinite("camera", "eye", c.eye);
+  checkFinite("camera", "look_at", c.lookAt);
+  checkFinite("camera", "up", c.up);
+  if (width && !c.orthographic)
+    throw std::invalid_argument("camera: width is for projection=\"orthographic\"; use fov");
+  if (width && !(*width > 0.0 && std::isfinite(*width)))
+    throw std::invalid_argument("camera: width must be > 0");
+  c.orthoWidth = width.value_or(0.0);  // 0: fit the scene
+  if (!(c.fovDegrees > 0.0 && c.fovDegrees < 180.0))
+    throw std::invalid_argument("camera: fov must be between 0 and 180 degrees");
+  const dvec3 view = c.lookAt - c.eye;
+  if (glm::length(view) == 0.0)
+    throw std::invalid_argument("camera: eye and look_at are the same point");
+  if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
+    throw std::invalid_argument("camera: up must not be parallel to the view direction");
+  return c;
 }
 
 }  // namespace csgray::detail

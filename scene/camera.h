@@ -4,6 +4,8 @@
 // start on a screen through the eye, orthoWidth wide.
 #pragma once
 
+#include <optional>
+
 #include "scene/scene.h"
 
 namespace csgray::detail {
@@ -25,5 +27,11 @@ class Camera {
   int width_, height_;
   bool orthographic_;
 };
+
+// The camera as a user gives it (the script's camera{}): its orthoWidth is
+// set from width, which only an orthographic camera takes (none: fit the
+// scene, orthoWidth 0). Checked as the script checks it ("camera: eye and
+// look_at are the same point"); throws std::invalid_argument.
+CameraSpec checkedCamera(CameraSpec camera, std::optional<double> width);
 
 }  // namespace csgray::detail

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <stdexcept>
+
+#include "scene/value_checks.h"
 
 namespace csgray::detail {
 
@@ -52,6 +55,73 @@ dvec3 Light::radianceAt(const dvec3& p, const dvec3& s) const {
     scale *= std::pow(cosine, exponent);
   }
   return scale * color;
+}
+
+const char* lightFunction(Light::Kind kind) {
+  switch (kind) {
+    case Light::Kind::Point:
+      return "point_light";
+    case Light::Kind::Spot:
+      return "spot_light";
+    case Light::Kind::Rectangle:
+      return "area_light";
+    case Light::Kind::Sphere:
+      return "sphere_light";
+  }
+  return "light";
+}
+
+Light makeLight(const LightParams& p) {
+  const std::string f = lightFunction(p.kind);
+  Light light;
+  light.kind = p.kind;
+  checkFinite(f, "pos", p.position);
+  light.position = p.position;
+  switch (p.kind) {
+    case Light::Kind::Point:
+      break;
+    case Light::Kind::Spot:
+      if (p.lookAt && p.direction)
+        throw std::invalid_argument("spot_light: give look_at or direction, not both");
+      if (p.lookAt) checkFinite(f, "look_at", *p.lookAt);
+      if (p.direction) checkFinite(f, "direction", *p.direction);
+      light.direction = p.direction ? *p.direction
+                        : p.lookAt  ? *p.lookAt - light.position
+                                    : dvec3(0, 0, -1);
+      if (!(glm::length(light.direction) > 0.0))
+        throw std::invalid_argument(
+            "spot_light: the direction is the zero vector (look_at = pos?)");
+      if (!(p.angle > 0.0 && p.angle < 90.0))
+        throw std::invalid_argument("spot_light: angle must be between 0 and 90 degrees");
+      light.coneDegrees = p.angle;
+      checkNonNegative(f, "exponent", p.exponent);
+      light.exponent = p.exponent;
+      break;
+    case Light::Kind::Rectangle:
+      checkNonZero(f, "u", p.u);
+      checkNonZero(f, "v", p.v);
+      // Parallel edges span no rectangle: its samples would all lie on a
+      // line. (Relative to the edges' lengths, so that a scale of the scene
+      // keeps it.)
+      if (!(glm::length(glm::cross(p.u, p.v)) > 1e-9 * glm::length(p.u) * glm::length(p.v)))
+        throw std::invalid_argument(
+            "area_light: u and v must not be parallel (they are the rectangle's edges)");
+      light.edgeU = p.u;
+      light.edgeV = p.v;
+      light.samples = checkWhole(f, "samples", p.samples, 1, 1024);
+      break;
+    case Light::Kind::Sphere:
+      checkPositive(f, "r", p.radius);
+      light.radius = p.radius;
+      light.samples = checkWhole(f, "samples", p.samples, 1, 1024);
+      break;
+  }
+  checkColor(f, "color", p.color);
+  light.color = p.color;
+  checkNonNegative(f, "intensity", p.intensity);
+  light.intensity = p.intensity;
+  light.inverseSquare = p.falloff;
+  return light;
 }
 
 }  // namespace csgray::detail

@@ -3,6 +3,8 @@
 // rectangle or a sphere) that cast soft shadows through sampling.
 #pragma once
 
+#include <optional>
+
 #include "engine/ray.h"
 
 namespace csgray::detail {
@@ -40,5 +42,30 @@ struct Light {
   // sample of an area light.
   dvec3 radianceAt(const dvec3& p, const dvec3& s) const;
 };
+
+// A light as a user gives it, with the parameters of the script's
+// point_light{}, spot_light{} (Spot), area_light{} (Rectangle) and
+// sphere_light{} (Sphere); each kind uses its own and the common ones.
+struct LightParams {
+  Light::Kind kind = Light::Kind::Point;
+  dvec3 position{0.0};  // pos: the point, or the centre of an area light
+  dvec3 color{1.0};
+  double intensity = 1.0;
+  bool falloff = false;  // divide by the squared distance
+  // Spot: aimed at lookAt or along direction (not both); neither: down -z.
+  std::optional<dvec3> lookAt, direction;
+  double angle = 30.0;  // degrees off the axis the cone reaches
+  double exponent = 1.0;
+  dvec3 u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0};  // Rectangle: its edges
+  double radius = 1.0;                       // Sphere
+  double samples = 16.0;                     // Rectangle, Sphere: a whole number
+};
+
+// The light, checked as the script checks it, with messages that name the
+// script function ("spot_light: angle must be between 0 and 90 degrees").
+// Throws std::invalid_argument.
+Light makeLight(const LightParams& params);
+// The script function of a kind of light: "point_light", ...
+const char* lightFunction(Light::Kind kind);
 
 }  // namespace csgray::detail

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "engine/solid.h"
 #include "scene/texture.h"
 
 namespace csgray::detail {
@@ -33,5 +34,15 @@ struct Material {
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;
+
+// Checks a material as the script's material{} does, in the order of its
+// parameters (the colour only when there is no texture). Throws
+// std::invalid_argument ("material: ambient must be in [0, 1]").
+void checkMaterial(const Material& material);
+
+// The solid with the material: on a primitive it replaces the primitive's
+// own; on a boolean it goes to every primitive below that has none, so that
+// parts given their own colour keep it.
+SolidPtr solidWithMaterial(const SolidPtr& solid, const MaterialPtr& material);
 
 }  // namespace csgray::detail

@@ -6,6 +6,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/boolean.h"
+#include "scene/value_checks.h"
+
 namespace csgray::detail {
 
 Bounds Scene::bounds() const {
@@ -54,6 +57,25 @@ Light defaultLight(const CameraSpec& camera) {
   Light light;
   light.position = camera.eye + d * (0.6 * up - 0.4 * right) - 0.2 * view;
   return light;
+}
+
+void ObjectTally::add(std::size_t count, const std::string& what) {
+  total_ += count;
+  if (total_ > Boolean::kMaxPrimitives)
+    throw std::invalid_argument(what + ": the scene would have more than " +
+                                std::to_string(Boolean::kMaxPrimitives) +
+                                " primitives and surfaces (counting each use of a shared part)");
+}
+
+void checkBackground(const dvec3& color) { checkColor("scene", "background", color); }
+
+int checkedMaxDepth(double depth) { return checkWhole("scene", "max_depth", depth, 0, 64); }
+
+void checkMinWeight(double weight) { checkUnit("scene", "min_weight", weight); }
+
+void checkHasObjects(const Scene& scene) {
+  if (scene.objects.empty() && scene.surfaces.empty())
+    throw std::invalid_argument("scene: objects is empty");
 }
 
 }  // namespace csgray::detail

@@ -2,11 +2,13 @@
 // renderer turns this into pixels; the exporter uses only the solids.
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
-#include "scene/light.h"
 #include "engine/solid.h"
+#include "scene/light.h"
 #include "scene/surface.h"
 
 namespace csgray::detail {
@@ -51,5 +53,27 @@ CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees = 45.
 
 // The light used when a scene names none: above and behind the eye, to the left.
 Light defaultLight(const CameraSpec& camera);
+
+// ---- The checks of the script's scene{}, which the library's scene makes too
+
+// Counts the primitives and surfaces of a scene's objects as they are added,
+// a shared part once for each use: the objects are drawn together, so they
+// share the limit on the primitives of a part (Boolean::kMaxPrimitives),
+// and a list of millions of uses of one part stops there.
+class ObjectTally {
+ public:
+  // Throws std::invalid_argument naming what ("scene: objects[3]") when
+  // count more would take the scene past the limit.
+  void add(std::size_t count, const std::string& what);
+
+ private:
+  std::size_t total_ = 0;
+};
+
+// Each throws std::invalid_argument with the script's message.
+void checkBackground(const dvec3& color);  // components >= 0
+int checkedMaxDepth(double depth);         // a whole number from 0 to 64
+void checkMinWeight(double weight);        // in [0, 1]
+void checkHasObjects(const Scene& scene);  // a solid or a surface
 
 }  // namespace csgray::detail

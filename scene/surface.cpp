@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "primitives/check.h"
+#include "scene/value_checks.h"
 
 namespace csgray::detail {
 
@@ -218,6 +219,32 @@ void Surface::update() {
   dvec3 pad(1e-9 * scale);
   bounds_.lo -= pad;
   bounds_.hi += pad;
+}
+
+// ---- Open surfaces as users give them --------------------------------------
+
+SurfacePtr planeOf(const dvec3& normal, double offset) {
+  checkNonZero("plane", "normal", normal);
+  checkFinite("plane", "offset", offset);
+  const dvec3 unit = glm::normalize(normal);
+  return Surface::plane(offset / glm::length(normal) * unit, unit);
+}
+
+SurfacePtr discOf(std::optional<double> r, std::optional<double> d, const dvec3& center,
+                  const dvec3& normal) {
+  if (r && d) throw std::invalid_argument("disc: give r or d, not both");
+  if (!r && !d) throw std::invalid_argument("disc: needs r (radius) or d (diameter)");
+  const double radius = r ? *r : *d / 2.0;
+  if (!(radius > 0.0)) throw std::invalid_argument("disc: the radius must be > 0");
+  checkNonZero("disc", "normal", normal);
+  return Surface::disc(center, normal, radius);
+}
+
+SurfacePtr rectangleOf(const char* kind, double width, double height, bool center) {
+  if (!(width > 0.0) || !(height > 0.0))
+    throw std::invalid_argument(std::string(kind) + ": size must be > 0");
+  const dvec3 origin = center ? dvec3(-width / 2, -height / 2, 0) : dvec3(0.0);
+  return Surface::parallelogram(origin, dvec3(width, 0, 0), dvec3(0, height, 0), kind);
 }
 
 }  // namespace csgray::detail

@@ -76,4 +76,19 @@ class Surface : public std::enable_shared_from_this<Surface> {
   Bounds bounds_;
 };
 
+// ---- Open surfaces as users give them --------------------------------------
+
+// The script's plane{}, disc{}, rectangle{} and square{} with their checks
+// and messages ("disc: the radius must be > 0"); triangle{} and
+// parallelogram{} are Surface::triangle and Surface::parallelogram.
+// The plane normal·p = offset; the normal need not be unit.
+SurfacePtr planeOf(const dvec3& normal, double offset);
+// A disc of radius r or diameter d (one of them) about center.
+SurfacePtr discOf(std::optional<double> r, std::optional<double> d, const dvec3& center,
+                  const dvec3& normal);
+// A width × height rectangle in the xy plane from the origin (centred on it
+// with center), facing +z, like OpenSCAD's square; kind is "rectangle" or
+// "square".
+SurfacePtr rectangleOf(const char* kind, double width, double height, bool center);
+
 }  // namespace csgray::detail

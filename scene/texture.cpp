@@ -10,6 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "scene/rotation.h"
+#include "scene/value_checks.h"
+
 namespace csgray::detail {
 
 dvec3 Texture::colorAt(const dvec3& p, const dvec3& n) const {
@@ -282,6 +285,79 @@ TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octa
   if (!(strength >= 0.0) || !std::isfinite(strength))
     throw std::invalid_argument("noise strength must be a finite number >= 0");
   return std::make_shared<NoiseTexture>(kind, a, b, octaves, strength);
+}
+
+// ---- Textures as users give them ------------------------------------------
+
+namespace {
+
+void checkColors(const char* function, const ColorPair& colors) {
+  checkColor(function, "colors", colors.first);
+  checkColor(function, "colors", colors.second);
+}
+
+// The placement's map, with a singular scale reported under the texture's
+// name ("checker: transform is singular").
+Affine placementOf(const char* function, const TexturePlacement& p) {
+  try {
+    Affine placement;
+    if (p.scale) placement = Affine::scaling(*p.scale);
+    if (p.rotate) placement = placement.then(rotationDegrees(*p.rotate));
+    if (p.translate) placement = placement.then(Affine::translation(*p.translate));
+    return placement;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(function) + ": " + e.what());
+  }
+}
+
+// The factory's texture, not yet shared with anything, placed.
+TexturePtr placed(TexturePtr texture, const Affine& placement) {
+  std::const_pointer_cast<Texture>(texture)->setPlacement(placement);
+  return texture;
+}
+
+}  // namespace
+
+TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
+                         const TexturePlacement& placement) {
+  const ColorPair c = colors.value_or(ColorPair(dvec3(1.0), dvec3(0.1)));
+  checkColors("checker", c);
+  checkPositive("checker", "size", size);
+  const Affine frame = placementOf("checker", placement);
+  return placed(checkerTexture(c.first, c.second, size), frame);
+}
+
+TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,
+                       double strength, const TexturePlacement& placement) {
+  const char* name = noiseName(kind);
+  const ColorPair c = colors.value_or(
+      kind == NoiseKind::Wood ? ColorPair(dvec3(0.55, 0.33, 0.16), dvec3(0.3, 0.16, 0.07))
+                              : ColorPair(dvec3(0.9, 0.9, 0.88), dvec3(0.2, 0.2, 0.25)));
+  checkColors(name, c);
+  const int count = kind == NoiseKind::Perlin ? 1 : checkWhole(name, "octaves", octaves, 1, 16);
+  checkNonNegative(name, "strength", strength);
+  const Affine frame = placementOf(name, placement);
+  return placed(noiseTexture(kind, c.first, c.second, count, strength), frame);
+}
+
+TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,
+                       const TexturePlacement& placement) {
+  const Affine frame = placementOf("image_texture", placement);
+  return placed(imageTexture(std::move(image), mapping), frame);
+}
+
+const char* noiseName(NoiseKind kind) {
+  switch (kind) {
+    case NoiseKind::Perlin:
+      return "perlin";
+    case NoiseKind::Turbulence:
+      return "turbulence";
+    case NoiseKind::Marble:
+      return "marble";
+    case NoiseKind::Wood:
+      return "wood";
+  }
+  return "noise";
 }
 
 }  // namespace csgray::detail

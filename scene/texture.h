@@ -6,6 +6,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "engine/affine.h"
@@ -65,6 +67,29 @@ enum class NoiseKind {
 };
 TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves = 6,
                         double strength = 4.0);
+
+// ---- Textures as users give them ------------------------------------------
+
+// Where a pattern sits in texture space: scaled, then rotated (degrees about
+// x, then y, then z), then translated.
+struct TexturePlacement {
+  std::optional<dvec3> scale, rotate, translate;
+};
+
+// The two colours of a pattern; none: the pattern's own defaults.
+using ColorPair = std::pair<dvec3, dvec3>;
+
+// The textures of the script's checker{}, perlin{}, turbulence{}, marble{},
+// wood{} and image_texture{}, with their checks and messages ("checker:
+// size must be > 0"). Perlin noise has one octave: octaves is not used.
+TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
+                         const TexturePlacement& placement);
+TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,
+                       double strength, const TexturePlacement& placement);
+TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,
+                       const TexturePlacement& placement);
+// The script function of a noise: "perlin", "turbulence", "marble", "wood".
+const char* noiseName(NoiseKind kind);
 
 // Improved Perlin noise in [-1, 1] (Perlin 2002) and its turbulence sum;
 // exposed for tests.

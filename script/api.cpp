@@ -3,19 +3,15 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <new>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "engine/boolean.h"
-#include "primitives/box.h"
-#include "primitives/cylinder.h"
-#include "primitives/half_space.h"
 #include "primitives/quadric.h"
-#include "primitives/sphere.h"
-#include "primitives/torus.h"
+#include "scene/rotation.h"
+#include "scene/shapes.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 #include "script/sandbox.h"
@@ -51,40 +47,14 @@ LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
   return LuaArgs(L, 1, function);
 }
 
-// center=true moves a shape whose object frame starts at the origin so that
-// its box is centred there.
-SolidPtr centred(const SolidPtr& solid, LuaArgs& args, const dvec3& offset) {
-  if (!args.boolean("center").value_or(false)) return solid;
-  return solid->transformed(Affine::translation(offset));
-}
-
-// ---- Primitives -------------------------------------------------------------
-
-// A radius from r= or d= (diameter), as in OpenSCAD.
-// Checked here, so that the message names the parameter the script used.
-std::optional<double> radiusArg(LuaArgs& args, const char* r, const char* d, bool zeroAllowed) {
-  std::optional<double> radius = args.number(r);
-  std::optional<double> diameter = args.number(d);
-  if (radius && diameter)
-    throw std::invalid_argument(args.function() + ": give " + r + " or " + d + ", not both");
-  const char* given = diameter ? d : r;
-  std::optional<double> value = diameter ? diameter : radius;
-  if (value && (*value < 0.0 || (*value == 0.0 && !zeroAllowed))) {
-    std::ostringstream msg;
-    msg << args.function() << ": " << given << " must be " << (zeroAllowed ? ">= 0" : "> 0")
-        << " (got " << *value << ")";
-    throw std::invalid_argument(msg.str());
-  }
-  if (diameter) return *diameter / 2.0;
-  return radius;
-}
+// ---- Primitives ---------------------------------------------------------------
+// The shapes and their checks are in scene/shapes.h; these read them.
 
 int sphere(lua_State* L) {
   LuaArgs args = shapeArgs(L, "sphere", "r");
-  std::optional<double> r = radiusArg(args, "r", "d", false);
+  std::optional<double> r = args.number("r"), d = args.number("d");
   args.finish();
-  if (!r) throw std::invalid_argument("sphere: needs r (radius) or d (diameter)");
-  pushSolid(L, Primitive::create<Sphere>(*r));
+  pushSolid(L, sphereShape(r, d));
   return 1;
 }
 
@@ -92,84 +62,56 @@ int ellipsoid(lua_State* L) {
   LuaArgs args = shapeArgs(L, "ellipsoid", "radii");
   std::optional<dvec3> radii = args.vec3("radii");
   args.finish();
-  if (!radii) throw std::invalid_argument("ellipsoid: needs radii={a, b, c}");
-  for (int i = 0; i < 3; ++i)
-    if (!((*radii)[i] > 0.0)) throw std::invalid_argument("ellipsoid: radii must be positive");
-  // A unit sphere under a non-uniform scale: exact, normals by inverse transpose.
-  pushSolid(L, Primitive::create<Sphere>(1.0)->transformed(Affine::scaling(*radii)));
+  pushSolid(L, ellipsoidShape(radii));
   return 1;
 }
 
 int box(lua_State* L) {
   LuaArgs args = shapeArgs(L, "box", "size");
   std::optional<dvec3> size = args.vec3("size");
-  if (!size) throw std::invalid_argument("box: needs size={x, y, z} (or a number for a cube)");
-  SolidPtr solid = centred(Primitive::create<Box>(*size), args, -0.5 * *size);
+  bool center = args.boolean("center").value_or(false);
+  SolidPtr solid = boxShape(size, center);
   args.finish();
   pushSolid(L, solid);
   return 1;
 }
 
-SolidPtr cylinderFrom(LuaArgs& args, bool defaultR2IsR1) {
-  std::optional<double> h = args.number("h");
-  std::optional<double> r = radiusArg(args, "r", "d", false);
-  std::optional<double> r1 = radiusArg(args, "r1", "d1", true);
-  std::optional<double> r2 = radiusArg(args, "r2", "d2", true);
-  if (!h) throw std::invalid_argument(args.function() + ": needs h (height)");
-  if (r && (r1 || r2))
-    throw std::invalid_argument(args.function() + ": give r, or r1 and r2, not both");
-  double bottom = r ? *r : r1.value_or(-1.0);
-  if (bottom < 0.0 && !r1) throw std::invalid_argument(args.function() + ": needs r or r1");
-  double top = r ? (defaultR2IsR1 ? *r : 0.0) : r2.value_or(defaultR2IsR1 ? bottom : 0.0);
-  SolidPtr solid = Primitive::create<Cylinder>(bottom, top, *h);
-  return centred(solid, args, dvec3(0.0, 0.0, -0.5 * *h));
-}
-
-int cylinder(lua_State* L) {
-  LuaArgs args(L, 1, "cylinder");
-  SolidPtr solid = cylinderFrom(args, true);
+// cylinder{} and cone{}: function names which.
+int cylinderOrCone(lua_State* L, const char* function) {
+  LuaArgs args(L, 1, function);
+  CylinderParams p;
+  p.h = args.number("h");
+  p.r = args.number("r");
+  p.d = args.number("d");
+  p.r1 = args.number("r1");
+  p.d1 = args.number("d1");
+  p.r2 = args.number("r2");
+  p.d2 = args.number("d2");
+  p.center = args.boolean("center").value_or(false);
+  SolidPtr solid = cylinderShape(function, p);
   args.finish();
   pushSolid(L, solid);
   return 1;
 }
 
-int cone(lua_State* L) {
-  LuaArgs args(L, 1, "cone");
-  SolidPtr solid = cylinderFrom(args, false);
-  args.finish();
-  pushSolid(L, solid);
-  return 1;
-}
+int cylinder(lua_State* L) { return cylinderOrCone(L, "cylinder"); }
+int cone(lua_State* L) { return cylinderOrCone(L, "cone"); }
 
 int halfSpace(lua_State* L) {
   LuaArgs args(L, 1, "half_space");
   std::optional<dvec3> normal = args.vec3("normal");
   double offset = args.number("offset").value_or(0.0);
   args.finish();
-  if (!normal) throw std::invalid_argument("half_space: needs normal={x, y, z}");
-  pushSolid(L, Primitive::create<HalfSpace>(*normal, offset));
+  pushSolid(L, halfSpaceShape(normal, offset));
   return 1;
 }
 
-// torus{R=, r=}: about the z axis in the xy plane; R from the axis to the
-// centre of the tube, r the tube's radius. Any R >= 0 is a solid.
 int torus(lua_State* L) {
   LuaArgs args(L, 1, "torus");
   std::optional<double> major = args.number("R");
   std::optional<double> minor = args.number("r");
   args.finish();
-  if (!major || !minor)
-    throw std::invalid_argument("torus: needs R (major radius) and r (tube radius)");
-  auto check = [](const char* name, double value, bool zeroAllowed) {
-    if (value > 0.0 || (zeroAllowed && value == 0.0)) return;
-    std::ostringstream msg;
-    msg << "torus: " << name << " must be " << (zeroAllowed ? ">= 0" : "> 0") << " (got " << value
-        << ")";
-    throw std::invalid_argument(msg.str());
-  };
-  check("R", *major, true);
-  check("r", *minor, false);
-  pushSolid(L, Primitive::create<Torus>(*major, *minor));
+  pushSolid(L, torusShape(major, minor));
   return 1;
 }
 
@@ -244,19 +186,12 @@ std::vector<SolidPtr> operandArgs(lua_State* L, const std::string& function) {
   } else {
     for (int i = 1; i <= n; ++i) take(i, function + ": operand " + std::to_string(i));
   }
-  if (operands.empty()) throw std::invalid_argument(function + ": needs at least one solid");
-  return operands;
+  return operands;  // booleanShape refuses an empty list
 }
 
 template <Boolean::Op op>
 int booleanOf(lua_State* L) {
-  const char* name = op == Boolean::Op::Union          ? "union"
-                     : op == Boolean::Op::Intersection ? "intersection"
-                                                       : "difference";
-  std::vector<SolidPtr> operands = operandArgs(L, name);
-  SolidPtr result =
-      operands.size() == 1 ? operands[0] : std::make_shared<Boolean>(op, std::move(operands));
-  pushSolid(L, result);
+  pushSolid(L, booleanShape(op, operandArgs(L, booleanName(op))));
   return 1;
 }
 
@@ -293,8 +228,6 @@ int mirror(lua_State* L) {
   return 1;
 }
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
 // rotate(x, y, z) or rotate{x, y, z}: degrees about x, then y, then z
 // (OpenSCAD's rotate([x, y, z])); rotate{angle=a, axis={...}}: a degrees
 // about the axis.
@@ -305,14 +238,10 @@ int rotate(lua_State* L) {
     std::optional<dvec3> axis = args.vec3("axis");
     args.finish();
     if (!angle || !axis) throw std::invalid_argument("rotate: needs angle= and axis=, or x, y, z");
-    pushTransformed(L, Affine::rotation(radians(*angle), *axis));
+    pushTransformed(L, rotationDegrees(*angle, *axis));
     return 1;
   }
-  dvec3 angles = vectorArgs(L, 2, "rotate");
-  Affine r = Affine::rotation(radians(angles.x), {1, 0, 0})
-                 .then(Affine::rotation(radians(angles.y), {0, 1, 0}))
-                 .then(Affine::rotation(radians(angles.z), {0, 0, 1}));
-  pushTransformed(L, r);
+  pushTransformed(L, rotationDegrees(vectorArgs(L, 2, "rotate")));
   return 1;
 }
 
@@ -409,7 +338,10 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
-  registerSceneApi(L, transforms);
+  registerTextureApi(L);
+  registerSurfaceApi(L, transforms);
+  registerLightApi(L);
+  registerSceneApi(L);
   registerQuadricApi(L);
   registerConvexApi(L);
   registerMeshApi(L);

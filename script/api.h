@@ -1,5 +1,8 @@
 // The script API: primitives, booleans, transforms, materials and scene
 // description as Lua functions and methods. Reference: docs/script.md.
+// The checks of what a script gives are those of scene/ (shapes.h,
+// material.h, ...), which the library's API makes too; the functions here
+// read Lua values into them.
 #pragma once
 
 #include <lua.hpp>
@@ -15,22 +18,25 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options);
 // The options registerScriptApi was given.
 const ScriptOptions& scriptOptionsOf(lua_State* L);
 
-// A file named by the script for `function` (e.g. "mesh"): relative to the
-// script's folder, and not outside it or the --allow-path folders; throws
-// std::invalid_argument otherwise.
-std::string scriptFile(lua_State* L, const std::string& function, const std::string& name);
-
-// The part of the API in api_scene.cpp: materials, textures, lights, open
-// surfaces (which take the given transform methods), camera and scene.
-void registerSceneApi(lua_State* L, const luaL_Reg* transformMethods);
-// Shape families, each in its own file: the named quadrics of seed 000's
-// table 17.1 and clip (api_quadrics.cpp), convex polyhedra and the Platonic
-// solids (api_convex.cpp), polyhedra from points and faces (api_mesh.cpp).
+// The parts of the API, each in its own file, each registering its
+// globals and metatables: textures (api_texture.cpp), open surfaces, which
+// take the given transform methods (api_surface.cpp), lights
+// (api_light.cpp), the camera and the scene (api_scene.cpp); the named
+// quadrics of seed 000's table 17.1 and clip (api_quadrics.cpp), convex
+// polyhedra and the Platonic solids (api_convex.cpp), polyhedra from points
+// and faces and mesh files (api_mesh.cpp), and check(solid, options)
+// (api_check.cpp): ScriptOptions::checkSolid's report as a table.
+void registerTextureApi(lua_State* L);
+void registerSurfaceApi(lua_State* L, const luaL_Reg* transformMethods);
+void registerLightApi(lua_State* L);
+void registerSceneApi(lua_State* L);
 void registerQuadricApi(lua_State* L);
 void registerConvexApi(lua_State* L);
 void registerMeshApi(lua_State* L);
-// check(solid, options) (api_check.cpp): ScriptOptions::checkSolid's report as a table.
 void registerCheckApi(lua_State* L);
+
+// The material{...} table at index (api_material.cpp), checked.
+MaterialPtr materialArg(lua_State* L, int index);
 // s:material{...} on a solid.
 int solidMaterial(lua_State* L);
 

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "primitives/mesh_solid.h"
+#include "scene/shapes.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
 #include "script/sandbox.h"
+#include "script/script_path.h"
 
 namespace csgray::detail {
 
@@ -121,18 +123,11 @@ int meshFn(lua_State* L) {
   std::string report;
   std::shared_ptr<MeshSolid> mesh;
   try {
-    TriangleMesh loaded = options.loadMesh(path, repair, report);
-    // MeshSolid takes OpenSCAD's clockwise faces.
-    std::vector<std::vector<std::int64_t>> faces;
-    faces.reserve(loaded.triangles.size());
-    for (const auto& t : loaded.triangles) faces.push_back({t[0], t[2], t[1]});
-    mesh = Primitive::create<MeshSolid>(loaded.points, faces);
+    // The loader's messages begin with the file's name, and so do
+    // meshShape's.
+    mesh = meshShape(options.loadMesh(path, repair, report), *file);
   } catch (const std::invalid_argument& e) {
-    // The loader's message begins with the file's name; MeshSolid's with
-    // "polyhedron: ", which would mislead here.
-    std::string message = e.what();
-    if (message.starts_with("polyhedron: ")) message = *file + ": " + message.substr(12);
-    throw std::invalid_argument("mesh: " + message);
+    throw std::invalid_argument("mesh: " + std::string(e.what()));
   }
   if (!report.empty() && options.warn) {
     // "part.lua:3: ", as an error would begin.

@@ -52,7 +52,7 @@ TriangleMesh exportsValid(const std::string& source, double volume, double volum
   const std::optional<TriangleMesh> made = exported(*solid);
   if (!made) return {};
   const TriangleMesh& mesh = *made;
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_NEAR(mesh.volume(), volume, volumeSlack);
   EXPECT_TRUE(test::checksOut(*solid, kTolerance));
   return mesh;
@@ -101,7 +101,7 @@ TEST(ContactExport, SolidsStackedOnTheSameFacesAreGluedNotCorefined) {
     MeshBooleanStats stats;
     const SolidPtr solid = part(source);
     const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     EXPECT_EQ(stats.glued, 1u);
     EXPECT_EQ(stats.corefinements, 0u);
     EXPECT_EQ(meshShells(mesh).count, 1u);
@@ -119,7 +119,7 @@ TEST(ContactExport, AGridOfCubesIsOneSolid) {
   MeshBooleanStats stats;
   const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
   EXPECT_GT(stats.glued, 0u);
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_NEAR(mesh.volume(), 144.0, 1e-9);
   EXPECT_EQ(meshShells(mesh).count, 1u);
 }
@@ -292,7 +292,7 @@ TEST(ContactExport, AnExportThatFailsNamesTheScriptLinesNearTheTrouble) {
   const SolidPtr solid = part(source);
   try {
     const TriangleMesh mesh = meshOfSolid(*solid, kTolerance).mesh;
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     EXPECT_TRUE(test::checksOut(*solid, kTolerance));
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
@@ -320,7 +320,7 @@ TEST(ContactExport, ABoxCutByAHalfSpaceIsOneConvexPolytope) {
     MeshBooleanStats stats;
     const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
     EXPECT_EQ(stats.corefinements, 0u);
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     EXPECT_NEAR(mesh.volume(), 0.5, 1e-9);
     EXPECT_TRUE(test::checksOut(*part(source), kTolerance));
   }
@@ -342,7 +342,7 @@ TEST(ContactExport, AnEmptyConvexIntersectionIsNothing) {
       meshOfSolid(*part("return box(1):translate(0, 0, 2) * half_space{normal={0, 0, 1}, offset=1}"
                         " + sphere(1)"),
                   kTolerance, nullptr, &stats);
-  EXPECT_EQ(meshDefect(mesh.mesh), "");
+  EXPECT_EQ(meshDefect(mesh.mesh).text, "");
   EXPECT_NEAR(mesh.mesh.volume(), 4.0 / 3.0 * kPi, kTolerance * 4 * kPi);
 }
 
@@ -400,7 +400,7 @@ TEST(ContactExport, RandomPartsWithSharedFacesAndTangenciesCheckOut) {
     const SolidPtr solid = part(source);
     const std::optional<TriangleMesh> mesh = exported(*solid);
     if (!mesh) continue;
-    EXPECT_EQ(meshDefect(*mesh), "");
+    EXPECT_EQ(meshDefect(*mesh).text, "");
     // Classification, the volume by ray grids against the mesh's, the
     // distance between the surfaces, and the shells.
     EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
@@ -420,7 +420,7 @@ TEST(ContactExport, APrimitiveRepeatedIsExportedOnce) {
     MeshBooleanStats stats;
     const SolidPtr solid = part(source);
     const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     if (std::string(source).find("box") == std::string::npos) {
       EXPECT_EQ(stats.corefinements, 0u);
       EXPECT_EQ(mesh.volume(), volume);
@@ -443,7 +443,7 @@ TEST(ContactExport, TheRoundedBoxOfTangentParts) {
                                     test::exampleOptions());
   const SolidPtr solid = scene.objects[0];
   const TriangleMesh mesh = meshOfSolid(*solid, kTolerance).mesh;
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_NEAR(mesh.volume(), exact, kTolerance * 2 * (40 * 30 + 30 * 20 + 40 * 20));
   EXPECT_EQ(meshShells(mesh).count, 1u);
   EXPECT_TRUE(test::checksOut(*solid, kTolerance));
@@ -463,7 +463,7 @@ TEST(ContactExport, FortyFrustumsStackedOnSharedRims) {
       std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/frustum_stack.lua", test::exampleOptions());
   MeshBooleanStats stats;
   const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance, nullptr, &stats).mesh;
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_NEAR(mesh.volume(), exact, kTolerance * (side + 2 * kPi * 26 * 26));
   // Each rim is the polygon of its own radius, so neighbours meet on the
   // same points and are glued, but where the side between two rims of
@@ -492,7 +492,7 @@ TEST(ContactExport, TheKnurledKnobsGroovesEndOnTheFilletsTangentLine) {
   for (double tolerance : {0.003, 0.005, kTolerance, 0.02}) {
     SCOPED_TRACE(tolerance);
     const TriangleMesh mesh = meshOfSolid(*solid, tolerance).mesh;
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     // Area: the side and the top, the grooves' walls and the fillet.
     EXPECT_NEAR(mesh.volume(), exact,
                 tolerance * (2 * kPi * 15 * 12 + 2 * kPi * 15 * 15 + 24 * 2 * kPi * 0.6 * 10));
@@ -512,7 +512,7 @@ TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
   for (StoredCoordinate stored :
        {StoredCoordinate(nullptr), storedCoordinate(MeshFormat::Stl, false)}) {
     const TriangleMesh mesh = meshOfSolid(*scene.objects[0], kTolerance, stored).mesh;
-    EXPECT_EQ(meshDefect(mesh), "");
+    EXPECT_EQ(meshDefect(mesh).text, "");
     EXPECT_NEAR(mesh.volume(), exact,
                 kTolerance * (2 * kPi * 15 * 10 + 2 * kPi * 15 * 15 + 13 * 12));
   }

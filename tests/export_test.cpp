@@ -137,7 +137,7 @@ TEST_P(ExampleExport, IsPrintableAndReadsBackInEveryFormat) {
     // follows only nearly: a 3MF may read back a last digit apart.)
     const double digits = kind == MeshFormat::ThreeMf ? 1e-6 : 1e-12;
     EXPECT_NEAR(back.volume(), mesh.mesh.volume(), digits * std::abs(mesh.mesh.volume()));
-    EXPECT_EQ(meshDefect(back), "");
+    EXPECT_EQ(meshDefect(back).text, "");
   }
   // And it comes back in as a solid: mesh{} takes the file it wrote.
   ScriptOptions options = test::exampleOptions();
@@ -168,7 +168,7 @@ TEST_P(ExportVolume, IsWithinTheToleranceOfTheAnalyticVolume) {
   for (double tolerance : {0.05, 0.01}) {
     SCOPED_TRACE(tolerance);
     PartMesh mesh = meshOfSolid(*part, tolerance);
-    EXPECT_EQ(meshDefect(mesh.mesh), "");
+    EXPECT_EQ(meshDefect(mesh.mesh).text, "");
     const double bound = tolerance * mesh.mesh.area();
     EXPECT_NEAR(mesh.mesh.volume(), c.volume, bound);
   }
@@ -277,7 +277,7 @@ TEST(Export, TurnedPartsWithFlushFacesExport) {
       SCOPED_TRACE(part + turn);
       PartMesh mesh = meshOfSolid(*partOfScript("return " + part + turn), 0.01,
                                   storedCoordinate(MeshFormat::Stl, false));
-      EXPECT_EQ(meshDefect(mesh.mesh), "");
+      EXPECT_EQ(meshDefect(mesh.mesh).text, "");
       EXPECT_NEAR(mesh.mesh.volume(), volume, 1e-4 * volume);
     }
   }

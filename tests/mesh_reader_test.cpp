@@ -65,7 +65,7 @@ TEST_P(BoxFile, ReadsToTheSameSolid) {
   Bounds b = mesh.bounds();
   test::expectVecNear(b.lo, dvec3(0, 0, 0), 0.0);
   test::expectVecNear(b.hi, dvec3(2, 3, 4), 0.0);
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, BoxFile,
@@ -84,7 +84,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, BoxFile,
 TEST(MeshReader, NonConvexFacesAreEarClipped) {
   TriangleMesh mesh = readMeshFile(kMeshes + "l_prism.obj");
   EXPECT_DOUBLE_EQ(mesh.volume(), 20.0);
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
 }
 
 // A face of many corners is ear clipped too: a star prism whose caps have
@@ -113,7 +113,7 @@ TEST(MeshReader, LargeNonConvexFacesAreEarClipped) {
   }
   TriangleMesh mesh = readMesh(obj, "star.obj");
   EXPECT_EQ(mesh.triangles.size(), std::size_t(2 * (n - 2) + 2 * n));
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   // The corners were written with six decimals: the volume of those points.
   auto corner = [&](int i) {
     const double a = 2.0 * kPi * (i % n) / n, r = i % 2 ? inner : outer;
@@ -361,7 +361,7 @@ TEST(MeshValidity, NonManifoldEdgesAndVerticesAreRefused) {
   cones.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
   cones.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},
                      {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}};
-  EXPECT_EQ(meshDefect(cones),
+  EXPECT_EQ(meshDefect(cones).text,
             "non-manifold: vertex 0 (0, 0, 0) joins separate fans of faces (the surface touches "
             "itself at a point)");
 }
@@ -374,7 +374,7 @@ TEST(MeshValidity, DegenerateFacesAreRefused) {
   TriangleMesh flat = readMeshFile(kMeshes + "box.off");
   flat.points.push_back({1, 0, 0});  // on the edge from (0,0,0) to (2,0,0)
   flat.triangles.push_back({0, 8, 4});
-  EXPECT_EQ(meshDefect(flat),
+  EXPECT_EQ(meshDefect(flat).text,
             "degenerate: face 12 has no area: vertex 0 (0, 0, 0), vertex 8 (1, 0, 0) and vertex "
             "4 (2, 0, 0) are on one line");
 }
@@ -400,15 +400,15 @@ TEST(MeshValidity, ACavityFacingInwardIsValid) {
   for (dvec3& p : cavity.points) p = dvec3(0.5) + p * 0.25;
   cavity.flip();
   outer.append(cavity);
-  EXPECT_EQ(meshDefect(outer), "");
+  EXPECT_EQ(meshDefect(outer).text, "");
   EXPECT_DOUBLE_EQ(outer.volume(), 24.0 * (1 - 1.0 / 64));
   // Facing outward, the inner shell would be a second solid inside the
   // first: refused.
   cavity.flip();
   TriangleMesh doubled = readMeshFile(kMeshes + "box.off");
   doubled.append(cavity);
-  EXPECT_EQ(meshDefect(doubled).rfind("inside out: the shell of face 12", 0), 0u)
-      << meshDefect(doubled);
+  EXPECT_EQ(meshDefect(doubled).text.rfind("inside out: the shell of face 12", 0), 0u)
+      << meshDefect(doubled).text;
 }
 
 // ---- Repairs -------------------------------------------------------------------
@@ -417,7 +417,7 @@ TriangleMesh repaired(const std::string& name, const std::string& expectedReport
   std::string report;
   TriangleMesh mesh = importMesh(kMeshes + name, true, report);
   EXPECT_EQ(report, expectedReport) << name;
-  EXPECT_EQ(meshDefect(mesh), "") << name;
+  EXPECT_EQ(meshDefect(mesh).text, "") << name;
   EXPECT_DOUBLE_EQ(mesh.volume(), 24.0) << name;
   return mesh;
 }
@@ -439,12 +439,13 @@ TEST(MeshRepair, MergesDuplicatedVertices) {
     for (auto v : t) soup.points.push_back(indexed.points[v]);
     soup.triangles.push_back({n, n + 1, n + 2});
   }
-  EXPECT_EQ(meshDefect(soup).rfind("open: ", 0), 0u);
+  EXPECT_EQ(meshDefect(soup).kind, MeshDefect::Kind::Open);
+  EXPECT_EQ(meshDefect(soup).text.rfind("open: ", 0), 0u);
   std::string report;
   TriangleMesh mesh = repairMesh(soup, report);
   EXPECT_EQ(report, "merged 28 duplicated vertices");
   EXPECT_EQ(mesh.points.size(), 8u);
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_DOUBLE_EQ(mesh.volume(), 24.0);
 }
 

@@ -27,7 +27,12 @@ bool cgalSaysItCrosses(const TriangleMesh& mesh) {
   return CGAL::Polygon_mesh_processing::does_self_intersect(surface);
 }
 
-bool crosses(const TriangleMesh& mesh) { return meshDefect(mesh).starts_with("self-intersecting"); }
+bool crosses(const TriangleMesh& mesh) {
+  const MeshDefect defect = meshDefect(mesh);
+  const bool crossing = defect.kind == MeshDefect::Kind::SelfIntersecting;
+  EXPECT_EQ(crossing, defect.text.starts_with("self-intersecting")) << defect.text;
+  return crossing;
+}
 
 // The octahedron with corners ±x, ±y, ±z.
 TriangleMesh octahedron() {
@@ -42,21 +47,22 @@ TriangleMesh octahedron() {
 // overlapping cubes in mesh_reader_test.)
 TEST(MeshValidity, AnOctahedronIsValidAndItsTopFoldedOntoItsBottomIsNot) {
   TriangleMesh m = octahedron();
-  EXPECT_EQ(meshDefect(m), "");
+  EXPECT_EQ(meshDefect(m).text, "");
   // The top corner pushed down inside: a dent, still a valid solid.
   m.points[4] = {0, 0, -0.5};
-  EXPECT_EQ(meshDefect(m), "");
+  EXPECT_EQ(meshDefect(m).text, "");
   EXPECT_FALSE(cgalSaysItCrosses(m));
   // Onto the bottom corner: each upper face lies on the lower face that
   // shares its equator edge (folded, in one plane, on one side).
   m.points[4] = {0, 0, -1};
-  EXPECT_TRUE(crosses(m)) << meshDefect(m);
+  EXPECT_TRUE(crosses(m)) << meshDefect(m).text;
   EXPECT_TRUE(cgalSaysItCrosses(m));
   // Past it: the upper faces now wrap the lower ones, meeting them only
   // along the equator, and face inwards.
   m.points[4] = {0, 0, -2};
   EXPECT_FALSE(cgalSaysItCrosses(m));
-  EXPECT_TRUE(meshDefect(m).starts_with("inside out")) << meshDefect(m);
+  EXPECT_EQ(meshDefect(m).kind, MeshDefect::Kind::InsideOut) << meshDefect(m).text;
+  EXPECT_TRUE(meshDefect(m).text.starts_with("inside out")) << meshDefect(m).text;
 }
 
 TEST(MeshValidity, CrossingsAgreeWithCgalOnRandomlyCrumpledSpheres) {
@@ -73,7 +79,7 @@ TEST(MeshValidity, CrossingsAgreeWithCgalOnRandomlyCrumpledSpheres) {
     TriangleMesh m = sphere;
     for (dvec3& p : m.points) p += dvec3(move(random), move(random), move(random));
     const bool expected = cgalSaysItCrosses(m);
-    ASSERT_EQ(crosses(m), expected) << "trial " << trial << ": " << meshDefect(m);
+    ASSERT_EQ(crosses(m), expected) << "trial " << trial << ": " << meshDefect(m).text;
     (expected ? crossing : clean)++;
   }
   // Both outcomes were tried, many times.

@@ -158,7 +158,7 @@ void expectValid(const TriangleMesh& mesh, const glm::dmat4& m, const Bounds& re
                  double tolerance) {
   expectClosedAndOriented(mesh);
   expectFollowsSurface(mesh, m, region, tolerance);
-  EXPECT_EQ(meshDefect(mesh), "");
+  EXPECT_EQ(meshDefect(mesh).text, "");
 }
 
 // ---- Volumes of the mesh within a box or a slab ------------------------------------
@@ -501,7 +501,7 @@ TEST(QuadricTessellation, PlanesSlabsAndTheWholeSpace) {
   const glm::dmat4 tilted = moved(half, someMotion());
   const TriangleMesh tiltedMesh = tessellate(tilted, tol, region);
   expectClosedAndOriented(tiltedMesh);
-  EXPECT_EQ(meshDefect(tiltedMesh), "");
+  EXPECT_EQ(meshDefect(tiltedMesh).text, "");
   // The slab |x| <= 0.5, and the two half-spaces |x| >= 0.5 beside it.
   const glm::dmat4 slab = diagonal(4, 0, 0, -1);
   EXPECT_NEAR(volumeInBox(tessellate(slab, tol, region), region), 1 * 4 * 4, 1e-9);
@@ -519,7 +519,7 @@ TEST(QuadricTessellation, PlanesSlabsAndTheWholeSpace) {
   const Bounds right{dvec3(0.5, -2, -1), dvec3(2, 2, 1)};
   const TriangleMesh wedge = tessellate(planes, tol, right);
   expectClosedAndOriented(wedge);
-  EXPECT_EQ(meshDefect(wedge), "");
+  EXPECT_EQ(meshDefect(wedge).text, "");
   // Sections 2x wide for 0.5 <= x <= 2, 2 high.
   EXPECT_NEAR(volumeInBox(wedge, right), 2 * (2 * 2 - 0.5 * 0.5) / 2 * 2, 1e-9);
 }

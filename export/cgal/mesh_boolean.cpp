@@ -761,10 +761,11 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   PartMesh part = partFrom(rounded);
 
   const auto start = std::chrono::steady_clock::now();
-  std::string defect = meshDefect(part.mesh);
+  MeshDefect defect = meshDefect(part.mesh);
   // (Only crossings and slivers: parts that touch at a point are reported
   // as they are, not "repaired" into something else.)
-  if (defect.starts_with("self-intersecting") || defect.starts_with("degenerate")) {
+  if (defect.kind == MeshDefect::Kind::SelfIntersecting ||
+      defect.kind == MeshDefect::Kind::Degenerate) {
     // Rounding can also fold a sliver over its neighbour where faces meet
     // at a hair's breadth (coplanar faces of a rotated union): the slivers
     // go first, then what still crosses, each change within a hundredth of
@@ -773,7 +774,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
     removeSlivers(rounded, 0.01 * tolerance);
     part = partFrom(rounded);
     defect = meshDefect(part.mesh);
-    if (!defect.empty()) {
+    if (!defect.valid()) {
       removeCrossings(rounded, 0.01 * tolerance);
       part = partFrom(rounded);
       defect = meshDefect(part.mesh);
@@ -781,11 +782,11 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   }
   counts.checkSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!defect.empty()) {
+  if (!defect.valid()) {
     dvec3 at;
     std::string near;
-    if (defectPoint(defect, at)) near = primitivesNear(solid, at, kBlameReach * tolerance);
-    throw std::runtime_error("the mesh would not be printable: " + defect +
+    if (defectPoint(defect.text, at)) near = primitivesNear(solid, at, kBlameReach * tolerance);
+    throw std::runtime_error("the mesh would not be printable: " + defect.text +
                              (near.empty() ? "" : ", made by " + near));
   }
   return part;

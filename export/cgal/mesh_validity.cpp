@@ -42,11 +42,13 @@ std::string vertexText(const TriangleMesh& mesh, std::uint32_t v) {
 
 Point point(const dvec3& p) { return Point(p.x, p.y, p.z); }
 
+MeshDefect defect(MeshDefect::Kind kind, std::string text) { return {kind, std::move(text)}; }
+
 // The faces across each side: across[3f + k] is the face on the other side
-// of the edge from corner k to corner k+1 of face f. Empty string when
-// every edge has two faces that run along it in opposite directions
+// of the edge from corner k to corner k+1 of face f. No defect when every
+// edge has two faces that run along it in opposite directions
 // (tessellation/mesh_edges.h).
-std::string checkEdges(const TriangleMesh& mesh, std::vector<std::uint32_t>& across) {
+MeshDefect checkEdges(const TriangleMesh& mesh, std::vector<std::uint32_t>& across) {
   const std::vector<EdgeUse> uses = edgeUses(mesh.triangles);
   auto faceOf = [](const EdgeUse& use) { return use.side / 3; };
   across.assign(3 * mesh.triangles.size(), 0);
@@ -60,32 +62,35 @@ std::string checkEdges(const TriangleMesh& mesh, std::vector<std::uint32_t>& acr
     };
     switch (edgeFault(edge)) {
       case EdgeFault::Open:
-        return "open: " + where() + " has one face (face " + std::to_string(faceOf(edge[0])) +
-               "); the mesh has a hole there";
+        return defect(MeshDefect::Kind::Open, "open: " + where() + " has one face (face " +
+                                                  std::to_string(faceOf(edge[0])) +
+                                                  "); the mesh has a hole there");
       case EdgeFault::NonManifold: {
         std::string faces;
         for (std::size_t k = 0; k < edge.size() && k < 4; ++k)
           faces += (k > 0 ? ", " : "") + std::to_string(faceOf(edge[k]));
-        return "non-manifold: " + where() + " has " + std::to_string(edge.size()) + " faces (" +
-               faces + (edge.size() > 4 ? ", ...)" : ")");
+        return defect(MeshDefect::Kind::NonManifold,
+                      "non-manifold: " + where() + " has " + std::to_string(edge.size()) +
+                          " faces (" + faces + (edge.size() > 4 ? ", ...)" : ")"));
       }
       case EdgeFault::SameWay:
-        return "inconsistent orientation: faces " + std::to_string(faceOf(edge[0])) + " and " +
-               std::to_string(faceOf(edge[1])) + " both run the same way along " + where() +
-               "; one of them is flipped";
+        return defect(MeshDefect::Kind::InconsistentOrientation,
+                      "inconsistent orientation: faces " + std::to_string(faceOf(edge[0])) +
+                          " and " + std::to_string(faceOf(edge[1])) +
+                          " both run the same way along " + where() + "; one of them is flipped");
       case EdgeFault::None:
         across[edge[0].side] = faceOf(edge[1]);
         across[edge[1].side] = faceOf(edge[0]);
         break;
     }
   }
-  return "";
+  return {};
 }
 
 // With every edge between two faces, the faces around a vertex must form
 // one fan; two fans meeting at a vertex (cones tip to tip) do not bound a
 // volume there.
-std::string checkVertices(const TriangleMesh& mesh, const std::vector<std::uint32_t>& across) {
+MeshDefect checkVertices(const TriangleMesh& mesh, const std::vector<std::uint32_t>& across) {
   const auto& triangles = mesh.triangles;
   std::vector<std::uint32_t> fansAt(mesh.points.size(), 0);
   std::vector<bool> visited(3 * triangles.size(), false);
@@ -93,8 +98,9 @@ std::string checkVertices(const TriangleMesh& mesh, const std::vector<std::uint3
     if (visited[corner]) continue;
     const std::uint32_t v = triangles[corner / 3][corner % 3];
     if (++fansAt[v] > 1)
-      return "non-manifold: " + vertexText(mesh, v) + " joins " +
-             "separate fans of faces (the surface touches itself at a point)";
+      return defect(MeshDefect::Kind::NonManifold,
+                    "non-manifold: " + vertexText(mesh, v) + " joins " +
+                        "separate fans of faces (the surface touches itself at a point)");
     // Around v: from face f, where v is corner k, the edge v → corner k+1
     // leads to the next face.
     std::size_t c = corner;
@@ -105,7 +111,7 @@ std::string checkVertices(const TriangleMesh& mesh, const std::vector<std::uint3
       c = 3 * std::size_t(next) + std::size_t(t[0] == v ? 0 : t[1] == v ? 1 : 2);
     }
   }
-  return "";
+  return {};
 }
 
 // The connected pieces of the surface: faces joined across their edges.
@@ -264,47 +270,55 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstCrossing(const Trian
 
 }  // namespace
 
-std::string meshDefect(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty()) return "empty: the mesh has no triangles";
+MeshDefect meshDefect(const TriangleMesh& mesh) {
+  using Kind = MeshDefect::Kind;
+  if (mesh.triangles.empty()) return defect(Kind::Empty, "empty: the mesh has no triangles");
   for (std::uint32_t v = 0; v < mesh.points.size(); ++v) {
     const dvec3& p = mesh.points[v];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      return "vertex " + std::to_string(v) + " " + coordinates(p) + " is not finite";
+      return defect(Kind::NotFinite,
+                    "vertex " + std::to_string(v) + " " + coordinates(p) + " is not finite");
   }
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
     for (std::uint32_t v : t)
       if (v >= mesh.points.size())
-        return "face " + std::to_string(f) + " names vertex " + std::to_string(v) + " of " +
-               std::to_string(mesh.points.size());
+        return defect(Kind::BadIndex, "face " + std::to_string(f) + " names vertex " +
+                                          std::to_string(v) + " of " +
+                                          std::to_string(mesh.points.size()));
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
-      return "degenerate: face " + std::to_string(f) + " uses a vertex twice (vertices " +
-             std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
+      return defect(Kind::Degenerate, "degenerate: face " + std::to_string(f) +
+                                          " uses a vertex twice (vertices " + std::to_string(t[0]) +
+                                          ", " + std::to_string(t[1]) + ", " +
+                                          std::to_string(t[2]) + ")");
     // Exact: a sliver is fine, only a face without area is degenerate.
     if (CGAL::collinear(point(mesh.points[t[0]]), point(mesh.points[t[1]]),
                         point(mesh.points[t[2]])))
-      return "degenerate: face " + std::to_string(f) + " has no area: " + vertexText(mesh, t[0]) +
-             ", " + vertexText(mesh, t[1]) + " and " + vertexText(mesh, t[2]) + " are on one line";
+      return defect(Kind::Degenerate, "degenerate: face " + std::to_string(f) + " has no area: " +
+                                          vertexText(mesh, t[0]) + ", " + vertexText(mesh, t[1]) +
+                                          " and " + vertexText(mesh, t[2]) + " are on one line");
   }
   std::vector<std::uint32_t> across;
-  if (std::string defect = checkEdges(mesh, across); !defect.empty()) return defect;
-  if (std::string defect = checkVertices(mesh, across); !defect.empty()) return defect;
+  if (MeshDefect found = checkEdges(mesh, across); !found.valid()) return found;
+  if (MeshDefect found = checkVertices(mesh, across); !found.valid()) return found;
 
   if (auto crossing = firstCrossing(mesh))
-    return "self-intersecting: faces " + std::to_string(crossing->first) + " and " +
-           std::to_string(crossing->second) + " cross" +
-           meetingPoint(mesh, crossing->first, crossing->second);
+    return defect(Kind::SelfIntersecting,
+                  "self-intersecting: faces " + std::to_string(crossing->first) + " and " +
+                      std::to_string(crossing->second) + " cross" +
+                      meetingPoint(mesh, crossing->first, crossing->second));
 
   // Every shell closed and apart: outer shells must face out and the
   // shells inside them (cavities) in. does_bound_a_volume also accepts a
   // mesh turned wholly inside out (bounding all of space but the part),
   // which the sign of the volume tells.
   if (mesh.volume() < 0.0)
-    return "inside out: the faces point inward (the mesh encloses a negative volume); faces "
-           "must run counter-clockwise seen from outside";
+    return defect(Kind::InsideOut,
+                  "inside out: the faces point inward (the mesh encloses a negative volume); "
+                  "faces must run counter-clockwise seen from outside");
   // One shell with a positive volume faces out: only nested shells need
   // CGAL's test (a plate's export is one shell, and skips its cost).
-  if (shellCount(mesh, across) == 1) return "";
+  if (shellCount(mesh, across) == 1) return {};
   // A valid polygon mesh now: CGAL's surface, its faces in the same order.
   std::vector<Point> points;
   points.reserve(mesh.points.size());
@@ -326,13 +340,14 @@ std::string meshDefect(const TriangleMesh& mesh) {
       bool kept = false;
       for (int k = 0; k < 3; ++k) kept |= corners[k] == s && corners[(k + 1) % 3] == t;
       if (kept) continue;
-      return "inside out: the shell of face " + std::to_string(std::size_t(f)) + " (" +
-             vertexText(mesh, corners[0]) +
-             ") faces the wrong way; outer shells must face out, cavities in";
+      return defect(Kind::InsideOut,
+                    "inside out: the shell of face " + std::to_string(std::size_t(f)) + " (" +
+                        vertexText(mesh, corners[0]) +
+                        ") faces the wrong way; outer shells must face out, cavities in");
     }
-    return "inside out: the shells do not bound a volume";
+    return defect(Kind::InsideOut, "inside out: the shells do not bound a volume");
   }
-  return "";
+  return {};
 }
 
 }  // namespace csgray::detail

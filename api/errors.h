@@ -1,0 +1,33 @@
+// How the library turns what its internals throw into csgray::Error: each
+// public function runs its work through guarded().
+#pragma once
+
+#include <utility>
+
+#include "csgray/error.h"
+
+namespace csgray::detail {
+
+// From within a catch handler: throws the exception being handled as a
+// csgray::Error. std::invalid_argument (a bad value) is InvalidArgument, a
+// script's error ScriptError, std::bad_alloc OutOfMemory, a csgray::Error
+// stays as it is, and any other std::exception is `otherwise`.
+[[noreturn]] void throwAsError(ErrorCode otherwise);
+
+// Runs f; what it throws leaves as a csgray::Error (see throwAsError).
+template <class F>
+auto guarded(ErrorCode otherwise, F&& f) -> decltype(f()) {
+  try {
+    return std::forward<F>(f)();
+  } catch (...) {
+    throwAsError(otherwise);
+  }
+}
+
+// For the parts of the API whose failures are all bad parameters.
+template <class F>
+auto guarded(F&& f) -> decltype(f()) {
+  return guarded(ErrorCode::Internal, std::forward<F>(f));
+}
+
+}  // namespace csgray::detail

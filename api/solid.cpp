@@ -1,0 +1,244 @@
+// csgray::Solid: the factories, booleans and transforms of the script's
+// solids, made with the same checks (scene/shapes.h, quadric_shapes.h).
+#include "csgray/solid.h"
+
+#include <filesystem>
+
+#include "api/access.h"
+#include "api/convert.h"
+#include "api/errors.h"
+#include "api/volume.h"
+#include "csgray/mesh.h"
+#include "meshfile/mesh_import.h"
+#include "primitives/convex_polyhedron.h"
+#include "primitives/quadric.h"
+#include "scene/quadric_shapes.h"
+#include "scene/rotation.h"
+#include "scene/shapes.h"
+
+namespace csgray {
+
+using detail::Access;
+using detail::guarded;
+using detail::toDetail;
+
+namespace {
+
+Solid wrap(detail::SolidPtr p) { return Access::solid(std::move(p)); }
+
+std::vector<detail::SolidPtr> internals(const std::vector<Solid>& solids) {
+  std::vector<detail::SolidPtr> out;
+  out.reserve(solids.size());
+  for (const Solid& s : solids) out.push_back(Access::of(s));
+  return out;
+}
+
+Solid namedQuadric(detail::NamedQuadric kind, detail::QuadricAxes axes) {
+  return guarded([&] { return wrap(detail::namedQuadricShape(kind, axes)); });
+}
+
+Solid platonic(detail::Platonic kind, double r) {
+  return guarded([&] { return wrap(detail::platonicSolid(kind, r)); });
+}
+
+Solid boolean(detail::Boolean::Op op, const std::vector<Solid>& solids) {
+  return guarded([&] { return wrap(detail::booleanShape(op, internals(solids))); });
+}
+
+}  // namespace
+
+Solid::Solid(std::shared_ptr<const detail::Solid> impl) : impl_(std::move(impl)) {}
+
+Solid Solid::sphere(double r) {
+  return guarded([&] { return wrap(detail::sphereShape(r, std::nullopt)); });
+}
+
+Solid Solid::ellipsoid(const Vec3& radii) {
+  return guarded([&] { return wrap(detail::ellipsoidShape(toDetail(radii))); });
+}
+
+Solid Solid::box(const Vec3& size, bool center) {
+  return guarded([&] { return wrap(detail::boxShape(toDetail(size), center)); });
+}
+
+Solid Solid::box(double size, bool center) { return box(Vec3{size, size, size}, center); }
+
+Solid Solid::cylinder(double h, double r, bool center) {
+  detail::CylinderParams p;
+  p.h = h;
+  p.r = r;
+  p.center = center;
+  return guarded([&] { return wrap(detail::cylinderShape("cylinder", p)); });
+}
+
+Solid Solid::cone(double h, double r1, double r2, bool center) {
+  detail::CylinderParams p;
+  p.h = h;
+  p.r1 = r1;
+  p.r2 = r2;
+  p.center = center;
+  return guarded([&] { return wrap(detail::cylinderShape("cone", p)); });
+}
+
+Solid Solid::halfSpace(const Vec3& normal, double offset) {
+  return guarded([&] { return wrap(detail::halfSpaceShape(toDetail(normal), offset)); });
+}
+
+Solid Solid::torus(double R, double r) {
+  return guarded([&] { return wrap(detail::torusShape(R, r)); });
+}
+
+Solid Solid::quadric(const Matrix4& rows) {
+  return guarded([&] { return wrap(detail::Primitive::create<detail::Quadric>(toDetail(rows))); });
+}
+
+Solid Solid::hyperboloid1(double a, double b, double c) {
+  return namedQuadric(detail::NamedQuadric::Hyperboloid1, {a, b, c, {}});
+}
+Solid Solid::hyperboloid2(double a, double b, double c) {
+  return namedQuadric(detail::NamedQuadric::Hyperboloid2, {a, b, c, {}});
+}
+Solid Solid::ellipticCone(double a, double b, double c) {
+  return namedQuadric(detail::NamedQuadric::EllipticCone, {a, b, c, {}});
+}
+Solid Solid::ellipticParaboloid(double a, double b) {
+  return namedQuadric(detail::NamedQuadric::EllipticParaboloid, {a, b, {}, {}});
+}
+Solid Solid::hyperbolicParaboloid(double a, double b) {
+  return namedQuadric(detail::NamedQuadric::HyperbolicParaboloid, {a, b, {}, {}});
+}
+Solid Solid::ellipticCylinder(double a, double b) {
+  return namedQuadric(detail::NamedQuadric::EllipticCylinder, {a, b, {}, {}});
+}
+Solid Solid::hyperbolicCylinder(double a, double b) {
+  return namedQuadric(detail::NamedQuadric::HyperbolicCylinder, {a, b, {}, {}});
+}
+Solid Solid::parabolicCylinder(double p) {
+  return namedQuadric(detail::NamedQuadric::ParabolicCylinder, {{}, {}, {}, p});
+}
+
+Solid Solid::tetrahedron(double r) { return platonic(detail::Platonic::Tetrahedron, r); }
+Solid Solid::hexahedron(double r) { return platonic(detail::Platonic::Hexahedron, r); }
+Solid Solid::octahedron(double r) { return platonic(detail::Platonic::Octahedron, r); }
+Solid Solid::dodecahedron(double r) { return platonic(detail::Platonic::Dodecahedron, r); }
+Solid Solid::icosahedron(double r) { return platonic(detail::Platonic::Icosahedron, r); }
+
+Solid Solid::convex(const std::vector<Plane>& planes) {
+  return guarded([&] {
+    std::vector<detail::ConvexPolyhedron::Plane> made;
+    made.reserve(planes.size());
+    for (const Plane& p : planes) made.push_back({toDetail(p.normal), p.offset});
+    return wrap(detail::Primitive::create<detail::ConvexPolyhedron>(made, "convex"));
+  });
+}
+
+Solid Solid::polyhedron(const std::vector<Vec3>& points,
+                        const std::vector<std::vector<std::int64_t>>& faces) {
+  return guarded([&] {
+    std::vector<detail::dvec3> made;
+    made.reserve(points.size());
+    for (const Vec3& p : points) made.push_back(toDetail(p));
+    return wrap(detail::Primitive::create<detail::MeshSolid>(made, faces));
+  });
+}
+
+Solid Solid::fromMesh(const Mesh& mesh) {
+  return guarded([&] {
+    detail::TriangleMesh made;
+    made.points.reserve(mesh.vertices.size());
+    for (const Vec3& p : mesh.vertices) made.points.push_back(toDetail(p));
+    made.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+    return wrap(detail::meshShape(made, "mesh"));
+  });
+}
+
+Solid Solid::fromMeshFile(const std::string& path, bool repair, std::string* repairReport) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw Error(ErrorCode::IoError, "mesh: " + path + ": no such file");
+  return guarded(ErrorCode::IoError, [&] {
+    std::string report;
+    try {
+      Solid solid = wrap(detail::meshShape(detail::importMesh(path, repair, report), path));
+      if (repairReport) *repairReport = report;
+      return solid;
+    } catch (const std::invalid_argument& e) {
+      // As the script's mesh{} says it.
+      throw std::invalid_argument("mesh: " + std::string(e.what()));
+    }
+  });
+}
+
+Solid Solid::unionOf(const std::vector<Solid>& solids) {
+  return boolean(detail::Boolean::Op::Union, solids);
+}
+Solid Solid::intersectionOf(const std::vector<Solid>& solids) {
+  return boolean(detail::Boolean::Op::Intersection, solids);
+}
+Solid Solid::differenceOf(const std::vector<Solid>& solids) {
+  return boolean(detail::Boolean::Op::Difference, solids);
+}
+Solid Solid::operator+(const Solid& other) const { return unionOf({*this, other}); }
+Solid Solid::operator-(const Solid& other) const { return differenceOf({*this, other}); }
+Solid Solid::operator*(const Solid& other) const { return intersectionOf({*this, other}); }
+
+Solid Solid::clip(const Bounds& box) const {
+  return guarded([&] {
+    detail::SolidPtr cutter = detail::clipBoxShape(toDetail(box.lo), toDetail(box.hi));
+    return wrap(detail::clippedShape(impl_, {cutter}));
+  });
+}
+
+Solid Solid::clip(const std::vector<Solid>& cutters) const {
+  return guarded([&] { return wrap(detail::clippedShape(impl_, internals(cutters))); });
+}
+
+Solid Solid::translate(const Vec3& offset) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::Affine::translation(toDetail(offset)))); });
+}
+
+Solid Solid::rotate(const Vec3& degrees) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::rotationDegrees(toDetail(degrees)))); });
+}
+
+Solid Solid::rotate(double degrees, const Vec3& axis) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::rotationDegrees(degrees, toDetail(axis)))); });
+}
+
+Solid Solid::scale(const Vec3& factors) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::Affine::scaling(toDetail(factors)))); });
+}
+
+Solid Solid::scale(double factor) const { return scale(Vec3{factor, factor, factor}); }
+
+Solid Solid::mirror(const Vec3& normal) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::Affine::mirror(toDetail(normal)))); });
+}
+
+Solid Solid::transform(const Matrix4& rows) const {
+  return guarded(
+      [&] { return wrap(impl_->transformed(detail::Affine::fromMatrix(toDetail(rows)))); });
+}
+
+Solid Solid::material(const Material& material) const {
+  return guarded([&] { return wrap(detail::solidWithMaterial(impl_, toDetail(material))); });
+}
+
+Bounds Solid::bounds() const { return detail::toPublic(impl_->bounds()); }
+
+bool Solid::contains(const Vec3& point) const { return impl_->contains(toDetail(point)); }
+
+double Solid::volume(int grid) const {
+  return guarded([&] { return detail::gridVolume(*impl_, grid); });
+}
+
+std::string Solid::kind() const { return impl_->kind(); }
+
+std::size_t Solid::primitiveCount() const { return impl_->primitiveCount(); }
+
+}  // namespace csgray

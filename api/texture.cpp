@@ -1,0 +1,88 @@
+// csgray::Texture: the script's textures (scene/texture.h), with the same
+// checks.
+#include "api/access.h"
+#include "api/convert.h"
+#include "api/errors.h"
+#include "csgray/material.h"
+#include "io/image_file.h"
+
+namespace csgray {
+
+using detail::Access;
+using detail::guarded;
+using detail::toDetail;
+
+namespace {
+
+detail::TexturePlacement placementOf(const Texture::Placement& p) {
+  return {toDetail(p.scale), toDetail(p.rotate), toDetail(p.translate)};
+}
+
+std::optional<detail::ColorPair> colorsOf(const std::optional<Texture::Colors>& colors) {
+  if (!colors) return std::nullopt;
+  return detail::ColorPair(toDetail(colors->first), toDetail(colors->second));
+}
+
+detail::NoiseKind noiseOf(Texture::Noise kind) {
+  switch (kind) {
+    case Texture::Noise::Perlin:
+      return detail::NoiseKind::Perlin;
+    case Texture::Noise::Turbulence:
+      return detail::NoiseKind::Turbulence;
+    case Texture::Noise::Marble:
+      return detail::NoiseKind::Marble;
+    case Texture::Noise::Wood:
+      return detail::NoiseKind::Wood;
+  }
+  return detail::NoiseKind::Perlin;
+}
+
+detail::ImageMapping mappingOf(Texture::Mapping mapping) {
+  switch (mapping) {
+    case Texture::Mapping::Planar:
+      return detail::ImageMapping::Planar;
+    case Texture::Mapping::Spherical:
+      return detail::ImageMapping::Spherical;
+    case Texture::Mapping::Cylindrical:
+      return detail::ImageMapping::Cylindrical;
+    case Texture::Mapping::Box:
+      return detail::ImageMapping::Box;
+  }
+  return detail::ImageMapping::Planar;
+}
+
+}  // namespace
+
+Texture::Texture(std::shared_ptr<const detail::Texture> impl) : impl_(std::move(impl)) {}
+
+Texture Texture::checker(const std::optional<Colors>& colors, double size,
+                         const Placement& placement) {
+  return guarded([&] {
+    return Texture(detail::placedChecker(colorsOf(colors), size, placementOf(placement)));
+  });
+}
+
+Texture Texture::noise(Noise kind, const std::optional<Colors>& colors, int octaves,
+                       double strength, const Placement& placement) {
+  return guarded([&] {
+    return Texture(detail::placedNoise(noiseOf(kind), colorsOf(colors), octaves, strength,
+                                       placementOf(placement)));
+  });
+}
+
+Texture Texture::image(const std::string& path, Mapping mapping, const Placement& placement) {
+  // readTextureImage's errors (a missing or unreadable file) are IoError.
+  auto image = guarded(ErrorCode::IoError, [&] {
+    return std::make_shared<detail::TextureImage>(detail::readTextureImage(path));
+  });
+  return guarded([&] {
+    return Texture(
+        detail::placedImage(std::move(image), mappingOf(mapping), placementOf(placement)));
+  });
+}
+
+Vec3 Texture::colorAt(const Vec3& point, const Vec3& normal) const {
+  return detail::toPublic(impl_->colorAt(toDetail(point), toDetail(normal)));
+}
+
+}  // namespace csgray

@@ -1,0 +1,43 @@
+// A plate with two holes and a ball on top, made with the csgray library,
+// rendered to part.png and exported to part.stl in the folder given (the
+// current one by default).
+#include <csgray/csgray.h>
+
+#include <cstdio>
+#include <string>
+
+int main(int argc, char** argv) {
+  const std::string folder = argc > 1 ? argv[1] : ".";
+  try {
+    using csgray::Solid;
+    // A 40 × 30 × 8 plate centred on the origin, two holes of radius 4
+    // through it, and a ball of radius 6 whose centre is on its top face.
+    const Solid plate = Solid::box({40, 30, 8}, true);
+    const Solid hole = Solid::cylinder(10, 4, true);
+    const Solid holes = Solid::unionOf({hole.translate({-12, 0, 0}), hole.translate({12, 0, 0})});
+    const Solid ball = Solid::sphere(6).translate({0, 0, 4});
+    csgray::Material steel;
+    steel.color = {0.55, 0.6, 0.7};
+    steel.specular = 0.4;
+    const Solid part = (plate - holes + ball).material(steel);
+
+    csgray::Scene scene(part);
+    scene.add(csgray::Surface::plane({0, 0, 1}, -4));  // a floor under the plate
+    csgray::RenderOptions options;
+    options.width = 640;
+    options.height = 480;
+    const csgray::Image image = csgray::render(scene, options);
+    csgray::writeImage(image, folder + "/part.png");
+    std::printf("rendered %s/part.png (%d x %d pixels)\n", folder.c_str(), image.width,
+                image.height);
+
+    const csgray::Mesh mesh = csgray::exportMesh(part);
+    csgray::writeMesh(mesh, folder + "/part.stl");
+    std::printf("exported %s/part.stl (%zu triangles, volume %.2f; exact %.2f)\n", folder.c_str(),
+                mesh.triangles.size(), mesh.volume(), part.volume());
+  } catch (const csgray::Error& e) {
+    std::fprintf(stderr, "part: %s error: %s\n", csgray::errorCodeName(e.code()), e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,85 @@
+// What a surface looks like: materials, and textures that vary the colour
+// over it. Colours are linear RGB. The parameters and their ranges are those
+// of the script's material{} and textures (docs/script.md).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "csgray/types.h"
+
+namespace csgray {
+
+namespace detail {
+class Texture;
+struct Access;
+}  // namespace detail
+
+// A colour that varies over a surface, as a function of the point in
+// texture space: the world as it was when the material was given to a
+// solid or surface, so that a texture moves with the part moved later.
+class CSGRAY_API Texture {
+ public:
+  // Where the pattern sits: scaled, then rotated (degrees about x, then y,
+  // then z), then translated.
+  struct Placement {
+    std::optional<Vec3> scale, rotate, translate;
+  };
+  // The two colours of a pattern.
+  struct Colors {
+    Vec3 first, second;
+  };
+  // How a bitmap wraps onto points (u, v in [0, 1), repeating).
+  enum class Mapping {
+    Planar,       // u = x, v = y
+    Spherical,    // longitude and latitude about the origin
+    Cylindrical,  // angle about z, and z
+    Box,          // planar onto the face of the unit cube the normal picks
+  };
+  enum class Noise {
+    Perlin,      // Perlin noise: one octave (octaves is not used)
+    Turbulence,  // the sum of |noise| over octaves
+    Marble,      // veins: sin(x + turbulence · strength)
+    Wood,        // rings about the z axis, disturbed by turbulence
+  };
+
+  // Cubes of edge size in the first and second colour (default: white and
+  // dark grey).
+  static Texture checker(const std::optional<Colors>& colors = std::nullopt, double size = 1.0,
+                         const Placement& placement = {});
+  // Fractal noise blending the two colours (defaults depend on the kind);
+  // octaves from 1 to 16, strength >= 0.
+  static Texture noise(Noise kind, const std::optional<Colors>& colors = std::nullopt,
+                       int octaves = 6, double strength = 4.0, const Placement& placement = {});
+  // An image file (PNG, JPEG, EXR, ...) wrapped by the mapping.
+  static Texture image(const std::string& path, Mapping mapping = Mapping::Planar,
+                       const Placement& placement = {});
+
+  // The colour at a point of texture space where the surface has the given
+  // normal.
+  Vec3 colorAt(const Vec3& point, const Vec3& normal) const;
+
+ private:
+  explicit Texture(std::shared_ptr<const detail::Texture> impl);
+  std::shared_ptr<const detail::Texture> impl_;
+  friend struct detail::Access;
+};
+
+// Every field has the script's default; Scene and Solid::material check
+// the ranges.
+struct Material {
+  Vec3 color{0.8, 0.8, 0.8};       // components >= 0
+  std::optional<Texture> texture;  // when set, gives the colour in place of color
+  double ambient = 0.1;            // [0, 1]: share of the colour seen without light
+  double diffuse = 0.9;            // [0, 1]: Lambert factor
+  double specular = 0.0;           // [0, 1]: Phong highlight
+  double shininess = 20.0;         // > 0: Phong exponent
+  double reflection = 0.0;         // [0, 1]: share of the mirrored ray's colour
+  double transparency = 0.0;       // [0, 1]: share of the light behind that passes
+  Vec3 filter{1.0, 1.0, 1.0};      // components in [0, 1]: tint of the light passing
+  double ior = 1.0;                // 1 to 10: index of refraction
+  bool fresnel = false;            // weigh reflection and refraction by Fresnel's equations
+};
+
+}  // namespace csgray

@@ -1,0 +1,40 @@
+// Ray tracing a scene to an image: exact intersections with the solids,
+// shading with shadows, reflections and refraction (docs/cli.md, render).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "csgray/scene.h"
+#include "csgray/types.h"
+
+namespace csgray {
+
+struct RenderOptions {
+  int width = 800, height = 600;  // pixels, 1 to 16384 a side
+  int threads = 0;                // 0: one per core
+  int samples = 1;                // rays per pixel, jittered (antialiasing): 1 to 1024
+  bool adaptive = false;          // spend the samples only on pixels at edges
+};
+
+// Linear RGB floats, row-major from the top left.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // width · height · 3
+
+  Vec3 at(int x, int y) const {
+    const float* p = &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    return {p[0], p[1], p[2]};
+  }
+};
+
+// The scene as the csgray command renders it, pixel for pixel.
+CSGRAY_API Image render(const Scene& scene, const RenderOptions& options = {});
+
+// Writes the image; the extension picks the format: PNG (8-bit sRGB), or
+// through OpenImageIO others such as .jpg, .tif, .exr (EXR keeps the
+// floats). The write is atomic: a failed one leaves any old file as it was.
+CSGRAY_API void writeImage(const Image& image, const std::string& path);
+
+}  // namespace csgray

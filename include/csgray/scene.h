@@ -1,0 +1,157 @@
+// What a render shows: solids and open surfaces, lights, a camera and a
+// background, as a script's scene{} describes them (docs/script.md,
+// Scenes). Scene checks what it is given as the script does, and throws
+// csgray::Error (InvalidArgument) with the same message.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "csgray/material.h"
+#include "csgray/solid.h"
+#include "csgray/types.h"
+
+namespace csgray {
+
+namespace detail {
+class Surface;
+struct Access;
+}  // namespace detail
+
+// A planar surface that is not a solid: it encloses no volume, so it takes
+// no part in booleans and is not exported, but it renders (a floor, a
+// wall). An immutable value like Solid.
+class CSGRAY_API Surface {
+ public:
+  // The infinite plane normal · p = offset.
+  static Surface plane(const Vec3& normal = {0, 0, 1}, double offset = 0.0);
+  // A disc of radius r about center.
+  static Surface disc(double r, const Vec3& center = {}, const Vec3& normal = {0, 0, 1});
+  static Surface triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+  // origin + s·u + t·v for s, t in [0, 1].
+  static Surface parallelogram(const Vec3& origin, const Vec3& u, const Vec3& v);
+  // In the xy plane from the origin (centred on it with center), facing +z.
+  static Surface rectangle(double width, double height, bool center = false);
+  static Surface square(double size, bool center = false);
+
+  Surface translate(const Vec3& offset) const;
+  Surface rotate(const Vec3& degrees) const;
+  Surface rotate(double degrees, const Vec3& axis) const;
+  Surface scale(const Vec3& factors) const;
+  Surface mirror(const Vec3& normal) const;
+  Surface transform(const Matrix4& m) const;
+  Surface material(const Material& material) const;
+
+  // "plane", "disc", ...
+  std::string kind() const;
+  Bounds bounds() const;
+
+ private:
+  explicit Surface(std::shared_ptr<const detail::Surface> impl);
+  std::shared_ptr<const detail::Surface> impl_;
+  friend struct detail::Access;
+};
+
+// A light: each kind uses its own fields and the common ones. Messages name
+// the script function of its kind (point_light, spot_light, area_light,
+// sphere_light).
+struct Light {
+  enum class Kind { Point, Spot, Area, Sphere };
+  Kind kind = Kind::Point;
+  Vec3 position;  // the point, or the centre of an area light
+  Vec3 color{1.0, 1.0, 1.0};
+  double intensity = 1.0;
+  bool falloff = false;  // divide by the squared distance
+  // Spot: aimed at lookAt or along direction (one of them; neither: down
+  // -z), lighting angle degrees off its axis (0 to 90) by cos^exponent.
+  std::optional<Vec3> lookAt, direction;
+  double angle = 30.0;
+  double exponent = 1.0;
+  Vec3 u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0};  // Area: the rectangle's edges
+  double radius = 1.0;                      // Sphere
+  int samples = 16;                         // Area and Sphere: shadow rays, 1 to 1024
+
+  static Light point(const Vec3& position) {
+    Light light;
+    light.position = position;
+    return light;
+  }
+  static Light spot(const Vec3& position, const Vec3& lookAt, double angle = 30.0) {
+    Light light = point(position);
+    light.kind = Kind::Spot;
+    light.lookAt = lookAt;
+    light.angle = angle;
+    return light;
+  }
+  static Light area(const Vec3& center, const Vec3& u, const Vec3& v) {
+    Light light = point(center);
+    light.kind = Kind::Area;
+    light.u = u;
+    light.v = v;
+    return light;
+  }
+  static Light sphere(const Vec3& center, double radius) {
+    Light light = point(center);
+    light.kind = Kind::Sphere;
+    light.radius = radius;
+    return light;
+  }
+};
+
+struct Camera {
+  enum class Projection { Perspective, Orthographic };
+  Vec3 eye{0.0, -10.0, 0.0};
+  Vec3 lookAt{0.0, 0.0, 0.0};
+  Vec3 up{0.0, 0.0, 1.0};
+  double fov = 45.0;  // perspective: the horizontal view angle in degrees
+  Projection projection = Projection::Perspective;
+  // Orthographic only: the width of the view in model units; none fits
+  // the scene.
+  std::optional<double> width;
+};
+
+class CSGRAY_API Scene {
+ public:
+  Scene();
+  // A scene of one solid, as a script that returns a solid gives.
+  explicit Scene(const Solid& part);
+  Scene(const Scene& other);
+  Scene& operator=(const Scene& other);
+  Scene(Scene&& other);  // leaves other empty
+  Scene& operator=(Scene&& other) noexcept;
+  ~Scene();
+
+  Scene& add(const Solid& object);
+  Scene& add(const Surface& surface);
+  Scene& add(const Light& light);
+  Scene& setCamera(const Camera& camera);
+  Scene& setBackground(const Vec3& color);
+  // At most this many reflected or refracted rays in a chain (0 to 64),
+  // and none whose share of a pixel is below minWeight (0 to 1).
+  Scene& setMaxDepth(int depth);
+  Scene& setMinWeight(double weight);
+
+  std::vector<Solid> objects() const;
+  std::vector<Surface> surfaces() const;
+  // None: a default light beside the camera.
+  std::vector<Light> lights() const;
+  // None: the camera frames the objects' bounds.
+  std::optional<Camera> camera() const;
+  Vec3 background() const;
+  int maxDepth() const;
+  double minWeight() const;
+  // Of the objects and the bounded surfaces.
+  Bounds bounds() const;
+  // What would be printed: the objects, their union when there are several.
+  // Error (InvalidArgument) when there is none.
+  Solid part() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  friend struct detail::Access;
+};
+
+}  // namespace csgray

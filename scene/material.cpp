@@ -1,0 +1,31 @@
+#include "scene/material.h"
+
+#include <stdexcept>
+
+#include "engine/primitive.h"
+#include "scene/value_checks.h"
+
+namespace csgray::detail {
+
+void checkMaterial(const Material& m) {
+  const char* f = "material";
+  if (!m.texture) checkColor(f, "color", m.color);
+  checkUnit(f, "ambient", m.ambient);
+  checkUnit(f, "diffuse", m.diffuse);
+  checkUnit(f, "specular", m.specular);
+  checkPositive(f, "shininess", m.shininess);
+  checkUnit(f, "reflection", m.reflection);
+  checkUnit(f, "transparency", m.transparency);
+  checkColor(f, "filter", m.filter);
+  if (m.filter.x > 1.0 || m.filter.y > 1.0 || m.filter.z > 1.0)
+    throw std::invalid_argument("material: filter components must be in [0, 1]");
+  if (!(m.ior >= 1.0 && m.ior <= 10.0))
+    throw std::invalid_argument("material: ior must be from 1 to 10");
+}
+
+SolidPtr solidWithMaterial(const SolidPtr& solid, const MaterialPtr& material) {
+  if (auto* p = dynamic_cast<const Primitive*>(solid.get())) return p->withMaterial(material);
+  return solid->withDefaultMaterial(material);
+}
+
+}  // namespace csgray::detail

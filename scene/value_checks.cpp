@@ -1,0 +1,60 @@
+#include "scene/value_checks.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+namespace csgray::detail {
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& function, const char* key, const std::string& what) {
+  throw std::invalid_argument(function + ": " + key + " " + what);
+}
+
+}  // namespace
+
+void checkFinite(const std::string& function, const char* key, double value) {
+  if (!std::isfinite(value)) refuse(function, key, "must be finite");
+}
+
+void checkFinite(const std::string& function, const char* key, const dvec3& vector) {
+  if (!std::isfinite(vector.x) || !std::isfinite(vector.y) || !std::isfinite(vector.z))
+    refuse(function, key, "must be finite");
+}
+
+void checkUnit(const std::string& function, const char* key, double value) {
+  checkFinite(function, key, value);
+  if (value < 0.0 || value > 1.0) refuse(function, key, "must be in [0, 1]");
+}
+
+void checkPositive(const std::string& function, const char* key, double value) {
+  checkFinite(function, key, value);
+  if (!(value > 0.0)) refuse(function, key, "must be > 0");
+}
+
+void checkNonNegative(const std::string& function, const char* key, double value) {
+  checkFinite(function, key, value);
+  if (!(value >= 0.0)) refuse(function, key, "must be >= 0");
+}
+
+void checkColor(const std::string& function, const char* key, const dvec3& color) {
+  checkFinite(function, key, color);
+  if (color.x < 0.0 || color.y < 0.0 || color.z < 0.0)
+    refuse(function, key, "components must be >= 0");
+}
+
+void checkNonZero(const std::string& function, const char* key, const dvec3& vector) {
+  checkFinite(function, key, vector);
+  if (!(glm::length(vector) > 0.0)) refuse(function, key, "must not be the zero vector");
+}
+
+int checkWhole(const std::string& function, const char* key, double value, int lo, int hi) {
+  checkFinite(function, key, value);
+  if (value != std::floor(value) || value < lo || value > hi)
+    refuse(function, key,
+           "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return int(value);
+}
+
+}  // namespace csgray::detail

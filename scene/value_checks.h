@@ -1,0 +1,31 @@
+// Checks of the values a user gives a part or a scene (a script's
+// parameters, or the library's), with the messages both get: "material:
+// ambient must be in [0, 1]" names the function and the parameter as the
+// script spells them. Each throws std::invalid_argument. A script's numbers
+// are finite already; the library's may not be, and a NaN or an infinity is
+// refused as the script refuses one: "point_light: pos must be finite".
+#pragma once
+
+#include <string>
+
+#include "engine/ray.h"
+
+namespace csgray::detail {
+
+// Finite: no NaN or infinity.
+void checkFinite(const std::string& function, const char* key, double value);
+void checkFinite(const std::string& function, const char* key, const dvec3& vector);
+// In [0, 1].
+void checkUnit(const std::string& function, const char* key, double value);
+// > 0.
+void checkPositive(const std::string& function, const char* key, double value);
+// >= 0.
+void checkNonNegative(const std::string& function, const char* key, double value);
+// A colour: every component >= 0.
+void checkColor(const std::string& function, const char* key, const dvec3& color);
+// Not the zero vector.
+void checkNonZero(const std::string& function, const char* key, const dvec3& vector);
+// A whole number from lo to hi, returned as an int.
+int checkWhole(const std::string& function, const char* key, double value, int lo, int hi);
+
+}  // namespace csgray::detail

@@ -1,0 +1,44 @@
+// material{...} on solids and open surfaces (docs/script.md, Materials):
+// every key is optional, and color may be a texture.
+#include <memory>
+
+#include "script/api.h"
+#include "script/lua_args.h"
+#include "script/lua_values.h"
+
+namespace csgray::detail {
+
+MaterialPtr materialArg(lua_State* L, int index) {
+  LuaArgs args(L, index, "material");
+  auto m = std::make_shared<Material>();
+  if (args.push("color")) {
+    if (TexturePtr* texture = toValue<TexturePtr>(L, -1)) {
+      m->texture = *texture;
+      lua_pop(L, 1);
+    } else {
+      lua_pop(L, 1);
+      m->color = *args.vec3("color");
+    }
+  }
+  m->ambient = args.number("ambient").value_or(m->ambient);
+  m->diffuse = args.number("diffuse").value_or(m->diffuse);
+  m->specular = args.number("specular").value_or(m->specular);
+  m->shininess = args.number("shininess").value_or(m->shininess);
+  m->reflection = args.number("reflection").value_or(m->reflection);
+  m->transparency = args.number("transparency").value_or(m->transparency);
+  m->filter = args.vec3("filter").value_or(m->filter);
+  m->ior = args.number("ior").value_or(m->ior);
+  m->fresnel = args.boolean("fresnel").value_or(false);
+  checkMaterial(*m);
+  args.finish();
+  return m;
+}
+
+int solidMaterial(lua_State* L) {
+  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "method receiver (use ':')");
+  MaterialPtr m = materialArg(L, 2);
+  pushSolid(L, solidWithMaterial(solid, m));
+  return 1;
+}
+
+}  // namespace csgray::detail

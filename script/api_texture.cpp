@@ -1,0 +1,113 @@
+// Textures in the script (docs/script.md, Textures): checker{}, the noises
+// perlin{}, turbulence{}, marble{} and wood{}, and image_texture{}.
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "script/api.h"
+#include "script/lua_args.h"
+#include "script/lua_values.h"
+#include "script/script_path.h"
+
+namespace csgray::detail {
+
+namespace {
+
+// The two colours of a pattern: colors={{r, g, b}, {r, g, b}}.
+std::optional<ColorPair> colorsArg(lua_State* L, LuaArgs& args) {
+  if (!args.push("colors")) return std::nullopt;
+  std::string what = args.function() + ": colors";
+  if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 2)
+    throw std::invalid_argument(what + " must be a list of two colours {{r, g, b}, {r, g, b}}");
+  dvec3 c[2];
+  for (int i = 0; i < 2; ++i) {
+    lua_rawgeti(L, -1, i + 1);
+    c[i] = toVec3(L, -1, what + "[" + std::to_string(i + 1) + "]");
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return ColorPair(c[0], c[1]);
+}
+
+// scale=, rotate= and translate=, which every texture takes.
+TexturePlacement placementArgs(LuaArgs& args) {
+  TexturePlacement placement;
+  placement.scale = args.vec3("scale");
+  placement.rotate = args.vec3("rotate");
+  placement.translate = args.vec3("translate");
+  return placement;
+}
+
+int checker(lua_State* L) {
+  LuaArgs args(L, 1, "checker");
+  std::optional<ColorPair> colors = colorsArg(L, args);
+  double size = args.number("size").value_or(1.0);
+  TexturePtr texture = placedChecker(colors, size, placementArgs(args));
+  args.finish();
+  pushValue<TexturePtr>(L, std::move(texture));
+  return 1;
+}
+
+template <NoiseKind kind>
+int noise(lua_State* L) {
+  LuaArgs args(L, 1, noiseName(kind));
+  std::optional<ColorPair> colors = colorsArg(L, args);
+  // Plain Perlin noise is one octave; the others sum octaves.
+  double octaves = kind == NoiseKind::Perlin ? 1.0 : args.number("octaves").value_or(6.0);
+  double strength = args.number("strength").value_or(4.0);
+  TexturePtr texture = placedNoise(kind, colors, octaves, strength, placementArgs(args));
+  args.finish();
+  pushValue<TexturePtr>(L, std::move(texture));
+  return 1;
+}
+
+int imageTexture(lua_State* L) {
+  LuaArgs args(L, 1, "image_texture");
+  std::optional<std::string> file = args.string("file");
+  std::string mappingName = args.string("mapping").value_or("planar");
+  TexturePlacement placement = placementArgs(args);
+  if (!file) throw std::invalid_argument("image_texture: needs file=\"name.png\"");
+  ImageMapping mapping;
+  if (mappingName == "planar")
+    mapping = ImageMapping::Planar;
+  else if (mappingName == "spherical")
+    mapping = ImageMapping::Spherical;
+  else if (mappingName == "cylindrical")
+    mapping = ImageMapping::Cylindrical;
+  else if (mappingName == "box")
+    mapping = ImageMapping::Box;
+  else
+    throw std::invalid_argument(
+        "image_texture: mapping must be \"planar\", \"spherical\", "
+        "\"cylindrical\" or \"box\", got \"" +
+        mappingName + "\"");
+  const ScriptOptions& options = scriptOptionsOf(L);
+  if (!options.loadImage)
+    throw std::invalid_argument("image_texture: this program cannot read images");
+  std::string path = scriptFile(L, "image_texture", *file);
+  auto image = std::make_shared<TextureImage>(options.loadImage(path));
+  Sandbox::of(L).charge(L, image->rgb.size() * sizeof(float));
+  TexturePtr texture = placedImage(std::move(image), mapping, placement);
+  args.finish();
+  pushValue<TexturePtr>(L, std::move(texture));
+  return 1;
+}
+
+}  // namespace
+
+void registerTextureApi(lua_State* L) {
+  newMetatable<TexturePtr>(L);
+  lua_pop(L, 1);
+  static const luaL_Reg globals[] = {
+      {"checker", guarded<checker>},
+      {"image_texture", guarded<imageTexture>},
+      {"perlin", guarded<noise<NoiseKind::Perlin>>},
+      {"turbulence", guarded<noise<NoiseKind::Turbulence>>},
+      {"marble", guarded<noise<NoiseKind::Marble>>},
+      {"wood", guarded<noise<NoiseKind::Wood>>},
+  };
+  for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
+}
+
+}  // namespace csgray::detail

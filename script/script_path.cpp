@@ -1,0 +1,37 @@
+#include "script/script_path.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+#include "script/api.h"
+
+namespace csgray::detail {
+
+std::string scriptFile(lua_State* L, const std::string& function, const std::string& name) {
+  namespace fs = std::filesystem;
+  const ScriptOptions& options = scriptOptionsOf(L);
+  if (name.empty()) throw std::invalid_argument(function + ": file is empty");
+  // The file system would stop at a NUL byte: "a.png\0/../../x" would open
+  // a.png, and messages would be cut short there.
+  if (name.find('\0') != std::string::npos)
+    throw std::invalid_argument(function + ": file name contains a NUL byte");
+  fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
+  fs::path file = fs::weakly_canonical(folder / fs::path(name));
+  auto inside = [&file](const fs::path& dir) {
+    auto [end, _] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
+    return end == dir.end();
+  };
+  // Symbolic links are followed before the check (weakly_canonical), so a
+  // link cannot lead out either.
+  if (!fs::path(name).is_absolute() && inside(folder)) return file.string();
+  for (const std::string& allowed : options.allowedFolders)
+    if (inside(fs::weakly_canonical(fs::absolute(allowed)))) return file.string();
+  throw std::invalid_argument(function + ": file " + name +
+                              " is outside the script's folder; give a path relative to it" +
+                              (options.allowedFolders.empty()
+                                   ? std::string(", or allow its folder with --allow-path")
+                                   : std::string(" or inside a folder given with --allow-path")));
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,463 @@
+// The public API (include/csgray/), linked as a user links it, against the
+// shared library: analytic volumes of shapes and booleans, containment,
+// errors with the script's messages, export, check, render and scripts.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "csgray/csgray.h"
+
+namespace {
+
+using csgray::Error;
+using csgray::ErrorCode;
+using csgray::Solid;
+using csgray::Vec3;
+
+constexpr double kPi = std::numbers::pi;
+
+void expectVolume(const Solid& solid, double exact, double relative = 1e-3) {
+  EXPECT_NEAR(solid.volume(), exact, relative * exact) << solid.kind();
+}
+
+// What f throws: its code and message.
+std::pair<ErrorCode, std::string> errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return {e.code(), e.what()};
+  }
+  ADD_FAILURE() << "no error";
+  return {ErrorCode::Internal, ""};
+}
+
+// The message of a one-line script that fails, without its "part.lua:1: ".
+std::string scriptMessage(const std::string& source) {
+  auto [code, message] = errorOf([&] { csgray::runScriptText(source, "part.lua"); });
+  EXPECT_EQ(code, ErrorCode::ScriptError) << source;
+  EXPECT_EQ(message.rfind("part.lua:1: ", 0), 0u) << message;
+  return message.substr(std::min<std::size_t>(message.size(), 12));
+}
+
+TEST(ApiSolid, VolumesOfShapesAreAnalytic) {
+  expectVolume(Solid::sphere(2), 4.0 / 3.0 * kPi * 8.0);
+  expectVolume(Solid::box({2, 3, 4}), 24.0, 1e-12);
+  expectVolume(Solid::box(3, true), 27.0, 1e-12);
+  expectVolume(Solid::cylinder(2, 1), 2 * kPi);
+  expectVolume(Solid::cone(3, 2, 1), kPi * 3 * (4 + 2 + 1) / 3);
+  expectVolume(Solid::ellipsoid({1, 2, 3}), 4.0 / 3.0 * kPi * 6);
+  expectVolume(Solid::torus(3, 1), 2 * kPi * kPi * 3);
+  expectVolume(Solid::octahedron(2), 4.0 / 3.0 * 8);
+  expectVolume(Solid::hexahedron(std::sqrt(3.0)), 8.0, 1e-9);
+  // A unit cube from half-spaces, and from a polyhedron's faces.
+  std::vector<csgray::Plane> planes;
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 n;
+    (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = 1;
+    planes.push_back({n, 1});
+    planes.push_back({-1 * n, 0});
+  }
+  expectVolume(Solid::convex(planes), 1.0, 1e-9);
+  // An unbounded quadric bounded by clip: a circular cylinder of radius 1.
+  expectVolume(Solid::ellipticCylinder(1, 1).clip(csgray::Bounds{{-2, -2, 0}, {2, 2, 5}}), 5 * kPi);
+}
+
+TEST(ApiSolid, VolumesOfBooleansAreAnalytic) {
+  const Solid a = Solid::sphere(1), b = Solid::sphere(1).translate({1, 0, 0});
+  // Two unit balls one radius apart share a lens of π(4r + d)(2r − d)²/12.
+  const double lens = kPi * 5.0 / 12.0;
+  expectVolume(a * b, lens);
+  expectVolume(a + b, 2 * 4.0 / 3.0 * kPi - lens);
+  expectVolume(a - b, 4.0 / 3.0 * kPi - lens);
+  // A cube with a hole through it, and the n-ary forms.
+  const Solid cube = Solid::box(10, true);
+  const Solid hole = Solid::cylinder(12, 2, true);
+  expectVolume(cube - hole, 1000 - kPi * 4 * 10);
+  expectVolume(Solid::differenceOf({cube, hole, hole.rotate({90, 0, 0})}),
+               1000 - 2 * kPi * 4 * 10 + 16.0 / 3.0 * 8);  // two holes meet in a Steinmetz solid
+  // (Cells that straddle a box's face are sampled: within 1e-3 again.)
+  expectVolume(Solid::unionOf({Solid::box(1), Solid::box(1).translate({2, 0, 0})}), 2.0);
+  expectVolume(Solid::intersectionOf({Solid::box(2), Solid::box(2).translate({1, 1, 1})}), 1.0,
+               1e-12);
+  // Transforms: a scale multiplies the volume by its determinant.
+  expectVolume(Solid::sphere(1).scale({2, 3, 4}), 4.0 / 3.0 * kPi * 24);
+  expectVolume(Solid::box(1).mirror({1, 1, 0}).rotate(30, {1, 2, 3}), 1.0, 1e-3);
+  EXPECT_EQ(Solid::sphere(1).primitiveCount(), 1u);
+  EXPECT_EQ((cube - hole).kind(), "difference");
+  // An unbounded solid has no volume.
+  EXPECT_EQ(errorOf([] {
+              Solid::halfSpace({0, 0, 1}).volume();
+            }).first,
+            ErrorCode::InvalidArgument);
+}
+
+TEST(ApiSolid, ContainsKnownPoints) {
+  const Solid ball = Solid::sphere(1);
+  EXPECT_TRUE(ball.contains({0, 0, 0}));
+  EXPECT_TRUE(ball.contains({0.99, 0, 0}));
+  EXPECT_FALSE(ball.contains({1.01, 0, 0}));
+  const Solid part = Solid::box(10, true) - Solid::cylinder(12, 2, true);
+  EXPECT_FALSE(part.contains({0, 0, 0}));  // in the hole
+  EXPECT_TRUE(part.contains({3, 0, 0}));
+  EXPECT_FALSE(part.contains({6, 0, 0}));  // outside the cube
+  const Solid moved = part.translate({100, 0, 0});
+  EXPECT_TRUE(moved.contains({103, 0, 0}));
+  EXPECT_FALSE(moved.contains({3, 0, 0}));
+  // Bounds of a moved box, and of an unbounded solid.
+  const csgray::Bounds b = Solid::box({1, 2, 3}).translate({1, 1, 1}).bounds();
+  EXPECT_EQ(b.lo, (Vec3{1, 1, 1}));
+  EXPECT_EQ(b.hi, (Vec3{2, 3, 4}));
+  EXPECT_FALSE(Solid::halfSpace({0, 0, 1}).bounds().finite());
+}
+
+// A bad parameter is InvalidArgument with the message the script gives for
+// the same call.
+TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
+  struct Case {
+    std::string script;
+    std::function<void()> call;
+  } cases[] = {
+      {"return sphere(-1)", [] { Solid::sphere(-1); }},
+      {"return sphere(0)", [] { Solid::sphere(0); }},
+      {"return box{0, 1, 1}",
+       [] {
+         Solid::box({0, 1, 1});
+       }},
+      {"return cylinder{h=2, r=-1}", [] { Solid::cylinder(2, -1); }},
+      {"return cylinder{h=0, r=1}", [] { Solid::cylinder(0, 1); }},
+      {"return cone{h=2, r1=-1}", [] { Solid::cone(2, -1); }},
+      {"return cone{h=2, r1=0, r2=0}", [] { Solid::cone(2, 0, 0); }},
+      {"return torus{R=-1, r=1}", [] { Solid::torus(-1, 1); }},
+      {"return torus{R=2, r=0}", [] { Solid::torus(2, 0); }},
+      {"return ellipsoid{radii={1, 0, 1}}",
+       [] {
+         Solid::ellipsoid({1, 0, 1});
+       }},
+      {"return half_space{normal={0, 0, 0}}",
+       [] {
+         Solid::halfSpace({0, 0, 0});
+       }},
+      {"return hyperboloid1{a=1, b=-2, c=1}", [] { Solid::hyperboloid1(1, -2, 1); }},
+      {"return parabolic_cylinder{p=0}", [] { Solid::parabolicCylinder(0); }},
+      {"return elliptic_cylinder{a=1e-300, b=1}", [] { Solid::ellipticCylinder(1e-300, 1); }},
+      {"return icosahedron(-2)", [] { Solid::icosahedron(-2); }},
+      {"return convex{planes={{normal={0, 0, 0}, offset=1}}}",
+       [] {
+         Solid::convex({{{0, 0, 0}, 1}});
+       }},
+      {"return polyhedron{points={{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, faces={{0, 1, 2}}}",
+       [] {
+         Solid::polyhedron({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+       }},
+      {"return clip(half_space{normal={0, 0, 1}}, {lo={0, 0, 0}, hi={1, -1, 1}})",
+       [] {
+         Solid::halfSpace({0, 0, 1}).clip(csgray::Bounds{{0, 0, 0}, {1, -1, 1}});
+       }},
+      {"return sphere(1):scale(1, 0, 1)",
+       [] {
+         Solid::sphere(1).scale({1, 0, 1});
+       }},
+      {"return sphere(1):material{ambient=2}",
+       [] {
+         csgray::Material m;
+         m.ambient = 2;
+         Solid::sphere(1).material(m);
+       }},
+      {"return sphere(1):material{color=checker{size=0}}",
+       [] { csgray::Texture::checker(std::nullopt, 0); }},
+      {"return sphere(1):material{color=wood{octaves=17}}",
+       [] { csgray::Texture::noise(csgray::Texture::Noise::Wood, std::nullopt, 17); }},
+      {"return disc{r=0}", [] { csgray::Surface::disc(0); }},
+      {"return square{size=-1}", [] { csgray::Surface::square(-1); }},
+      {"return plane{normal={0, 0, 0}}",
+       [] {
+         csgray::Surface::plane({0, 0, 0});
+       }},
+  };
+  for (const Case& c : cases) {
+    auto [code, message] = errorOf(c.call);
+    EXPECT_EQ(code, ErrorCode::InvalidArgument) << c.script;
+    EXPECT_FALSE(message.empty());
+    EXPECT_EQ(message, scriptMessage(c.script));
+  }
+}
+
+TEST(ApiScene, BadValuesGiveTheScriptsMessages) {
+  const std::string objects = "return scene{objects=sphere(1), ";
+  struct Case {
+    std::string script;
+    std::function<void(csgray::Scene&)> call;
+  } cases[] = {
+      {objects + "camera=camera{eye={0, 0, 0}, look_at={0, 0, 0}}}",
+       [](csgray::Scene& s) {
+         csgray::Camera c;
+         c.eye = c.lookAt = {0, 0, 0};
+         s.setCamera(c);
+       }},
+      {objects + "camera=camera{fov=180}}",
+       [](csgray::Scene& s) {
+         csgray::Camera c;
+         c.fov = 180;
+         s.setCamera(c);
+       }},
+      {objects + "camera=camera{width=10}}",
+       [](csgray::Scene& s) {
+         csgray::Camera c;
+         c.width = 10;
+         s.setCamera(c);
+       }},
+      {objects + "camera=camera{up={0, 1, 0}, eye={0, -5, 0}}}",
+       [](csgray::Scene& s) {
+         csgray::Camera c;
+         c.up = {0, 1, 0};
+         c.eye = {0, -5, 0};
+         s.setCamera(c);
+       }},
+      {objects + "lights=spot_light{pos={0, 0, 1}, look_at={0, 0, 0}, angle=90}}",
+       [](csgray::Scene& s) {
+         s.add(csgray::Light::spot({0, 0, 1}, {0, 0, 0}, 90));
+       }},
+      {objects + "lights=area_light{pos={0, 0, 1}, u={1, 0, 0}, v={2, 0, 0}}}",
+       [](csgray::Scene& s) {
+         s.add(csgray::Light::area({0, 0, 1}, {1, 0, 0}, {2, 0, 0}));
+       }},
+      {objects + "lights=sphere_light{pos={0, 0, 1}, r=1, samples=0}}",
+       [](csgray::Scene& s) {
+         csgray::Light l = csgray::Light::sphere({0, 0, 1}, 1);
+         l.samples = 0;
+         s.add(l);
+       }},
+      {objects + "lights=point_light{pos={0, 0, 1}, intensity=-1}}",
+       [](csgray::Scene& s) {
+         csgray::Light l = csgray::Light::point({0, 0, 1});
+         l.intensity = -1;
+         s.add(l);
+       }},
+      {objects + "max_depth=65}", [](csgray::Scene& s) { s.setMaxDepth(65); }},
+      {objects + "min_weight=2}", [](csgray::Scene& s) { s.setMinWeight(2); }},
+      {objects + "background={-1, 0, 0}}",
+       [](csgray::Scene& s) {
+         s.setBackground({-1, 0, 0});
+       }},
+  };
+  for (const Case& c : cases) {
+    csgray::Scene scene(Solid::sphere(1));
+    auto [code, message] = errorOf([&] { c.call(scene); });
+    EXPECT_EQ(code, ErrorCode::InvalidArgument) << c.script;
+    EXPECT_EQ(message, scriptMessage(c.script));
+  }
+  // A scene without objects renders nothing, as scene{} says.
+  auto [code, message] = errorOf([] { csgray::render(csgray::Scene(), {16, 16}); });
+  EXPECT_EQ(code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(message, scriptMessage("return scene{}"));
+}
+
+TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
+  csgray::Scene scene(Solid::sphere(1));
+  scene.add(csgray::Surface::plane({0, 0, 1}, -1));
+  scene.add(csgray::Light::spot({0, 0, 5}, {0, 0, 0}, 20));
+  csgray::Camera camera;
+  camera.projection = csgray::Camera::Projection::Orthographic;
+  camera.width = 4;
+  scene.setCamera(camera).setBackground({0.1, 0.2, 0.3}).setMaxDepth(3);
+  const csgray::Scene copy = scene;
+  scene.add(Solid::box(1));
+  EXPECT_EQ(scene.objects().size(), 2u);
+  EXPECT_EQ(copy.objects().size(), 1u);
+  ASSERT_EQ(copy.surfaces().size(), 1u);
+  EXPECT_EQ(copy.surfaces()[0].kind(), "plane");
+  ASSERT_EQ(copy.lights().size(), 1u);
+  EXPECT_EQ(copy.lights()[0].kind, csgray::Light::Kind::Spot);
+  EXPECT_EQ(copy.lights()[0].angle, 20.0);
+  ASSERT_TRUE(copy.lights()[0].direction);
+  EXPECT_EQ(*copy.lights()[0].direction, (Vec3{0, 0, -5}));
+  ASSERT_TRUE(copy.camera());
+  EXPECT_EQ(copy.camera()->width, 4.0);
+  EXPECT_EQ(copy.background(), (Vec3{0.1, 0.2, 0.3}));
+  EXPECT_EQ(copy.maxDepth(), 3);
+  EXPECT_EQ(copy.part().kind(), "sphere");
+  EXPECT_EQ(scene.part().kind(), "union");
+  EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);
+}
+
+TEST(ApiExport, ASphereIsClosedAndWithinTheTolerance) {
+  const double r = 5, tolerance = 0.01;
+  csgray::ExportOptions options;
+  options.tolerance = tolerance;
+  const csgray::Mesh mesh = csgray::exportMesh(Solid::sphere(r), options);
+  ASSERT_GT(mesh.triangles.size(), 100u);
+  const csgray::MeshDefect defect = csgray::meshDefect(mesh);
+  EXPECT_EQ(defect.kind, csgray::MeshDefect::Kind::None) << defect.text;
+  // Every point of the mesh is within the tolerance of the surface, so its
+  // volume is within the tolerance times the area.
+  const double exact = 4.0 / 3.0 * kPi * r * r * r;
+  EXPECT_NEAR(mesh.volume(), exact, tolerance * 4 * kPi * r * r);
+  for (const Vec3& p : mesh.vertices)
+    EXPECT_NEAR(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), r, tolerance);
+  // One triangle's material per triangle; the sphere has none.
+  EXPECT_EQ(mesh.triangleMaterial.size(), mesh.triangles.size());
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_FALSE(mesh.materials[0]);
+}
+
+TEST(ApiExport, DefectsAndFailuresAreTyped) {
+  csgray::Mesh open = csgray::exportMesh(Solid::box(1));
+  open.triangles.pop_back();
+  const csgray::MeshDefect defect = csgray::meshDefect(open);
+  EXPECT_EQ(defect.kind, csgray::MeshDefect::Kind::Open);
+  EXPECT_EQ(defect.text.rfind("open: ", 0), 0u) << defect.text;
+  EXPECT_EQ(csgray::meshDefect(csgray::Mesh()).kind, csgray::MeshDefect::Kind::Empty);
+  // An unbounded part cannot be printed.
+  EXPECT_EQ(errorOf([] {
+              csgray::exportMesh(Solid::halfSpace({0, 0, 1}));
+            }).first,
+            ErrorCode::NotPrintable);
+  csgray::ExportOptions coarse;
+  coarse.tolerance = 0;
+  EXPECT_EQ(errorOf([&] { csgray::exportMesh(Solid::box(1), coarse); }).first,
+            ErrorCode::InvalidArgument);
+}
+
+class ApiFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() /
+              ("csgray_api_test_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+  std::string path(const std::string& name) const { return (folder_ / name).string(); }
+
+  std::filesystem::path folder_;
+};
+
+TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
+  const Solid part = Solid::box(10, true) - Solid::cylinder(12, 2, true);
+  const csgray::Mesh mesh = csgray::exportMesh(part);
+  csgray::writeMesh(mesh, path("part.stl"));
+  const csgray::Mesh back = csgray::readMesh(path("part.stl"));
+  EXPECT_EQ(back.triangles.size(), mesh.triangles.size());
+  EXPECT_NEAR(back.volume(), mesh.volume(), 1e-3);
+  EXPECT_EQ(csgray::meshDefect(back).kind, csgray::MeshDefect::Kind::None);
+  // The mesh read back is a solid again.
+  EXPECT_NEAR(Solid::fromMeshFile(path("part.stl")).volume(), mesh.volume(), 0.01 * mesh.volume());
+  EXPECT_NEAR(Solid::fromMesh(back).volume(), mesh.volume(), 0.01 * mesh.volume());
+
+  csgray::Image image = csgray::render(csgray::Scene(part), {64, 48});
+  ASSERT_EQ(image.width, 64);
+  ASSERT_EQ(image.height, 48);
+  ASSERT_EQ(image.rgb.size(), 64u * 48u * 3u);
+  csgray::writeImage(image, path("part.png"));
+  EXPECT_GT(std::filesystem::file_size(path("part.png")), 100u);
+
+  // Files that cannot be written or read are IoError; a format there is
+  // none of is InvalidArgument.
+  EXPECT_EQ(errorOf([&] { csgray::writeMesh(mesh, path("no/such/folder/part.stl")); }).first,
+            ErrorCode::IoError);
+  EXPECT_EQ(errorOf([&] { csgray::writeMesh(mesh, path("part.xyz")); }).first,
+            ErrorCode::InvalidArgument);
+  EXPECT_EQ(errorOf([&] { csgray::readMesh(path("missing.stl")); }).first, ErrorCode::IoError);
+  EXPECT_EQ(errorOf([&] { csgray::writeImage(image, path("no/such/folder/x.png")); }).first,
+            ErrorCode::IoError);
+}
+
+// render() and writeImage() make the file the csgray command makes.
+TEST_F(ApiFiles, ImagesAreTheCommandsPixelForPixel) {
+  for (const char* name : {"spot_light", "textured_box", "glass_and_mirror"}) {
+    const std::string script = std::string(CSGRAY_SOURCE_DIR "/examples/") + name + ".lua";
+    csgray::writeImage(csgray::render(csgray::runScript(script), {80, 60}), path("api.png"));
+    const std::string command = std::string(CSGRAY_BINARY) + " render " + script + " -o " +
+                                path("cli.png") + " --size 80x60 > /dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream api(path("api.png"), std::ios::binary), cli(path("cli.png"), std::ios::binary);
+    const std::string apiBytes{std::istreambuf_iterator<char>(api), {}};
+    const std::string cliBytes{std::istreambuf_iterator<char>(cli), {}};
+    EXPECT_GT(apiBytes.size(), 100u) << name;
+    EXPECT_TRUE(apiBytes == cliBytes) << name;
+  }
+}
+
+TEST(ApiRender, ThePartFillsTheFrameOverTheBackground) {
+  csgray::Scene scene(Solid::sphere(1));
+  scene.setBackground({0, 0, 0});
+  const csgray::Image image = csgray::render(scene, {40, 30});
+  int lit = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) lit += image.at(x, y).x > 0;
+  EXPECT_GT(lit, 40 * 30 / 10);
+  EXPECT_GT(image.at(20, 15).x, 0.0f);  // the ball is in the middle
+  EXPECT_EQ(image.at(0, 0), (Vec3{0, 0, 0}));
+  EXPECT_EQ(errorOf([&] { csgray::render(scene, {0, 30}); }).first, ErrorCode::InvalidArgument);
+}
+
+TEST(ApiCheck, ASoundPartPasses) {
+  csgray::CheckOptions options;
+  options.samples = 20000;
+  options.grid = 64;
+  const csgray::CheckReport report =
+      csgray::check(Solid::box(10, true) - Solid::cylinder(12, 2, true), options);
+  EXPECT_TRUE(report.ok) << report.summary;
+  EXPECT_TRUE(report.failure.empty());
+  EXPECT_TRUE(report.mesh.ok);
+  EXPECT_GT(report.mesh.triangles, 0u);
+  EXPECT_EQ(report.classification.points, 20000u);
+  EXPECT_NEAR(report.volume.exact, 1000 - kPi * 40, 1.0);
+  EXPECT_TRUE(report.warnings.empty());
+  EXPECT_NE(report.summary.find("check()"), std::string::npos);
+  // Options out of range are refused with the script's message.
+  options.grid = 1;
+  auto [code, message] = errorOf([&] { csgray::check(Solid::box(1), options); });
+  EXPECT_EQ(code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(message, scriptMessage("return check(box(1), {grid=1})"));
+  // A part that cannot be meshed is a report that says why.
+  options.grid = 64;
+  const csgray::CheckReport unbounded = csgray::check(Solid::halfSpace({0, 0, 1}), options);
+  EXPECT_FALSE(unbounded.ok);
+  EXPECT_FALSE(unbounded.failure.empty());
+}
+
+TEST(ApiScript, AnExampleGivesItsScene) {
+  const csgray::Scene scene = csgray::runScript(CSGRAY_SOURCE_DIR "/examples/spot_light.lua");
+  // spot_light.lua: a floor, a part, a camera, a spot and a point light.
+  EXPECT_EQ(scene.objects().size(), 1u);
+  EXPECT_EQ(scene.surfaces().size(), 1u);
+  ASSERT_EQ(scene.lights().size(), 2u);
+  EXPECT_EQ(scene.lights()[0].kind, csgray::Light::Kind::Spot);
+  EXPECT_EQ(scene.lights()[0].angle, 20.0);
+  EXPECT_EQ(scene.lights()[1].kind, csgray::Light::Kind::Point);
+  ASSERT_TRUE(scene.camera());
+  EXPECT_EQ(scene.camera()->eye, (Vec3{0, -9, 6}));
+  EXPECT_EQ(scene.background(), (Vec3{0.01, 0.01, 0.02}));
+  // The part: a box with a hole, 1.6 · 1.6 · 1.2 less π · 0.5² · 1.2.
+  EXPECT_NEAR(scene.part().volume(), 1.6 * 1.6 * 1.2 - kPi * 0.25 * 1.2, 1e-3);
+  // Scripts that fail say where, as ScriptError.
+  auto [code, message] = errorOf([] { csgray::runScriptText("return box(", "part.lua"); });
+  EXPECT_EQ(code, ErrorCode::ScriptError);
+  EXPECT_EQ(message.rfind("part.lua:1:", 0), 0u) << message;
+  EXPECT_EQ(errorOf([] { csgray::runScript("/no/such/script.lua"); }).first,
+            ErrorCode::ScriptError);
+  // Defines reach the script.
+  csgray::ScriptOptions options;
+  options.defines = {{"size", "3"}};
+  EXPECT_NEAR(csgray::runScriptText("return box(size)", "part.lua", options).part().volume(), 27,
+              1e-9);
+}
+
+TEST(ApiError, CodesHaveNames) {
+  EXPECT_STREQ(csgray::errorCodeName(ErrorCode::InvalidArgument), "InvalidArgument");
+  EXPECT_STREQ(csgray::errorCodeName(ErrorCode::NotPrintable), "NotPrintable");
+  EXPECT_STREQ(csgray::version(), CSGRAY_VERSION);
+}
+
+}  // namespace
