@@ -1,6 +1,6 @@
 // exportMesh(), the mesh files and meshDefect(): the exporter and the mesh
 // files of the csgray command (export/cgal/mesh_boolean.h,
-// meshfile/mesh_writer.h, mesh_reader.h, export/cgal/mesh_validity.h).
+// meshio/mesh_writer.h, mesh_reader.h, export/cgal/mesh_validity.h).
 #include "csgray/mesh.h"
 
 #include <algorithm>
@@ -15,8 +15,8 @@
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
 #include "io/atomic_file.h"
-#include "meshfile/mesh_reader.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_reader.h"
+#include "meshio/mesh_writer.h"
 
 namespace csgray {
 

@@ -6,7 +6,7 @@
 #include "api/errors.h"
 #include "check/part_check.h"
 #include "io/image_file.h"
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 #include "script/script.h"
 
 namespace csgray {

@@ -9,7 +9,7 @@
 #include "api/errors.h"
 #include "api/volume.h"
 #include "csgray/mesh.h"
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/quadric.h"
 #include "scene/quadric_shapes.h"

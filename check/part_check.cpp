@@ -14,7 +14,7 @@
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_probe.h"
 #include "export/cgal/mesh_validity.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 #include "tessellation/mesh_shells.h"
 
 namespace csgray::detail {

@@ -11,7 +11,7 @@
 #include "export/cgal/mesh_boolean.h"
 #include "export/printed_part.h"
 #include "io/atomic_file.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 
 namespace csgray::detail {
 

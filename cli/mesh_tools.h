@@ -16,7 +16,7 @@ namespace csgray::detail {
 
 struct MeshTools {
   // As declared in cli/export_scene.h, cli/check_scene.h,
-  // meshfile/mesh_import.h and check/part_check.h.
+  // meshio/mesh_import.h and check/part_check.h.
   void (*checkExportOutput)(const ExportOptions& options);
   void (*exportScene)(const Scene& scene, const ExportOptions& options, double scriptSeconds);
   int (*checkScene)(const Scene& scene, const CheckCommandOptions& options);

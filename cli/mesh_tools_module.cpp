@@ -4,7 +4,7 @@
 #include "cli/check_scene.h"
 #include "cli/export_scene.h"
 #include "cli/mesh_tools.h"
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 
 extern "C" __attribute__((visibility("default"))) const csgray::detail::MeshTools*
 csgray_mesh_tools() {

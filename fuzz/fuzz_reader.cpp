@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

@@ -39,7 +39,7 @@ struct ScriptOptions {
   // Reads a mesh file for mesh{}, repairing it when asked and saying what
   // it did in repairReport; throws std::invalid_argument for a bad file or
   // a mesh that is not a solid. Without it, mesh{} is an error. (importMesh
-  // of meshfile/mesh_import.h fits.)
+  // of meshio/mesh_import.h fits.)
   std::function<TriangleMesh(const std::string& path, bool repair, std::string& repairReport)>
       loadMesh;
   // Checks a solid's export against it for check(solid, options)

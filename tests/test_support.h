@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "io/image_file.h"
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 #include "check/part_check.h"
 #include "script/script.h"
 #include "engine/solid.h"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the mesh reader test files: a 2 x 3 x 4 box (volume 24) in every
 format and variant, and the bad files, each broken in one way that
-tests/mesh_reader_test.cpp names. Run from this folder."""
+tests/meshio/mesh_reader_test.cpp names. Run from this folder."""
 import math
 import struct
 

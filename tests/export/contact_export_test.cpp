@@ -15,7 +15,7 @@
 #include "check_support.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 #include "engine/boolean.h"
 #include "tessellation/mesh_shells.h"
 #include "script/script.h"

@@ -3,7 +3,7 @@
 // mesh that is not a solid is refused naming the faces, repair=true fixes
 // what it can and says so, and mesh{} in a script is a solid that takes
 // part in booleans, with its file kept inside the script's folder.
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 #include "export/cgal/mesh_repair.h"
 #include "export/cgal/mesh_validity.h"
 #include "script/script.h"

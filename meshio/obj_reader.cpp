@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "meshfile/mesh_reader.h"
-#include "meshfile/reader_common.h"
+#include "meshio/mesh_reader.h"
+#include "meshio/reader_common.h"
 
 namespace csgray::detail {
 

@@ -15,10 +15,10 @@
 
 #include "io/image_file.h"
 #include "export/cgal/mesh_boolean.h"
-#include "meshfile/mesh_import.h"
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_import.h"
+#include "meshio/mesh_reader.h"
 #include "export/cgal/mesh_validity.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 #include "engine/boolean.h"
 #include "script/script.h"
 #include "test_support.h"

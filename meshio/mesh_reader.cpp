@@ -1,4 +1,4 @@
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_reader.h"
 
 #include <cctype>
 #include <charconv>
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "meshfile/reader_common.h"
+#include "meshio/reader_common.h"
 #include "tessellation/polygon_triangulation.h"
 
 namespace csgray::detail {

@@ -1,9 +1,9 @@
-#include "meshfile/mesh_import.h"
+#include "meshio/mesh_import.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_reader.h"
 #include "export/cgal/mesh_repair.h"
 #include "export/cgal/mesh_validity.h"
 

@@ -1,4 +1,4 @@
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 

@@ -65,7 +65,7 @@ export PKG_CONFIG_PATH
 PKG_CONFIG_PATH=$(dirname "$pc")
 libdir=$(pkg-config --variable=libdir csgray)
 # shellcheck disable=SC2046
-"$cxx" -std=c++17 $(pkg-config --cflags csgray) "$source/tests/install_check.cpp" -o "$tmp/check" \
+"$cxx" -std=c++17 $(pkg-config --cflags csgray) "$source/tests/api/install_check.cpp" -o "$tmp/check" \
   $(pkg-config --libs csgray) -Wl,-rpath,"$libdir" || fail "cannot build with pkg-config"
 read_back=$("$tmp/check" "$tmp/out/part.stl") || fail "cannot read part.stl back"
 triangles=${read_back% *} volume=${read_back#* }

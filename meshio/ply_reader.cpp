@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "meshfile/mesh_reader.h"
-#include "meshfile/reader_common.h"
+#include "meshio/mesh_reader.h"
+#include "meshio/reader_common.h"
 
 namespace csgray::detail {
 

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "meshfile/mesh_reader.h"
-#include "meshfile/reader_common.h"
+#include "meshio/mesh_reader.h"
+#include "meshio/reader_common.h"
 
 namespace csgray::detail {
 

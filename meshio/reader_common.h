@@ -18,7 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "meshfile/mesh_reader.h"
+#include "meshio/mesh_reader.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail::mesh_reading {

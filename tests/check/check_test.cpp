@@ -12,7 +12,7 @@
 #include "check_support.h"
 #include "check/axis_crossings.h"
 #include "export/cgal/mesh_boolean.h"
-#include "meshfile/mesh_writer.h"
+#include "meshio/mesh_writer.h"
 #include "check/part_check.h"
 #include "engine/boolean.h"
 #include "primitives/box.h"
