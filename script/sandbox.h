@@ -41,7 +41,6 @@ class Sandbox {
   SourceLine callerLine(lua_State* L);
 
   // Why the script was aborted, or empty.
-  const std::string& abortReason() const { return abortReason_; }
 
  private:
   static void* allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize);
