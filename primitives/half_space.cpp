@@ -17,7 +17,7 @@ HalfSpace::HalfSpace(const dvec3& normal, double offset) : offset_(offset) {
 }
 
 void HalfSpace::objectSpans(const Ray& ray, SpanList& out) const {
-  // Ray-plane (seed 000, 17.3.2): n·(o + t d) = offset.
+  // Ray-plane (docs/theory.md, "Planar surfaces"): n·(o + t d) = offset.
   double denom = glm::dot(normal_, ray.dir);
   double num = offset_ - glm::dot(normal_, ray.origin);
   Boundary lo{-kInfinity, nullptr, 0, false}, hi{kInfinity, nullptr, 0, false};

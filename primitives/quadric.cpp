@@ -24,7 +24,7 @@ Quadric::Quadric(const glm::dmat4& m) : m_(m) {
 }
 
 void Quadric::objectSpans(const Ray& ray, SpanList& out) const {
-  // With e = (o, 1) and r = (d, 0): u = rᵀMr, v = 2 rᵀMe, w = eᵀMe (seed 000, 17.3.3).
+  // With e = (o, 1) and r = (d, 0): u = rᵀMr, v = 2 rᵀMe, w = eᵀMe (docs/theory.md).
   glm::dvec4 e(ray.origin, 1.0), r(ray.dir, 0.0);
   glm::dvec4 me = m_ * e;
   double u = glm::dot(r, m_ * r);

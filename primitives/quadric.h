@@ -1,5 +1,5 @@
 // The general quadric solid {p : pᵀ M p <= 0} for homogeneous p = (x, y, z, 1)
-// and a symmetric 4×4 matrix M (seed 000, 17.3.3 and table 17.1). Most
+// and a symmetric 4×4 matrix M (docs/theory.md, "Quadrics"). Most
 // quadrics are unbounded; their spans may start or end at infinity.
 #pragma once
 

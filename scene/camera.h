@@ -1,4 +1,4 @@
-// The cameras: the pinhole camera of seed 001, 2.1.1 (rays from the eye
+// The cameras: a pinhole camera (rays from the eye
 // through the centres of square pixels on a screen whose width spans the
 // horizontal view angle), and an orthographic camera whose parallel rays
 // start on a screen through the eye, orthoWidth wide.

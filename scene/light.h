@@ -1,4 +1,4 @@
-// Light sources (seed 001, 2.2, 2.4 and 3.3; seed 000, 17.2.4): coloured
+// Light sources (docs/theory.md, "Shading"): coloured
 // point lights of any intensity, Warn spot lights, and area lights (a
 // rectangle or a sphere) that cast soft shadows through sampling.
 #pragma once
@@ -15,12 +15,12 @@ struct Light {
   dvec3 position{0.0};  // the point; the centre of an area light
   dvec3 color{1.0};
   double intensity = 1.0;
-  // Divide by the squared distance d² (seed 001, 2.2.1). Off by default, so
+  // Divide by the squared distance d². Off by default, so
   // that intensity 1 means full strength at any distance.
   bool inverseSquare = false;
 
-  // Spot (Warn 1983, seed 001 3.3): light along direction, cos^exponent of
-  // the angle off the axis, nothing beyond coneDegrees off it.
+  // Spot (Warn, "Lighting Controls for Synthetic Images", 1983): light along direction,
+  // cos^exponent of the angle off the axis, nothing beyond coneDegrees off it.
   dvec3 direction{0.0, 0.0, -1.0};
   double coneDegrees = 30.0;
   double exponent = 1.0;

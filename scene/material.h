@@ -1,5 +1,5 @@
-// Surface appearance of a solid or surface: the seeds' material model
-// (seed 000, 17.2.3; seed 001, 2.2 and 3.1) in any combination. Colours are
+// Surface appearance of a solid or surface: Whitted's material model
+// (docs/theory.md, "Shading") in any combination. Colours are
 // linear RGB (as in POV-Ray 3.7 with assumed_gamma 1): the renderer shades
 // in linear light and encodes 8-bit images as sRGB.
 #pragma once
@@ -14,13 +14,13 @@ namespace csgray::detail {
 struct Material {
   dvec3 color{0.8, 0.8, 0.8};
   TexturePtr texture;       // when set, gives the colour in place of color
-  double ambient = 0.1;     // share of the colour seen without any light (seed 001, 2.2.1: Koh)
-  double diffuse = 0.9;     // Lambert factor κ (seed 000, 17.4.2; seed 001, 2.2.1: Kod)
-  double specular = 0.0;    // Phong highlight factor (seed 001, 2.2.2: r(α, λ))
-  double shininess = 20.0;  // Phong exponent f of cos^f β (seed 001, 2.2.2 and 3.3)
+  double ambient = 0.1;     // share of the colour seen without any light (Ka)
+  double diffuse = 0.9;     // Lambert factor (Kd)
+  double specular = 0.0;    // Phong highlight factor (Ks)
+  double shininess = 20.0;  // Phong exponent f of cos^f β (Phong 1975)
   double reflection = 0.0;  // share of the mirrored ray's colour
   // Share of the light behind that passes through one stretch of the solid
-  // (seed 001, 3.1.1: I = k·Iv), tinted by filter.
+  // (I = k·I_behind), tinted by filter.
   double transparency = 0.0;
   dvec3 filter{1.0, 1.0, 1.0};
   double ior = 1.0;      // index of refraction; 1 passes rays straight through

@@ -44,7 +44,8 @@ glm::dmat4 diagonal(double x, double y, double z, double w) {
   return m;
 }
 
-// The matrices are those of seed 000, table 17.1, divided by the positive
+// The matrices are those of the classic table (docs/theory.md,
+// "Quadrics"; Winkler, "Raytracing", table 17.1), divided by the positive
 // factor a²b²c² (a²b² for the paraboloids and the elliptic and hyperbolic
 // cylinders; the parabolic cylinder's is used as it is): the same quadric
 // and the same solid pᵀMp <= 0, with entries 1/a² that do not overflow for

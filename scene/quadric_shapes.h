@@ -1,4 +1,4 @@
-// The named quadrics of seed 000's table 17.1 from their semi-axes, and
+// The named quadrics (docs/theory.md, "Quadrics") from their semi-axes, and
 // clip, which bounds an unbounded solid: the script's hyperboloid1{},
 // ..., clip() and the library's factories, with the same checks and
 // messages. Each throws std::invalid_argument.

@@ -14,7 +14,7 @@
 namespace csgray::detail {
 
 // A camera: eye point, the point looked at and the up direction. A
-// perspective camera is the pinhole of seed 001, 2.1.1 with a horizontal
+// perspective camera is the pinhole with a horizontal
 // view angle in degrees; an orthographic one sends parallel rays along the
 // view direction from a screen orthoWidth wide (what a CAD preview shows).
 struct CameraSpec {
@@ -26,8 +26,8 @@ struct CameraSpec {
   double orthoWidth = 10.0;
 };
 
-// Bounds on recursion (seed 001, 5.3: two mirrors facing each other would
-// reflect forever): at most maxDepth reflected or refracted rays in a chain,
+// Bounds on recursion (two mirrors facing each other would reflect
+// forever): at most maxDepth reflected or refracted rays in a chain,
 // and none whose share of the pixel falls below minWeight.
 struct TraceLimits {
   int maxDepth = 8;

@@ -62,7 +62,7 @@ Affine frameOf(const char* shape, const dvec3& x, const dvec3& y, const dvec3& z
 }
 
 // The spanning vectors u = b − a and v = c − a of a triangle or parallelogram
-// and the unit normal of their plane (seed 000, 17.3.2.1: n = u × v). Refuses
+// and the unit normal of their plane (n = u × v; docs/theory.md, "Planar surfaces"). Refuses
 // zero edges and parallel edges: the area |u × v| must not be tiny against
 // |u|·|v|, the same test Affine::fromMatrix applies to the frame.
 dvec3 spannedNormal(const char* shape, const dvec3& u, const dvec3& v,
@@ -111,7 +111,7 @@ SurfacePtr Surface::triangle(const dvec3& a, const dvec3& b, const dvec3& c) {
   requireFinite("triangle", "third point", c);
   if (a == b || b == c || a == c)
     throw std::invalid_argument("triangle: two of the points coincide");
-  // Seed 000, 17.3.2.3: the base corner a and the spanning vectors to its
+  // As in Winkler, "Raytracing", 17.3.2: the base corner a and the spanning vectors to its
   // neighbours, so that object (x, y) are the linear factors (ϑ, φ).
   dvec3 u = b - a, v = c - a;
   dvec3 n = spannedNormal("triangle", u, v, ": the points are collinear");
@@ -131,15 +131,15 @@ SurfacePtr Surface::parallelogram(const dvec3& origin, const dvec3& u, const dve
 
 std::optional<double> Surface::hit(const Ray& ray) const {
   // In the object frame the supporting plane is z = 0 with n = (0, 0, 1) and
-  // t = 0, so the seed's λ = −n·w / n·r (17.3.2.1) is −o.z / d.z. The mapped
+  // t = 0, so λ = −n·w / n·r (docs/theory.md) is −o.z / d.z. The mapped
   // ray keeps its parameter, so λ is the world ray's parameter too.
   Ray r = frame_.isIdentity() ? ray : frame_.rayToObject(ray);
-  // Parallel to the plane, or lying in it: no hit (17.3.2.1).
+  // Parallel to the plane, or lying in it: no hit.
   if (r.dir.z == 0.0) return std::nullopt;
   double t = -r.origin.z / r.dir.z;
   // Also refuses NaN and an overflow to infinity.
   if (!(t > ray.tMin && t < ray.tMax)) return std::nullopt;
-  // The linear factors (ϑ, φ) of the hit are its object (x, y) (17.3.2.3).
+  // The linear factors (ϑ, φ) of the hit are its object (x, y) (Winkler, 17.3.2.3).
   double x = r.origin.x + t * r.dir.x, y = r.origin.y + t * r.dir.y;
   bool inside = false;
   switch (shape_) {
@@ -147,7 +147,7 @@ std::optional<double> Surface::hit(const Ray& ray) const {
       inside = std::isfinite(x) && std::isfinite(y);
       break;
     case Shape::Disc:
-      // ‖s − m‖ ≤ r (17.3.2.2) for the unit disc about the origin.
+      // ‖s − m‖ ≤ r (Winkler, 17.3.2.2) for the unit disc about the origin.
       inside = x * x + y * y <= 1.0;
       break;
     case Shape::Triangle:

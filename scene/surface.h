@@ -1,4 +1,4 @@
-// Planar surfaces that are not solids (seed 000, 17.3.2): an infinite
+// Planar surfaces that are not solids (docs/theory.md, "Planar surfaces"): an infinite
 // plane, a disc, a triangle and a parallelogram (a rectangle and a square
 // are parallelograms with right angles). They enclose nothing, so they are
 // scene objects with a material and never operands of a boolean.
@@ -6,7 +6,7 @@
 // Each shape is the unit shape in the plane z = 0 of its own frame, placed
 // by an affine frame: the frame's x and y columns span the supporting plane,
 // so the object-space (x, y) of a hit are the linear factors (ϑ, φ) of the
-// seed's intersection test.
+// intersection test.
 #pragma once
 
 #include <memory>
@@ -45,8 +45,8 @@ class Surface : public std::enable_shared_from_this<Surface> {
   static SurfacePtr parallelogram(const dvec3& origin, const dvec3& u, const dvec3& v,
                                   const std::string& kind = "parallelogram");
 
-  // The ray parameter λ of the hit with tMin < λ < tMax, if any (seed 000,
-  // 17.3.2: λ = −n·w / n·r; a ray parallel to the plane misses).
+  // The ray parameter λ of the hit with tMin < λ < tMax, if any
+  // (λ = −n·w / n·r; a ray parallel to the plane misses).
   std::optional<double> hit(const Ray& ray) const;
   // Unit normal in world space (the frame's z axis through the normal
   // matrix); the renderer turns it towards the viewer.

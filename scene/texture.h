@@ -1,4 +1,4 @@
-// Textures (seed 000, 17.2.3): colours that vary over a surface, as
+// Textures: colours that vary over a surface, as
 // functions of a point in texture space. Texture space is the world as it
 // was when the material was given to a solid or surface, so a texture moves
 // with the part when the part is moved later. Each texture also has its

@@ -22,7 +22,7 @@ const ScriptOptions& scriptOptionsOf(lua_State* L);
 // globals and metatables: textures (api_texture.cpp), open surfaces, which
 // take the given transform methods (api_surface.cpp), lights
 // (api_light.cpp), the camera and the scene (api_scene.cpp); the named
-// quadrics of seed 000's table 17.1 and clip (api_quadrics.cpp), convex
+// quadrics of the classic table (docs/theory.md) and clip (api_quadrics.cpp), convex
 // polyhedra and the Platonic solids (api_convex.cpp), polyhedra from points
 // and faces and mesh files (api_mesh.cpp), and check(solid, options)
 // (api_check.cpp): ScriptOptions::checkSolid's report as a table.

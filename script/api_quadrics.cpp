@@ -1,4 +1,4 @@
-// The named quadrics of seed 000's table 17.1 as script functions, and clip,
+// The named quadrics (docs/theory.md, "Quadrics") as script functions, and clip,
 // which bounds an unbounded solid. Reference: docs/script.md, "Named
 // quadrics". The shapes and their checks are in scene/quadric_shapes.h.
 #include <optional>

@@ -1,5 +1,5 @@
 // Where a quadratic a·t² + b·t + c is at most zero: the ray test of every
-// quadric surface (seed 000, 17.3.3: uλ² + vλ + w = 0) reduces to this.
+// quadric surface (uλ² + vλ + w = 0; docs/theory.md, "Quadrics") reduces to this.
 #pragma once
 
 namespace csgray::detail {

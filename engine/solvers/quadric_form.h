@@ -1,6 +1,6 @@
 // The canonical form of a quadric: a rigid frame in which pᵀMp becomes a sum
 // of squares plus at most one linear term (the principal-axes theorem; Hilbert
-// and Cohn-Vossen, Geometry and the Imagination, §3, and seed 000, 17.3.3).
+// and Cohn-Vossen, Geometry and the Imagination, §3; docs/theory.md).
 // The tessellation of Quadric reads the kind of surface off this form.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The named quadrics of seed 000's table 17.1 and clip, through the script
+// The named quadrics of the classic table (docs/theory.md) and clip, through the script
 // API: each function builds the table's matrix (up to a positive factor),
 // its solid is the documented side, rays meet it where the equations say,
 // spans agree with contains, and clipped pieces have their analytic volumes.
@@ -63,7 +63,7 @@ std::string number(double v) {
   return s.str();
 }
 
-// Table 17.1 of seed 000, transcribed as printed (rows).
+// Table 17.1 of Winkler, "Raytracing", transcribed as printed (rows).
 struct TableEntry {
   std::string source;
   glm::dmat4 matrix;

@@ -125,7 +125,7 @@ TEST(Render, ShadowEdgeWhereSimilarTrianglesPutIt) {
   EXPECT_NEAR(lit.x, (floor.ambient + floor.diffuse * cosine) * floor.color.x, 1e-9);
 }
 
-// Lambert (seed 000, 17.4.2): the brightness of a sphere point lit from a
+// Lambert's law (docs/theory.md, "Shading"): the brightness of a sphere point lit from a
 // far light along +z follows the cosine of the angle between normal and light.
 TEST(Render, LambertFollowsCosine) {
   Scene scene;

@@ -1,4 +1,4 @@
-// Planar surfaces against an independent reference of seed 000, 17.3.2:
+// Planar surfaces against an independent reference (Winkler, "Raytracing", 17.3.2):
 // λ = −n·w / n·r for the supporting plane, ‖s − m‖ ≤ r for the circle and
 // the linear factors (ϑ, φ) solved from two of the three equations
 // s = t + ϑ·u + φ·v for triangles and parallelograms. Random and aimed
@@ -84,7 +84,7 @@ struct RefHit {
   double cosine;  // |cos| of the angle between ray and normal
 };
 
-// The seed's intersection with the supporting plane and the area check, or
+// The reference's intersection with the supporting plane and the area check, or
 // nothing when the ray is parallel to the plane.
 std::optional<RefHit> reference(const Reference& ref, const Ray& ray) {
   dvec3 n = ref.normal();
