@@ -3,10 +3,29 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace csgray::detail {
 
 namespace {
+
+// A numeric option of check(): its range, and where it goes.
+struct NumberOption {
+  const char* key;
+  double lo, hi;
+  bool whole;
+  void (*set)(CheckOptions&, double);
+};
+
+constexpr NumberOption kNumberOptions[] = {
+    {"samples", 0, double(CheckOptions::kMaxSamples), true,
+     [](CheckOptions& o, double v) { o.samples = std::size_t(v); }},
+    {"grid", 2, CheckOptions::kMaxGrid, true, [](CheckOptions& o, double v) { o.grid = int(v); }},
+    {"seed", 0, 9e15, true, [](CheckOptions& o, double v) { o.seed = std::uint64_t(v); }},
+    {"tolerance", 1e-6, 1e3, false, [](CheckOptions& o, double v) { o.tolerance = v; }},
+    {"min_wall", 0.0, 1e6, false, [](CheckOptions& o, double v) { o.minWall = v; }},
+    {"min_gap", 0.0, 1e6, false, [](CheckOptions& o, double v) { o.minGap = v; }},
+};
 
 std::string number(double x) {
   char text[32];
@@ -49,6 +68,23 @@ std::string jsonPoint(const dvec3& p) {
 const char* mark(bool ok) { return ok ? "ok    " : "FAILED"; }
 
 }  // namespace
+
+void setCheckOption(CheckOptions& options, const std::string& key, double value) {
+  for (const NumberOption& option : kNumberOptions) {
+    if (key != option.key) continue;
+    const bool inRange = value >= option.lo && value <= option.hi;
+    if (option.whole && !(inRange && std::floor(value) == value))
+      throw std::invalid_argument("check: " + key + " must be a whole number from " +
+                                  std::to_string(static_cast<long long>(option.lo)) + " to " +
+                                  std::to_string(static_cast<long long>(option.hi)));
+    if (!inRange)
+      throw std::invalid_argument("check: " + key + " must be from " + std::to_string(option.lo) +
+                                  " to " + std::to_string(option.hi));
+    option.set(options, value);
+    return;
+  }
+  throw std::invalid_argument("check: unknown parameter '" + key + "'");
+}
 
 bool CheckReport::volumeOk() const {
   return failure.empty() && gridsAgree() && std::abs(meshVolume - exactVolume) <= volumeAllowed;

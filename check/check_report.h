@@ -28,6 +28,13 @@ struct CheckOptions {
   bool strict = false;            // warnings fail the check too
 };
 
+// Sets the numeric option that the script's check() calls key ("samples",
+// "grid", "seed", "tolerance", "min_wall" or "min_gap") to value, within
+// the range that both the script's check() and the library's allow: else
+// throws std::invalid_argument, naming it as the script does ("check: grid
+// must be a whole number from 2 to 1024").
+void setCheckOption(CheckOptions& options, const std::string& key, double value);
+
 // Distances to the exact surface are measured along lines (docs/check.md):
 // exact on flat faces, a few percent off where a face curves tightly
 // within the tolerance (by δ²/2r for a face of radius r). A point this
