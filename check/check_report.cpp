@@ -33,10 +33,6 @@ std::string number(double x) {
   return text;
 }
 
-std::string point(const dvec3& p) {
-  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
-}
-
 std::string jsonString(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
@@ -68,6 +64,10 @@ std::string jsonPoint(const dvec3& p) {
 const char* mark(bool ok) { return ok ? "ok    " : "FAILED"; }
 
 }  // namespace
+
+std::string pointText(const dvec3& p) {
+  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
 
 void setCheckOption(CheckOptions& options, const std::string& key, double value) {
   for (const NumberOption& option : kNumberOptions) {
@@ -120,7 +120,7 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
       << " points: " << r.agree << " agree, " << r.inBand
       << " differ within the tolerance band (set aside), " << r.disagreementCount << " disagree\n";
     for (const dvec3& p : r.disagreements)
-      s << "                          disagree at " << point(p) << "\n";
+      s << "                          disagree at " << pointText(p) << "\n";
   }
   s << "  volume          " << mark(r.volumeOk()) << "  exact " << number(r.exactVolume) << " (x "
     << number(r.volumeAlong[0]) << ", y " << number(r.volumeAlong[1]) << ", z "
@@ -133,11 +133,12 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
   s << "  fidelity        " << mark(r.fidelityOk()) << "  " << number(r.fidelity)
     << (r.fidelityOk() ? " <= " : " > ")
     << (crease ? number(r.fidelityAllowed) + " allowed at a crease" : "the tolerance") << ", from "
-    << (r.fidelityFromMesh ? "a mesh" : "an exact") << " point at " << point(r.fidelityAt) << "\n";
+    << (r.fidelityFromMesh ? "a mesh" : "an exact") << " point at " << pointText(r.fidelityAt)
+    << "\n";
   auto stretch = [&](const char* label, const std::optional<Stretch>& st) {
     s << label;
     if (st)
-      s << number(st->thickness) << " at " << point(st->location) << "\n";
+      s << number(st->thickness) << " at " << pointText(st->location) << "\n";
     else
       s << "none found\n";
   };

@@ -109,6 +109,10 @@ struct CheckReport {
   bool ok() const;
 };
 
+// A point as the report and its messages give one: "(x, y, z)", six
+// digits each.
+std::string pointText(const dvec3& p);
+
 // The report as a few aligned lines, ending in the verdict; `name` (the
 // script) heads it.
 std::string checkReportText(const CheckReport& report, const std::string& name);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
-#include <sstream>
 #include <vector>
 
 #include "check/axis_crossings.h"
@@ -230,13 +229,6 @@ class GridTracer {
 };
 
 }  // namespace
-
-std::string pointText(const dvec3& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
 
 // The three grids: volume along each axis with its sampling deviation, and
 // what their rays found.
