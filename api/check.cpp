@@ -2,10 +2,6 @@
 // its report as plain data.
 #include "csgray/check.h"
 
-#include <cmath>
-#include <stdexcept>
-#include <string>
-
 #include "api/access.h"
 #include "api/convert.h"
 #include "api/errors.h"
@@ -17,32 +13,15 @@ using detail::toPublic;
 
 namespace {
 
-// The ranges of the script's check(): the same messages.
-void checkRange(const char* key, double value, double lo, double hi, bool whole) {
-  if (value >= lo && value <= hi && (!whole || std::floor(value) == value)) return;
-  if (whole)
-    throw std::invalid_argument("check: " + std::string(key) + " must be a whole number from " +
-                                std::to_string(static_cast<long long>(lo)) + " to " +
-                                std::to_string(static_cast<long long>(hi)));
-  throw std::invalid_argument("check: " + std::string(key) + " must be from " + std::to_string(lo) +
-                              " to " + std::to_string(hi));
-}
-
+// Checked as the script's check() checks them, with the same messages.
 detail::CheckOptions optionsOf(const CheckOptions& o) {
-  using Limits = detail::CheckOptions;
-  checkRange("samples", double(o.samples), 0, double(Limits::kMaxSamples), true);
-  checkRange("grid", o.grid, 2, Limits::kMaxGrid, true);
-  checkRange("seed", double(o.seed), 0, 9e15, true);
-  checkRange("tolerance", o.tolerance, 1e-6, 1e3, false);
-  checkRange("min_wall", o.minWall, 0.0, 1e6, false);
-  checkRange("min_gap", o.minGap, 0.0, 1e6, false);
   detail::CheckOptions made;
-  made.samples = o.samples;
-  made.grid = o.grid;
-  made.seed = o.seed;
-  made.tolerance = o.tolerance;
-  made.minWall = o.minWall;
-  made.minGap = o.minGap;
+  detail::setCheckOption(made, "samples", double(o.samples));
+  detail::setCheckOption(made, "grid", o.grid);
+  detail::setCheckOption(made, "seed", double(o.seed));
+  detail::setCheckOption(made, "tolerance", o.tolerance);
+  detail::setCheckOption(made, "min_wall", o.minWall);
+  detail::setCheckOption(made, "min_gap", o.minGap);
   made.strict = o.strict;
   return made;
 }

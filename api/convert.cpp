@@ -1,23 +1,56 @@
 #include "api/convert.h"
 
+#include <utility>
+
 #include "api/access.h"
 #include "scene/camera.h"
 
 namespace csgray::detail {
 
+namespace {
+
+// The fields that the public and the internal material share by name and
+// type: one list for both directions.
+template <class From, class To>
+void copyShared(const From& from, To& to) {
+  to.ambient = from.ambient;
+  to.diffuse = from.diffuse;
+  to.specular = from.specular;
+  to.shininess = from.shininess;
+  to.reflection = from.reflection;
+  to.transparency = from.transparency;
+  to.ior = from.ior;
+  to.fresnel = from.fresnel;
+}
+
+// The kinds of light, public and internal: one table for both directions.
+constexpr std::pair<csgray::Light::Kind, Light::Kind> kLightKinds[] = {
+    {csgray::Light::Kind::Point, Light::Kind::Point},
+    {csgray::Light::Kind::Spot, Light::Kind::Spot},
+    {csgray::Light::Kind::Area, Light::Kind::Rectangle},
+    {csgray::Light::Kind::Sphere, Light::Kind::Sphere},
+};
+
+Light::Kind kindOf(csgray::Light::Kind kind) {
+  for (const auto& [publicKind, internalKind] : kLightKinds)
+    if (publicKind == kind) return internalKind;
+  return Light::Kind::Point;
+}
+
+csgray::Light::Kind kindOf(Light::Kind kind) {
+  for (const auto& [publicKind, internalKind] : kLightKinds)
+    if (internalKind == kind) return publicKind;
+  return csgray::Light::Kind::Point;
+}
+
+}  // namespace
+
 MaterialPtr toDetail(const csgray::Material& m) {
   auto made = std::make_shared<Material>();
   made->color = toDetail(m.color);
   if (m.texture) made->texture = Access::of(*m.texture);
-  made->ambient = m.ambient;
-  made->diffuse = m.diffuse;
-  made->specular = m.specular;
-  made->shininess = m.shininess;
-  made->reflection = m.reflection;
-  made->transparency = m.transparency;
   made->filter = toDetail(m.filter);
-  made->ior = m.ior;
-  made->fresnel = m.fresnel;
+  copyShared(m, *made);
   checkMaterial(*made);
   return made;
 }
@@ -26,49 +59,10 @@ csgray::Material toPublic(const Material& m) {
   csgray::Material made;
   made.color = toPublic(m.color);
   if (m.texture) made.texture = Access::texture(m.texture);
-  made.ambient = m.ambient;
-  made.diffuse = m.diffuse;
-  made.specular = m.specular;
-  made.shininess = m.shininess;
-  made.reflection = m.reflection;
-  made.transparency = m.transparency;
   made.filter = toPublic(m.filter);
-  made.ior = m.ior;
-  made.fresnel = m.fresnel;
+  copyShared(m, made);
   return made;
 }
-
-namespace {
-
-Light::Kind kindOf(csgray::Light::Kind kind) {
-  switch (kind) {
-    case csgray::Light::Kind::Point:
-      return Light::Kind::Point;
-    case csgray::Light::Kind::Spot:
-      return Light::Kind::Spot;
-    case csgray::Light::Kind::Area:
-      return Light::Kind::Rectangle;
-    case csgray::Light::Kind::Sphere:
-      return Light::Kind::Sphere;
-  }
-  return Light::Kind::Point;
-}
-
-csgray::Light::Kind kindOf(Light::Kind kind) {
-  switch (kind) {
-    case Light::Kind::Point:
-      return csgray::Light::Kind::Point;
-    case Light::Kind::Spot:
-      return csgray::Light::Kind::Spot;
-    case Light::Kind::Rectangle:
-      return csgray::Light::Kind::Area;
-    case Light::Kind::Sphere:
-      return csgray::Light::Kind::Sphere;
-  }
-  return csgray::Light::Kind::Point;
-}
-
-}  // namespace
 
 LightParams toDetail(const csgray::Light& light) {
   LightParams p;

@@ -3,11 +3,12 @@
 #include "csgray/solid.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "api/access.h"
 #include "api/convert.h"
 #include "api/errors.h"
-#include "api/volume.h"
+#include "check/exact_volume.h"
 #include "csgray/mesh.h"
 #include "meshio/mesh_import.h"
 #include "primitives/convex_polyhedron.h"
@@ -15,6 +16,7 @@
 #include "scene/quadric_shapes.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
+#include "scene/value_checks.h"
 
 namespace csgray {
 
@@ -234,7 +236,13 @@ Bounds Solid::bounds() const { return detail::toPublic(impl_->bounds()); }
 bool Solid::contains(const Vec3& point) const { return impl_->contains(toDetail(point)); }
 
 double Solid::volume(int grid) const {
-  return guarded([&] { return detail::gridVolume(*impl_, grid); });
+  return guarded([&] {
+    detail::checkWhole("volume", "grid", grid, 1, 4096);
+    const detail::Bounds box = impl_->bounds();
+    if (!box.empty() && !box.finite())
+      throw std::invalid_argument("volume: the solid is unbounded");
+    return detail::exactVolume(*impl_, grid);
+  });
 }
 
 std::string Solid::kind() const { return impl_->kind(); }

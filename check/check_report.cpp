@@ -3,19 +3,34 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace csgray::detail {
 
 namespace {
 
+// A numeric option of check(): its range, and where it goes.
+struct NumberOption {
+  const char* key;
+  double lo, hi;
+  bool whole;
+  void (*set)(CheckOptions&, double);
+};
+
+constexpr NumberOption kNumberOptions[] = {
+    {"samples", 0, double(CheckOptions::kMaxSamples), true,
+     [](CheckOptions& o, double v) { o.samples = std::size_t(v); }},
+    {"grid", 2, CheckOptions::kMaxGrid, true, [](CheckOptions& o, double v) { o.grid = int(v); }},
+    {"seed", 0, 9e15, true, [](CheckOptions& o, double v) { o.seed = std::uint64_t(v); }},
+    {"tolerance", 1e-6, 1e3, false, [](CheckOptions& o, double v) { o.tolerance = v; }},
+    {"min_wall", 0.0, 1e6, false, [](CheckOptions& o, double v) { o.minWall = v; }},
+    {"min_gap", 0.0, 1e6, false, [](CheckOptions& o, double v) { o.minGap = v; }},
+};
+
 std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", x);
   return text;
-}
-
-std::string point(const dvec3& p) {
-  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
 }
 
 std::string jsonString(const std::string& s) {
@@ -49,6 +64,27 @@ std::string jsonPoint(const dvec3& p) {
 const char* mark(bool ok) { return ok ? "ok    " : "FAILED"; }
 
 }  // namespace
+
+std::string pointText(const dvec3& p) {
+  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
+
+void setCheckOption(CheckOptions& options, const std::string& key, double value) {
+  for (const NumberOption& option : kNumberOptions) {
+    if (key != option.key) continue;
+    const bool inRange = value >= option.lo && value <= option.hi;
+    if (option.whole && !(inRange && std::floor(value) == value))
+      throw std::invalid_argument("check: " + key + " must be a whole number from " +
+                                  std::to_string(static_cast<long long>(option.lo)) + " to " +
+                                  std::to_string(static_cast<long long>(option.hi)));
+    if (!inRange)
+      throw std::invalid_argument("check: " + key + " must be from " + std::to_string(option.lo) +
+                                  " to " + std::to_string(option.hi));
+    option.set(options, value);
+    return;
+  }
+  throw std::invalid_argument("check: unknown parameter '" + key + "'");
+}
 
 bool CheckReport::volumeOk() const {
   return failure.empty() && gridsAgree() && std::abs(meshVolume - exactVolume) <= volumeAllowed;
@@ -84,7 +120,7 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
       << " points: " << r.agree << " agree, " << r.inBand
       << " differ within the tolerance band (set aside), " << r.disagreementCount << " disagree\n";
     for (const dvec3& p : r.disagreements)
-      s << "                          disagree at " << point(p) << "\n";
+      s << "                          disagree at " << pointText(p) << "\n";
   }
   s << "  volume          " << mark(r.volumeOk()) << "  exact " << number(r.exactVolume) << " (x "
     << number(r.volumeAlong[0]) << ", y " << number(r.volumeAlong[1]) << ", z "
@@ -97,11 +133,12 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
   s << "  fidelity        " << mark(r.fidelityOk()) << "  " << number(r.fidelity)
     << (r.fidelityOk() ? " <= " : " > ")
     << (crease ? number(r.fidelityAllowed) + " allowed at a crease" : "the tolerance") << ", from "
-    << (r.fidelityFromMesh ? "a mesh" : "an exact") << " point at " << point(r.fidelityAt) << "\n";
+    << (r.fidelityFromMesh ? "a mesh" : "an exact") << " point at " << pointText(r.fidelityAt)
+    << "\n";
   auto stretch = [&](const char* label, const std::optional<Stretch>& st) {
     s << label;
     if (st)
-      s << number(st->thickness) << " at " << point(st->location) << "\n";
+      s << number(st->thickness) << " at " << pointText(st->location) << "\n";
     else
       s << "none found\n";
   };

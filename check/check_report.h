@@ -28,6 +28,13 @@ struct CheckOptions {
   bool strict = false;            // warnings fail the check too
 };
 
+// Sets the numeric option that the script's check() calls key ("samples",
+// "grid", "seed", "tolerance", "min_wall" or "min_gap") to value, within
+// the range that both the script's check() and the library's allow: else
+// throws std::invalid_argument, naming it as the script does ("check: grid
+// must be a whole number from 2 to 1024").
+void setCheckOption(CheckOptions& options, const std::string& key, double value);
+
 // Distances to the exact surface are measured along lines (docs/check.md):
 // exact on flat faces, a few percent off where a face curves tightly
 // within the tolerance (by δ²/2r for a face of radius r). A point this
@@ -101,6 +108,10 @@ struct CheckReport {
   // All of the above hold (and, when strict, there are no warnings).
   bool ok() const;
 };
+
+// A point as the report and its messages give one: "(x, y, z)", six
+// digits each.
+std::string pointText(const dvec3& p);
 
 // The report as a few aligned lines, ending in the verdict; `name` (the
 // script) heads it.

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
-#include <sstream>
 #include <vector>
 
 #include "check/axis_crossings.h"
+#include "check/exact_volume.h"
 #include "engine/boolean.h"
 #include "engine/primitive.h"
 #include "engine/span_list.h"
@@ -32,23 +32,6 @@ constexpr double kSigmas = 5.0;
 // own ray, is below this share of the tolerance is not measured along 13
 // lines: the estimate is good, and the point cannot be the one that fails.
 constexpr double kQuickShare = 0.5;
-
-// splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
-// generators", OOPSLA 2014): a jitter per ray that does not depend on
-// which thread traces it, so every run of a check gives the same figures.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-double unit(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
-
-dvec3 axisVector(int axis) {
-  dvec3 d(0.0);
-  d[axis] = 1.0;
-  return d;
-}
 
 std::string describe(const Solid& solid) {
   std::string line = solid.origin().text();
@@ -247,13 +230,6 @@ class GridTracer {
 
 }  // namespace
 
-std::string pointText(const dvec3& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
-
 // The three grids: volume along each axis with its sampling deviation, and
 // what their rays found.
 void traceGrids(const Solid& solid, const MeshProbe& probe, const ExactDistance& exact,
@@ -263,37 +239,22 @@ void traceGrids(const Solid& solid, const MeshProbe& probe, const ExactDistance&
   const int n = options.grid;
   double sigma[3] = {0.0, 0.0, 0.0};
   for (int axis = 0; axis < 3; ++axis) {
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    const double du = box.size()[u] / n, dv = box.size()[v] / n;
-    const double cell = du * dv;
+    const RayGrid rays(box, axis, n, options.seed);
     std::vector<double> lengths(std::size_t(n) * n);
     std::vector<GridTally> rows(n);
     const AxisCrossings meshCrossings(mesh, box, axis, n);
     tbb::parallel_for(0, n, [&](int i) {
       std::vector<AxisCrossings::Crossing> crossings;
       for (int j = 0; j < n; ++j) {
-        // One ray at a random point of each cell (stratified sampling):
-        // unbiased, and no aliasing with a regular pattern of holes.
-        const std::uint64_t key =
-            mix(options.seed ^ mix((std::uint64_t(axis) << 60) ^ (std::uint64_t(i) << 30) ^ j));
-        dvec3 origin = box.lo;
-        origin[u] += (i + unit(key)) * du;
-        origin[v] += (j + unit(mix(key))) * dv;
-        meshCrossings.crossings(origin, i, j, crossings);
+        const Ray ray = rays.ray(i, j);
+        meshCrossings.crossings(ray.origin, i, j, crossings);
         lengths[std::size_t(i) * n + j] =
-            tracer.trace(Ray(origin, axisVector(axis), -kInfinity, kInfinity), axis, meshCrossings,
-                         crossings, rows[i]);
+            tracer.trace(ray, axis, meshCrossings, crossings, rows[i]);
       }
     });
-    double volume = 0.0, variance = 0.0;
-    for (std::size_t k = 0; k < lengths.size(); ++k) volume += cell * lengths[k];
-    // Collapsed strata (Cochran, Sampling Techniques, 3rd ed., §5A.12):
-    // with one sample per cell, neighbouring cells in pairs give an upper
-    // estimate of the variance, Σ (a·L₁ − a·L₂)².
-    for (std::size_t k = 0; k + 1 < lengths.size(); k += 2)
-      variance += std::pow(cell * (lengths[k] - lengths[k + 1]), 2);
-    report.volumeAlong[axis] = volume;
-    sigma[axis] = std::sqrt(variance);
+    const RayGrid::Volume measured = rays.volume(lengths);
+    report.volumeAlong[axis] = measured.volume;
+    sigma[axis] = measured.sigma;
     for (const GridTally& row : rows) tally.merge(row);
   }
   report.exactVolume = (report.volumeAlong[0] + report.volumeAlong[1] + report.volumeAlong[2]) / 3;

@@ -17,9 +17,6 @@
 
 namespace csgray::detail {
 
-// A point for a message: "(x, y, z)", six digits each.
-std::string pointText(const dvec3& p);
-
 // What the rays of one row of a grid found; rows are merged in order, so
 // that the figures do not depend on the threads.
 struct GridTally {

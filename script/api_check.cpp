@@ -1,8 +1,7 @@
 // check(solid, {samples=, tolerance=, ...}): the report of `csgray check`
 // as a table, so that a script, or a user's test, can assert that a part's
 // booleans are sound and its export agrees with it (docs/check.md).
-#include <cmath>
-#include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "script/api.h"
@@ -39,26 +38,6 @@ void setStretch(lua_State* L, const char* key, const std::optional<Stretch>& s) 
   setNumber(L, "thickness", s->thickness);
   setPoint(L, "at", s->location);
   lua_setfield(L, -2, key);
-}
-
-// A whole number within [lo, hi] from the options table.
-template <class T>
-std::optional<T> wholeArg(LuaArgs& args, const char* key, double lo, double hi) {
-  std::optional<double> v = args.number(key);
-  if (!v) return std::nullopt;
-  if (!(*v >= lo && *v <= hi) || std::floor(*v) != *v)
-    throw std::invalid_argument("check: " + std::string(key) + " must be a whole number from " +
-                                std::to_string(static_cast<long long>(lo)) + " to " +
-                                std::to_string(static_cast<long long>(hi)));
-  return static_cast<T>(*v);
-}
-
-std::optional<double> positiveArg(LuaArgs& args, const char* key, double lo, double hi) {
-  std::optional<double> v = args.number(key);
-  if (v && !(*v >= lo && *v <= hi))
-    throw std::invalid_argument("check: " + std::string(key) + " must be from " +
-                                std::to_string(lo) + " to " + std::to_string(hi));
-  return v;
 }
 
 void pushReport(lua_State* L, const CheckReport& r) {
@@ -123,13 +102,9 @@ int check(lua_State* L) {
   const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "check: the first argument");
   LuaArgs args(L, 2, "check");
   CheckOptions options;
-  options.samples = wholeArg<std::size_t>(args, "samples", 0, double(CheckOptions::kMaxSamples))
-                        .value_or(options.samples);
-  options.grid = wholeArg<int>(args, "grid", 2, CheckOptions::kMaxGrid).value_or(options.grid);
-  options.seed = wholeArg<std::uint64_t>(args, "seed", 0, 9e15).value_or(options.seed);
-  options.tolerance = positiveArg(args, "tolerance", 1e-6, 1e3).value_or(options.tolerance);
-  options.minWall = positiveArg(args, "min_wall", 0.0, 1e6).value_or(options.minWall);
-  options.minGap = positiveArg(args, "min_gap", 0.0, 1e6).value_or(options.minGap);
+  // Read and checked in this order, so that the first bad one is named.
+  for (const char* key : {"samples", "grid", "seed", "tolerance", "min_wall", "min_gap"})
+    if (std::optional<double> value = args.number(key)) setCheckOption(options, key, *value);
   options.strict = args.boolean("strict").value_or(false);
   args.finish();
   const ScriptOptions& script = scriptOptionsOf(L);

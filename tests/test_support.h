@@ -1,5 +1,6 @@
-// Shared checks for the test suites: the span-list invariants and the
-// agreement of spans with contains(), which every solid must satisfy.
+// Shared checks for the test suites: the span-list invariants, the
+// agreement of spans with contains() and the outward normals, which every
+// solid must satisfy, and running scripts.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,15 +9,17 @@
 #include <cctype>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "check/part_check.h"
+#include "engine/primitive.h"
+#include "engine/solid.h"
 #include "io/image_file.h"
 #include "meshio/mesh_import.h"
-#include "check/part_check.h"
 #include "script/script.h"
-#include "engine/solid.h"
 
 namespace csgray::detail::test {
 
@@ -36,6 +39,24 @@ inline ScriptOptions exampleOptions() {
   options.loadMesh = importMesh;
   options.checkSolid = checkPart;
   return options;
+}
+
+// The error a script stops with, or "(no error)" if it runs.
+inline std::string scriptError(const std::string& source, const ScriptOptions& options = {},
+                               const std::string& name = "part.lua") {
+  try {
+    runScript(source, name, options);
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The one object of a script's scene.
+inline SolidPtr solidOf(const std::string& source, const ScriptOptions& options = {}) {
+  Scene scene = runScript(source, "part.lua", options);
+  EXPECT_EQ(scene.objects.size(), 1u) << source;
+  return scene.objects.at(0);
 }
 
 // A test name from a script's path: its stem, other characters as '_'.
@@ -134,6 +155,49 @@ inline double gridVolume(const Solid& solid, const Bounds& box, int n) {
     }
   }
   return volume;
+}
+
+// On random lines, every finite boundary names the primitive and its normal
+// there is a unit vector facing against the ray where it enters and along
+// the ray where it leaves (outward normals), up to slack.
+inline void expectOutwardUnitNormals(const Primitive& p, double slack = 1e-9, int count = 500,
+                                     unsigned seed = 7) {
+  std::mt19937_64 rng(seed);
+  Bounds box = p.bounds();
+  if (!box.finite()) box = Bounds{dvec3(-5.0), dvec3(5.0)};
+  for (int i = 0; i < count; ++i) {
+    Ray line(randomPoint(rng, box), randomDirection(rng), -kInfinity, kInfinity);
+    for (const Span& s : spansOf(p, line)) {
+      if (s.length() < 1e-9) continue;  // tangent: the normal is perpendicular
+      for (bool entering : {true, false}) {
+        const Boundary& b = entering ? s.in : s.out;
+        if (std::isinf(b.t)) {
+          EXPECT_EQ(b.primitive, nullptr);
+          continue;
+        }
+        ASSERT_EQ(b.primitive, &p);
+        dvec3 n = p.normal(line.at(b.t), b.face);
+        EXPECT_NEAR(glm::length(n), 1.0, 1e-12);
+        double along = glm::dot(n, line.dir);
+        if (entering) {
+          EXPECT_LE(along, slack) << "entering at t=" << b.t << " face " << int(b.face);
+        } else {
+          EXPECT_GE(along, -slack) << "leaving at t=" << b.t << " face " << int(b.face);
+        }
+      }
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+// The 4 × 4 matrix with x, y, z, w on its diagonal.
+inline glm::dmat4 diagonal(double x, double y, double z, double w) {
+  glm::dmat4 m(0.0);
+  m[0][0] = x;
+  m[1][1] = y;
+  m[2][2] = z;
+  m[3][3] = w;
+  return m;
 }
 
 // Is t inside one of the spans (ends included)?

@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "meshio/mesh_import.h"
 #include "export/cgal/mesh_repair.h"
 #include "export/cgal/mesh_validity.h"
+#include "meshio/mesh_import.h"
 #include "script/script.h"
 #include "test_support.h"
 
@@ -462,14 +462,7 @@ class MeshScript : public ::testing::Test {
     options_.loadMesh = importMesh;
     options_.warn = [this](const std::string& m) { warnings_.push_back(m); };
   }
-  std::string errorOf(const std::string& source) {
-    try {
-      runScript(source, "part.lua", options_);
-    } catch (const ScriptError& e) {
-      return e.what();
-    }
-    return "(no error)";
-  }
+  std::string errorOf(const std::string& source) { return test::scriptError(source, options_); }
   ScriptOptions options_;
   std::vector<std::string> warnings_;
 };

@@ -25,9 +25,11 @@
 namespace csgray::detail {
 namespace {
 
+using test::expectOutwardUnitNormals;
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::expectVecNear;
 using test::randomDirection;
+using test::scriptError;
 using test::spansOf;
 using Plane = ConvexPolyhedron::Plane;
 
@@ -252,42 +254,11 @@ TEST(Platonic, VerticesOnTheBoundary) {
   }
 }
 
-// On random lines every finite boundary names the solid, and its normal is
-// unit and outward (against the ray entering, along it leaving).
-void expectOutwardUnitNormals(const Primitive& p, int count = 500, unsigned seed = 7) {
-  std::mt19937_64 rng(seed);
-  Bounds box = p.bounds();
-  if (!box.finite()) box = Bounds{dvec3(-5.0), dvec3(5.0)};
-  for (int i = 0; i < count; ++i) {
-    Ray line(test::randomPoint(rng, box), randomDirection(rng), -kInfinity, kInfinity);
-    for (const Span& s : spansOf(p, line)) {
-      if (s.length() < 1e-9) continue;
-      for (bool entering : {true, false}) {
-        const Boundary& b = entering ? s.in : s.out;
-        if (std::isinf(b.t)) {
-          EXPECT_EQ(b.primitive, nullptr);
-          continue;
-        }
-        ASSERT_EQ(b.primitive, &p);
-        dvec3 n = p.normal(line.at(b.t), b.face);
-        EXPECT_NEAR(glm::length(n), 1.0, 1e-12);
-        double along = glm::dot(n, line.dir);
-        if (entering) {
-          EXPECT_LE(along, 1e-12) << "entering face " << b.face;
-        } else {
-          EXPECT_GE(along, -1e-12) << "leaving face " << b.face;
-        }
-      }
-    }
-    if (::testing::Test::HasFailure()) return;
-  }
-}
-
 TEST(Platonic, NormalsAndSpansAgreeWithContains) {
   for (Platonic s : kAll) {
     SCOPED_TRACE(nameOf(s));
     auto solid = platonicSolid(s, 1.3);
-    expectOutwardUnitNormals(*solid);
+    expectOutwardUnitNormals(*solid, 1e-12);
     expectSpansAgreeWithContainsOnRandomLines(*solid);
     // Moved and turned, too.
     SolidPtr moved = solid->transformed(Affine::rotation(0.7, glm::normalize(dvec3(1, 2, 3)))
@@ -413,7 +384,7 @@ TEST(Convex, UnboundedWedge) {
   EXPECT_EQ(along[0].out.t, kInfinity);
   EXPECT_TRUE(spansOf(*roof, Ray({0.5, 0, 1}, {0, 1, 0}, -kInfinity, kInfinity)).empty());
   expectSpansAgreeWithContainsOnRandomLines(*roof);
-  expectOutwardUnitNormals(*roof);
+  expectOutwardUnitNormals(*roof, 1e-12);
 
   // A quadrant x <= 0, y <= 0: bounded above on x and y only.
   auto quadrant = convex({{{1, 0, 0}, 0}, {{0, 2, 0}, 0}});
@@ -445,7 +416,7 @@ TEST(Convex, SlabsPrismsAndHalfSpaces) {
   EXPECT_EQ(b.lo.z, -kInfinity);
   EXPECT_EQ(b.hi.z, kInfinity);
   expectSpansAgreeWithContainsOnRandomLines(*prism);
-  expectOutwardUnitNormals(*prism);
+  expectOutwardUnitNormals(*prism, 1e-12);
 
   // A pyramid open at the bottom: bounded above only.
   auto cone = convex({{{1, 0, 1}, 1}, {{-1, 0, 1}, 1}, {{0, 1, 1}, 1}, {{0, -1, 1}, 1}});
@@ -564,17 +535,8 @@ TEST(Convex, RefusesBadPlanes) {
 
 Scene sceneOf(const std::string& source) { return runScript(source, "part.lua"); }
 
-std::string scriptErrorOf(const std::string& source) {
-  try {
-    runScript(source, "part.lua");
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 void expectScriptError(const std::string& source, const std::string& expected) {
-  std::string e = scriptErrorOf(source);
+  std::string e = scriptError(source);
   EXPECT_NE(e.find(expected), std::string::npos) << source << "\n  gave: " << e;
 }
 

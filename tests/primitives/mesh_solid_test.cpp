@@ -22,20 +22,22 @@
 
 #include "allocation_counter.h"
 #include "engine/boolean.h"
-#include "tessellation/polygon_triangulation.h"
 #include "primitives/box.h"
 #include "primitives/sphere.h"
 #include "script/script.h"
+#include "tessellation/polygon_triangulation.h"
 #include "test_support.h"
 
 namespace csgray::detail {
 namespace {
 
 using test::expectAgreementOnLinesThrough;
+using test::expectOutwardUnitNormals;
 using test::expectSpansAgreeWithContains;
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::expectVecNear;
 using test::randomDirection;
+using test::scriptError;
 using test::spansOf;
 
 constexpr double kPi = std::numbers::pi;
@@ -172,29 +174,6 @@ void expectSameSpans(const Solid& actual, const Solid& expected, const Ray& ray,
   for (std::size_t i = 0; i < a.size(); ++i) {
     EXPECT_NEAR(a[i].first, e[i].first, tol);
     EXPECT_NEAR(a[i].second, e[i].second, tol);
-  }
-}
-
-// Every finite boundary names the mesh, with a unit normal against the ray
-// where it enters and along it where it leaves.
-void expectOutwardUnitNormals(const Primitive& p, int count = 500, unsigned seed = 7) {
-  std::mt19937_64 rng(seed);
-  for (int i = 0; i < count; ++i) {
-    Ray line(test::randomPoint(rng, p.bounds()), randomDirection(rng), -kInfinity, kInfinity);
-    for (const Span& s : spansOf(p, line)) {
-      for (bool entering : {true, false}) {
-        const Boundary& b = entering ? s.in : s.out;
-        ASSERT_EQ(b.primitive, &p);
-        dvec3 n = p.normal(line.at(b.t), int(b.face));
-        EXPECT_NEAR(glm::length(n), 1.0, 1e-12);
-        double along = glm::dot(n, line.dir);
-        if (entering)
-          EXPECT_LT(along, 1e-12);
-        else
-          EXPECT_GT(along, -1e-12);
-      }
-    }
-    if (::testing::Test::HasFailure()) return;
   }
 }
 
@@ -382,7 +361,7 @@ TEST(MeshSolid, InsideOutMeshIsTurned) {
   EXPECT_DOUBLE_EQ(spans[0].in.t, 1.0);
   EXPECT_DOUBLE_EQ(spans[0].out.t, 11.0);
   expectVecNear(cube->normal(ray.at(1.0), int(spans[0].in.face)), dvec3(-1, 0, 0), 1e-15);
-  expectOutwardUnitNormals(*cube);
+  expectOutwardUnitNormals(*cube, 1e-12);
 }
 
 TEST(MeshSolid, TetrahedronAndOctahedronHits) {
@@ -566,7 +545,7 @@ TEST(MeshSolid, SpansAgreeWithContains) {
     auto mesh = meshOf(m);
     expectSpansAgreeWithContainsOnRandomLines(*mesh, 2000);
     for (const dvec3& v : m.points) expectAgreementOnLinesThrough(*mesh, v, 50);
-    expectOutwardUnitNormals(*mesh);
+    expectOutwardUnitNormals(*mesh, 1e-12);
     SolidPtr moved = mesh->transformed(Affine::rotation(0.7, dvec3(1, 2, 3)))
                          ->transformed(Affine::translation(dvec3(1, -2, 0.5)));
     expectSpansAgreeWithContainsOnRandomLines(*moved, 500);
@@ -821,15 +800,6 @@ TEST(MeshSolid, Refusals) {
 const char* kCubeLua =
     "local points = {{0,0,0}, {10,0,0}, {10,7,0}, {0,7,0}, {0,0,5}, {10,0,5}, {10,7,5}, {0,7,5}}\n"
     "local faces = {{0,1,2,3}, {4,5,1,0}, {7,6,5,4}, {5,6,2,1}, {6,7,3,2}, {7,4,0,3}}\n";
-
-std::string scriptError(const std::string& source, const ScriptOptions& options = {}) {
-  try {
-    runScript(source, "part.lua", options);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(MeshSolidScript, Polyhedron) {
   Scene scene = runScript(std::string(kCubeLua) +

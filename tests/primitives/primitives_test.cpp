@@ -10,18 +10,20 @@
 #include <random>
 #include <stdexcept>
 
+#include "engine/solvers/quadratic.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
 #include "primitives/half_space.h"
 #include "primitives/quadric.h"
 #include "primitives/sphere.h"
-#include "engine/solvers/quadratic.h"
 #include "test_support.h"
 
 namespace csgray::detail {
 namespace {
 
+using test::diagonal;
 using test::expectAgreementOnLinesThrough;
+using test::expectOutwardUnitNormals;
 using test::expectSpansAgreeWithContains;
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::expectVecNear;
@@ -33,39 +35,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 void expectBoundsNear(const Bounds& b, const dvec3& lo, const dvec3& hi, double tol = 1e-9) {
   expectVecNear(b.lo, lo, tol);
   expectVecNear(b.hi, hi, tol);
-}
-
-// On random lines, every finite boundary names the primitive and its normal
-// there is a unit vector facing against the ray where it enters and along
-// the ray where it leaves (outward normals).
-void expectOutwardUnitNormals(const Primitive& p, int count = 500, unsigned seed = 7) {
-  std::mt19937_64 rng(seed);
-  Bounds box = p.bounds();
-  if (!box.finite()) box = Bounds{dvec3(-5.0), dvec3(5.0)};
-  for (int i = 0; i < count; ++i) {
-    Ray line(test::randomPoint(rng, box), randomDirection(rng), -kInfinity, kInfinity);
-    SpanList spans = spansOf(p, line);
-    for (const Span& s : spans) {
-      if (s.length() < 1e-9) continue;  // tangent: the normal is perpendicular
-      for (bool entering : {true, false}) {
-        const Boundary& b = entering ? s.in : s.out;
-        if (std::isinf(b.t)) {
-          EXPECT_EQ(b.primitive, nullptr);
-          continue;
-        }
-        ASSERT_EQ(b.primitive, &p);
-        dvec3 n = p.normal(line.at(b.t), b.face);
-        EXPECT_NEAR(glm::length(n), 1.0, 1e-12);
-        double along = glm::dot(n, line.dir);
-        if (entering) {
-          EXPECT_LE(along, 1e-9) << "entering at t=" << b.t << " face " << int(b.face);
-        } else {
-          EXPECT_GE(along, -1e-9) << "leaving at t=" << b.t << " face " << int(b.face);
-        }
-      }
-    }
-    if (::testing::Test::HasFailure()) return;
-  }
 }
 
 // ---------------------------------------------------------------- quadratic
@@ -657,26 +626,17 @@ TEST(HalfSpacePrimitive, RejectsDegenerateParameters) {
 
 // ------------------------------------------------------------------ quadric
 
-glm::dmat4 diag(double a, double b, double c, double d) {
-  glm::dmat4 m(0.0);
-  m[0][0] = a;
-  m[1][1] = b;
-  m[2][2] = c;
-  m[3][3] = d;
-  return m;
-}
-
 // The sphere of radius r about c: |p - c|² - r² = pᵀMp with
 // M = [I, -c; -cᵀ, |c|² - r²].
 glm::dmat4 sphereMatrix(const dvec3& c, double r) {
-  glm::dmat4 m = diag(1, 1, 1, glm::dot(c, c) - r * r);
+  glm::dmat4 m = diagonal(1, 1, 1, glm::dot(c, c) - r * r);
   for (int i = 0; i < 3; ++i) m[3][i] = m[i][3] = -c[i];
   return m;
 }
 
-// diag(1, 1, 1, -1) is x² + y² + z² <= 1: the same spans as Sphere(1).
+// diagonal(1, 1, 1, -1) is x² + y² + z² <= 1: the same spans as Sphere(1).
 TEST(QuadricPrimitive, UnitSphereMatchesSphere) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, 1, -1));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, 1, -1));
   auto s = Primitive::create<Sphere>(1.0);
   std::mt19937_64 rng(21);
   int hits = 0;
@@ -702,7 +662,7 @@ TEST(QuadricPrimitive, UnitSphereMatchesSphere) {
 // x² + y² - z² + 1 <= 0 (two sheets, |z| >= sqrt(1 + x² + y²)): along the z
 // axis through the origin, inside for t in (-inf, -1] and [1, inf).
 TEST(QuadricPrimitive, HyperboloidOfTwoSheets) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, -1, 1));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, -1, 1));
   SpanList spans = spansOf(*q, Ray(dvec3(0.0), dvec3(0, 0, 1), -kInfinity, kInfinity));
   ASSERT_EQ(spans.size(), 2u);
   EXPECT_EQ(spans[0].in.t, -kInfinity);
@@ -725,10 +685,10 @@ TEST(QuadricPrimitive, HyperboloidOfTwoSheets) {
   EXPECT_EQ(q->bounds().hi, dvec3(kInfinity));
 }
 
-// x² + y² <= 1 as diag(1, 1, 0, -1): a line along z inside it is inside
+// x² + y² <= 1 as diagonal(1, 1, 0, -1): a line along z inside it is inside
 // everywhere, one outside nowhere; across it the chord is 2.
 TEST(QuadricPrimitive, InfiniteCylinder) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, 0, -1));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, 0, -1));
   SpanList inside = spansOf(*q, Ray(dvec3(0.5, 0.3, 7), dvec3(0, 0, 1), -kInfinity, kInfinity));
   ASSERT_EQ(inside.size(), 1u);
   EXPECT_EQ(inside[0].in.t, -kInfinity);
@@ -746,7 +706,7 @@ TEST(QuadricPrimitive, InfiniteCylinder) {
 // The paraboloid x² + y² - z <= 0 (M has -1/2 at (2,3) and (3,2)): its
 // normal ∝ gradient (2x, 2y, -1).
 TEST(QuadricPrimitive, Paraboloid) {
-  glm::dmat4 m = diag(1, 1, 0, 0);
+  glm::dmat4 m = diagonal(1, 1, 0, 0);
   m[2][3] = m[3][2] = -0.5;
   auto q = Primitive::create<Quadric>(m);
   SpanList up = spansOf(*q, Ray(dvec3(1, 0, -3), dvec3(0, 0, 1), -kInfinity, kInfinity));
@@ -759,10 +719,10 @@ TEST(QuadricPrimitive, Paraboloid) {
 }
 
 // With M = [A b; bᵀ m], A positive definite, the solid is an ellipsoid with
-// half-extents sqrt(k·(A⁻¹)ᵢᵢ), k = bᵀA⁻¹b - m: diag(1/4, 1, 1, -1) is
+// half-extents sqrt(k·(A⁻¹)ᵢᵢ), k = bᵀA⁻¹b - m: diagonal(1/4, 1, 1, -1) is
 // x²/4 + y² + z² <= 1, so x in [-2, 2].
 TEST(QuadricPrimitive, EllipsoidBounds) {
-  auto q = Primitive::create<Quadric>(diag(0.25, 1, 1, -1));
+  auto q = Primitive::create<Quadric>(diagonal(0.25, 1, 1, -1));
   expectBoundsNear(q->bounds(), dvec3(-2, -1, -1), dvec3(2, 1, 1));
   // Off-centre sphere about (1, 2, 3) of radius 2.
   auto moved = Primitive::create<Quadric>(sphereMatrix(dvec3(1, 2, 3), 2.0));
@@ -777,7 +737,7 @@ TEST(QuadricPrimitive, EllipsoidBounds) {
 // the extreme point p* = sqrt(k)·A⁻¹e / sqrt(eᵀA⁻¹e), which lies in the
 // solid, and no point beyond it does.
 TEST(QuadricPrimitive, TiltedEllipsoidBoundsAreTight) {
-  glm::dmat4 m = diag(2, 2, 1, -1);
+  glm::dmat4 m = diagonal(2, 2, 1, -1);
   m[0][1] = m[1][0] = 1.0;
   auto q = Primitive::create<Quadric>(m);
   Bounds b = q->bounds();
@@ -796,16 +756,16 @@ TEST(QuadricPrimitive, TiltedEllipsoidBoundsAreTight) {
   }
 }
 
-// diag(1, 1, 1, 1) is x² + y² + z² + 1 <= 0: empty everywhere.
+// diagonal(1, 1, 1, 1) is x² + y² + z² + 1 <= 0: empty everywhere.
 TEST(QuadricPrimitive, EmptyQuadric) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, 1, 1));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, 1, 1));
   EXPECT_TRUE(q->bounds().empty());
   EXPECT_FALSE(q->contains(dvec3(0.0)));
   EXPECT_TRUE(spansOf(*q, Ray(dvec3(0, 0, -5), dvec3(0, 0, 1), -kInfinity)).empty());
 }
 
 TEST(QuadricPrimitive, CullsToRayWindow) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, -1, 1));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, -1, 1));
   dvec3 o(0.0), d(0, 0, 1);
   SpanList ahead = spansOf(*q, Ray(o, d, 2.0, kInfinity));
   ASSERT_EQ(ahead.size(), 1u);
@@ -817,13 +777,14 @@ TEST(QuadricPrimitive, CullsToRayWindow) {
 }
 
 TEST(QuadricPrimitive, SpansAgreeWithContains) {
-  glm::dmat4 paraboloid = diag(1, 1, 0, 0);
+  glm::dmat4 paraboloid = diagonal(1, 1, 0, 0);
   paraboloid[2][3] = paraboloid[3][2] = -0.5;
-  glm::dmat4 tilted = diag(2, 2, 1, -1);
+  glm::dmat4 tilted = diagonal(2, 2, 1, -1);
   tilted[0][1] = tilted[1][0] = 1.0;
-  for (const glm::dmat4& m : {diag(1, 1, 1, -1), diag(0.25, 1, 1, -1), diag(1, 1, -1, 1),
-                              diag(1, 1, -1, -1), diag(1, 1, 0, -1), diag(1, -1, 0, 0), paraboloid,
-                              tilted, sphereMatrix(dvec3(1, 2, 3), 2.0)}) {
+  for (const glm::dmat4& m :
+       {diagonal(1, 1, 1, -1), diagonal(0.25, 1, 1, -1), diagonal(1, 1, -1, 1),
+        diagonal(1, 1, -1, -1), diagonal(1, 1, 0, -1), diagonal(1, -1, 0, 0), paraboloid, tilted,
+        sphereMatrix(dvec3(1, 2, 3), 2.0)}) {
     auto q = Primitive::create<Quadric>(m);
     expectSpansAgreeWithContainsOnRandomLines(*q);
     expectOutwardUnitNormals(*q);
@@ -833,7 +794,7 @@ TEST(QuadricPrimitive, SpansAgreeWithContains) {
 // x² + y² - z² <= 0 is a double cone; lines through its apex inside it are
 // inside everywhere, and must not come back as two spans touching at the apex.
 TEST(QuadricPrimitive, LinesThroughConeApex) {
-  auto q = Primitive::create<Quadric>(diag(1, 1, -1, 0));
+  auto q = Primitive::create<Quadric>(diagonal(1, 1, -1, 0));
   SpanList axis = spansOf(*q, Ray(dvec3(0.0), dvec3(0, 0, 1), -kInfinity, kInfinity));
   EXPECT_TRUE(axis.valid());
   ASSERT_EQ(axis.size(), 1u);
@@ -841,18 +802,18 @@ TEST(QuadricPrimitive, LinesThroughConeApex) {
   EXPECT_EQ(axis[0].out.t, kInfinity);
   expectAgreementOnLinesThrough(*q, dvec3(0.0));
   // Tangent-ish: lines grazing the unit sphere quadric.
-  auto s = Primitive::create<Quadric>(diag(1, 1, 1, -1));
+  auto s = Primitive::create<Quadric>(diagonal(1, 1, 1, -1));
   expectAgreementOnLinesThrough(*s, dvec3(1, 0, 0));
 }
 
 TEST(QuadricPrimitive, RejectsDegenerateMatrix) {
-  glm::dmat4 nonSymmetric = diag(1, 1, 1, -1);
+  glm::dmat4 nonSymmetric = diagonal(1, 1, 1, -1);
   nonSymmetric[0][1] = 0.5;
   EXPECT_THROW(Primitive::create<Quadric>(nonSymmetric), std::invalid_argument);
   EXPECT_THROW(Primitive::create<Quadric>(glm::dmat4(0.0)), std::invalid_argument);
-  EXPECT_THROW(Primitive::create<Quadric>(diag(1, kNaN, 1, -1)), std::invalid_argument);
-  EXPECT_THROW(Primitive::create<Quadric>(diag(1, 1, kInfinity, -1)), std::invalid_argument);
-  glm::dmat4 nanOffDiagonal = diag(1, 1, 1, -1);
+  EXPECT_THROW(Primitive::create<Quadric>(diagonal(1, kNaN, 1, -1)), std::invalid_argument);
+  EXPECT_THROW(Primitive::create<Quadric>(diagonal(1, 1, kInfinity, -1)), std::invalid_argument);
+  glm::dmat4 nanOffDiagonal = diagonal(1, 1, 1, -1);
   nanOffDiagonal[3][0] = nanOffDiagonal[0][3] = kNaN;
   EXPECT_THROW(Primitive::create<Quadric>(nanOffDiagonal), std::invalid_argument);
 }

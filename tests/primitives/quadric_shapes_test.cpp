@@ -21,22 +21,10 @@
 namespace csgray::detail {
 namespace {
 
+using test::scriptError;
+using test::solidOf;
+
 constexpr double kPi = std::numbers::pi;
-
-SolidPtr solidOf(const std::string& source) {
-  Scene scene = runScript(source, "part.lua");
-  EXPECT_EQ(scene.objects.size(), 1u) << source;
-  return scene.objects.at(0);
-}
-
-std::string errorOf(const std::string& source) {
-  try {
-    runScript(source, "part.lua");
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 std::shared_ptr<const Quadric> quadricOf(const std::string& source) {
   auto q = std::dynamic_pointer_cast<const Quadric>(solidOf(source));
@@ -508,8 +496,8 @@ TEST(NamedQuadrics, ErrorsNameFileLineFunctionAndParameter) {
       {"return parabolic_cylinder{p=1/0}", "part.lua:1: parabolic_cylinder: p must be finite"},
   };
   for (const Case& c : cases)
-    EXPECT_NE(errorOf(c.source).find(c.expected), std::string::npos)
-        << c.source << "\n  gave: " << errorOf(c.source);
+    EXPECT_NE(scriptError(c.source).find(c.expected), std::string::npos)
+        << c.source << "\n  gave: " << scriptError(c.source);
 }
 
 TEST(Clip, ErrorsNameFileLineAndClip) {
@@ -547,8 +535,8 @@ TEST(Clip, ErrorsNameFileLineAndClip) {
       {s + "return clip(s, {plane{}})", "part.lua:2: clip: cutter 1 must be a solid, but a"},
   };
   for (const Case& c : cases)
-    EXPECT_NE(errorOf(c.source).find(c.expected), std::string::npos)
-        << c.source << "\n  gave: " << errorOf(c.source);
+    EXPECT_NE(scriptError(c.source).find(c.expected), std::string::npos)
+        << c.source << "\n  gave: " << scriptError(c.source);
 }
 
 // The example is a scene with its own camera, and every object in it is

@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "engine/boolean.h"
-#include "primitives/sphere.h"
 #include "engine/solvers/quartic.h"
-#include "script/script.h"
-#include "scene/camera.h"
+#include "primitives/sphere.h"
 #include "raytrace/renderer.h"
+#include "scene/camera.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray::detail {
@@ -30,6 +30,7 @@ namespace {
 using test::expectSpansAgreeWithContains;
 using test::expectSpansAgreeWithContainsOnRandomLines;
 using test::randomDirection;
+using test::scriptError;
 using test::spansOf;
 
 constexpr double kPi = std::numbers::pi;
@@ -579,15 +580,6 @@ TEST(TorusSelfIntersecting, ZeroMajorRadiusIsABall) {
 
 Scene sceneOf(const std::string& source) { return runScript(source, "part.lua"); }
 
-std::string errorOf(const std::string& source) {
-  try {
-    runScript(source, "part.lua");
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(TorusScript, MakesATorus) {
   Scene scene = sceneOf("return torus{R=3, r=1}");
   ASSERT_EQ(scene.objects.size(), 1u);
@@ -601,7 +593,7 @@ TEST(TorusScript, MakesATorus) {
 
 TEST(TorusScript, ErrorsNameTheParameter) {
   auto expectError = [](const std::string& source, const std::string& expected) {
-    std::string e = errorOf(source);
+    std::string e = scriptError(source);
     EXPECT_NE(e.find(expected), std::string::npos) << source << "\n  gave: " << e;
     EXPECT_NE(e.find("part.lua:1"), std::string::npos) << e;
   };

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "script/script.h"
+#include "test_support.h"
 
 namespace csgray::detail {
 namespace {
@@ -13,12 +14,7 @@ namespace {
 std::string errorOf(const std::string& source, const ScriptLimits& limits = {}) {
   ScriptOptions options;
   options.limits = limits;
-  try {
-    runScript(source, "evil.lua", options);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::scriptError(source, options, "evil.lua");
 }
 
 TEST(Sandbox, RemovedFunctionsAreNil) {

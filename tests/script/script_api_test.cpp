@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "io/image_file.h"
 #include "engine/boolean.h"
 #include "engine/primitive.h"
+#include "io/image_file.h"
 #include "script/script.h"
 #include "test_support.h"
 
@@ -25,24 +25,16 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::expectVecNear;
+using test::scriptError;
 
 Scene sceneOf(const std::string& source, const ScriptOptions& options = {}) {
   return runScript(source, "part.lua", options);
 }
 
-std::string errorOf(const std::string& source, const ScriptOptions& options = {}) {
-  try {
-    runScript(source, "part.lua", options);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 // The error of source must contain expected (which names the file and line).
 void expectError(const std::string& source, const std::string& expected,
                  const ScriptOptions& options = {}) {
-  std::string e = errorOf(source, options);
+  std::string e = scriptError(source, options);
   EXPECT_NE(e.find(expected), std::string::npos) << source << "\n  gave: " << e;
 }
 
@@ -450,7 +442,7 @@ TEST_F(ImageTextureFiles, FilesOutsideTheFolderAreRefused) {
                                     "outdir/scripts/../x.png"};
   for (const std::string& name : names) {
     loaded_.clear();
-    std::string e = errorOf(source(name), options_);
+    std::string e = scriptError(source(name), options_);
     EXPECT_NE(e.find("part.lua:1: image_texture: file " + name + " is outside the script's folder"),
               std::string::npos)
         << name << "\n  gave: " << e;
@@ -463,23 +455,23 @@ TEST_F(ImageTextureFiles, FilesOutsideTheFolderAreRefused) {
 TEST_F(ImageTextureFiles, ANulInTheNameIsRefused) {
   for (const char* name : {"in.png\\0/../../x.png", "../x.png\\0", "missing\\0.png"}) {
     loaded_.clear();
-    std::string e =
-        errorOf(std::string("return box(1):material{color=image_texture{file=\"") + name + "\"}}",
-                options_);
+    std::string e = scriptError(
+        std::string("return box(1):material{color=image_texture{file=\"") + name + "\"}}",
+        options_);
     EXPECT_EQ(e, "part.lua:1: image_texture: file name contains a NUL byte") << name;
     EXPECT_TRUE(loaded_.empty()) << name << " was read: " << loaded_.at(0);
   }
 }
 
 TEST_F(ImageTextureFiles, AMissingFileIsAnErrorNamingIt) {
-  std::string e = errorOf(source("missing.png"), options_);
+  std::string e = scriptError(source("missing.png"), options_);
   EXPECT_NE(e.find("part.lua:1: "), std::string::npos) << e;
   EXPECT_NE(e.find("missing.png"), std::string::npos) << e;
   EXPECT_EQ(e.find('\n'), std::string::npos) << e;
   expectError(source(""), "part.lua:1: image_texture: file is empty", options_);
   // A file that is not an image.
   { std::ofstream(root_ / "scripts" / "notes.png") << "not an image"; }
-  e = errorOf(source("notes.png"), options_);
+  e = scriptError(source("notes.png"), options_);
   EXPECT_NE(e.find("part.lua:1: "), std::string::npos) << e;
   EXPECT_NE(e.find("notes.png"), std::string::npos) << e;
 }
@@ -490,10 +482,10 @@ TEST_F(ImageTextureFiles, ImagesCountAgainstTheMemoryCap) {
   std::vector<float> rgb(256 * 256 * 3, 0.5f);
   writeImage((root_ / "scripts" / "big.png").string(), 256, 256, rgb.data());
   options_.limits.memoryBytes = 24u << 20;
-  EXPECT_EQ(errorOf("return box(1):material{color=image_texture{file='big.png'}}", options_),
+  EXPECT_EQ(scriptError("return box(1):material{color=image_texture{file='big.png'}}", options_),
             "(no error)");
   // 100 parts with an image of 768 KiB each: 75 MiB.
-  std::string e = errorOf(
+  std::string e = scriptError(
       "local parts = {}\n"
       "for i = 1, 100 do\n"
       "  parts[i] = box(1):translate(i, 0, 0):material{color=image_texture{file='big.png'}}\n"
@@ -670,7 +662,7 @@ TEST(ScriptSurface, SurfacesAreNotSolids) {
   };
   const char* kinds[] = {"plane", "disc", "triangle", "disc", "square", "rectangle", "plane"};
   for (int i = 0; i < 7; ++i) {
-    std::string e = errorOf(sources[i]);
+    std::string e = scriptError(sources[i]);
     EXPECT_NE(e.find("part.lua:2: "), std::string::npos) << sources[i] << "\n  gave: " << e;
     EXPECT_NE(e.find(std::string("a ") + kinds[i] + " is a surface"), std::string::npos)
         << sources[i] << "\n  gave: " << e;
@@ -901,8 +893,8 @@ TEST(ScriptScene, LimitsLandInTheScene) {
   // A solid returned alone gets the default limits.
   EXPECT_EQ(sceneOf("return sphere(1)").limits.maxDepth, 8);
   for (const char* value : {"-1", "65", "1.5", "0/0", "'deep'"}) {
-    std::string e = errorOf(std::string("local a = 1\nreturn scene{objects=sphere(1), max_depth=") +
-                            value + "}");
+    std::string e = scriptError(
+        std::string("local a = 1\nreturn scene{objects=sphere(1), max_depth=") + value + "}");
     EXPECT_NE(e.find("part.lua:2: scene: max_depth"), std::string::npos) << value << ": " << e;
   }
   expectError("return scene{objects=sphere(1), max_depth=65}",
@@ -928,16 +920,16 @@ TEST(ScriptScene, HugeListsAreCharged) {
   ScriptOptions options;
   options.limits.memoryBytes = 64u << 20;
   // 1 000 000 lights of about 180 bytes each: 170 MiB.
-  std::string e = errorOf(
+  std::string e = scriptError(
       "local l, t = point_light{pos={0, 0, 10}}, {}\n"
       "for i = 1, 1000000 do t[i] = l end\n"
       "return scene{objects=sphere(1), lights=t}",
       options);
   EXPECT_EQ(e, "part.lua:3: script exceeded the memory limit of 64 MiB");
-  EXPECT_EQ(errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
-                    "for i = 1, 1000 do t[i] = l end\n"
-                    "return scene{objects=sphere(1), lights=t}",
-                    options),
+  EXPECT_EQ(scriptError("local l, t = point_light{pos={0, 0, 10}}, {}\n"
+                        "for i = 1, 1000 do t[i] = l end\n"
+                        "return scene{objects=sphere(1), lights=t}",
+                        options),
             "(no error)");
   // 600 000 uses of a part of two primitives: more than 1 000 000.
   expectError(
@@ -948,12 +940,12 @@ TEST(ScriptScene, HugeListsAreCharged) {
   // A scene that fails (a bad entry, caught by pcall) gives its charge back.
   options.limits.memoryBytes = 16u << 20;
   EXPECT_EQ(
-      errorOf("local l, t = point_light{pos={0, 0, 10}}, {}\n"
-              "for i = 1, 20000 do t[i] = l end\n"
-              "t[#t + 1] = 5\n"
-              "for i = 1, 100 do assert(not pcall(scene, {objects=sphere(1), lights=t})) end\n"
-              "return sphere(1)",
-              options),
+      scriptError("local l, t = point_light{pos={0, 0, 10}}, {}\n"
+                  "for i = 1, 20000 do t[i] = l end\n"
+                  "t[#t + 1] = 5\n"
+                  "for i = 1, 100 do assert(not pcall(scene, {objects=sphere(1), lights=t})) end\n"
+                  "return sphere(1)",
+                  options),
       "(no error)");
 }
 

@@ -14,20 +14,8 @@
 namespace csgray::detail {
 namespace {
 
-SolidPtr solidOf(const std::string& source, const ScriptOptions& options = {}) {
-  Scene scene = runScript(source, "part.lua", options);
-  EXPECT_EQ(scene.objects.size(), 1u);
-  return scene.objects.at(0);
-}
-
-std::string errorOf(const std::string& source, const ScriptOptions& options = {}) {
-  try {
-    runScript(source, "part.lua", options);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::scriptError;
+using test::solidOf;
 
 TEST(Script, SphereByRadiusOrDiameter) {
   for (const char* source : {"return sphere{r=2}", "return sphere(2)", "return sphere{d=4}"}) {
@@ -107,10 +95,10 @@ TEST(Script, BooleansAndOperators) {
       "return union(sphere(0.1), holes)");
   EXPECT_EQ(treeStats(*holes).primitives, 6);
   EXPECT_EQ(treeStats(*holes).booleans, 1);
-  EXPECT_NE(errorOf("return difference(box(1), {sphere(1), 3})")
+  EXPECT_NE(scriptError("return difference(box(1), {sphere(1), 3})")
                 .find("part.lua:1: difference: operand 2[2] must be a solid, got number"),
             std::string::npos);
-  EXPECT_NE(errorOf("return union{box(1), {sphere(1)}}")
+  EXPECT_NE(scriptError("return union{box(1), {sphere(1)}}")
                 .find("part.lua:1: union: operand 2 must be a solid, got table"),
             std::string::npos);
   SolidPtr nary =
@@ -176,7 +164,8 @@ TEST(Script, DefinesSetGlobals) {
                        options);
   EXPECT_NEAR(s->bounds().hi.x, 3.0, 1e-6);
   options.defines = {{"not a name", "1"}};
-  EXPECT_NE(errorOf("return sphere(1)", options).find("not a valid Lua name"), std::string::npos);
+  EXPECT_NE(scriptError("return sphere(1)", options).find("not a valid Lua name"),
+            std::string::npos);
 }
 
 // Every error names the file and the line of the call that failed.
@@ -209,8 +198,8 @@ TEST(Script, ErrorsNameFileAndLine) {
        "part.lua:1: scene: lights[1] must be a light, got number"},
   };
   for (const Case& c : cases)
-    EXPECT_NE(errorOf(c.source).find(c.expected), std::string::npos)
-        << c.source << "\n  gave: " << errorOf(c.source);
+    EXPECT_NE(scriptError(c.source).find(c.expected), std::string::npos)
+        << c.source << "\n  gave: " << scriptError(c.source);
 }
 
 // Drilling holes one at a time builds a flat node, not a 10 000-deep chain
@@ -230,12 +219,12 @@ TEST(Script, ChainsOfOneOperationStayFlat) {
 
 TEST(Script, DeepAndExplodingTreesAreRefused) {
   // Alternating operations cannot be flattened.
-  EXPECT_NE(errorOf("local a = sphere(1)\n"
-                    "for i = 1, 2000 do a = (a + sphere(1)) * box(5) end return a")
+  EXPECT_NE(scriptError("local a = sphere(1)\n"
+                        "for i = 1, 2000 do a = (a + sphere(1)) * box(5) end return a")
                 .find("boolean tree deeper than 1000 levels; build long chains"),
             std::string::npos);
   // A shared part used 2^40 times: the count multiplies out.
-  std::string e = errorOf("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
+  std::string e = scriptError("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
   EXPECT_NE(e.find("part.lua:2: union: the part would have more than 1000000 primitives"),
             std::string::npos)
       << e;
@@ -287,33 +276,33 @@ TEST(Script, RandomNumbersAreReproducible) {
 // global (a -D parameter's default) is no error, and a name far from any
 // function gets Lua's message alone.
 TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
-  EXPECT_EQ(errorOf("return cube(1)"),
+  EXPECT_EQ(scriptError("return cube(1)"),
             "part.lua:1: attempt to call a nil value (global 'cube'); OpenSCAD's cube is "
             "box{size={x, y, z}} (or box(s)) here");
-  EXPECT_NE(errorOf("return translate(1, 0, 0)")
+  EXPECT_NE(scriptError("return translate(1, 0, 0)")
                 .find("; transforms are methods of a solid "
                       "here: s:translate(...)"),
             std::string::npos);
-  EXPECT_NE(errorOf("return color(1)").find("s:material{color={r, g, b}}"), std::string::npos);
-  EXPECT_EQ(errorOf("return sphre(1)"),
+  EXPECT_NE(scriptError("return color(1)").find("s:material{color={r, g, b}}"), std::string::npos);
+  EXPECT_EQ(scriptError("return sphre(1)"),
             "part.lua:1: attempt to call a nil value (global 'sphre'); did you mean sphere?");
-  EXPECT_NE(errorOf("return dodecahedrn{r=1}").find("did you mean dodecahedron?"),
+  EXPECT_NE(scriptError("return dodecahedrn{r=1}").find("did you mean dodecahedron?"),
             std::string::npos);
-  EXPECT_EQ(errorOf("return frobnicate(1)"),
+  EXPECT_EQ(scriptError("return frobnicate(1)"),
             "part.lua:1: attempt to call a nil value (global 'frobnicate')");
-  EXPECT_EQ(errorOf("return sphere(1):translat(1, 0, 0)"),
+  EXPECT_EQ(scriptError("return sphere(1):translat(1, 0, 0)"),
             "part.lua:1: attempt to call a nil value (method 'translat'); did you mean "
             "translate?");
-  EXPECT_NE(errorOf("return sphere(1):materal{color={1, 0, 0}}").find("did you mean material?"),
+  EXPECT_NE(scriptError("return sphere(1):materal{color={1, 0, 0}}").find("did you mean material?"),
             std::string::npos);
-  EXPECT_EQ(errorOf("return sphere(math.sine(1))"),
+  EXPECT_EQ(scriptError("return sphere(math.sine(1))"),
             "part.lua:1: attempt to call a nil value (field 'sine'); did you mean math.sin?");
-  EXPECT_NE(errorOf("local t = {}\ntable.insrt(t, 1)\nreturn sphere(1)")
+  EXPECT_NE(scriptError("local t = {}\ntable.insrt(t, 1)\nreturn sphere(1)")
                 .find("did you mean table.insert?"),
             std::string::npos);
-  EXPECT_EQ(errorOf("return sphere(math.frobnicate(1))"),
+  EXPECT_EQ(scriptError("return sphere(math.frobnicate(1))"),
             "part.lua:1: attempt to call a nil value (field 'frobnicate')");
-  EXPECT_EQ(errorOf("return sphere(1):frobnicate()"),
+  EXPECT_EQ(scriptError("return sphere(1):frobnicate()"),
             "part.lua:1: attempt to call a nil value (method 'frobnicate')");
   EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));
 }

@@ -16,25 +16,18 @@
 #include <utility>
 #include <vector>
 
+#include "engine/solvers/quadric_form.h"
 #include "export/cgal/mesh_validity.h"
 #include "primitives/quadric.h"
-#include "engine/solvers/quadric_form.h"
 #include "script/script.h"
 #include "test_support.h"
 
 namespace csgray::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::diagonal;
 
-glm::dmat4 diagonal(double x, double y, double z, double w) {
-  glm::dmat4 m(0.0);
-  m[0][0] = x;
-  m[1][1] = y;
-  m[2][2] = z;
-  m[3][3] = w;
-  return m;
-}
+constexpr double kPi = std::numbers::pi;
 
 // The matrices of api_quadrics.cpp (table 17.1 scaled by a positive factor).
 glm::dmat4 ellipsoidM(double a, double b, double c) {
