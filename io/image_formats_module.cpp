@@ -62,9 +62,6 @@ TextureImage read(const std::string& path) {
   auto fail = [&](const std::string& why) {
     return std::runtime_error("cannot read texture image " + path + ": " + why);
   };
-  std::error_code error;
-  if (!std::filesystem::exists(path, error) && !error) throw fail("no such file");
-  if (std::filesystem::is_directory(path, error)) throw fail("it is a folder");
   // Colours as stored: without this, OIIO multiplies them by alpha on
   // reading (PNG, TIFF, ...), which would darken translucent texels.
   OIIO::ImageSpec config;
