@@ -1,6 +1,8 @@
 // Files a user names as input (the script, meshes, texture images): a FIFO,
 // a folder or a device is refused at once and by name (a FIFO would block
-// open() for ever), and regular files are read whole or up to a limit.
+// open() for ever), regular files are read whole or up to a limit, and a
+// corrupt texture image gives one error line naming the file, with nothing
+// printed by the libraries that read it.
 #include "io/input_file.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "io/image_file.h"
 #include "io/scratch_folder.h"
@@ -124,6 +127,39 @@ TEST_F(InputFiles, ATextureThatIsAFifoIsRefusedByName) {
   std::string p = fifo("bricks.png");
   EXPECT_EQ(textureError(p).message,
             "cannot read texture image " + p + ": it is a FIFO, not a regular file");
+}
+
+// libpng prints its errors itself, and OpenImageIO reads a JPEG or TIFF
+// file cut short as if it were whole, noting an error: each corrupt image
+// is one error line naming the file, and nothing else is printed.
+TEST_F(InputFiles, ACorruptTextureImageIsOneErrorLineAndNothingPrinted) {
+  const int w = 64, h = 64;
+  std::vector<float> rgb(std::size_t(w) * h * 3);
+  for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = float((i * 7919) % 251) / 250.0f;
+  for (const std::string ext : {"png", "jpg", "tif", "exr"}) {
+    std::string good = path("good." + ext);
+    writeImage(good, w, h, rgb.data());
+    std::ifstream in(good, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 100u) << ext;
+    // Cut short in the pixels, cut short in the header, and with junk in the
+    // compressed data of a PNG (whose chunks have checksums).
+    std::vector<std::pair<std::string, std::string>> bad = {
+        {"half." + ext, bytes.substr(0, bytes.size() / 2)}, {"head." + ext, bytes.substr(0, 40)}};
+    if (ext == "png") {
+      std::string junk = bytes;
+      for (std::size_t i = junk.size() / 2; i < junk.size() / 2 + 12; ++i) junk[i] = char(0xA5);
+      bad.emplace_back("junk.png", junk);
+    }
+    for (const auto& [name, content] : bad) {
+      write(path(name), content);
+      TextureError error = textureError(path(name));
+      EXPECT_EQ(error.message.rfind("cannot read texture image " + path(name) + ": ", 0), 0u)
+          << error.message;
+      EXPECT_EQ(error.message.find('\n'), std::string::npos) << error.message;
+      EXPECT_EQ(error.printed, "") << name;
+    }
+  }
 }
 
 }  // namespace
