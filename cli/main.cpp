@@ -2,12 +2,31 @@
 // Each command is declared and run in its own file (cli/*_command.cpp);
 // this puts them together and turns failures into exit statuses.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "cli/commands.h"
 
 using namespace csgray::detail;
+
+namespace {
+
+// Standard output holds what info and check report, and what render and
+// export wrote: lost there (> /dev/full, a full disk), it is an error, as
+// a file that cannot be written is.
+void flushStandardOutput() {
+  errno = 0;
+  std::cout.flush();
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
+    throw std::runtime_error(std::string("cannot write the standard output: ") +
+                             (errno != 0 ? std::strerror(errno) : "the write failed"));
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
@@ -36,7 +55,11 @@ int main(int argc, char** argv) {
   try {
     const PartScript part(script);
     for (const Command& command : commands)
-      if (*command.app) return command.run(part);
+      if (*command.app) {
+        const int code = command.run(part);
+        flushStandardOutput();
+        return code;
+      }
   } catch (const CLI::ValidationError& e) {
     std::cerr << "csgray: error: " << e.what() << "\n";
     return 2;

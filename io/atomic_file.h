@@ -8,22 +8,25 @@
 namespace csgray::detail {
 
 // Why a file cannot be written at path (its folder is missing or not
-// writable, or the path is a folder), or "" when it can: checked before
-// the work that makes the file, so that a typo costs no time.
+// writable; the path names a folder, a FIFO, a device or anything else
+// that is not a regular file; its name is longer than the file system
+// takes), or "" when it can: checked before the work that makes the file,
+// so that a typo costs no time.
 std::string outputPathProblem(const std::string& path);
 
 class AtomicFile {
  public:
   // The temporary's name keeps the target's extension, for writers that
-  // choose a format by extension.
+  // choose a format by extension, and is no longer than a file name may be.
   explicit AtomicFile(std::string target);
   ~AtomicFile();  // removes the temporary unless committed
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   const std::string& tempPath() const { return temp_; }
-  // Flushes the temporary to disk and renames it over the target.
-  // Throws std::runtime_error naming the target.
+  // Flushes the temporary to disk and renames it over the target, unless
+  // the target has become something other than a regular file. Throws
+  // std::runtime_error naming the target.
   void commit();
 
  private:

@@ -13,6 +13,7 @@
 
 #include "io/atomic_file.h"
 #include "io/image_formats.h"
+#include "io/input_file.h"
 #include "io/png_file.h"
 #include "io/srgb.h"
 
@@ -89,6 +90,11 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
   file.commit();
 }
 
-TextureImage readTextureImage(const std::string& path) { return imageFormats().read(path); }
+TextureImage readTextureImage(const std::string& path) {
+  // Here, not in OpenImageIO, which would wait for ever on a FIFO.
+  if (std::string problem = inputFileProblem(path); !problem.empty())
+    throw std::runtime_error("cannot read texture image " + path + ": " + problem);
+  return imageFormats().read(path);
+}
 
 }  // namespace csgray::detail

@@ -17,7 +17,8 @@ struct ImageFormats {
   // path. Throws std::runtime_error.
   void (*write)(const std::string& tempPath, const std::string& path, int width, int height,
                 const float* rgb, ImageData data);
-  // readTextureImage (image_file.h).
+  // readTextureImage (image_file.h), given a path that names a regular
+  // file.
   TextureImage (*read)(const std::string& path);
 };
 

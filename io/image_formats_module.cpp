@@ -7,9 +7,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <mutex>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "io/image_formats.h"
@@ -19,12 +25,71 @@ namespace csgray::detail {
 
 namespace {
 
-// OIIO's error texts may run over several lines; errors here are one line.
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text.empty() ? "unknown error" : text;
+// OIIO's error texts may run over several lines, some of which repeat
+// others ("Read error: hit end of file", then "PNG read error: IHDR: Read
+// error: hit end of file"); errors here are one line, each part once.
+std::string oneLine(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    if (!line.empty()) lines.push_back(line);
+  }
+  std::string joined;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    bool repeated = false;
+    for (std::size_t j = 0; j < lines.size() && !repeated; ++j)
+      repeated =
+          j != i && lines[j].find(lines[i]) != std::string::npos && (lines[j] != lines[i] || j < i);
+    if (!repeated) joined += (joined.empty() ? "" : "; ") + lines[i];
+  }
+  return joined.empty() ? "unknown error" : joined;
 }
+
+// libpng, through which OIIO reads PNG files, prints its errors and
+// warnings on standard error itself ("libpng error: ..."), and OIIO then
+// reports them again. While an image is read, stdio's stderr (a variable
+// that glibc lets a program set) writes into memory instead: csgray says
+// what went wrong in one line of its own, from OIIO's errors, or from what
+// was printed where OIIO has none. Reads take turns, since stderr is one
+// for the whole process.
+class CapturedStderr {
+ public:
+  CapturedStderr() : lock_(mutex()) {
+    std::fflush(stderr);
+    capture_ = open_memstream(&text_, &size_);
+    if (capture_) std::swap(stderr, capture_);
+  }
+  ~CapturedStderr() {
+    restore();
+    std::free(text_);
+  }
+  CapturedStderr(const CapturedStderr&) = delete;
+  CapturedStderr& operator=(const CapturedStderr&) = delete;
+
+  // What was printed so far; printing goes to stderr again from here on.
+  std::string text() {
+    restore();
+    return text_ ? std::string(text_, size_) : "";
+  }
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  void restore() {
+    if (!capture_) return;
+    std::swap(stderr, capture_);
+    std::fclose(capture_);
+    capture_ = nullptr;
+  }
+
+  std::lock_guard<std::mutex> lock_;
+  FILE* capture_ = nullptr;
+  char* text_ = nullptr;
+  std::size_t size_ = 0;
+};
 
 bool keepsFloat(const std::string& formatName) {
   return formatName == "openexr" || formatName == "hdr" || formatName == "pfm";
@@ -54,23 +119,23 @@ void write(const std::string& tempPath, const std::string& path, int width, int 
   if (!out->open(tempPath, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
       !out->close()) {
     std::string why = out->geterror();
-    throw std::runtime_error("cannot write " + path + ": " + (why.empty() ? "write failed" : why));
+    throw std::runtime_error("cannot write " + path + ": " +
+                             (why.empty() ? "write failed" : oneLine(why)));
   }
 }
 
 TextureImage read(const std::string& path) {
+  CapturedStderr printed;
   auto fail = [&](const std::string& why) {
-    return std::runtime_error("cannot read texture image " + path + ": " + why);
+    return std::runtime_error("cannot read texture image " + path + ": " +
+                              oneLine(why.empty() ? printed.text() : why));
   };
-  std::error_code error;
-  if (!std::filesystem::exists(path, error) && !error) throw fail("no such file");
-  if (std::filesystem::is_directory(path, error)) throw fail("it is a folder");
   // Colours as stored: without this, OIIO multiplies them by alpha on
   // reading (PNG, TIFF, ...), which would darken translucent texels.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw fail(oneLine(OIIO::geterror()));
+  if (!in) throw fail(OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   // Bounded before anything is read, so that a bad or hostile file cannot
   // ask for gigabytes: 4096 × 4096 RGB floats are 192 MiB.
@@ -92,9 +157,11 @@ TextureImage read(const std::string& path) {
   image.rgb.resize(pixels * 3);
   // Read into the front of the buffer (packed, channels per pixel) and, for
   // grey, spread from the back so that no value is overwritten before use.
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.rgb.data()))
-    throw fail(oneLine(in->geterror()));
-  in->close();
+  // A read that succeeds may have met errors all the same (a JPEG or TIFF
+  // file cut short reads as grey where its data end): they fail it too.
+  bool whole = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.rgb.data());
+  whole = in->close() && whole;
+  if (!whole || in->has_error()) throw fail(in->geterror());
   if (channels == 1)
     for (std::size_t i = pixels; i-- > 0;) {
       float grey = image.rgb[i];

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "io/input_file.h"
 #include "meshio/reader_common.h"
 #include "tessellation/polygon_triangulation.h"
 
@@ -100,20 +100,17 @@ TriangleMesh readMesh(std::string_view bytes, const std::string& name,
 }
 
 TriangleMesh readMeshFile(const std::string& path, const MeshReadLimits& limits) {
-  namespace fs = std::filesystem;
-  const std::string name = fs::path(path).filename().string();
-  std::error_code error;
-  if (!fs::exists(path, error)) fail(name, "no such file");
+  const std::string name = std::filesystem::path(path).filename().string();
   // A folder, a FIFO or a device is refused by name (a FIFO would block).
-  if (!fs::is_regular_file(path, error)) fail(name, "not a regular file");
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error) fail(name, "cannot read the file: " + error.message());
-  if (size > limits.maxFileBytes)
+  InputFile file(path);
+  if (!file.problem().empty()) fail(name, file.problem());
+  if (file.size() > limits.maxFileBytes)
     fail(name,
          "the file is larger than the limit of " + std::to_string(limits.maxFileBytes) + " bytes");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes(std::size_t(size), '\0');
-  if (!in.read(bytes.data(), std::streamsize(size))) fail(name, "cannot read the file");
+  std::string bytes;
+  bytes.reserve(std::size_t(file.size()));
+  if (!file.readUpTo(bytes, std::size_t(file.size())))
+    fail(name, "cannot read the file: " + file.problem());
   return readMesh(bytes, name, limits);
 }
 

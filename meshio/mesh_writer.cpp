@@ -58,7 +58,9 @@ void writeWithOpenMesh(const std::string& path, const std::string& tempPath, Mes
                     : format == MeshFormat::Off ? ".off"
                                                 : ".ply";
   // 17 significant digits print every double so that it reads back the same.
-  if (!OpenMesh::IO::write_mesh(om, out, ext, options, 17) || !out.flush())
+  const bool written = OpenMesh::IO::write_mesh(om, out, ext, options, 17);
+  out.close();  // its failure too: the last bytes are written then
+  if (!written || !out)
     throw std::runtime_error("cannot write " + path + ": the writer failed (disk full?)");
 }
 
@@ -187,8 +189,9 @@ void write3mf(const std::string& path, const std::string& tempPath, const PartMe
                                          reinterpret_cast<void*>(&ZipBuffer::seek), &zip),
            path, "write the file", writer.object);
   std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
-  if (!out || !out.write(zip.bytes.data(), std::streamsize(zip.bytes.size())) || !out.flush())
-    throw std::runtime_error("cannot write " + path + ": the write failed (disk full?)");
+  out.write(zip.bytes.data(), std::streamsize(zip.bytes.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path + ": the write failed (disk full?)");
 }
 
 }  // namespace

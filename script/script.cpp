@@ -3,12 +3,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
+#include "io/input_file.h"
 #include "script/api.h"
 #include "script/sandbox.h"
 
@@ -87,15 +86,14 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw ScriptError(path + ": is a folder, not a script");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw ScriptError(path + ": cannot open script: " + std::strerror(errno));
-  // Read at most kMaxScriptBytes + 1 bytes, a block at a time (a script is
-  // usually a few kilobytes): /dev/zero is not a script.
+  // A device is read too, up to the limit (/dev/zero is too large); a FIFO
+  // or a socket is refused, since reading one may wait for ever.
+  InputFile file(path, /*devicesToo=*/true);
+  if (!file.problem().empty()) throw ScriptError(path + ": cannot open script: " + file.problem());
+  // At most kMaxScriptBytes + 1 bytes: a script is usually a few kilobytes.
   std::string text;
-  char block[1 << 16];
-  while (text.size() <= kMaxScriptBytes && file.read(block, sizeof block).gcount() > 0)
-    text.append(block, static_cast<std::size_t>(file.gcount()));
-  if (file.bad()) throw ScriptError(path + ": cannot read script");
+  if (!file.readUpTo(text, kMaxScriptBytes + 1))
+    throw ScriptError(path + ": cannot read script: " + file.problem());
   if (text.size() > kMaxScriptBytes)
     throw ScriptError(path + ": script is larger than " + std::to_string(kMaxScriptBytes >> 20) +
                       " MiB");

@@ -446,5 +446,129 @@ expect_exit 2 "check with a one-ray grid" "" check "$work/part.lua" --grid 1
 expect_exit 2 "check with a zero tolerance" "" check "$work/part.lua" --tolerance 0
 expect_exit 2 "check with a NaN wall" "" check "$work/part.lua" --min-wall nan
 
+# ---- Files that are not regular files; long names; corrupt images ------------
+# Each run here is under `timeout 10`, so that a FIFO that blocks fails the
+# test (exit 124) instead of hanging the suite.
+plain_csgray=$csgray
+printf '#!/bin/sh\nexec timeout 10 "%s" "$@"\n' "$plain_csgray" > "$work/timed_csgray"
+chmod +x "$work/timed_csgray"
+csgray=$work/timed_csgray
+mkdir "$work/special"
+sp=$work/special
+# Outputs that are not regular files are refused before the work, by name.
+# As root, a rename over /dev/full would replace the device with the image:
+# the same device is made in the work folder and tried first, and /dev/full
+# itself only if that was refused.
+if [ "$(id -u)" = 0 ] && mknod "$sp/full.png" c 1 7 2>/dev/null && mknod "$sp/full.stl" c 1 7 &&
+   mknod "$sp/aov.depth.png" c 1 7; then
+  :
+else
+  ln -sf /dev/full "$sp/full.png"; ln -sf /dev/full "$sp/full.stl"; ln -sf /dev/full "$sp/aov.depth.png"
+fi
+failed_before=$failed
+expect_exit 1 "render to a full device" "" render "$work/part.lua" -o "$sp/full.png"
+expect_in_stderr "render to a full device" "cannot write $sp/full.png: it is a character device, not a regular file"
+expect_exit 1 "export to a full device" "" export "$work/part.lua" -o "$sp/full.stl"
+expect_in_stderr "export to a full device" "cannot write $sp/full.stl: it is a character device, not a regular file"
+expect_exit 1 "depth image to a full device" "$sp/aov.png" render "$work/part.lua" -o "$sp/aov.png" --aov depth
+expect_in_stderr "depth image to a full device" "cannot write $sp/aov.depth.png: it is a character device"
+if [ -c "$sp/full.png" ] && [ -c "$sp/full.stl" ] && [ -c "$sp/aov.depth.png" ]; then
+  pass
+else
+  fail "a device output was replaced: $(ls -lA "$sp")"
+fi
+if [ "$failed" -eq "$failed_before" ]; then
+  expect_exit 1 "render to /dev/full" "" render "$work/part.lua" -o /dev/full
+  expect_in_stderr "render to /dev/full" "cannot write /dev/full: it is a character device, not a regular file"
+  expect_exit 1 "export to /dev/full" "" export "$work/part.lua" -o /dev/full
+  if [ -c /dev/full ] && [ ! -L /dev/full ]; then pass; else fail "/dev/full is no longer a device"; fi
+fi
+mkfifo "$sp/out.png" "$sp/out.stl" "$sp/out.obj" "$sp/aov2.normal.exr"
+expect_exit 1 "render to a FIFO" "" render "$work/part.lua" -o "$sp/out.png"
+expect_in_stderr "render to a FIFO" "cannot write $sp/out.png: it is a FIFO, not a regular file"
+expect_exit 1 "export to a FIFO" "" export "$work/part.lua" -o "$sp/out.stl"
+expect_in_stderr "export to a FIFO" "cannot write $sp/out.stl: it is a FIFO, not a regular file"
+expect_exit 1 "export to a FIFO as text" "" export "$work/part.lua" -o "$sp/out.obj" --ascii
+expect_exit 1 "normal image to a FIFO" "$sp/aov2.exr" render "$work/part.lua" -o "$sp/aov2.exr" --aov depth,normal
+expect_in_stderr "normal image to a FIFO" "cannot write $sp/aov2.normal.exr: it is a FIFO"
+if [ -p "$sp/out.png" ] && [ -p "$sp/out.stl" ] && [ -p "$sp/aov2.normal.exr" ] && [ ! -e "$sp/aov2.depth.exr" ]; then
+  pass
+else
+  fail "a refused output changed the folder: $(ls -lA "$sp")"
+fi
+# Standard output that cannot be written is an error too (info's and
+# check's reports would be lost).
+"$csgray" info "$work/part.lua" >/dev/full 2>"$work/stderr"
+if [ $? -eq 1 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] &&
+   grep -q '^csgray: error: cannot write the standard output: ' "$work/stderr"; then
+  pass
+else
+  fail "info > /dev/full"; cat "$work/stderr"
+fi
+"$csgray" check "$work/part.lua" --samples 200 --grid 8 >/dev/full 2>"$work/stderr"
+if [ $? -eq 1 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] &&
+   grep -q '^csgray: error: cannot write the standard output: ' "$work/stderr"; then
+  pass
+else
+  fail "check > /dev/full"; cat "$work/stderr"
+fi
+# A FIFO as the script, as a mesh or as a texture fails at once, by name.
+mkfifo "$sp/script.lua" "$sp/part.stl" "$sp/bricks.png"
+expect_exit 1 "FIFO as the script" "$sp/s.png" render "$sp/script.lua" -o "$sp/s.png"
+expect_in_stderr "FIFO as the script" "$sp/script.lua: cannot open script: it is a FIFO, not a regular file"
+expect_exit 1 "FIFO as the script of info" "" info "$sp/script.lua"
+printf 'return mesh{file="part.stl"}\n' > "$sp/mesh.lua"
+expect_exit 1 "FIFO as a mesh" "$sp/m.png" render "$sp/mesh.lua" -o "$sp/m.png"
+expect_in_stderr "FIFO as a mesh" "mesh.lua:1: mesh: part.stl: it is a FIFO, not a regular file"
+printf 'return box(1):material{color=image_texture{file="bricks.png"}}\n' > "$sp/texture.lua"
+expect_exit 1 "FIFO as a texture" "$sp/t.png" render "$sp/texture.lua" -o "$sp/t.png"
+expect_in_stderr "FIFO as a texture" "bricks.png: it is a FIFO, not a regular file"
+# A texture that is a device is refused too; a script may be one (see
+# /dev/zero above).
+printf 'return box(1):material{color=image_texture{file="/dev/zero"}}\n' > "$sp/zero.lua"
+expect_exit 1 "device as a texture" "$sp/z.png" render "$sp/zero.lua" -o "$sp/z.png" --allow-path /dev
+expect_in_stderr "device as a texture" "/dev/zero: it is a character device, not a regular file"
+# An output name of 250 bytes is written (its temporary's name is cut to
+# fit the 255-byte limit); one over the limit is refused before the work.
+long=$(printf 'n%.0s' $(seq 246))
+mkdir "$work/long"
+if "$csgray" render "$work/part.lua" -o "$work/long/$long.png" --size 16x12 >/dev/null 2>"$work/stderr" &&
+   is_png "$work/long/$long.png" &&
+   "$csgray" export "$work/part.lua" -o "$work/long/$long.stl" >/dev/null 2>>"$work/stderr" &&
+   [ -s "$work/long/$long.stl" ] && [ "$(ls -A "$work/long" | wc -l)" -eq 2 ]; then
+  pass
+else
+  fail "a 250-byte output name"; cat "$work/stderr"; ls -A "$work/long"
+fi
+rm -rf "$work/long"
+mkdir "$work/long"
+expect_exit 1 "a 256-byte output name" "" render "$work/part.lua" -o "$work/long/${long}nnnnnn.png"
+expect_in_stderr "a 256-byte output name" "the file name is longer than 255 bytes"
+# Its depth image's name would be longer than the limit: refused before the
+# colour image is written.
+expect_exit 1 "a depth image name over the limit" "" render "$work/part.lua" -o "$work/long/$long.png" --aov depth
+expect_in_stderr "a depth image name over the limit" "cannot write $work/long/$long.depth.png: the file name is longer"
+if [ -z "$(ls -A "$work/long")" ]; then pass; else fail "long names left: $(ls -A "$work/long")"; fi
+# Corrupt texture images: one line that names the file, and nothing that
+# libpng or OpenImageIO print themselves.
+mkdir "$work/corrupt"
+cr=$work/corrupt
+"$csgray" render "$work/part.lua" -o "$cr/good.png" --size 64x48 >/dev/null 2>&1
+"$csgray" render "$work/part.lua" -o "$cr/good.jpg" --size 64x48 >/dev/null 2>&1
+for ext in png jpg; do
+  size=$(wc -c <"$cr/good.$ext")
+  head -c $((size / 2)) "$cr/good.$ext" >"$cr/half.$ext"
+  head -c 40 "$cr/good.$ext" >"$cr/head.$ext"
+  cp "$cr/good.$ext" "$cr/junk.$ext"
+  printf '\245\245\245\245\245\245\245\245\245\245\245\245' |
+    dd of="$cr/junk.$ext" bs=1 seek=$((size / 2)) conv=notrunc 2>/dev/null
+done
+for image in half.png head.png junk.png half.jpg head.jpg; do
+  printf 'return box(1):material{color=image_texture{file="%s"}}\n' "$image" > "$cr/tex.lua"
+  expect_exit 1 "corrupt texture $image" "$cr/out.png" render "$cr/tex.lua" -o "$cr/out.png"
+  expect_in_stderr "corrupt texture $image" "tex.lua:1: cannot read texture image $cr/$image: "
+done
+csgray=$plain_csgray
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
