@@ -11,7 +11,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
-    csgray::detail::TriangleMesh mesh = csgray::detail::readMesh(bytes, "input." CSGRAY_FUZZ_FORMAT);
+    csgray::detail::TriangleMesh mesh =
+        csgray::detail::readMesh(bytes, "input." CSGRAY_FUZZ_FORMAT);
     // The indices must name points.
     for (const auto& triangle : mesh.triangles)
       for (std::uint32_t v : triangle)

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "meshio/mesh_reader.h"
 #include "export/cgal/mesh_repair.h"
 #include "export/cgal/mesh_validity.h"
+#include "meshio/mesh_reader.h"
 
 namespace csgray::detail {
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "engine/bvh.h"
-#include "scene/scene.h"
-#include "scene/camera.h"
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
 
 namespace csgray::detail {
 class Sampler;

@@ -43,9 +43,7 @@ class CheckerTexture final : public Texture {
     // (which would overflow far from the origin); NaN counts as odd. The
     // millionth of a cell added keeps a face that lies on a cell boundary
     // (a floor at z = 0) in one cell: its hit points round to either side.
-    auto odd = [this](double c) {
-      return std::fmod(std::floor(c / size_ + 1e-6), 2.0) != 0.0;
-    };
+    auto odd = [this](double c) { return std::fmod(std::floor(c / size_ + 1e-6), 2.0) != 0.0; };
     return (odd(p.x) != odd(p.y)) != odd(p.z) ? b_ : a_;
   }
 

@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
-#include "script/script.h"
 #include "engine/solid.h"
+#include "script/script.h"
 
 namespace csgray::detail {
 

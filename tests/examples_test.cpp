@@ -8,8 +8,8 @@
 
 #include "check_support.h"
 #include "engine/boolean.h"
-#include "script/script.h"
 #include "raytrace/renderer.h"
+#include "script/script.h"
 #include "test_support.h"
 
 namespace csgray::detail {

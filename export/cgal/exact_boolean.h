@@ -2,8 +2,8 @@
 // (Polygon Mesh Processing, "Corefinement and Boolean Operations").
 #pragma once
 
-#include "export/cgal/exact_mesh.h"
 #include "engine/boolean.h"
+#include "export/cgal/exact_mesh.h"
 
 namespace csgray::detail {
 

@@ -5,8 +5,8 @@
 // meshes are joined along the border they leave.
 #pragma once
 
-#include "export/cgal/exact_mesh.h"
 #include "engine/bounds.h"
+#include "export/cgal/exact_mesh.h"
 
 namespace csgray::detail {
 

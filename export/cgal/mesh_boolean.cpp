@@ -11,14 +11,14 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "engine/boolean.h"
+#include "engine/primitive.h"
 #include "export/cgal/convex_intersection.h"
 #include "export/cgal/exact_boolean.h"
 #include "export/cgal/glued_union.h"
 #include "export/cgal/mesh_validity.h"
 #include "export/cgal/rounded_repair.h"
 #include "export/cgal/stray_shells.h"
-#include "engine/boolean.h"
-#include "engine/primitive.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {

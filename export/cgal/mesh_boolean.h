@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "export/part_mesh.h"
 #include "engine/solid.h"
+#include "export/part_mesh.h"
 
 namespace csgray::detail {
 

@@ -9,8 +9,8 @@
 
 #include <cstddef>
 
-#include "export/part_mesh.h"
 #include "engine/solid.h"
+#include "export/part_mesh.h"
 
 namespace csgray::detail {
 

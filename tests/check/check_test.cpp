@@ -9,12 +9,12 @@
 #include <random>
 #include <sstream>
 
-#include "check_support.h"
 #include "check/axis_crossings.h"
+#include "check/part_check.h"
+#include "check_support.h"
+#include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
 #include "meshio/mesh_writer.h"
-#include "check/part_check.h"
-#include "engine/boolean.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
 #include "primitives/sphere.h"

@@ -13,12 +13,12 @@
 #include <string>
 
 #include "check_support.h"
+#include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
 #include "meshio/mesh_writer.h"
-#include "engine/boolean.h"
-#include "tessellation/mesh_shells.h"
 #include "script/script.h"
+#include "tessellation/mesh_shells.h"
 #include "test_support.h"
 
 namespace csgray::detail {

@@ -13,13 +13,13 @@
 #include <fstream>
 #include <numbers>
 
-#include "io/image_file.h"
+#include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
+#include "export/cgal/mesh_validity.h"
+#include "io/image_file.h"
 #include "meshio/mesh_import.h"
 #include "meshio/mesh_reader.h"
-#include "export/cgal/mesh_validity.h"
 #include "meshio/mesh_writer.h"
-#include "engine/boolean.h"
 #include "script/script.h"
 #include "test_support.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "allocation_counter.h"
-#include "script/script.h"
-#include "scene/camera.h"
 #include "raytrace/renderer.h"
+#include "scene/camera.h"
+#include "script/script.h"
 
 namespace csgray::detail {
 namespace {

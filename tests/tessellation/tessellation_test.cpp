@@ -17,8 +17,8 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "export/cgal/mesh_validity.h"
 #include "engine/affine.h"
+#include "export/cgal/mesh_validity.h"
 #include "primitives/box.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/cylinder.h"
