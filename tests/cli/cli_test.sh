@@ -446,5 +446,12 @@ expect_exit 2 "check with a one-ray grid" "" check "$work/part.lua" --grid 1
 expect_exit 2 "check with a zero tolerance" "" check "$work/part.lua" --tolerance 0
 expect_exit 2 "check with a NaN wall" "" check "$work/part.lua" --min-wall nan
 
+# A mesh file with a vertex of two coordinates, through a script: the file
+# and line, exit 1.
+printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$work/short_row.ply"
+printf 'return mesh{file="short_row.ply"}\n' > "$work/short_row.lua"
+expect_exit 1 "mesh with a short vertex row" "$work/out.png" render "$work/short_row.lua" -o "$work/out.png"
+expect_in_stderr "mesh with a short vertex row" "short_row.ply:11: vertex 1: the line ends before the values the header declares"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
