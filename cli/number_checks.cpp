@@ -1,5 +1,7 @@
 #include "cli/number_checks.h"
 
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
 
 namespace csgray::detail {
@@ -25,7 +27,12 @@ CLI::Validator modelUnits(double lo, double hi, const std::string& range, const 
 const CLI::Validator decimal(
     [](const std::string& text) -> std::string {
       bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-      return digits && !(text.size() > 1 && text[0] == '0') ? "" : "must be a whole number";
+      // Past 64 bits CLI11 would keep the largest value or wrap around.
+      std::uint64_t value = 0;
+      bool fits = std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
+      if (!digits || (text.size() > 1 && text[0] == '0'))
+        return "must be a whole number (decimal digits)";
+      return fits ? "" : "must be a whole number below 2^64 (18446744073709551616)";
     },
     "N");
 

@@ -6,7 +6,8 @@
 
 namespace csgray::detail {
 
-// Digits only: CLI11 would read 0x10 as sixteen and 010 as eight.
+// Digits only, at most 2⁶⁴ − 1: CLI11 would read 0x10 as sixteen and 010
+// as eight, and keep the largest value for a larger one.
 extern const CLI::Validator decimal;
 // An export's tolerance: 1e-6 to 1000 model units.
 extern const CLI::Validator toleranceRange;

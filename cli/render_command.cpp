@@ -158,6 +158,7 @@ Command renderCommand(CLI::App& app, ScriptArguments& script) {
       ->required();
   render->add_option("--size", arguments->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   render->add_option("--threads", arguments->threads, "Threads to render on (0: one per core)")
+      ->check(decimal)
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   render->add_option("--samples", arguments->samples, "Rays per pixel, jittered (antialiasing)")

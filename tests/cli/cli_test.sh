@@ -446,6 +446,46 @@ expect_exit 2 "check with a one-ray grid" "" check "$work/part.lua" --grid 1
 expect_exit 2 "check with a zero tolerance" "" check "$work/part.lua" --tolerance 0
 expect_exit 2 "check with a NaN wall" "" check "$work/part.lua" --min-wall nan
 
+# ---- options refused, and the limits of a run (docs/cli.md, "What is refused")
+# Each: the exit code (2 for the command line, 1 for the run) and one line.
+short_stderr() {  # NAME: the line is short, whatever the command line held
+  if [ "$(wc -c <"$work/stderr")" -le 300 ]; then pass; else fail "$1: $(wc -c <"$work/stderr") bytes on stderr"; fi
+}
+expect_exit 2 "seed past 64 bits" "" check "$work/part.lua" --seed 18446744073709551616
+expect_in_stderr "seed past 64 bits" "--seed: must be a whole number below 2^64"
+expect_exit 2 "seed written with an exponent" "" check "$work/part.lua" --seed 1e30
+expect_exit 2 "threads in hexadecimal" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --threads 0x10
+# -D: a denormal is a finite number and is taken; what is refused is a
+# command-line error that says why.
+if "$csgray" info "$work/param.lua" -D radius=4.9e-324 >"$work/stdout" 2>"$work/stderr" &&
+   grep -q '4.94066e-324' "$work/stdout"; then pass; else fail "-D radius=4.9e-324"; cat "$work/stderr"; fi
+expect_exit 2 "define past the range of a double" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
+expect_in_stderr "define past the range of a double" "-D radius=1e999: out of range"
+expect_exit 2 "define that underflows to 0" "" info "$work/param.lua" -D radius=1e-400
+expect_in_stderr "define that underflows to 0" "-D radius=1e-400: too close to 0"
+expect_exit 2 "define of NaN" "" info "$work/param.lua" -D radius=nan
+expect_in_stderr "define of NaN" "-D radius=nan: not a finite number"
+expect_exit 2 "define without a value" "" info "$work/param.lua" -D radius
+expect_exit 2 "define of a built-in" "" info "$work/param.lua" -D sphere=3
+expect_exit 2 "define of a keyword" "" info "$work/param.lua" -D end=3
+# Values of 100 000 characters are cut in the message.
+huge=$(head -c 100000 /dev/zero | tr '\0' 9)
+expect_exit 2 "huge define" "" info "$work/param.lua" -D "radius=${huge}"
+# The first 40 characters, "...", the last 17.
+expect_in_stderr "huge define" "-D radius=$(head -c 40 <<<"$huge")...$(head -c 17 <<<"$huge"): out of range"
+short_stderr "huge define"
+expect_exit 2 "huge define without a value" "" info "$work/param.lua" -D "$huge"
+short_stderr "huge define without a value"
+expect_exit 2 "huge size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size "$huge"
+short_stderr "huge size"
+expect_exit 2 "huge unknown option" "" info "$work/param.lua" "--$huge"
+short_stderr "huge unknown option"
+# An unknown command is named.
+expect_exit 2 "unknown command" "" rendr "$work/part.lua" -o "$work/out.png"
+expect_in_stderr "unknown command" "csgray: error: unknown command 'rendr'; the commands are render, export, check and info"
+expect_exit 2 "huge unknown command" "" "$huge"
+short_stderr "huge unknown command"
+
 # A mesh file with a vertex of two coordinates, through a script: the file
 # and line, exit 1.
 printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$work/short_row.ply"
