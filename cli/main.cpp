@@ -71,9 +71,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    const PartScript part(script);
     for (const Command& command : commands)
-      if (*command.app) return command.run(part);
+      if (*command.app) return command.run(PartScript(script, command.app->get_name()));
   } catch (const CLI::ValidationError& e) {
     return error(e.what(), 2, true);
   } catch (const DefineError& e) {  // a -D the script cannot take, cut already

@@ -8,16 +8,17 @@ namespace csgray::detail {
 
 namespace {
 
-// A number from lo to hi in model units; NaN and words are refused
-// (CLI::Range lets NaN by). range is how the message writes lo and hi.
-CLI::Validator modelUnits(double lo, double hi, const std::string& range, const std::string& name) {
+// A number from lo to hi; NaN and words are refused (CLI::Range lets NaN
+// by). range is how the message writes lo and hi, unit what they count.
+CLI::Validator numberRange(double lo, double hi, const std::string& range, const std::string& unit,
+                           const std::string& name) {
   return CLI::Validator(
       [=](const std::string& text) -> std::string {
         char* end = nullptr;
         double v = std::strtod(text.c_str(), &end);
         return end != text.c_str() && *end == '\0' && v >= lo && v <= hi
                    ? ""
-                   : "must be a number from " + range + " (model units)";
+                   : "must be a number from " + range + " (" + unit + ")";
       },
       name);
 }
@@ -36,8 +37,12 @@ const CLI::Validator decimal(
     },
     "N");
 
-const CLI::Validator toleranceRange = modelUnits(1e-6, 1e3, "1e-6 to 1000", "TOLERANCE");
+const CLI::Validator toleranceRange =
+    numberRange(1e-6, 1e3, "1e-6 to 1000", "model units", "TOLERANCE");
 
-const CLI::Validator lengthRange = modelUnits(0.0, 1e6, "0 to 1e6", "LENGTH");
+const CLI::Validator lengthRange = numberRange(0.0, 1e6, "0 to 1e6", "model units", "LENGTH");
+
+const CLI::Validator rayCountRange =
+    numberRange(0.0, 1e18, "0 to 1e18", "rays; 0: no limit", "RAYS");
 
 }  // namespace csgray::detail

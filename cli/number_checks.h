@@ -13,5 +13,7 @@ extern const CLI::Validator decimal;
 extern const CLI::Validator toleranceRange;
 // A wall or gap: 0 to 10⁶ model units.
 extern const CLI::Validator lengthRange;
+// A count of rays: 0 (no limit) to 10¹⁸.
+extern const CLI::Validator rayCountRange;
 
 }  // namespace csgray::detail
