@@ -1,9 +1,11 @@
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/mesh_tools.h"
 #include "cli/number_checks.h"
+#include "cli/watchdog.h"
 
 namespace csgray::detail {
 
@@ -46,7 +48,12 @@ Command checkCommand(CLI::App& app, ScriptArguments& script) {
   return {checker, [arguments](const PartScript& part) {
             CheckCommandOptions options = *arguments;
             options.script = part.path();
-            return meshTools().checkScene(part.run(), options);
+            Scene scene = part.run();
+            // As for export: the process ends at the limit, before the
+            // report is printed (CheckCommandOptions::checked).
+            std::optional<Watchdog> limit(std::in_place, part.timeLeft(), part.timedOut());
+            options.checked = [&limit] { limit.reset(); };
+            return meshTools().checkScene(scene, options);
           }};
 }
 

@@ -18,6 +18,7 @@ int checkScene(const Scene& scene, const CheckCommandOptions& options) {
     const CrashGuard guard(options.script);
     return checkPart(*part, options.check);
   }();
+  if (options.checked) options.checked();
   const std::string text = options.json ? checkReportJson(report, options.script)
                                         : checkReportText(report, options.script);
   std::fputs(text.c_str(), stdout);

@@ -3,6 +3,7 @@
 // printed as text or JSON.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "check/check_report.h"
@@ -14,6 +15,9 @@ struct CheckCommandOptions {
   std::string script;  // for messages
   CheckOptions check;
   bool json = false;  // print JSON instead of text
+  // Called when the check is done, before the report is printed: the
+  // command's time limit ends there, so that no half report is printed.
+  std::function<void()> checked;
 };
 
 // Checks the scene's solids (their union, when there are several) and

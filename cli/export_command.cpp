@@ -1,10 +1,12 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/mesh_tools.h"
 #include "cli/number_checks.h"
+#include "cli/watchdog.h"
 
 namespace csgray::detail {
 
@@ -31,6 +33,10 @@ Command exportCommand(CLI::App& app, ScriptArguments& script) {
             meshTools().checkExportOutput(options);
             auto start = std::chrono::steady_clock::now();
             Scene scene = part.run();
+            // The booleans cannot be stopped half way: the watchdog ends the
+            // process, before the file is opened (ExportOptions::meshed).
+            std::optional<Watchdog> limit(std::in_place, part.timeLeft(), part.timedOut());
+            options.meshed = [&limit] { limit.reset(); };
             meshTools().exportScene(
                 scene, options,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -42,6 +42,7 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
       throw std::runtime_error(options.script + ": " + e.what());
     }
   }();
+  if (options.meshed) options.meshed();
   if (mesh.mesh.empty()) throw std::runtime_error(options.script + ": the part is empty");
   const auto evaluated = Clock::now();
   writeMeshFile(options.output, mesh, options.ascii);

@@ -2,6 +2,7 @@
 // a scene's solids as a closed, printable mesh file.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "scene/scene.h"
@@ -14,6 +15,9 @@ struct ExportOptions {
   double tolerance = 0.01;
   bool ascii = false;  // text STL and PLY
   bool stats = false;  // stage times on stderr
+  // Called when the mesh is made, before it is written: the command's
+  // time limit ends there, so that the file is whole or not there.
+  std::function<void()> meshed;
 };
 
 // Throws std::runtime_error when the output cannot be written (checked

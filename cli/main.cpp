@@ -8,8 +8,11 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "cli/commands.h"
+#include "scene/value_checks.h"
+#include "script/script.h"
 
 using namespace csgray::detail;
 
@@ -24,6 +27,33 @@ void flushStandardOutput() {
   if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
     throw std::runtime_error(std::string("cannot write the standard output: ") +
                              (errno != 0 ? std::strerror(errno) : "the write failed"));
+}
+
+// One line on stderr, whatever a library said: line breaks become spaces.
+// With cut, every word longer than a screen's share is cut to 60
+// characters: CLI11's messages, and the commands' checks of options, echo
+// the values given on the command line whole.
+int error(const std::string& message, int status, bool cut = false) {
+  std::string line;
+  std::size_t word = 0;
+  for (std::size_t i = 0; i <= message.size(); ++i) {
+    if (i < message.size() && message[i] != ' ' && message[i] != '\n' && message[i] != '\r')
+      continue;
+    const std::string_view text = std::string_view(message).substr(word, i - word);
+    line += cut ? shownValue(text) : std::string(text);
+    if (i < message.size()) line += ' ';
+    word = i + 1;
+  }
+  std::cerr << "csgray: error: " << line << "\n";
+  return status;
+}
+
+// The first argument, when it is not an option and names no command.
+const char* unknownCommand(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return nullptr;
+  for (const CLI::App* command : app.get_subcommands({}))
+    if (command->check_name(argv[1])) return nullptr;
+  return argv[1];
 }
 
 }  // namespace
@@ -48,27 +78,26 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
-    std::cerr << "csgray: error: " << e.what() << " (see csgray --help)\n";
-    return 2;
+    if (const char* name = unknownCommand(app, argc, argv))
+      return error("unknown command '" + std::string(name) +
+                       "'; the commands are render, export, check and info (see csgray --help)",
+                   2, true);
+    return error(std::string(e.what()) + " (see csgray --help)", 2, true);
   }
 
   try {
-    const PartScript part(script);
     for (const Command& command : commands)
       if (*command.app) {
-        const int code = command.run(part);
+        const int code = command.run(PartScript(script, command.app->get_name()));
         flushStandardOutput();
         return code;
       }
   } catch (const CLI::ValidationError& e) {
-    std::cerr << "csgray: error: " << e.what() << "\n";
-    return 2;
+    return error(e.what(), 2, true);
+  } catch (const DefineError& e) {  // a -D the script cannot take, cut already
+    return error(e.what(), 2);
   } catch (const std::exception& e) {
-    std::string message = e.what();
-    for (char& c : message)
-      if (c == '\n' || c == '\r') c = ' ';  // one line, whatever a library said
-    std::cerr << "csgray: error: " << message << "\n";
-    return 1;
+    return error(e.what(), 1);
   }
   return 0;
 }

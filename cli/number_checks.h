@@ -6,11 +6,14 @@
 
 namespace csgray::detail {
 
-// Digits only: CLI11 would read 0x10 as sixteen and 010 as eight.
+// Digits only, at most 2⁶⁴ − 1: CLI11 would read 0x10 as sixteen and 010
+// as eight, and keep the largest value for a larger one.
 extern const CLI::Validator decimal;
 // An export's tolerance: 1e-6 to 1000 model units.
 extern const CLI::Validator toleranceRange;
 // A wall or gap: 0 to 10⁶ model units.
 extern const CLI::Validator lengthRange;
+// A count of rays: 0 (no limit) to 10¹⁸.
+extern const CLI::Validator rayCountRange;
 
 }  // namespace csgray::detail

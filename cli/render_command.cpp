@@ -1,5 +1,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,8 +16,10 @@
 #include "cli/heap_reserve.h"
 #include "cli/number_checks.h"
 #include "cli/progress.h"
+#include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_formats.h"
+#include "raytrace/ray_estimate.h"
 #include "raytrace/renderer.h"
 
 namespace csgray::detail {
@@ -26,12 +29,36 @@ namespace {
 constexpr int kMaxSide = 16384;
 constexpr long kMaxPixels = 64L * 1024 * 1024;
 
+// The most rays a render may trace by the bound of raytrace/ray_estimate.h
+// unless --max-rays says otherwise. Every scene in examples/ and in the
+// tests is far below it: the largest bound, glass_and_mirror.lua's at
+// 1024x768 with 4 samples (the most the docs use), is 4.8e9, since its
+// glass lets every ray branch into a tree of 511 (it traces 400 times
+// fewer); at the default size and samples 7.4e8. At some ten million rays
+// a second on a core, 1e11 is hours of work; the script of 2000 area
+// lights of 1024 samples, at 9.8e11, is refused.
+constexpr double kDefaultMaxRays = 1e11;
+
 struct RenderArguments {
   std::string output, size = "800x600";
   int threads = 0, samples = 1;
   bool adaptive = false, stats = false;
   std::vector<std::string> aovs;
+  double maxRays = kDefaultMaxRays;  // 0: no limit
 };
+
+// Refuses a render whose bound of rays (raytrace/ray_estimate.h) is above
+// the limit, before any is traced.
+void checkRayBound(const Scene& scene, const RenderOptions& options, double maxRays,
+                   const std::string& script) {
+  const RayEstimate estimate = estimateRays(scene, options);
+  if (!(maxRays > 0.0) || estimate.total() <= maxRays) return;
+  char text[96];
+  std::snprintf(text, sizeof text, "the render would trace up to %.2g rays (", estimate.total());
+  char limit[64];
+  std::snprintf(limit, sizeof limit, "); at most %.3g are allowed (--max-rays)", maxRays);
+  throw std::runtime_error(script + ": " + text + estimate.factors() + limit);
+}
 
 // "1024x768" to width and height; throws CLI::ValidationError.
 std::pair<int, int> parseSize(const std::string& text) {
@@ -90,8 +117,9 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
   // its rows are finished, so that little is left for after the render.
   std::optional<PngEncoder> png;
   if (isPngFile(output)) png.emplace(width, height);
+  // Set at the end of --timeout: the renderer stops at the next pixel.
+  std::atomic<bool> late = false;
   RenderResult result = [&] {
-    ProgressBar bar("rendering");
     RenderOptions options;
     options.width = width;
     options.height = height;
@@ -101,6 +129,9 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
     options.adaptive = arguments.adaptive;
     options.depthAov = depthAov;
     options.normalAov = normalAov;
+    options.cancel = &late;
+    checkRayBound(scene, options, arguments.maxRays, script.path());
+    ProgressBar bar("rendering");
     options.progress = [&bar](double done) { bar.update(done); };
     if (png) {
       options.bandRows = PngEncoder::kBandRows;
@@ -110,6 +141,8 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
       };
     }
     try {
+      // The files are written after the limit: they are whole or not there.
+      const Watchdog limit(script.timeLeft(), late);
       Renderer renderer(scene, options);
       built = Clock::now();
       RenderResult r = renderer.renderAll();
@@ -118,6 +151,8 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
       return r;
     } catch (const std::invalid_argument& e) {  // e.g. nothing to frame
       throw std::runtime_error(script.path() + ": " + e.what());
+    } catch (const RenderCancelled&) {
+      throw std::runtime_error(script.timedOut());
     }
   }();
   if (depthAov) writeAov(aovPath(output, "depth"), result.depth, true, workers);
@@ -158,6 +193,7 @@ Command renderCommand(CLI::App& app, ScriptArguments& script) {
       ->required();
   render->add_option("--size", arguments->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   render->add_option("--threads", arguments->threads, "Threads to render on (0: one per core)")
+      ->check(decimal)
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   render->add_option("--samples", arguments->samples, "Rays per pixel, jittered (antialiasing)")
@@ -173,6 +209,11 @@ Command renderCommand(CLI::App& app, ScriptArguments& script) {
                    "Also write depth and/or normal images beside the output: depth,normal")
       ->delimiter(',')
       ->check(CLI::IsMember({"depth", "normal"}));
+  render
+      ->add_option("--max-rays", arguments->maxRays,
+                   "Refuse a render that could trace more rays than this (0: no limit)")
+      ->check(rayCountRange)
+      ->capture_default_str();
   addScriptOptions(*render, script);
   return {render, [arguments](const PartScript& part) { return renderImage(*arguments, part); }};
 }

@@ -1,6 +1,7 @@
 #include "cli/script_options.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -34,6 +35,12 @@ std::vector<std::pair<std::string, std::string>> parseDefines(
   return defines;
 }
 
+std::string seconds(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 }  // namespace
 
 CLI::App* addScriptCommand(CLI::App& app, const std::string& name, const std::string& description,
@@ -53,10 +60,19 @@ void addScriptOptions(CLI::App& command, ScriptArguments& arguments) {
       .add_option("--allow-path", arguments.allowedFolders,
                   "A folder outside the script's that its files (meshes, images) may come from")
       ->check(CLI::ExistingDirectory);
+  command
+      .add_option("--timeout", arguments.runTimeout,
+                  "Seconds the whole command may run, script included (0: no limit)")
+      ->check(timeoutRange)
+      ->capture_default_str();
 }
 
-PartScript::PartScript(const ScriptArguments& arguments)
-    : path_(arguments.script), timeout_(arguments.timeout) {
+PartScript::PartScript(const ScriptArguments& arguments, std::string command)
+    : path_(arguments.script),
+      command_(std::move(command)),
+      timeout_(arguments.timeout),
+      runTimeout_(arguments.runTimeout),
+      start_(std::chrono::steady_clock::now()) {
   options_.defines = parseDefines(arguments.defines);
   options_.loadImage = readTextureImage;
   options_.loadMesh = [](const std::string& path, bool repair, std::string& report) {
@@ -70,11 +86,27 @@ PartScript::PartScript(const ScriptArguments& arguments)
 }
 
 Scene PartScript::run() const {
-  char limit[32];
-  std::snprintf(limit, sizeof limit, "%g", timeout_);
-  Watchdog watchdog(
-      timeout_, path_ + ": the script did not finish within " + limit + " s (--script-timeout)");
+  // One timer for both limits (one watchdog at a time): the script's own,
+  // or what is left of the whole run's when that ends first.
+  const double left = timeLeft();
+  const bool whole = left > 0.0 && !(timeout_ > 0.0 && timeout_ < left);
+  const Watchdog watchdog(whole ? left : timeout_,
+                          whole ? timedOut()
+                                : path_ + ": the script did not finish within " +
+                                      seconds(timeout_) + " s (--script-timeout)");
   return runScriptFile(path_, options_);
+}
+
+double PartScript::timeLeft() const {
+  if (!(runTimeout_ > 0.0)) return 0.0;
+  const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start_;
+  return std::max(runTimeout_ - spent.count(), 1e-6);
+}
+
+std::string PartScript::timedOut() const {
+  // "the render", "the export", "the check"; info is not a noun.
+  const std::string run = command_ == "info" ? "the info command" : "the " + command_;
+  return path_ + ": " + run + " took longer than --timeout " + seconds(runTimeout_) + " s";
 }
 
 }  // namespace csgray::detail

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
@@ -40,14 +41,24 @@ std::optional<double> parseDouble(std::string_view token) {
   if (token.size() > 1 && token[0] == '+') token.remove_prefix(1);
   double value = 0.0;
   auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  if (end != token.data() + token.size()) return std::nullopt;
+  // A number past the range of a double (1e999, 1e-400): from_chars
+  // leaves the value unset; strtod rounds it to ±inf or 0 as a text
+  // reader would.
+  if (error == std::errc::result_out_of_range)
+    return std::strtod(std::string(token).c_str(), nullptr);
+  if (error != std::errc()) return std::nullopt;
   return value;
 }
 
 double coordinate(std::string_view token, const std::string& where) {
   std::optional<double> value = parseDouble(token);
   if (!value) fail(where, shown(token) + " is not a number");
-  if (!std::isfinite(*value)) fail(where, "coordinate " + shown(token) + " is not finite");
+  // "nan" and "inf" are written so; digits that overflow are too large.
+  const bool written = token.find_first_of("iInN") != std::string_view::npos;
+  if (!std::isfinite(*value))
+    fail(where, "coordinate " + shown(token) +
+                    (written ? " is not finite" : " is beyond the range of a double"));
   return *value;
 }
 

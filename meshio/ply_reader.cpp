@@ -67,7 +67,10 @@ struct PlyElement {
 enum class PlyFormat { Ascii, LittleEndian, BigEndian };
 
 // The values after the header, read one by one as numbers; knows where it
-// is for messages.
+// is for messages. In ASCII each item of an element is a line of its own
+// (Turk: "each element on its own line"), which is what lets a vertex with
+// a value missing be named by its line rather than shift every value after
+// it by one.
 class PlyValues {
  public:
   PlyValues(std::string_view data, std::size_t offset, std::size_t headerLines, PlyFormat format,
@@ -78,6 +81,22 @@ class PlyValues {
   // Where the value last read begins.
   std::string whereLast() const { return whereAt(last_); }
   std::size_t remaining() const { return data_.size() - pos_; }
+
+  // ASCII: the item (item `index` of `element`) begins on the next line
+  // with something on it, and its values are all on that line.
+  void beginItem(std::string_view element, std::uint64_t index) {
+    element_ = element;
+    item_ = index;
+    if (format_ != PlyFormat::Ascii) return;
+    while (pos_ < data_.size() && isSpace(data_[pos_])) line_ += data_[pos_++] == '\n';
+  }
+  // ASCII: nothing may be left on the item's line.
+  void endItem() {
+    if (format_ != PlyFormat::Ascii) return;
+    while (pos_ < data_.size() && isBlank(data_[pos_])) ++pos_;
+    if (pos_ < data_.size() && data_[pos_] != '\n')
+      fail(where(), itemName() + ": the line has more values than the header declares");
+  }
 
   double next(PlyType type) {
     last_ = pos_;
@@ -148,8 +167,13 @@ class PlyValues {
                                        : name_ + ": byte " + std::to_string(pos);
   }
 
+  static bool isBlank(char c) { return c != '\n' && isSpace(c); }
+  std::string itemName() const { return std::string(element_) + " " + std::to_string(item_); }
+
   double nextText() {
-    while (pos_ < data_.size() && isSpace(data_[pos_])) line_ += data_[pos_++] == '\n';
+    while (pos_ < data_.size() && isBlank(data_[pos_])) ++pos_;
+    if (pos_ < data_.size() && data_[pos_] == '\n')
+      fail(where(), itemName() + ": the line ends before the values the header declares");
     std::size_t begin = pos_;
     while (pos_ < data_.size() && !isSpace(data_[pos_])) ++pos_;
     if (begin == pos_) fail(where(), "the file ends inside the data (truncated?)");
@@ -165,6 +189,8 @@ class PlyValues {
   std::size_t line_;
   PlyFormat format_;
   const std::string& name_;
+  std::string_view element_;
+  std::uint64_t item_ = 0;
 };
 
 }  // namespace
@@ -272,6 +298,7 @@ TriangleMesh readPly(std::string_view bytes, const std::string& name,
     if (element.properties.empty()) continue;
     if (isVertex) raw.points.reserve(std::size_t(element.count));
     for (std::uint64_t item = 0; item < element.count; ++item) {
+      values.beginItem(element.name, item);
       dvec3 p(0.0);
       for (std::size_t i = 0; i < element.properties.size(); ++i) {
         const PlyProperty& property = element.properties[i];
@@ -311,6 +338,7 @@ TriangleMesh readPly(std::string_view bytes, const std::string& name,
           }
         }
       }
+      values.endItem();
       if (isVertex) raw.points.push_back(p);
     }
   }

@@ -357,6 +357,9 @@ RenderResult Renderer::renderAll() const {
   std::optional<RenderThreads> ownThreads;
   RenderThreads* pool =
       options_.threadPool ? options_.threadPool : &ownThreads.emplace(options_.threads);
+  auto cancelled = [this] {
+    return options_.cancel && options_.cancel->load(std::memory_order_relaxed);
+  };
   auto forEachTile = [&](bool last, auto&& work) {
     // The pixels each band still waits for.
     std::vector<std::atomic<std::int64_t>> waiting(bandRows && last ? (h + bandRows - 1) / bandRows
@@ -368,7 +371,10 @@ RenderResult Renderer::renderAll() const {
       const int y0 = i / tilesX * kTile, y1 = std::min(h, y0 + kTile);
       RayCounts counts;
       for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) work(x, y, counts);
+        for (int x = x0; x < x1; ++x) {
+          if (cancelled()) return;  // a band it is in is never handed on
+          work(x, y, counts);
+        }
       primary += counts.primary;
       shadow += counts.shadow;
       secondary += counts.secondary;
@@ -394,6 +400,7 @@ RenderResult Renderer::renderAll() const {
       for (int i; (i = next++) < tiles;) tile(i);
     };
     pool->run(take);
+    if (cancelled()) throw RenderCancelled();
   };
 
   auto add = [](RayCounts& sum, const RayCounts& more) {

@@ -6,9 +6,11 @@
 // ray, traced the same way up to a depth and weight limit.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/bvh.h"
@@ -53,6 +55,16 @@ struct RenderOptions {
   // are rendered in rows from the top, so bands finish from the top down.
   int bandRows = 0;
   std::function<void(const Image& color, int first, int last)> rowsDone;
+  // When set, read before each pixel: once it is true the threads stop
+  // and renderAll throws RenderCancelled (a time limit sets it from a
+  // timer). A pixel is the unit because one may take seconds.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+// A render stopped by RenderOptions::cancel; its image is not made.
+class RenderCancelled : public std::runtime_error {
+ public:
+  RenderCancelled() : std::runtime_error("the render was cancelled") {}
 };
 
 // What the renderer makes: the colour image, and the AOVs asked for. Depth

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "engine/ray.h"
 
@@ -27,5 +28,11 @@ void checkColor(const std::string& function, const char* key, const dvec3& color
 void checkNonZero(const std::string& function, const char* key, const dvec3& vector);
 // A whole number from lo to hi, returned as an int.
 int checkWhole(const std::string& function, const char* key, double value, int lo, int hi);
+
+// A value a user gave, as a message shows it: at most 60 characters, the
+// middle of a longer one left out ("..."), so that a value of 100 000
+// characters does not fill the screen while a long path keeps its start
+// and its file name.
+std::string shownValue(std::string_view text);
 
 }  // namespace csgray::detail

@@ -7,7 +7,11 @@
 #include <set>
 #include <sstream>
 
+<<<<<<< HEAD
 #include "io/input_file.h"
+=======
+#include "scene/value_checks.h"
+>>>>>>> badcli
 #include "script/api.h"
 #include "script/sandbox.h"
 
@@ -26,8 +30,17 @@ void pushDefine(lua_State* L, const std::string& name, const std::string& value)
     errno = 0;
     double number = std::strtod(value.c_str(), &end);
     if (*end == '\0') {
-      if (errno != 0 || !std::isfinite(number))
-        throw ScriptError("-D " + name + "=" + value + ": not a finite number");
+      // strtod's ERANGE is also set for a denormal such as 4.9e-324, which
+      // is finite and taken; "inf" and "nan" are written so; digits that
+      // overflow are too large, and those that underflow to 0 too small.
+      const std::string refused = "-D " + shownValue(name) + "=" + shownValue(value) + ": ";
+      if (!std::isfinite(number))
+        throw DefineError(refused +
+                          (value.find_first_of("iInN") != std::string::npos
+                               ? "not a finite number"
+                               : "out of range (numbers reach 1.8e308 either side of 0)"));
+      if (errno == ERANGE && number == 0.0)
+        throw DefineError(refused + "too close to 0 (the least number above 0 is 4.9e-324)");
       lua_pushnumber(L, number);
       return;
     }
@@ -62,11 +75,12 @@ Scene runScript(const std::string& source, const std::string& chunkName,
   lua_State* L = sandbox.state();
   registerScriptApi(L, options);
   for (const auto& [name, value] : options.defines) {
+    const std::string shown = shownValue(name);
     if (!isIdentifier(name))
-      throw ScriptError("-D " + name + "=...: '" + name + "' is not a valid Lua name");
+      throw DefineError("-D " + shown + "=...: '" + shown + "' is not a valid Lua name");
     bool builtIn = lua_getglobal(L, name.c_str()) != LUA_TNIL;
     lua_pop(L, 1);
-    if (builtIn) throw ScriptError("-D " + name + "=...: '" + name + "' is a built-in name");
+    if (builtIn) throw DefineError("-D " + shown + "=...: '" + shown + "' is a built-in name");
     pushDefine(L, name, value);
     lua_setglobal(L, name.c_str());
   }

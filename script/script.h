@@ -56,6 +56,13 @@ class ScriptError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A global set before the script (ScriptOptions::defines) that is refused:
+// the fault of the command line (-D), not of the script.
+class DefineError : public ScriptError {
+ public:
+  using ScriptError::ScriptError;
+};
+
 // Runs the script file at path. Throws ScriptError.
 Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
 // Runs source text; chunkName is used in messages in place of a file name.

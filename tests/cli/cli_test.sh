@@ -569,6 +569,102 @@ for image in half.png head.png junk.png half.jpg head.jpg; do
   expect_in_stderr "corrupt texture $image" "tex.lua:1: cannot read texture image $cr/$image: "
 done
 csgray=$plain_csgray
+# ---- options refused, and the limits of a run (docs/cli.md, "What is refused
+# on the command line" and "Limits of a run")
+# Each: the exit code (2 for the command line, 1 for the run) and one line.
+short_stderr() {  # NAME: the line is short, whatever the command line held
+  if [ "$(wc -c <"$work/stderr")" -le 300 ]; then pass; else fail "$1: $(wc -c <"$work/stderr") bytes on stderr"; fi
+}
+expect_exit 2 "seed past 64 bits" "" check "$work/part.lua" --seed 18446744073709551616
+expect_in_stderr "seed past 64 bits" "--seed: must be a whole number below 2^64"
+expect_exit 2 "seed written with an exponent" "" check "$work/part.lua" --seed 1e30
+expect_exit 2 "threads in hexadecimal" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --threads 0x10
+# -D: a denormal is a finite number and is taken; what is refused is a
+# command-line error that says why.
+if "$csgray" info "$work/param.lua" -D radius=4.9e-324 >"$work/stdout" 2>"$work/stderr" &&
+   grep -q '4.94066e-324' "$work/stdout"; then pass; else fail "-D radius=4.9e-324"; cat "$work/stderr"; fi
+expect_exit 2 "define past the range of a double" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
+expect_in_stderr "define past the range of a double" "-D radius=1e999: out of range"
+expect_exit 2 "define that underflows to 0" "" info "$work/param.lua" -D radius=1e-400
+expect_in_stderr "define that underflows to 0" "-D radius=1e-400: too close to 0"
+expect_exit 2 "define of NaN" "" info "$work/param.lua" -D radius=nan
+expect_in_stderr "define of NaN" "-D radius=nan: not a finite number"
+expect_exit 2 "define without a value" "" info "$work/param.lua" -D radius
+expect_exit 2 "define of a built-in" "" info "$work/param.lua" -D sphere=3
+expect_exit 2 "define of a keyword" "" info "$work/param.lua" -D end=3
+# Values of 100 000 characters are cut in the message.
+huge=$(head -c 100000 /dev/zero | tr '\0' 9)
+expect_exit 2 "huge define" "" info "$work/param.lua" -D "radius=${huge}"
+# The first 40 characters, "...", the last 17.
+expect_in_stderr "huge define" "-D radius=$(head -c 40 <<<"$huge")...$(head -c 17 <<<"$huge"): out of range"
+short_stderr "huge define"
+expect_exit 2 "huge define without a value" "" info "$work/param.lua" -D "$huge"
+short_stderr "huge define without a value"
+expect_exit 2 "huge size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size "$huge"
+short_stderr "huge size"
+expect_exit 2 "huge unknown option" "" info "$work/param.lua" "--$huge"
+short_stderr "huge unknown option"
+# An unknown command is named.
+expect_exit 2 "unknown command" "" rendr "$work/part.lua" -o "$work/out.png"
+expect_in_stderr "unknown command" "csgray: error: unknown command 'rendr'; the commands are render, export, check and info"
+expect_exit 2 "huge unknown command" "" "$huge"
+short_stderr "huge unknown command"
+
+# The work of a render is bounded before it starts: 2000 area lights of
+# 1024 samples at the default size is refused with its figure, exit 1.
+printf 'local lights = {}\nfor i = 1, 2000 do lights[i] = sphere_light{pos={i, 0, 5}, samples=1024} end\nreturn scene{objects={sphere(1)}, lights=lights}\n' > "$work/lights.lua"
+expect_exit 1 "render of 2000 area lights" "$work/lights.png" render "$work/lights.lua" -o "$work/lights.png"
+expect_in_stderr "render of 2000 area lights" "lights.lua: the render would trace up to 9.8e+11 rays (480000 camera rays × up to 1 ray each × (1 + 2048000 shadow rays from 2000 lights)); at most 1e+11 are allowed (--max-rays)"
+expect_exit 2 "negative --max-rays" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --max-rays -1
+expect_exit 2 "NaN --max-rays" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --max-rays nan
+
+# --timeout ends a whole run that would take minutes: one line, exit 1, no
+# output file and an old one as it was. Under timeout(1), so that a limit
+# that fails cannot hang the tests; nothing is asserted about the time.
+printf '#!/bin/sh\nexec timeout 30 "%s" "$@"\n' "$csgray" > "$work/csgray30" && chmod +x "$work/csgray30"
+csgray_itself=$csgray
+csgray=$work/csgray30
+printf 'local lights = {}\nfor i = 1, 40 do lights[i] = sphere_light{pos={2, -2, 5 + i}, samples=1024} end\nreturn scene{objects={sphere(1)}, lights=lights}\n' > "$work/slow_lights.lua"
+expect_exit 1 "render past --timeout" "$work/slow_lights.png" render "$work/slow_lights.lua" -o "$work/slow_lights.png" --timeout 1
+expect_in_stderr "render past --timeout" "slow_lights.lua: the render took longer than --timeout 1 s"
+# The refused render of 2000 lights, let through: the limit ends it too.
+printf 'old' > "$work/lights.png"
+expect_exit 1 "render let past --max-rays" "" render "$work/lights.lua" -o "$work/lights.png" --max-rays 0 --timeout 1
+expect_in_stderr "render let past --max-rays" "lights.lua: the render took longer than --timeout 1 s"
+if [ "$(cat "$work/lights.png")" = old ]; then pass; else fail "a render past --timeout changed the old image"; fi
+cat > "$work/holes.lua" <<'LUA'
+local part = box(20)
+for i = 1, 400 do
+  part = part - sphere(0.7):translate(1 + (i * 7.3) % 18, 1 + (i * 3.1) % 18, 1 + (i * 5.7) % 18)
+end
+return part
+LUA
+printf 'old' > "$work/holes.stl"
+expect_exit 1 "export past --timeout" "" export "$work/holes.lua" -o "$work/holes.stl" --tolerance 0.001 --timeout 1
+expect_in_stderr "export past --timeout" "holes.lua: the export took longer than --timeout 1 s"
+if [ "$(cat "$work/holes.stl")" = old ] && [ -z "$(ls -A "$work" | grep '^\.holes')" ]; then
+  pass
+else
+  fail "an export past --timeout changed the old file or left a temporary"
+fi
+expect_exit 1 "check past --timeout" "" check "$work/holes.lua" --tolerance 0.001 --timeout 1
+expect_in_stderr "check past --timeout" "holes.lua: the check took longer than --timeout 1 s"
+if [ ! -s "$work/stdout" ]; then pass; else fail "a check past --timeout printed a report"; fi
+# The script's time counts: --timeout ends it even below --script-timeout.
+expect_exit 1 "script past --timeout" "" info "$work/pattern.lua" --timeout 0.5
+expect_in_stderr "script past --timeout" "pattern.lua: the info command took longer than --timeout 0.5 s"
+csgray=$csgray_itself
+expect_exit 2 "negative --timeout" "" info "$work/part.lua" --timeout -1
+# A run within its limit is not touched.
+if "$csgray" render "$work/part.lua" -o "$work/timed.png" --size 32x24 --timeout 60 >/dev/null 2>&1 &&
+   [ -s "$work/timed.png" ]; then pass; else fail "a render within --timeout"; fi
+
+# A mesh file with a vertex of two coordinates, through a script: the file
+# and line, exit 1.
+printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$work/short_row.ply"
+printf 'return mesh{file="short_row.ply"}\n' > "$work/short_row.lua"
+expect_exit 1 "mesh with a short vertex row" "$work/out.png" render "$work/short_row.lua" -o "$work/out.png"
+expect_in_stderr "mesh with a short vertex row" "short_row.ply:11: vertex 1: the line ends before the values the header declares"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -271,6 +271,98 @@ TEST(MeshReader, TheMostNegativeObjIndexIsOutOfRange) {
   }
 }
 
+// ---- Vertices that are not three finite numbers, in every text format ----------
+
+// A tetrahedron in the text of a format, its second vertex written as
+// `second`; the line of that vertex is secondVertexLine(format).
+std::string tetrahedron(const std::string& format, const std::string& second) {
+  const std::string v[4] = {"0 0 0", second, "0 1 0", "0 0 1"};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::string text;
+  if (format == "stl") {
+    text = "solid t\n";
+    for (const auto& f : faces) {
+      text += "facet normal 0 0 0\nouter loop\n";
+      for (int k : f) text += "vertex " + v[k] + "\n";
+      text += "endloop\nendfacet\n";
+    }
+    return text + "endsolid t\n";
+  }
+  if (format == "ply")
+    text =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  if (format == "off") text = "OFF\n4 4 0\n";
+  for (const std::string& p : v) text += (format == "obj" ? "v " : "") + p + "\n";
+  for (const auto& f : faces)
+    text += format == "obj" ? "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) +
+                                  " " + std::to_string(f[2] + 1) + "\n"
+                            : "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " +
+                                  std::to_string(f[2]) + "\n";
+  return text;
+}
+
+// The line of the second vertex: in STL the first facet's last corner.
+int secondVertexLine(const std::string& format) {
+  return format == "stl" ? 6 : format == "obj" ? 2 : format == "off" ? 4 : 11;
+}
+
+std::string readTetrahedronError(const std::string& format, const std::string& second) {
+  try {
+    readMesh(tetrahedron(format, second), "t." + format);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(MeshReader, TheTetrahedronIsRead) {
+  for (const std::string format : {"stl", "obj", "off", "ply"})
+    EXPECT_NEAR(readMesh(tetrahedron(format, "1 0 0"), "t." + format).volume(), 1.0 / 6.0, 1e-15)
+        << format;
+}
+
+// NaN and infinities written as text, in any case, and numbers beyond the
+// range of a double are refused at their line.
+TEST(MeshReader, NonFiniteCoordinatesAreRefusedAtTheirLine) {
+  for (const std::string format : {"stl", "obj", "off", "ply"}) {
+    const std::string at = "t." + format + ":" + std::to_string(secondVertexLine(format)) + ": ";
+    for (const std::string bad : {"nan", "NaN", "inf", "-inf", "Infinity", "1e999", "-1e400"}) {
+      const std::string e = readTetrahedronError(format, "1 " + bad + " 0");
+      EXPECT_EQ(e.rfind(at, 0), 0u) << format << " " << bad << ": " << e;
+      EXPECT_TRUE(e.ends_with(" is not finite") || e.ends_with(" is beyond the range of a double"))
+          << e;
+    }
+  }
+  EXPECT_EQ(readTetrahedronError("stl", "1 NaN 0"), "t.stl:6: coordinate \"nan\" is not finite");
+  EXPECT_EQ(readTetrahedronError("obj", "1 -inf 0"), "t.obj:2: coordinate \"-inf\" is not finite");
+  EXPECT_EQ(readTetrahedronError("off", "1 1e999 0"),
+            "t.off:4: coordinate \"1e999\" is beyond the range of a double");
+  EXPECT_EQ(readTetrahedronError("ply", "1 nan 0"),
+            "t.ply:11: vertex 1: coordinate nan is not finite");
+}
+
+// A vertex of two coordinates is refused at its own line: in PLY too, where
+// it would otherwise take the next vertex's first value as its z.
+TEST(MeshReader, TwoCoordinatesAreRefusedAtTheirLine) {
+  EXPECT_EQ(readTetrahedronError("stl", "1 0"), "t.stl:6: a vertex needs x, y and z");
+  EXPECT_EQ(readTetrahedronError("obj", "1 0"), "t.obj:2: a vertex needs x, y and z");
+  EXPECT_EQ(readTetrahedronError("off", "1 0"), "t.off:4: a vertex needs x, y and z");
+  EXPECT_EQ(readTetrahedronError("ply", "1 0"),
+            "t.ply:11: vertex 1: the line ends before the values the header declares");
+  // One value too many on a PLY line is a header that does not fit.
+  EXPECT_EQ(readTetrahedronError("ply", "1 0 0 0"),
+            "t.ply:11: vertex 1: the line has more values than the header declares");
+  // Not even a number: the token is named.
+  EXPECT_EQ(readTetrahedronError("obj", "1 0 z"), "t.obj:2: \"z\" is not a number");
+}
+
+// Denormal coordinates are finite, and read.
+TEST(MeshReader, DenormalCoordinatesAreRead) {
+  for (const std::string format : {"stl", "obj", "off", "ply"})
+    EXPECT_EQ(readTetrahedronError(format, "1 4.9e-324 0"), "(no error)") << format;
+}
+
 TEST(MeshReader, LimitsAreEnforced) {
   MeshReadLimits small;
   small.maxTriangles = 11;
