@@ -120,7 +120,9 @@ void pushReport(lua_State* L, const CheckReport& r) {
 }
 
 int check(lua_State* L) {
-  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "check: the first argument");
+  checkArgumentCount(L, "check", 2);
+  const SolidPtr& solid =
+      checkValue<SolidPtr>(L, 1, "check: the first argument", "be checked as a part");
   LuaArgs args(L, 2, "check");
   CheckOptions options;
   options.samples = wholeArg<std::size_t>(args, "samples", 0, double(CheckOptions::kMaxSamples))

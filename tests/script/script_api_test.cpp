@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "io/image_file.h"
 #include "engine/boolean.h"
 #include "engine/primitive.h"
+#include "io/image_file.h"
 #include "script/script.h"
 #include "test_support.h"
 
