@@ -22,20 +22,23 @@ namespace {
 
 // ---- Argument shapes ------------------------------------------------------
 
-// A vector given as f(x, y, z), f{x, y, z} or f(s) for {s, s, s}.
-dvec3 vectorArgs(lua_State* L, int first, const std::string& what) {
+// A vector given as f(x, y, z), f{x, y, z} or f(s) for {s, s, s}; noun
+// names it in messages ("contains: point[1] must be finite").
+dvec3 vectorArgs(lua_State* L, int first, const std::string& function, const char* noun) {
   int n = lua_gettop(L) - first + 1;
   if (n == 3) {
-    return {toNumber(L, first, what + " x"), toNumber(L, first + 1, what + " y"),
-            toNumber(L, first + 2, what + " z")};
+    return {toNumber(L, first, function + ": x"), toNumber(L, first + 1, function + ": y"),
+            toNumber(L, first + 2, function + ": z")};
   }
-  if (n == 1) return toVec3(L, first, what);
-  throw std::invalid_argument(what + ": expected x, y, z or {x, y, z}");
+  if (n == 1) return toVec3(L, first, function + ": " + noun);
+  throw std::invalid_argument(function + ": takes x, y, z or {x, y, z} (got " + std::to_string(n) +
+                              (n == 1 ? " argument)" : " arguments)"));
 }
 
 // A shape constructor: a table of named parameters, or a bare main value
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
 LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
+  checkArgumentCount(L, function, 1);
   bool bare = lua_type(L, 1) == LUA_TNUMBER ||
               (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0 && !hasStringKey(L, 1));
   if (bare) {
@@ -78,6 +81,7 @@ int box(lua_State* L) {
 
 // cylinder{} and cone{}: function names which.
 int cylinderOrCone(lua_State* L, const char* function) {
+  checkArgumentCount(L, function, 1);
   LuaArgs args(L, 1, function);
   CylinderParams p;
   p.h = args.number("h");
@@ -98,6 +102,7 @@ int cylinder(lua_State* L) { return cylinderOrCone(L, "cylinder"); }
 int cone(lua_State* L) { return cylinderOrCone(L, "cone"); }
 
 int halfSpace(lua_State* L) {
+  checkArgumentCount(L, "half_space", 1);
   LuaArgs args(L, 1, "half_space");
   std::optional<dvec3> normal = args.vec3("normal");
   double offset = args.number("offset").value_or(0.0);
@@ -107,6 +112,7 @@ int halfSpace(lua_State* L) {
 }
 
 int torus(lua_State* L) {
+  checkArgumentCount(L, "torus", 1);
   LuaArgs args(L, 1, "torus");
   std::optional<double> major = args.number("R");
   std::optional<double> minor = args.number("r");
@@ -141,6 +147,7 @@ glm::dmat4 matrixArg(lua_State* L, int index, const std::string& what, bool allo
 }
 
 int quadric(lua_State* L) {
+  checkArgumentCount(L, "quadric", 1);
   LuaArgs args(L, 1, "quadric");
   if (!args.push("matrix")) throw std::invalid_argument("quadric: needs matrix={{...}, ...} (4×4)");
   glm::dmat4 m = matrixArg(L, -1, "quadric: matrix", false);
@@ -197,34 +204,30 @@ int booleanOf(lua_State* L) {
 
 // ---- Solid methods ------------------------------------------------------------
 
-const SolidPtr& self(lua_State* L) {
-  return checkValue<SolidPtr>(L, 1, "method receiver (use ':')");
-}
-
 // The receiver moved: a solid or an open surface.
-void pushTransformed(lua_State* L, const Affine& worldFromObject) {
+void pushTransformed(lua_State* L, const char* method, const Affine& worldFromObject) {
   if (SurfacePtr* surface = toValue<SurfacePtr>(L, 1)) {
-    pushValue<SurfacePtr>(L, (*surface)->transformed(worldFromObject));
+    pushShared<SurfacePtr>(L, (*surface)->transformed(worldFromObject));
     return;
   }
-  pushSolid(L, self(L)->transformed(worldFromObject));
+  pushSolid(L, methodReceiver(L, method)->transformed(worldFromObject));
 }
 
 int translate(lua_State* L) {
-  dvec3 offset = vectorArgs(L, 2, "translate");
-  pushTransformed(L, Affine::translation(offset));
+  dvec3 offset = vectorArgs(L, 2, "translate", "offset");
+  pushTransformed(L, "translate", Affine::translation(offset));
   return 1;
 }
 
 int scale(lua_State* L) {
-  dvec3 factors = vectorArgs(L, 2, "scale");
-  pushTransformed(L, Affine::scaling(factors));
+  dvec3 factors = vectorArgs(L, 2, "scale", "factors");
+  pushTransformed(L, "scale", Affine::scaling(factors));
   return 1;
 }
 
 int mirror(lua_State* L) {
-  dvec3 normal = vectorArgs(L, 2, "mirror");
-  pushTransformed(L, Affine::mirror(normal));
+  dvec3 normal = vectorArgs(L, 2, "mirror", "normal");
+  pushTransformed(L, "mirror", Affine::mirror(normal));
   return 1;
 }
 
@@ -238,35 +241,38 @@ int rotate(lua_State* L) {
     std::optional<dvec3> axis = args.vec3("axis");
     args.finish();
     if (!angle || !axis) throw std::invalid_argument("rotate: needs angle= and axis=, or x, y, z");
-    pushTransformed(L, rotationDegrees(*angle, *axis));
+    pushTransformed(L, "rotate", rotationDegrees(*angle, *axis));
     return 1;
   }
-  pushTransformed(L, rotationDegrees(vectorArgs(L, 2, "rotate")));
+  pushTransformed(L, "rotate", rotationDegrees(vectorArgs(L, 2, "rotate", "angles")));
   return 1;
 }
 
 int transform(lua_State* L) {
+  checkArgumentCount(L, "transform", 1, 2);
   glm::dmat4 m = matrixArg(L, 2, "transform", true);
-  pushTransformed(L, Affine::fromMatrix(m));
+  pushTransformed(L, "transform", Affine::fromMatrix(m));
   return 1;
 }
 
 // bounds() returns two points, the low and the high corner.
 int bounds(lua_State* L) {
-  const Bounds& b = self(L)->bounds();
+  const SolidPtr& solid = methodReceiver(L, "bounds");
+  checkArgumentCount(L, "bounds", 0, 2);
+  const Bounds& b = solid->bounds();
   pushVec3(L, b.lo);
   pushVec3(L, b.hi);
   return 2;
 }
 
 int contains(lua_State* L) {
-  const SolidPtr& solid = self(L);
-  lua_pushboolean(L, solid->contains(vectorArgs(L, 2, "contains")));
+  const SolidPtr& solid = methodReceiver(L, "contains");
+  lua_pushboolean(L, solid->contains(vectorArgs(L, 2, "contains", "point")));
   return 1;
 }
 
 int solidToString(lua_State* L) {
-  const SolidPtr& solid = self(L);
+  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "tostring");
   TreeStats stats = treeStats(*solid);
   std::ostringstream s;
   s << "solid(" << solid->kind() << ", " << stats.primitives << " primitives)";
@@ -280,7 +286,7 @@ int booleanOperator(lua_State* L) {
   std::string what = std::string("operand of '") + symbol + "'";
   const SolidPtr& a = checkValue<SolidPtr>(L, 1, what);
   const SolidPtr& b = checkValue<SolidPtr>(L, 2, what);
-  pushBoolean(L, std::make_shared<Boolean>(op, std::vector<SolidPtr>{a, b}));
+  pushSolid(L, std::make_shared<Boolean>(op, std::vector<SolidPtr>{a, b}));
   return 1;
 }
 

@@ -99,7 +99,9 @@ void pushReport(lua_State* L, const CheckReport& r) {
 }
 
 int check(lua_State* L) {
-  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "check: the first argument");
+  checkArgumentCount(L, "check", 2);
+  const SolidPtr& solid =
+      checkValue<SolidPtr>(L, 1, "check: the first argument", "be checked as a part");
   LuaArgs args(L, 2, "check");
   CheckOptions options;
   // Read and checked in this order, so that the first bad one is named.

@@ -18,9 +18,9 @@ namespace {
 template <Platonic solid>
 int platonic(lua_State* L) {
   const char* name = platonicInfo(solid).name;
+  checkArgumentCount(L, name, 1);
   double r = 0.0;
   if (lua_type(L, 1) == LUA_TNUMBER) {
-    if (lua_gettop(L) > 1) throw std::invalid_argument(std::string(name) + ": expected r or {r=}");
     r = toNumber(L, 1, std::string(name) + ": r");
   } else {
     LuaArgs args(L, 1, name);
@@ -52,6 +52,7 @@ bool hasNonListKey(lua_State* L, int index) {
 // convex{planes={{normal={x, y, z}, offset=d}, ...}}: all points p with
 // normal·p <= offset for every plane.
 int convex(lua_State* L) {
+  checkArgumentCount(L, "convex", 1);
   LuaArgs args(L, 1, "convex");
   if (!args.push("planes"))
     throw std::invalid_argument("convex: needs planes={{normal={x, y, z}, offset=d}, ...}");
@@ -84,10 +85,11 @@ int convex(lua_State* L) {
   }
   lua_pop(L, 1);
   args.finish();
-  // The planes are held once, however often the solid is copied.
+  // The planes are held once, however often the solid is copied, and
+  // charged for the rest of the run: copies may outlive this value.
   auto solid = Primitive::create<ConvexPolyhedron>(planes, "convex");
-  markOrigin(L, *solid);
-  pushValue<SolidPtr>(L, solid, kBytesPerNode + count * sizeof(ConvexPolyhedron::Plane));
+  Sandbox::of(L).charge(L, count * sizeof(ConvexPolyhedron::Plane));
+  pushSolid(L, solid);
   return 1;
 }
 

@@ -14,6 +14,7 @@ namespace {
 // The light of kind from the table of named parameters at index 1.
 template <Light::Kind kind>
 int light(lua_State* L) {
+  checkArgumentCount(L, lightFunction(kind), 1);
   LuaArgs args(L, 1, lightFunction(kind));
   LightParams p;
   p.kind = kind;

@@ -35,7 +35,8 @@ MaterialPtr materialArg(lua_State* L, int index) {
 }
 
 int solidMaterial(lua_State* L) {
-  const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "method receiver (use ':')");
+  const SolidPtr& solid = methodReceiver(L, "material");
+  checkArgumentCount(L, "material", 1, 2);
   MaterialPtr m = materialArg(L, 2);
   pushSolid(L, solidWithMaterial(solid, m));
   return 1;

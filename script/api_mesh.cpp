@@ -34,12 +34,14 @@ lua_Unsigned listLength(lua_State* L, int index, const std::string& what,
 }
 
 // points={{x, y, z}, ...}; point i of the script's list is point i − 1 of
-// the faces, as in OpenSCAD.
-std::vector<dvec3> readPoints(lua_State* L, int index) {
+// the faces, as in OpenSCAD. The lists are read as they come, and charged
+// as they grow: a list's length may be far from what it holds (#t of a
+// table with keys 1, 2, 4, 8, ... 2^40 is 2^40), and a list may name one
+// point or face many times.
+std::vector<dvec3> readPoints(lua_State* L, int index, PendingCharge& pending) {
   index = lua_absindex(L, index);
   lua_Unsigned n = listLength(L, index, "points", "a list of points {{x, y, z}, ...}");
   std::vector<dvec3> points;
-  points.reserve(n);
   for (lua_Unsigned i = 0; i < n; ++i) {
     std::string what = "point " + std::to_string(i);
     lua_rawgeti(L, index, lua_Integer(i + 1));
@@ -53,22 +55,23 @@ std::vector<dvec3> readPoints(lua_State* L, int index) {
       lua_pop(L, 1);
     }
     lua_pop(L, 1);
+    pending.add(sizeof(dvec3));
     points.push_back(p);
   }
   return points;
 }
 
 // faces={{i, j, k, ...}, ...} of point indices from 0.
-std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index) {
+std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index, PendingCharge& pending) {
   index = lua_absindex(L, index);
   lua_Unsigned n =
       listLength(L, index, "faces", "a list of faces {{i, j, k}, ...} (point indices from 0)");
-  std::vector<std::vector<std::int64_t>> faces(n);
+  std::vector<std::vector<std::int64_t>> faces;
   for (lua_Unsigned f = 0; f < n; ++f) {
     std::string what = "face " + std::to_string(f);
     lua_rawgeti(L, index, lua_Integer(f + 1));
     lua_Unsigned count = listLength(L, -1, what, "a list of point indices {i, j, k, ...}");
-    faces[f].reserve(count);
+    faces.emplace_back();
     for (lua_Unsigned k = 0; k < count; ++k) {
       lua_rawgeti(L, -1, lua_Integer(k + 1));
       int isInteger = 0;
@@ -83,18 +86,21 @@ std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index) {
       faces[f].push_back(std::int64_t(v));
     }
     lua_pop(L, 1);
+    pending.add(sizeof(faces[f]) + faces[f].size() * sizeof(std::int64_t));
   }
   return faces;
 }
 
 int polyhedron(lua_State* L) {
+  checkArgumentCount(L, "polyhedron", 1);
   LuaArgs args(L, 1, "polyhedron");
+  PendingCharge pending(L);
   if (!args.push("points")) refuse("needs points={{x, y, z}, ...}");
-  std::vector<dvec3> points = readPoints(L, -1);
+  std::vector<dvec3> points = readPoints(L, -1, pending);
   lua_pop(L, 1);
   if (!args.push("faces"))
     refuse("needs faces={{i, j, k}, ...} (point indices from 0, clockwise seen from outside)");
-  std::vector<std::vector<std::int64_t>> faces = readFaces(L, -1);
+  std::vector<std::vector<std::int64_t>> faces = readFaces(L, -1, pending);
   lua_pop(L, 1);
   // OpenSCAD's hint for its preview renderer; rays need none.
   args.number("convexity");
@@ -112,6 +118,7 @@ int polyhedron(lua_State* L) {
 // mesh{file="part.stl", repair=false}: the file is read by the program
 // (ScriptOptions::loadMesh), which refuses a mesh that is not a solid.
 int meshFn(lua_State* L) {
+  checkArgumentCount(L, "mesh", 1);
   LuaArgs args(L, 1, "mesh");
   std::optional<std::string> file = args.string("file");
   const bool repair = args.boolean("repair").value_or(false);

@@ -23,6 +23,7 @@ namespace {
 // misspelt name is reported as such rather than as a missing parameter.
 template <NamedQuadric kind>
 int namedQuadric(lua_State* L) {
+  checkArgumentCount(L, quadricName(kind), 1);
   LuaArgs args(L, 1, quadricName(kind));
   QuadricAxes axes;
   if (takesP(kind)) {
@@ -56,16 +57,12 @@ int clip(lua_State* L) {
   if (lua_isnoneornil(L, 1)) throw std::invalid_argument("clip: needs a solid to clip");
   const SolidPtr& solid = checkValue<SolidPtr>(L, 1, "clip: the first argument");
   std::vector<SolidPtr> cutters;
-  // Memory charged against the script's cap: the new intersection node with
-  // its operand list, and any cutter built here.
-  std::size_t charge = kBytesPerNode;
   if (lua_isnoneornil(L, 2)) {
     throw std::invalid_argument("clip: needs a box {lo=, hi=}, a solid or a list of solids");
   } else if (lua_type(L, 2) == LUA_TUSERDATA) {
     cutters.push_back(checkValue<SolidPtr>(L, 2, "clip: the second argument"));
   } else if (lua_type(L, 2) == LUA_TTABLE && hasStringKey(L, 2)) {
     cutters.push_back(clipBox(L));
-    charge += kBytesPerNode;
   } else if (lua_type(L, 2) == LUA_TTABLE) {
     lua_Unsigned count = lua_rawlen(L, 2);
     if (count == 0)
@@ -81,15 +78,9 @@ int clip(lua_State* L) {
                     "got ") +
         luaL_typename(L, 2));
   }
-  SolidPtr result = clippedShape(solid, cutters);
-  // Cutters that take the solid's material are copies: charged too.
-  std::span<const SolidPtr> operands = result->children();
-  if (uniformMaterial(*solid))
-    for (std::size_t k = 1; k < operands.size(); ++k)
-      charge += (operands[k]->primitiveCount() + operands[k]->booleanCount()) * kBytesPerNode;
-  charge += operands.size() * sizeof(SolidPtr);
-  markOrigin(L, *result);
-  pushValue<SolidPtr>(L, std::move(result), charge);
+  // The new intersection node, the box and the cutters that took the
+  // solid's material (copies) are counted as pushSolid finds them.
+  pushSolid(L, clippedShape(solid, cutters));
   return 1;
 }
 

@@ -13,6 +13,7 @@ namespace csgray::detail {
 namespace {
 
 int camera(lua_State* L) {
+  checkArgumentCount(L, "camera", 1);
   LuaArgs args(L, 1, "camera");
   CameraSpec c;
   c.eye = args.vec3("eye").value_or(c.eye);
@@ -46,33 +47,8 @@ void forEachListed(lua_State* L, LuaArgs& args, const char* key, F f) {
   lua_pop(L, 1);
 }
 
-// Memory a call charges while it builds a value, given back when the call
-// ends (the value is then charged as a whole by pushValue), also when it
-// fails.
-class PendingCharge {
- public:
-  explicit PendingCharge(lua_State* L) : L_(L) {}
-  ~PendingCharge() { Sandbox::of(L_).release(bytes_); }
-  PendingCharge(const PendingCharge&) = delete;
-  PendingCharge& operator=(const PendingCharge&) = delete;
-  void add(std::size_t bytes) {
-    bytes_ += bytes;
-    Sandbox::of(L_).charge(L_, bytes);
-  }
-  // Gives the charge back and returns it, for pushValue to charge again.
-  std::size_t settle() {
-    std::size_t b = bytes_;
-    Sandbox::of(L_).release(b);
-    bytes_ = 0;
-    return b;
-  }
-
- private:
-  lua_State* L_;
-  std::size_t bytes_ = 0;
-};
-
 int scene(lua_State* L) {
+  checkArgumentCount(L, "scene", 1);
   LuaArgs args(L, 1, "scene");
   Scene s;
   // The lists are copied into the scene: charged as they grow, so that a
@@ -109,7 +85,7 @@ int scene(lua_State* L) {
   checkMinWeight(s.limits.minWeight);
   args.finish();
   checkHasObjects(s);
-  pushValue(L, std::move(s), kBytesPerNode + pending.settle());
+  pushValue(L, std::move(s), kBytesPerValue + pending.settle());
   return 1;
 }
 

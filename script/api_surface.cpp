@@ -12,9 +12,12 @@ namespace csgray::detail {
 
 namespace {
 
-void pushSurface(lua_State* L, SurfacePtr surface) { pushValue<SurfacePtr>(L, std::move(surface)); }
+void pushSurface(lua_State* L, SurfacePtr surface) {
+  pushShared<SurfacePtr>(L, std::move(surface));
+}
 
 int plane(lua_State* L) {
+  checkArgumentCount(L, "plane", 1);
   LuaArgs args(L, 1, "plane");
   dvec3 normal = args.vec3("normal").value_or(dvec3(0, 0, 1));
   double offset = args.number("offset").value_or(0.0);
@@ -25,6 +28,7 @@ int plane(lua_State* L) {
 }
 
 int disc(lua_State* L) {
+  checkArgumentCount(L, "disc", 1);
   LuaArgs args(L, 1, "disc");
   std::optional<double> r = args.number("r"), d = args.number("d");
   dvec3 center = args.vec3("center").value_or(dvec3(0.0));
@@ -36,6 +40,7 @@ int disc(lua_State* L) {
 }
 
 int triangle(lua_State* L) {
+  checkArgumentCount(L, "triangle", 1);
   LuaArgs args(L, 1, "triangle");
   if (!args.push("points")) throw std::invalid_argument("triangle: needs points={a, b, c}");
   if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 3)
@@ -53,6 +58,7 @@ int triangle(lua_State* L) {
 }
 
 int parallelogram(lua_State* L) {
+  checkArgumentCount(L, "parallelogram", 1);
   LuaArgs args(L, 1, "parallelogram");
   dvec3 origin = args.vec3("origin").value_or(dvec3(0.0));
   std::optional<dvec3> u = args.vec3("u"), v = args.vec3("v");
@@ -66,6 +72,7 @@ int parallelogram(lua_State* L) {
 template <bool isSquare>
 int rectangle(lua_State* L) {
   const char* name = isSquare ? "square" : "rectangle";
+  checkArgumentCount(L, name, 1);
   LuaArgs args(L, 1, name);
   double w, h;
   if (isSquare) {
@@ -87,11 +94,21 @@ int rectangle(lua_State* L) {
 }
 
 int surfaceMaterial(lua_State* L) {
-  const SurfacePtr& surface = checkValue<SurfacePtr>(L, 1, "method receiver (use ':')");
+  const SurfacePtr& surface = checkValue<SurfacePtr>(L, 1, "material: the receiver");
+  checkArgumentCount(L, "material", 1, 2);
   MaterialPtr m = materialArg(L, 2);
-  pushValue<SurfacePtr>(L, surface->withMaterial(m));
+  pushSurface(L, surface->withMaterial(m));
   return 1;
 }
+
+// s:bounds() and s:contains(p) on a surface: methods of solids only.
+template <const char* method>
+int solidMethod(lua_State* L) {
+  methodReceiver(L, method);  // throws for a surface
+  return 0;
+}
+constexpr char kBounds[] = "bounds";
+constexpr char kContains[] = "contains";
 
 int surfaceBooleanError(lua_State* L) {
   SurfacePtr* s = toValue<SurfacePtr>(L, 1);
@@ -107,6 +124,8 @@ int surfaceBooleanError(lua_State* L) {
 void registerSurfaceApi(lua_State* L, const luaL_Reg* transformMethods) {
   newMetatable<SurfacePtr>(L);
   static const luaL_Reg surfaceMethods[] = {{"material", guarded<surfaceMaterial>},
+                                            {"bounds", guarded<solidMethod<kBounds>>},
+                                            {"contains", guarded<solidMethod<kContains>>},
                                             {nullptr, nullptr}};
   luaL_newlib(L, surfaceMethods);
   luaL_setfuncs(L, transformMethods, 0);

@@ -40,17 +40,19 @@ TexturePlacement placementArgs(LuaArgs& args) {
 }
 
 int checker(lua_State* L) {
+  checkArgumentCount(L, "checker", 1);
   LuaArgs args(L, 1, "checker");
   std::optional<ColorPair> colors = colorsArg(L, args);
   double size = args.number("size").value_or(1.0);
   TexturePtr texture = placedChecker(colors, size, placementArgs(args));
   args.finish();
-  pushValue<TexturePtr>(L, std::move(texture));
+  pushShared<TexturePtr>(L, std::move(texture));
   return 1;
 }
 
 template <NoiseKind kind>
 int noise(lua_State* L) {
+  checkArgumentCount(L, noiseName(kind), 1);
   LuaArgs args(L, 1, noiseName(kind));
   std::optional<ColorPair> colors = colorsArg(L, args);
   // Plain Perlin noise is one octave; the others sum octaves.
@@ -58,11 +60,12 @@ int noise(lua_State* L) {
   double strength = args.number("strength").value_or(4.0);
   TexturePtr texture = placedNoise(kind, colors, octaves, strength, placementArgs(args));
   args.finish();
-  pushValue<TexturePtr>(L, std::move(texture));
+  pushShared<TexturePtr>(L, std::move(texture));
   return 1;
 }
 
 int imageTexture(lua_State* L) {
+  checkArgumentCount(L, "image_texture", 1);
   LuaArgs args(L, 1, "image_texture");
   std::optional<std::string> file = args.string("file");
   std::string mappingName = args.string("mapping").value_or("planar");
@@ -81,7 +84,7 @@ int imageTexture(lua_State* L) {
     throw std::invalid_argument(
         "image_texture: mapping must be \"planar\", \"spherical\", "
         "\"cylindrical\" or \"box\", got \"" +
-        mappingName + "\"");
+        shortened(mappingName) + "\"");
   const ScriptOptions& options = scriptOptionsOf(L);
   if (!options.loadImage)
     throw std::invalid_argument("image_texture: this program cannot read images");
@@ -90,7 +93,7 @@ int imageTexture(lua_State* L) {
   Sandbox::of(L).charge(L, image->rgb.size() * sizeof(float));
   TexturePtr texture = placedImage(std::move(image), mapping, placement);
   args.finish();
-  pushValue<TexturePtr>(L, std::move(texture));
+  pushShared<TexturePtr>(L, std::move(texture));
   return 1;
 }
 

@@ -73,9 +73,27 @@ void LuaArgs::finish() {
     }
     if (!used_.count(key)) {
       lua_pop(L_, 1);
-      throw std::invalid_argument(function_ + ": unknown parameter '" + key + "'");
+      throw std::invalid_argument(function_ + ": unknown parameter '" + shortened(key) + "'");
     }
   }
+}
+
+std::string shortened(const std::string& text, std::size_t length) {
+  if (text.size() <= length) return text;
+  // Cut at the start of a UTF-8 character, not inside one.
+  std::size_t cut = length - 3;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
+}
+
+void checkArgumentCount(lua_State* L, const std::string& function, int count, int first) {
+  const int given = lua_gettop(L) - first + 1;
+  if (given <= count) return;
+  throw std::invalid_argument(
+      function + ": takes " +
+      (count == 0 ? std::string("no arguments")
+                  : std::to_string(count) + (count == 1 ? " argument" : " arguments")) +
+      " (got " + std::to_string(given) + ")");
 }
 
 // Does the table at index have a string key (a named parameter)?

@@ -35,6 +35,16 @@ class LuaArgs {
   std::set<std::string> used_;
 };
 
+// A value of the script's (a name, a file name) as a message shows it: at
+// most `length` characters, cut with "...".
+inline constexpr std::size_t kShownLength = 60;
+std::string shortened(const std::string& text, std::size_t length = kShownLength);
+
+// Refuses arguments past the first `count`, counted from index `first`
+// (2 for a method, whose receiver is 1): "sphere: takes 1 argument (got
+// 2)". An extra argument is a mistake, never something to ignore.
+void checkArgumentCount(lua_State* L, const std::string& function, int count, int first = 1);
+
 // Does the table at index have a key that is a string (a named parameter)?
 bool hasStringKey(lua_State* L, int index);
 

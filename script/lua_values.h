@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "scene/scene.h"
 #include "script/sandbox.h"
@@ -50,9 +51,13 @@ struct TypeName<Scene> {
   static constexpr const char* shown = "scene";
 };
 
-// What a userdata holds on the C++ heap is charged against the script's
-// memory cap, and refunded when Lua collects it.
-inline constexpr std::size_t kBytesPerNode = 512;  // a primitive with its frame, or a boolean node
+// What a value holds on the C++ heap is counted against the script's
+// memory cap. A light, a camera or a scene is its userdata's alone: counted
+// when made, given back when Lua collects the userdata. Solids, surfaces
+// and textures are shared (a union holds its operands, a material its
+// texture), so their C++ objects are counted by the sandbox for as long as
+// they live, at the sizes of held_objects.h.
+inline constexpr std::size_t kBytesPerValue = 512;  // a light, a camera, a scene without lists
 
 template <class T>
 struct Held {
@@ -61,11 +66,18 @@ struct Held {
 };
 
 template <class T>
-inline void pushValue(lua_State* L, T value, std::size_t charge = kBytesPerNode) {
+inline void pushValue(lua_State* L, T value, std::size_t charge = kBytesPerValue) {
   Sandbox::of(L).charge(L, charge);
   void* memory = lua_newuserdatauv(L, sizeof(Held<T>), 0);
   new (memory) Held<T>{std::move(value), charge};
   luaL_setmetatable(L, TypeName<T>::value);
+}
+
+// A surface or a texture, counted while it lives.
+template <class T>
+inline void pushShared(lua_State* L, T value) {
+  if (!Sandbox::of(L).holds(value)) Sandbox::of(L).hold(L, {{value, kBytesPerShape}});
+  pushValue<T>(L, std::move(value), 0);
 }
 
 template <class T>
@@ -74,17 +86,32 @@ inline T* toValue(lua_State* L, int index) {
   return held ? &held->value : nullptr;
 }
 
+// The value at index, or an error "<what> must be a <type>". A surface
+// given for a solid is told apart: what it cannot do is `solidUse`.
 template <class T>
-inline const T& checkValue(lua_State* L, int index, const std::string& what) {
+inline const T& checkValue(
+    lua_State* L, int index, const std::string& what,
+    const std::string& solidUse = "take part in a boolean (put it in scene{objects=...} instead)") {
   if (T* v = toValue<T>(L, index)) return *v;
   if constexpr (std::is_same_v<T, SolidPtr>) {
     if (SurfacePtr* s = toValue<SurfacePtr>(L, index))
       throw std::invalid_argument(what + " must be a solid, but a " + (*s)->kind() +
-                                  " is a surface: it encloses no volume, so it cannot take part "
-                                  "in a boolean (put it in scene{objects=...} instead)");
+                                  " is a surface: it encloses no volume, so it cannot " + solidUse);
   }
   throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + ", got " +
                               luaL_typename(L, index));
+}
+
+// The solid a method was called on, s:method(...). A surface has the
+// methods of solids that make sense for it (transforms, material); for the
+// others, its metatable has stubs that call this, so that plane{}:bounds()
+// says why.
+inline const SolidPtr& methodReceiver(lua_State* L, const std::string& method) {
+  if (SurfacePtr* s = toValue<SurfacePtr>(L, 1))
+    throw std::invalid_argument(method + ": a " + (*s)->kind() +
+                                " is a surface, not a solid, and " + method +
+                                " is a method of solids only");
+  return checkValue<SolidPtr>(L, 1, method + ": the receiver (call it as s:" + method + "(...))");
 }
 
 template <class T>
@@ -97,18 +124,48 @@ inline int destroyValue(lua_State* L) {
 }
 
 // Runs a binding and turns a C++ exception into a Lua error at the caller's
-// line. (Lua is built as C++ here, so Lua errors unwind as exceptions that
-// this does not catch, and destructors run either way.)
+// line. A failed allocation ends the script as the memory limit does: a
+// script must not catch it with pcall and go on. (Lua is built as C++
+// here, so Lua errors unwind as exceptions that this does not catch, and
+// destructors run either way.)
 template <int (*F)(lua_State*)>
 inline int guarded(lua_State* L) {
   try {
     return F(L);
   } catch (const std::bad_alloc&) {
-    return luaL_error(L, "out of memory");
+    Sandbox::of(L).outOfMemory(L);
+  } catch (const std::length_error&) {  // a size past what a vector can hold
+    Sandbox::of(L).outOfMemory(L);
   } catch (const std::exception& e) {
-    return luaL_error(L, "%s", e.what());
+    Sandbox::of(L).raise(L, e.what());
   }
 }
+
+// Memory a call charges while it builds a value, given back when the call
+// ends (the value is then charged as a whole by pushValue), also when it
+// fails.
+class PendingCharge {
+ public:
+  explicit PendingCharge(lua_State* L) : L_(L) {}
+  ~PendingCharge() { Sandbox::of(L_).release(bytes_); }
+  PendingCharge(const PendingCharge&) = delete;
+  PendingCharge& operator=(const PendingCharge&) = delete;
+  void add(std::size_t bytes) {
+    bytes_ += bytes;
+    Sandbox::of(L_).charge(L_, bytes);
+  }
+  // Gives the charge back and returns it, for pushValue to charge again.
+  std::size_t settle() {
+    std::size_t b = bytes_;
+    Sandbox::of(L_).release(b);
+    bytes_ = 0;
+    return b;
+  }
+
+ private:
+  lua_State* L_;
+  std::size_t bytes_ = 0;
+};
 
 // Gives the solid, and every node below it that has none, the line of the
 // script that called the running function: the nodes a call builds afresh
@@ -128,21 +185,25 @@ inline void markOrigin(lua_State* L, const Solid& solid) {
   mark(mark, solid);
 }
 
-// A solid that the call built afresh: a transform or material copies the
-// whole tree below it, so all of its nodes are charged.
+// Pushes a solid, counting the nodes of its tree that no value held
+// before: all of a transformed copy, the one new node of a boolean over
+// existing solids. A node shared by many is counted once.
 inline void pushSolid(lua_State* L, SolidPtr solid) {
-  TreeStats stats = treeStats(*solid);
-  std::size_t charge = (stats.primitives + stats.booleans) * kBytesPerNode;
+  Sandbox& sandbox = Sandbox::of(L);
+  std::vector<Sandbox::HeldObject> fresh;
+  // The nodes a call makes form a tree (a transform copies a shared
+  // subtree once per use), so the walk visits each once.
+  auto collect = [&](auto& self, const SolidPtr& node) -> void {
+    if (sandbox.holds(node)) return;
+    const std::size_t operands = node->children().size();
+    fresh.push_back(
+        {node, operands == 0 ? kBytesPerShape : kBytesPerBoolean + operands * sizeof(SolidPtr)});
+    for (const SolidPtr& child : node->children()) self(self, child);
+  };
+  collect(collect, solid);
+  sandbox.hold(L, fresh);
   markOrigin(L, *solid);
-  pushValue<SolidPtr>(L, std::move(solid), charge);
-}
-
-// A new boolean node over existing solids: one node is new, with its list
-// of operands.
-inline void pushBoolean(lua_State* L, SolidPtr solid) {
-  std::size_t charge = kBytesPerNode + solid->children().size() * sizeof(SolidPtr);
-  markOrigin(L, *solid);
-  pushValue<SolidPtr>(L, std::move(solid), charge);
+  pushValue<SolidPtr>(L, std::move(solid), 0);
 }
 
 template <class T>

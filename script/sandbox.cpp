@@ -6,10 +6,23 @@
 #include <string>
 #include <vector>
 
+#include "script/lua_args.h"
+
 namespace csgray::detail {
 
 namespace {
 constexpr int kHookInterval = 10000;  // instructions between budget checks
+// What work that runs no instructions counts for, measured against a
+// plain loop: an error caught (a C++ exception, since Lua is built as
+// C++), each frame of the stack it unwinds (unwinding a recursion that
+// overflowed Lua's stack takes hundreds of instructions' time per frame),
+// and the bytes of an allocation (string.rep fills them, and copies them
+// as its buffer grows).
+constexpr std::uint64_t kErrorCost = 1000;
+constexpr std::uint64_t kFrameCost = 500;
+constexpr std::size_t kBytesPerInstruction = 4;
+// The longest message a script's error gives (error() with a long text).
+constexpr std::size_t kLongestMessage = 2000;
 
 std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
@@ -66,6 +79,8 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
   const std::size_t begin = kindEnd + 2, end = message.find('\'', begin);
   if (end == std::string::npos) return "";
   const std::string name = message.substr(begin, end - begin);
+  // No API name is within two edits of a long one; measuring would be slow.
+  if (name.size() > kShownLength) return "";
   std::string nearest;
   std::size_t best = 3;
   if (kind == "global") {
@@ -103,6 +118,33 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
   }
   return nearest.empty() ? "" : "; did you mean " + nearest + "?";
 }
+
+// Lua's message with the names it quotes ("(global 'name')", "to 'name'")
+// shortened: a script may use a name of any length.
+std::string withShortNames(std::string message) {
+  for (const std::string kind :
+       {"global '", "local '", "method '", "field '", "upvalue '", "constant '", "to '"}) {
+    for (std::size_t at = message.find(kind); at != std::string::npos;
+         at = message.find(kind, at + 1)) {
+      const std::size_t begin = at + kind.size(), end = message.find('\'', begin);
+      if (end == std::string::npos) break;
+      message.replace(begin, end - begin, shortened(message.substr(begin, end - begin)));
+    }
+  }
+  return message;
+}
+
+// The number of frames on the stack: the highest level lua_getstack finds.
+int stackDepth(lua_State* L) {
+  lua_Debug ar;
+  int found = 0, missing = 1;
+  while (lua_getstack(L, missing, &ar)) found = missing, missing *= 2;
+  while (missing - found > 1) {
+    int mid = found + (missing - found) / 2;
+    (lua_getstack(L, mid, &ar) ? found : missing) = mid;
+  }
+  return found;
+}
 }  // namespace
 
 Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
@@ -139,9 +181,7 @@ Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
   // escapes the instruction budget, and it could hand a collected value
   // back to the script. Lua marks a table for finalization only if its
   // metatable has __gc when set, so checking here is enough.
-  lua_getglobal(L_, "setmetatable");
-  lua_pushcclosure(L_, &Sandbox::setmetatableWithoutGc, 1);
-  lua_setglobal(L_, "setmetatable");
+  lua_register(L_, "setmetatable", &Sandbox::checkedSetmetatable);
   // Reproducible scripts: the same random numbers on every run.
   lua_getglobal(L_, LUA_MATHLIBNAME);
   lua_getfield(L_, -1, "randomseed");
@@ -164,6 +204,24 @@ Sandbox& Sandbox::of(lua_State* L) {
   return *static_cast<Sandbox*>(ud);
 }
 
+std::string Sandbox::memoryReason() const {
+  return "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes);
+}
+
+std::string Sandbox::instructionReason() const {
+  return "script exceeded the instruction budget of " + std::to_string(limits_.instructions) +
+         " (endless loop?)";
+}
+
+std::string Sandbox::where(lua_State* L, int level) const {
+  // Reads the call stack only: safe inside the allocator too.
+  lua_Debug ar;
+  for (; lua_getstack(L, level, &ar); ++level)
+    if (lua_getinfo(L, "l", &ar) && ar.currentline > 0)
+      return *chunkName_ + ":" + std::to_string(ar.currentline) + ": ";
+  return "";
+}
+
 void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize) {
   auto* self = static_cast<Sandbox*>(ud);
   std::size_t old = ptr ? oldSize : 0;  // oldSize is a type tag when ptr is null
@@ -172,14 +230,20 @@ void* Sandbox::allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t ne
     self->used_ -= old;
     return nullptr;
   }
+  if (newSize > old) self->addWork((newSize - old) / kBytesPerInstruction);
   // While an abort builds its message ("file:line: reason"), a little room
   // past the cap, so that the message keeps its line.
   std::size_t cap = self->limits_.memoryBytes + (self->aborting_ ? kAbortReserve : 0);
-  if (newSize > old && self->used_ - old + newSize > cap) {
-    if (self->abortReason_.empty())
-      self->abortReason_ =
-          "script exceeded the memory limit of " + mebibytes(self->limits_.memoryBytes);
-    return nullptr;  // Lua raises "not enough memory"
+  auto over = [&] { return newSize > old && self->used_ - old + newSize > cap; };
+  if (over()) self->release(self->held_.sweep());  // objects that died count no more
+  if (over()) {
+    // Lua raises "not enough memory", which names no line; the line where
+    // the limit was reached is kept for the message.
+    if (self->abortReason_.empty()) {
+      self->abortReason_ = self->memoryReason();
+      if (self->L_ && self->chunkName_) self->abortWhere_ = self->where(self->L_, 0);
+    }
+    return nullptr;
   }
   void* block = std::realloc(ptr, newSize);
   if (block) self->used_ = self->used_ - old + newSize;
@@ -195,87 +259,162 @@ void Sandbox::charge(lua_State* L, std::size_t bytes) {
     lua_gc(L, LUA_GCSTEP, static_cast<int>(sinceCollectorStep_ >> 10));
     sinceCollectorStep_ = 0;
   }
+  if (held_.sweepDue()) release(held_.sweep());
   // Checked before counting, so that used_ stays within the cap and the
-  // abort's message fits in the allocator's reserve.
-  if (bytes > limits_.memoryBytes - std::min(used_, limits_.memoryBytes))
-    abort(L, "script exceeded the memory limit of " + mebibytes(limits_.memoryBytes), 1);
+  // abort's message fits in the allocator's reserve; dead values first
+  // give back what they held.
+  if (overCap(bytes)) {
+    lua_gc(L, LUA_GCCOLLECT);
+    release(held_.sweep());
+  }
+  if (overCap(bytes)) abort(L, memoryReason(), 1);
   used_ += bytes;
 }
 
-void Sandbox::abort(lua_State* L, const std::string& reason, int level) {
-  if (abortReason_.empty()) abortReason_ = reason;
-  aborting_ = true;  // the script is over: pcall cannot catch an abort
-  luaL_where(L, level);
-  lua_pushstring(L, abortReason_.c_str());
-  lua_concat(L, 2);
+void Sandbox::hold(lua_State* L, const std::vector<HeldObject>& objects) {
+  std::size_t bytes = 0;
+  for (const HeldObject& o : objects) bytes += o.bytes + HeldObjects::kEntryBytes;
+  charge(L, bytes);
+  for (const HeldObject& o : objects)
+    if (!held_.add(o.object, o.bytes + HeldObjects::kEntryBytes))
+      release(o.bytes + HeldObjects::kEntryBytes);  // listed twice
+}
+
+void Sandbox::outOfMemory(lua_State* L) { abort(L, memoryReason(), 1); }
+
+void Sandbox::raise(lua_State* L, const std::string& message) {
+  lua_pushstring(L, (where(L, 1) + message).c_str());
   lua_error(L);
-  std::abort();  // luaL_error does not return
+  std::abort();  // lua_error does not return
+}
+
+void Sandbox::abort(lua_State* L, const std::string& reason, int level) {
+  if (abortReason_.empty()) {
+    abortReason_ = reason;
+    abortWhere_ = where(L, level);
+  }
+  aborting_ = true;  // the script is over: pcall cannot catch an abort
+  lua_pushstring(L, (abortWhere_ + abortReason_).c_str());
+  lua_error(L);
+  std::abort();  // lua_error does not return
+}
+
+void Sandbox::addWork(std::uint64_t instructions) {
+  executed_ += instructions;
+  // Past the budget: the hook, which may raise the abort, runs at the next
+  // instruction instead of up to kHookInterval later (a loop of a few
+  // instructions around string.rep takes that long to get there).
+  if (executed_ > limits_.instructions && L_)
+    lua_sethook(L_, &Sandbox::countHook, LUA_MASKCOUNT, 1);
 }
 
 void Sandbox::countHook(lua_State* L, lua_Debug*) {
   Sandbox& self = of(L);
   self.executed_ += kHookInterval;
-  if (self.executed_ > self.limits_.instructions || !self.abortReason_.empty()) {
-    // Level 0: inside a hook that is the Lua function being run.
-    self.abort(L,
-               "script exceeded the instruction budget of " +
-                   std::to_string(self.limits_.instructions) + " (endless loop?)",
-               0);
-  }
+  // Level 0: inside a hook that is the Lua function being run.
+  if (self.executed_ > self.limits_.instructions || !self.abortReason_.empty())
+    self.abort(L, self.instructionReason(), 0);
 }
 
 int Sandbox::finishProtectedCall(lua_State* L, int status, int base) {
-  if (!abortReason_.empty()) abort(L, abortReason_, 1);
+  if (status != LUA_OK) executed_ += kErrorCost;
+  if (executed_ > limits_.instructions || !abortReason_.empty()) abort(L, instructionReason(), 1);
   lua_pushboolean(L, status == LUA_OK);
   lua_insert(L, base);
   return lua_gettop(L) - base + 1;
 }
 
+// The message handler of pcall and xpcall, run where the error was raised,
+// before the stack unwinds: counts the frames it unwinds, then calls
+// xpcall's handler (the upvalue), if any.
+int Sandbox::countUnwinding(lua_State* L) {
+  Sandbox& self = of(L);
+  // An abort passes through: xpcall's handler could start more work (even
+  // another xpcall with itself as handler) at every level it unwinds.
+  if (self.aborting_) return 1;
+  self.addWork(kFrameCost * static_cast<std::uint64_t>(stackDepth(L)));
+  if (lua_isnone(L, lua_upvalueindex(1))) return 1;  // pcall: the error as it is
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, 1);
+  return 1;
+}
+
 // pcall(f, ...): like Lua's, but an abort propagates.
 int Sandbox::safePcall(lua_State* L) {
   luaL_checkany(L, 1);
-  int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
-  return of(L).finishProtectedCall(L, status, 1);
+  lua_pushcfunction(L, &Sandbox::countUnwinding);
+  lua_insert(L, 1);  // the handler, then f and its arguments
+  int status = lua_pcall(L, lua_gettop(L) - 2, LUA_MULTRET, 1);
+  return of(L).finishProtectedCall(L, status, 2);
 }
 
 // xpcall(f, handler, ...): like Lua's, but an abort propagates.
 int Sandbox::safeXpcall(lua_State* L) {
-  int n = lua_gettop(L);
   luaL_checktype(L, 2, LUA_TFUNCTION);
-  lua_pushvalue(L, 1);  // f
-  lua_pushvalue(L, 2);  // handler
-  lua_replace(L, 1);    // handler at 1
-  lua_replace(L, 2);    // f at 2, arguments follow
-  int status = lua_pcall(L, n - 2, LUA_MULTRET, 1);
+  lua_pushvalue(L, 2);
+  lua_pushcclosure(L, &Sandbox::countUnwinding, 1);
+  lua_replace(L, 2);  // f, the counting handler, the arguments
+  lua_pushvalue(L, 1);
+  lua_pushvalue(L, 2);
+  lua_replace(L, 1);
+  lua_replace(L, 2);  // the handler, f, the arguments
+  int status = lua_pcall(L, lua_gettop(L) - 2, LUA_MULTRET, 1);
   return of(L).finishProtectedCall(L, status, 2);
 }
 
-namespace {
-// Calls the function a wrapper closes over (upvalue 1: the original
-// setmetatable or randomseed) with the wrapper's arguments.
-int callWrapped(lua_State* L) {
+int Sandbox::seededRandomseed(lua_State* L) {
+  Sandbox& self = of(L);
+  if (lua_isnoneornil(L, 1))
+    self.raise(L, "math.randomseed needs a seed here, so that every run builds the same part");
+  lua_settop(L, std::min(lua_gettop(L), 2));  // Lua's randomseed reads two, as here
+  for (int i = 1; i <= lua_gettop(L); ++i) {
+    if (lua_type(L, i) != LUA_TNUMBER)
+      self.raise(L, std::string("math.randomseed: the seed must be a whole number, got ") +
+                        luaL_typename(L, i));
+    int isInteger = 0;
+    lua_tointegerx(L, i, &isInteger);
+    if (!isInteger)
+      self.raise(L, "math.randomseed: the seed must be a whole number, got " +
+                        std::string(lua_tostring(L, i)));
+  }
+  // The library's own randomseed (the upvalue), which now cannot fail.
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_insert(L, 1);
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
 }
-}  // namespace
 
-int Sandbox::seededRandomseed(lua_State* L) {
-  if (lua_isnoneornil(L, 1))
-    return luaL_error(L,
-                      "math.randomseed needs a seed here, so that every run builds the same part");
-  return callWrapped(L);
-}
-
-int Sandbox::setmetatableWithoutGc(lua_State* L) {
-  if (lua_type(L, 2) == LUA_TTABLE) {
+// setmetatable(t, mt) as Lua's, with messages that say what the script
+// did wrong, and without __gc (see the constructor).
+int Sandbox::checkedSetmetatable(lua_State* L) {
+  Sandbox& self = of(L);
+  if (lua_gettop(L) < 2)
+    self.raise(L, "setmetatable takes 2 arguments, a table and a metatable or nil (got " +
+                      std::to_string(lua_gettop(L)) + ")");
+  if (lua_type(L, 1) == LUA_TUSERDATA) {
+    // The API's name of the value (its metatable's __name: "solid").
+    const bool named = luaL_getmetafield(L, 1, "__name") == LUA_TSTRING;
+    self.raise(L, std::string("setmetatable: a ") + (named ? lua_tostring(L, -1) : "userdata") +
+                      " cannot take a metatable; only a table can");
+  }
+  if (lua_type(L, 1) != LUA_TTABLE)
+    self.raise(L, std::string("setmetatable: the first argument must be a table, got ") +
+                      luaL_typename(L, 1));
+  if (!lua_istable(L, 2) && !lua_isnil(L, 2))
+    self.raise(L, std::string("setmetatable: the metatable must be a table or nil, got ") +
+                      luaL_typename(L, 2));
+  if (luaL_getmetafield(L, 1, "__metatable") != LUA_TNIL)
+    self.raise(L, "setmetatable: the table's metatable is protected (it has __metatable)");
+  if (lua_istable(L, 2)) {
     lua_pushstring(L, "__gc");
     if (lua_rawget(L, 2) != LUA_TNIL)
-      return luaL_error(L, "__gc metamethods are not available in the sandbox");
+      self.raise(L, "__gc metamethods are not available in the sandbox");
     lua_pop(L, 1);
   }
-  return callWrapped(L);
+  lua_settop(L, 2);
+  lua_setmetatable(L, 1);
+  return 1;
 }
 
 int Sandbox::printToStderr(lua_State* L) {
@@ -311,25 +450,29 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   chunkName_ = std::make_shared<const std::string>(chunkName);
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
-  if (status != LUA_OK) {
-    std::string message =
-        lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
-            ? lua_tostring(L_, -1)
-            : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
-    lua_settop(L_, base);
-    // An abort raised as a memory error carries Lua's generic text; say why.
-    if (!abortReason_.empty() && message.find(abortReason_) == std::string::npos)
-      message = abortReason_;
-    if (abortReason_.empty()) message += unknownCallHint(L_, message);
-    // Every message names the script, also those Lua gives without a
-    // position (binary chunks, C stack overflow, non-string errors).
-    if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
-    // One line: a message with line breaks of its own is folded.
-    for (char& c : message)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw ScriptError(message);
+  // A script that reached a limit has failed, also when no error reached
+  // here: Lua retries a refused allocation after a full collection, and the
+  // script may end before the next check.
+  if (status == LUA_OK && abortReason_.empty()) return lua_gettop(L_) - base;
+  std::string message;
+  if (!abortReason_.empty()) {
+    // An abort raised as a memory error carries Lua's generic text.
+    message = abortWhere_ + abortReason_;
+  } else {
+    message = lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
+                  ? lua_tostring(L_, -1)
+                  : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
+    message = withShortNames(message) + unknownCallHint(L_, message);
   }
-  return lua_gettop(L_) - base;
+  lua_settop(L_, base);
+  // Every message names the script, also those Lua gives without a
+  // position (binary chunks, C stack overflow, non-string errors).
+  if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
+  // One line: a message with line breaks of its own is folded, and one
+  // that the script made endless is cut.
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  throw ScriptError(shortened(message, kLongestMessage));
 }
 
 }  // namespace csgray::detail

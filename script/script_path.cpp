@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "script/api.h"
+#include "script/lua_args.h"
 
 namespace csgray::detail {
 
@@ -16,17 +17,24 @@ std::string scriptFile(lua_State* L, const std::string& function, const std::str
   // a.png, and messages would be cut short there.
   if (name.find('\0') != std::string::npos)
     throw std::invalid_argument(function + ": file name contains a NUL byte");
-  fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
-  fs::path file = fs::weakly_canonical(folder / fs::path(name));
-  auto inside = [&file](const fs::path& dir) {
-    auto [end, _] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
-    return end == dir.end();
-  };
-  // Symbolic links are followed before the check (weakly_canonical), so a
-  // link cannot lead out either.
-  if (!fs::path(name).is_absolute() && inside(folder)) return file.string();
-  for (const std::string& allowed : options.allowedFolders)
-    if (inside(fs::weakly_canonical(fs::absolute(allowed)))) return file.string();
+  try {
+    fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
+    fs::path file = fs::weakly_canonical(folder / fs::path(name));
+    auto inside = [&file](const fs::path& dir) {
+      auto [end, _] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
+      return end == dir.end();
+    };
+    // Symbolic links are followed before the check (weakly_canonical), so a
+    // link cannot lead out either.
+    if (!fs::path(name).is_absolute() && inside(folder)) return file.string();
+    for (const std::string& allowed : options.allowedFolders)
+      if (inside(fs::weakly_canonical(fs::absolute(allowed)))) return file.string();
+  } catch (const fs::filesystem_error& e) {
+    // A name the file system refuses (too long, a loop of links): said in
+    // the script's words rather than the library's.
+    throw std::invalid_argument(function + ": cannot use the file name \"" + shortened(name) +
+                                "\": " + e.code().message());
+  }
   throw std::invalid_argument(function + ": file " + name +
                               " is outside the script's folder; give a path relative to it" +
                               (options.allowedFolders.empty()

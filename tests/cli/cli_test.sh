@@ -666,5 +666,27 @@ printf 'return mesh{file="short_row.ply"}\n' > "$work/short_row.lua"
 expect_exit 1 "mesh with a short vertex row" "$work/out.png" render "$work/short_row.lua" -o "$work/out.png"
 expect_in_stderr "mesh with a short vertex row" "short_row.ply:11: vertex 1: the line ends before the values the header declares"
 
+# ---- bad scripts: the sandbox's limits and the API's arguments --------------
+# Each ends with exit 1, one line naming the script's line, and no image.
+printf 'local ok = pcall(string.rep, "x", 1 << 30)\nreturn sphere(1)\n' > "$work/caught_memory.lua"
+printf 'local function f() pcall(f) pcall(f) end\nf()\nreturn sphere(1)\n' > "$work/doubling.lua"
+printf 'local s = sphere(1)\nfor i = 1, 25 do s = s + s:translate(1, 0, 0) end\nreturn s\n' \
+  > "$work/copies.lua"
+printf 'return sphere(1, 2)\n' > "$work/extra_argument.lua"
+printf 'local s = sphere(1)\nsetmetatable(s, {})\nreturn s\n' > "$work/solid_metatable.lua"
+expect_exit 1 "memory error under pcall" "$work/out.png" render "$work/caught_memory.lua" -o "$work/out.png"
+expect_in_stderr "memory error under pcall" "caught_memory.lua:1: script exceeded the memory limit of 1024 MiB"
+# Before the time limit: the errors caught count against the budget.
+expect_exit 1 "doubling recursion" "$work/out.png" render "$work/doubling.lua" -o "$work/out.png" \
+  --script-timeout 30
+expect_in_stderr "doubling recursion" "doubling.lua:1: script exceeded the instruction budget"
+expect_exit 1 "copies in a union" "$work/out.png" render "$work/copies.lua" -o "$work/out.png"
+expect_in_stderr "copies in a union" "copies.lua:2: script exceeded the memory limit of 1024 MiB"
+expect_exit 1 "extra argument" "$work/out.png" render "$work/extra_argument.lua" -o "$work/out.png"
+expect_in_stderr "extra argument" "extra_argument.lua:1: sphere: takes 1 argument (got 2)"
+expect_exit 1 "metatable of a solid" "$work/out.png" render "$work/solid_metatable.lua" -o "$work/out.png"
+expect_in_stderr "metatable of a solid" \
+  "solid_metatable.lua:2: setmetatable: a solid cannot take a metatable; only a table can"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -4,15 +4,27 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <new>
 
+#include "engine/boolean.h"
+#include "primitives/box.h"
+#include "primitives/convex_polyhedron.h"
+#include "primitives/cylinder.h"
+#include "primitives/half_space.h"
+#include "primitives/mesh_solid.h"
+#include "primitives/quadric.h"
+#include "primitives/sphere.h"
+#include "primitives/torus.h"
+#include "scene/surface.h"
+#include "script/held_objects.h"
 #include "script/script.h"
 #include "test_support.h"
 
 namespace csgray::detail {
 namespace {
 
-std::string errorOf(const std::string& source, const ScriptLimits& limits = {}) {
-  ScriptOptions options;
+std::string errorOf(const std::string& source, const ScriptLimits& limits = {},
+                    ScriptOptions options = {}) {
   options.limits = limits;
   return test::scriptError(source, options, "evil.lua");
 }
@@ -133,6 +145,115 @@ TEST(Sandbox, ScriptWithinLimitsRuns) {
                     "return union(t)",
                     smallLimits()),
             "(no error)");
+}
+
+// The memory limit ends the script as the instruction budget does, with
+// the line where it was reached: no pcall or xpcall catches it, nor does a
+// __close that raises an error of its own as the memory error passes.
+TEST(Sandbox, MemoryLimitCannotBeCaught) {
+  struct Case {
+    const char* source;
+    int line;
+  } cases[] = {
+      {"local ok = pcall(string.rep, 'x', 1 << 30)\nreturn sphere(1)", 1},
+      {"local t = {}\nfor i = 1, 40 do t[i] = string.rep('x', 1 << 20) .. i end\n"
+       "local ok = pcall(table.concat, t)\nreturn sphere(1)",
+       3},
+      {"local s = string.rep('x', 30 << 20)\nlocal ok = pcall(string.format, '%s%s', s, s)\n"
+       "return sphere(1)",
+       2},
+      {"local ok = xpcall(function()\n  return string.rep('x', 1 << 30)\nend, "
+       "function(m) return m end)\nreturn sphere(1)",
+       2},
+      {"local ok = pcall(function()\n"
+       "  local guard <close> = setmetatable({}, {__close = function() error('hidden') end})\n"
+       "  return string.rep('x', 1 << 30)\nend)\nreturn sphere(1)",
+       3},
+      {"local ok = pcall(function()\n  local t = {}\n  for i = 1, 1e9 do t[i] = {i} end\nend)\n"
+       "return sphere(1)",
+       3},
+      {"local ok = pcall(function()\n  local s = sphere(1)\n"
+       "  for i = 1, 30 do s = s + s:translate(1, 0, 0) end\nend)\nreturn sphere(1)",
+       3},
+  };
+  for (const Case& c : cases) {
+    EXPECT_EQ(errorOf(c.source, smallLimits()),
+              "evil.lua:" + std::to_string(c.line) + ": script exceeded the memory limit of 64 MiB")
+        << c.source;
+  }
+}
+
+// A C++ allocation that fails (here in the programs that read meshes and
+// check parts) ends the script too, rather than giving pcall an error.
+TEST(Sandbox, FailedAllocationEndsTheScript) {
+  ScriptOptions options;
+  options.loadMesh = [](const std::string&, bool, std::string&) -> TriangleMesh {
+    throw std::bad_alloc();
+  };
+  options.checkSolid = [](const Solid&, const CheckOptions&) -> CheckReport {
+    throw std::bad_alloc();
+  };
+  for (const char* source : {"local ok = pcall(mesh, {file='part.stl'})\nreturn sphere(1)",
+                             "local ok = pcall(check, sphere(1))\nreturn sphere(1)"}) {
+    EXPECT_EQ(errorOf(source, {}, options),
+              "evil.lua:1: script exceeded the memory limit of 1024 MiB")
+        << source;
+  }
+}
+
+// Work that runs few instructions but takes long counts against the
+// budget: errors caught by the thousand (a recursion that doubles under
+// pcall until the C stack overflows, again and again), a recursion that
+// overflows Lua's stack (hundreds of thousands of frames to unwind), and
+// allocations (string.rep in a loop).
+TEST(Sandbox, SlowWorkCountsAgainstTheBudget) {
+  for (const char* source : {
+           "local function f() pcall(f) pcall(f) end\nf()\nreturn sphere(1)",
+           "local function f() xpcall(f, f) xpcall(f, f) end\nf()\nreturn sphere(1)",
+           "local function f() f() end\nfor i = 1, 1e6 do pcall(f) end\nreturn sphere(1)",
+           "local function f() return 1 + f() end\nwhile true do pcall(f) end",
+           "for i = 1, 1e6 do local s = string.rep('x', 1e6) end\nreturn sphere(1)",
+       }) {
+    ScriptLimits limits;  // memory enough for Lua's stack to overflow
+    limits.instructions = 50'000'000;
+    std::string e = errorOf(source, limits);
+    EXPECT_NE(e.find("script exceeded the instruction budget of 50000000"), std::string::npos)
+        << source << "\n  gave: " << e;
+  }
+}
+
+// What the C++ objects of solids hold stays counted while any value shares
+// them, also when the value that made them is collected: the copy that
+// s:translate() makes lives on in the union with s.
+TEST(Sandbox, SharedNodesStayCounted) {
+  EXPECT_EQ(errorOf("local s = sphere(1)\nfor i = 1, 30 do s = s + s:translate(1, 0, 0) end\n"
+                    "return s",
+                    smallLimits()),
+            "evil.lua:2: script exceeded the memory limit of 64 MiB");
+  // The copies in a list are collected once the union holds them; the
+  // unions kept hold 100 000 spheres, about 100 MB.
+  EXPECT_EQ(errorOf("local kept = {}\nfor k = 1, 1000 do\n  local t = {}\n"
+                    "  for i = 1, 100 do t[i] = sphere(1):translate(i, k, 0) end\n"
+                    "  kept[k] = union(t)\nend\nreturn union(kept)",
+                    smallLimits()),
+            "evil.lua:4: script exceeded the memory limit of 64 MiB");
+  // Dead values give back what they held: a long loop of copies that are
+  // dropped at once runs within the limit.
+  EXPECT_EQ(errorOf("local s = box(1)\nfor i = 1, 200000 do local t = s:translate(i, 0, 0) end\n"
+                    "return s",
+                    smallLimits()),
+            "(no error)");
+}
+
+// The sizes a solid's nodes are counted at cover what they take: the
+// object, its shared pointer's control block and the allocator's header.
+TEST(Sandbox, ChargesCoverTheObjects) {
+  constexpr std::size_t overhead = 4 * sizeof(void*);
+  for (std::size_t size :
+       {sizeof(Sphere), sizeof(Box), sizeof(Cylinder), sizeof(HalfSpace), sizeof(Quadric),
+        sizeof(Torus), sizeof(ConvexPolyhedron), sizeof(MeshSolid), sizeof(Surface)})
+    EXPECT_LE(size + overhead, kBytesPerShape);
+  EXPECT_LE(sizeof(Boolean) + overhead, kBytesPerBoolean);
 }
 
 }  // namespace

@@ -307,5 +307,156 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
   EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));
 }
 
+// An argument too many is an error at every function and method of the
+// API, never ignored: sphere(1, 2) is not a sphere of radius 1.
+TEST(Script, ExtraArgumentsAreErrors) {
+  for (const char* function : {"sphere",
+                               "ellipsoid",
+                               "box",
+                               "cylinder",
+                               "cone",
+                               "half_space",
+                               "quadric",
+                               "torus",
+                               "hyperboloid1",
+                               "hyperboloid2",
+                               "elliptic_cone",
+                               "elliptic_paraboloid",
+                               "hyperbolic_paraboloid",
+                               "elliptic_cylinder",
+                               "hyperbolic_cylinder",
+                               "parabolic_cylinder",
+                               "tetrahedron",
+                               "hexahedron",
+                               "octahedron",
+                               "dodecahedron",
+                               "icosahedron",
+                               "convex",
+                               "polyhedron",
+                               "mesh",
+                               "checker",
+                               "image_texture",
+                               "perlin",
+                               "turbulence",
+                               "marble",
+                               "wood",
+                               "plane",
+                               "disc",
+                               "triangle",
+                               "parallelogram",
+                               "rectangle",
+                               "square",
+                               "point_light",
+                               "spot_light",
+                               "area_light",
+                               "sphere_light",
+                               "camera",
+                               "scene"}) {
+    EXPECT_EQ(errorOf(std::string("local x = 1\nreturn ") + function + "({}, 2)"),
+              std::string("part.lua:2: ") + function + ": takes 1 argument (got 2)");
+  }
+  struct Case {
+    const char* source;
+    const char* expected;
+  } cases[] = {
+      {"return sphere(1, 2)", "part.lua:1: sphere: takes 1 argument (got 2)"},
+      {"return box({1, 2, 3}, true)", "part.lua:1: box: takes 1 argument (got 2)"},
+      {"return tetrahedron(1, 2)", "part.lua:1: tetrahedron: takes 1 argument (got 2)"},
+      {"return check(sphere(1), {}, 3)", "part.lua:1: check: takes 2 arguments (got 3)"},
+      {"return sphere(1):material({}, 1)", "part.lua:1: material: takes 1 argument (got 2)"},
+      {"return plane{}:material({}, 1)", "part.lua:1: material: takes 1 argument (got 2)"},
+      {"local lo, hi = sphere(1):bounds(0)", "part.lua:1: bounds: takes no arguments (got 1)"},
+      {"return sphere(1):transform({{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}, 1)",
+       "part.lua:1: transform: takes 1 argument (got 2)"},
+      {"return sphere(1):translate(1, 2, 3, 4)",
+       "part.lua:1: translate: takes x, y, z or {x, y, z} (got 4 arguments)"},
+      {"return plane{}:rotate(1, 2)",
+       "part.lua:1: rotate: takes x, y, z or {x, y, z} (got 2 arguments)"},
+      {"return sphere(1):scale({1, 1, 1}, 2)",
+       "part.lua:1: scale: takes x, y, z or {x, y, z} (got 2 arguments)"},
+      {"local inside = sphere(1):contains(0, 0, 0, 0)",
+       "part.lua:1: contains: takes x, y, z or {x, y, z} (got 4 arguments)"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(errorOf(c.source), c.expected) << c.source;
+}
+
+// A mistake is told in one line that names the script's line and says
+// what the script did in the API's words, not what Lua saw.
+TEST(Script, MistakesAreSaidInTheApisWords) {
+  struct Case {
+    const char* source;
+    const char* expected;
+  } cases[] = {
+      {"setmetatable(1, {})",
+       "part.lua:1: setmetatable: the first argument must be a table, got number"},
+      {"local s = sphere(1)\nsetmetatable(s, {})",
+       "part.lua:2: setmetatable: a solid cannot take a metatable; only a table can"},
+      {"setmetatable({}, 1)",
+       "part.lua:1: setmetatable: the metatable must be a table or nil, got number"},
+      {"setmetatable(setmetatable({}, {__metatable = 'locked'}), {})",
+       "part.lua:1: setmetatable: the table's metatable is protected (it has __metatable)"},
+      {"setmetatable({})",
+       "part.lua:1: setmetatable takes 2 arguments, a table and a metatable or nil (got 1)"},
+      // Through pcall, which is a C function too, the line is the script's.
+      {"local ok, e = pcall(setmetatable, 1, {})\nerror(e, 0)",
+       "part.lua:1: setmetatable: the first argument must be a table, got number"},
+      {"math.randomseed('x')",
+       "part.lua:1: math.randomseed: the seed must be a whole number, got string"},
+      {"math.randomseed(1.5)",
+       "part.lua:1: math.randomseed: the seed must be a whole number, got 1.5"},
+      {"return plane{}:bounds()",
+       "part.lua:1: bounds: a plane is a surface, not a solid, and bounds is a method of solids "
+       "only"},
+      {"local inside = disc{r=1}:contains(0, 0, 0)",
+       "part.lua:1: contains: a disc is a surface, not a solid, and contains is a method of "
+       "solids only"},
+      {"local s = sphere(1)\nlocal inside = s.contains(square{size=1}, 0, 0, 0)",
+       "part.lua:2: contains: a square is a surface, not a solid, and contains is a method of "
+       "solids only"},
+      {"local inside = sphere(1):contains(0/0)", "part.lua:1: contains: point must be finite"},
+      {"local inside = sphere(1):contains(0, 0/0, 0)", "part.lua:1: contains: y must be finite"},
+      {"local inside = sphere(1):contains{0, 0, 1/0}",
+       "part.lua:1: contains: point[3] must be finite"},
+      {"return check(plane{})",
+       "part.lua:1: check: the first argument must be a solid, but a plane is a surface: it "
+       "encloses no volume, so it cannot be checked as a part"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(errorOf(c.source), c.expected) << c.source;
+}
+
+// A name or a value of the script's shows as at most 60 characters in a
+// message, however long the script made it, and a message the script
+// makes endless is cut.
+TEST(Script, LongNamesAreCutInMessages) {
+  const std::string name(100000, 'y');
+  const std::string shown = std::string(57, 'y') + "...";
+  ScriptOptions options;
+  options.loadMesh = [](const std::string&, bool, std::string&) -> TriangleMesh { return {}; };
+  const std::pair<std::string, std::string> cases[] = {
+      {"return sphere{" + name + "=1}", "part.lua:1: sphere: unknown parameter '" + shown + "'"},
+      {"return " + name + "(1)",
+       "part.lua:1: attempt to call a nil value (global '" + shown + "')"},
+      {"return sphere(1):" + name + "()",
+       "part.lua:1: attempt to call a nil value (method '" + shown + "')"},
+      {"return math." + name + "(1)",
+       "part.lua:1: attempt to call a nil value (field '" + shown + "')"},
+      {"return 1 + " + name,
+       "part.lua:1: attempt to perform arithmetic on a nil value (global '" + shown + "')"},
+      {"local t = {}\nt[string.rep('y', 1e5)] = 1\nreturn sphere(t)",
+       "part.lua:3: sphere: unknown parameter '" + shown + "'"},
+      {"return image_texture{file='a.png', mapping='" + name + "'}",
+       "part.lua:1: image_texture: mapping must be \"planar\", \"spherical\", \"cylindrical\" or "
+       "\"box\", got \"" +
+           shown + "\""},
+      {"return mesh{file='" + name + "'}",
+       "part.lua:1: mesh: cannot use the file name \"" + shown + "\": File name too long"},
+  };
+  for (const auto& [source, expected] : cases)
+    EXPECT_EQ(errorOf(source, options), expected) << expected;
+  std::string e = errorOf("error(string.rep('x', 1e5))");
+  EXPECT_TRUE(e.starts_with("part.lua:1: xxx")) << e.substr(0, 100);
+  EXPECT_LE(e.size(), 2000u);
+}
+
 }  // namespace
 }  // namespace csgray::detail
