@@ -7,11 +7,8 @@
 #include <set>
 #include <sstream>
 
-<<<<<<< HEAD
 #include "io/input_file.h"
-=======
 #include "scene/value_checks.h"
->>>>>>> badcli
 #include "script/api.h"
 #include "script/sandbox.h"
 
