@@ -352,7 +352,7 @@ TEST(Script, ExtraArgumentsAreErrors) {
                                "sphere_light",
                                "camera",
                                "scene"}) {
-    EXPECT_EQ(errorOf(std::string("local x = 1\nreturn ") + function + "({}, 2)"),
+    EXPECT_EQ(scriptError(std::string("local x = 1\nreturn ") + function + "({}, 2)"),
               std::string("part.lua:2: ") + function + ": takes 1 argument (got 2)");
   }
   struct Case {
@@ -377,7 +377,7 @@ TEST(Script, ExtraArgumentsAreErrors) {
       {"local inside = sphere(1):contains(0, 0, 0, 0)",
        "part.lua:1: contains: takes x, y, z or {x, y, z} (got 4 arguments)"},
   };
-  for (const Case& c : cases) EXPECT_EQ(errorOf(c.source), c.expected) << c.source;
+  for (const Case& c : cases) EXPECT_EQ(scriptError(c.source), c.expected) << c.source;
 }
 
 // A mistake is told in one line that names the script's line and says
@@ -421,7 +421,7 @@ TEST(Script, MistakesAreSaidInTheApisWords) {
        "part.lua:1: check: the first argument must be a solid, but a plane is a surface: it "
        "encloses no volume, so it cannot be checked as a part"},
   };
-  for (const Case& c : cases) EXPECT_EQ(errorOf(c.source), c.expected) << c.source;
+  for (const Case& c : cases) EXPECT_EQ(scriptError(c.source), c.expected) << c.source;
 }
 
 // A name or a value of the script's shows as at most 60 characters in a
@@ -452,8 +452,8 @@ TEST(Script, LongNamesAreCutInMessages) {
        "part.lua:1: mesh: cannot use the file name \"" + shown + "\": File name too long"},
   };
   for (const auto& [source, expected] : cases)
-    EXPECT_EQ(errorOf(source, options), expected) << expected;
-  std::string e = errorOf("error(string.rep('x', 1e5))");
+    EXPECT_EQ(scriptError(source, options), expected) << expected;
+  std::string e = scriptError("error(string.rep('x', 1e5))");
   EXPECT_TRUE(e.starts_with("part.lua:1: xxx")) << e.substr(0, 100);
   EXPECT_LE(e.size(), 2000u);
 }
