@@ -9,7 +9,7 @@ set -u
 cd "$1" || exit 2
 
 # Bottom to top.
-layers=(engine tessellation primitives scene raytrace io export meshio check script api cli)
+layers=(engine profile tessellation primitives scene raytrace io export meshio check script api cli)
 rank() {
   local i
   for i in "${!layers[@]}"; do [[ ${layers[$i]} == "$1" ]] && echo "$i" && return; done
@@ -46,7 +46,7 @@ check_dependency() {
     [[ $file =~ $allowed ]] || fail "$file includes $name, which belongs in ${allowed//[\\^$]/}"
   done < <(grep -rlE "^#include [<\"]($pattern)" "${layers[@]}" include --include='*.h' --include='*.cpp')
 }
-check_dependency 'CGAL/' '^export/cgal/' CGAL
+check_dependency 'CGAL/' '^(export|profile)/cgal/' CGAL
 check_dependency 'OpenMesh/|lib3mf' '^meshio/' 'OpenMesh or lib3MF'
 check_dependency 'OpenImageIO/' '^io/image_formats_module\.cpp$' OpenImageIO
 check_dependency 'lua\.|lauxlib|lualib' '^script/' Lua

@@ -1,0 +1,144 @@
+#include "profile/profile.h"
+
+#include <cmath>
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <numbers>
+
+namespace csgray::detail {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Is θ on the arc from a0 to a1 (either way round), ends included?
+bool onArc(double theta, double a0, double a1) {
+  const double lo = std::min(a0, a1), hi = std::max(a0, a1);
+  if (hi - lo >= kTwoPi) return true;
+  const double t = lo + std::fmod(std::fmod(theta - lo, kTwoPi) + kTwoPi, kTwoPi);
+  return t <= hi;
+}
+
+// Crossings of the half-line from p towards +x with the segment a–b, by the
+// half-open rule (an end exactly at p's height counts for the edge that
+// lies above it), so that a vertex shared by two edges counts once.
+bool segmentCrosses(const dvec2& p, const dvec2& a, const dvec2& b) {
+  if ((a.y > p.y) == (b.y > p.y)) return false;
+  const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+  return x > p.x;
+}
+
+double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+// Is p between an arc and its chord? The chord cuts the ellipse in two; the
+// arc bounds the part that holds its middle point. In the frame where the
+// ellipse is the unit circle that is a disc cut by a line. A whole ellipse
+// (from == to) bounds its disc.
+bool inArcCap(const dvec2& p, const ProfileEdge& e) {
+  const dvec2 w = glm::inverse(e.axes) * (p - e.center);
+  if (glm::dot(w, w) >= 1.0) return false;
+  if (std::abs(e.angle1 - e.angle0) >= kTwoPi) return true;
+  const dvec2 a(std::cos(e.angle0), std::sin(e.angle0));
+  const dvec2 b(std::cos(e.angle1), std::sin(e.angle1));
+  const double mid = 0.5 * (e.angle0 + e.angle1);
+  const dvec2 m(std::cos(mid), std::sin(mid));
+  return (cross(b - a, w - a) > 0.0) == (cross(b - a, m - a) > 0.0);
+}
+
+}  // namespace
+
+ProfileEdge ProfileEdge::segment(const dvec2& a, const dvec2& b) {
+  ProfileEdge e;
+  e.kind = Kind::Segment;
+  e.from = a;
+  e.to = b;
+  return e;
+}
+
+ProfileEdge ProfileEdge::arc(const dvec2& center, const dmat2& axes, double angle0, double angle1) {
+  ProfileEdge e;
+  e.kind = Kind::Arc;
+  e.center = center;
+  e.axes = axes;
+  e.angle0 = angle0;
+  e.angle1 = angle1;
+  e.from = e.arcPoint(angle0);
+  e.to = std::abs(angle1 - angle0) >= kTwoPi ? e.from : e.arcPoint(angle1);
+  return e;
+}
+
+dvec2 ProfileEdge::arcPoint(double theta) const {
+  return center + axes * dvec2(std::cos(theta), std::sin(theta));
+}
+
+bool ProfileEdge::circular() const {
+  const dmat2 g = glm::transpose(axes) * axes;  // s²·I for a circle
+  const double scale = std::max(g[0][0], g[1][1]);
+  return std::abs(g[0][0] - g[1][1]) <= 1e-12 * scale && std::abs(g[0][1]) <= 1e-12 * scale;
+}
+
+ProfileEdge ProfileEdge::transformed(const Affine2& map) const {
+  ProfileEdge e = *this;
+  e.from = map.apply(from);
+  e.to = map.apply(to);
+  if (kind == Kind::Arc) {
+    e.center = map.apply(center);
+    e.axes = map.linear * axes;
+  }
+  return e;
+}
+
+void ProfileBounds::include(const dvec2& p) {
+  lo = glm::min(lo, p);
+  hi = glm::max(hi, p);
+}
+
+void ProfileBounds::include(const ProfileBounds& b) {
+  lo = glm::min(lo, b.lo);
+  hi = glm::max(hi, b.hi);
+}
+
+bool Profile::contains(const dvec2& p) const {
+  bool inside = false;
+  for (const ProfileLoop& loop : loops)
+    for (const ProfileEdge& e : loop.edges) {
+      // An arc crosses as often as its chord, plus once more when p lies
+      // between the two (even-odd: only the parity matters).
+      if (segmentCrosses(p, e.from, e.to)) inside = !inside;
+      if (e.kind == ProfileEdge::Kind::Arc && inArcCap(p, e)) inside = !inside;
+    }
+  return inside;
+}
+
+ProfileBounds Profile::bounds() const {
+  ProfileBounds b;
+  for (const ProfileLoop& loop : loops)
+    for (const ProfileEdge& e : loop.edges) {
+      b.include(e.from);
+      b.include(e.to);
+      if (e.kind != ProfileEdge::Kind::Arc) continue;
+      // x(θ) = cx + a·cos θ + c·sin θ is extreme where tan θ = c / a, and
+      // likewise y; those extremes that lie on the arc widen the box.
+      for (int axis = 0; axis < 2; ++axis) {
+        const double theta = std::atan2(e.axes[1][axis], e.axes[0][axis]);
+        for (double t : {theta, theta + std::numbers::pi})
+          if (onArc(t, e.angle0, e.angle1)) b.include(e.arcPoint(t));
+      }
+    }
+  return b;
+}
+
+Profile Profile::transformed(const Affine2& map) const {
+  Profile out;
+  out.loops.reserve(loops.size());
+  for (const ProfileLoop& loop : loops) {
+    ProfileLoop& l = out.loops.emplace_back();
+    l.edges.reserve(loop.edges.size());
+    for (const ProfileEdge& e : loop.edges) l.edges.push_back(e.transformed(map));
+  }
+  return out;
+}
+
+}  // namespace csgray::detail
