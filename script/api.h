@@ -7,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include "profile/region.h"
 #include "scene/scene.h"
 #include "script/script.h"
 
@@ -34,6 +35,17 @@ void registerQuadricApi(lua_State* L);
 void registerConvexApi(lua_State* L);
 void registerMeshApi(lua_State* L);
 void registerCheckApi(lua_State* L);
+
+// 2D regions (api_region.cpp): the shapes of the plane, their booleans,
+// transforms, offsets and hulls, as values of the metatable
+// "csgray.region"; and the sweeps that turn a region into a solid
+// (api_sweep.cpp): linear_extrude and rotate_extrude.
+void registerRegionApi(lua_State* L);
+void registerSweepApi(lua_State* L);
+void pushRegion(lua_State* L, RegionPtr region);
+// The region at index, or a Lua error that names the function and the
+// argument's position.
+RegionPtr regionArg(lua_State* L, int index, const char* function);
 
 // The material{...} table at index (api_material.cpp), checked.
 MaterialPtr materialArg(lua_State* L, int index);
