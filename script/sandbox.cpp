@@ -445,11 +445,32 @@ SourceLine Sandbox::callerLine(lua_State* L) {
   return where;
 }
 
+// The message handler of the script's run. error(value) with a value that
+// is not a string gets no position from Lua; this gives it the line that
+// raised it, as every other error has (the first Lua frame up the stack:
+// error itself is a C function). The chunk's name is the upvalue, since
+// Lua's own short source is cut at 60 characters.
+int Sandbox::positionBareError(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) return 1;
+  const char* chunk = lua_tostring(L, lua_upvalueindex(1));
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar); ++level)
+    if (lua_getinfo(L, "l", &ar) && ar.currentline > 0) {
+      lua_pushfstring(L, "%s:%d: error(%s) without a message", chunk, ar.currentline,
+                      luaL_typename(L, 1));
+      return 1;
+    }
+  return 1;
+}
+
 int Sandbox::run(const std::string& source, const std::string& chunkName) {
-  int base = lua_gettop(L_);
+  lua_pushstring(L_, chunkName.c_str());
+  lua_pushcclosure(L_, positionBareError, 1);
+  const int handler = lua_gettop(L_);
+  int base = handler;
   chunkName_ = std::make_shared<const std::string>(chunkName);
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
-  if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, 0);
+  if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, handler);
   // A script that reached a limit has failed, also when no error reached
   // here: Lua retries a refused allocation after a full collection, and the
   // script may end before the next check.

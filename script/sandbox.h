@@ -70,6 +70,7 @@ class Sandbox {
   static int safeXpcall(lua_State* L);
   static int countUnwinding(lua_State* L);
   static int printToStderr(lua_State* L);
+  static int positionBareError(lua_State* L);
   static int checkedSetmetatable(lua_State* L);
   static int seededRandomseed(lua_State* L);
   // Raises the abort as a Lua error located at the given stack level; the

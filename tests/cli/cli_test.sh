@@ -99,7 +99,7 @@ expect_failure "slow C call" "$work/out.png" render "$work/pattern.lua" -o "$wor
 expect_in_stderr "slow C call" "pattern.lua: the script did not finish within 0.5 s (--script-timeout)"
 expect_failure "negative timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout -1
 expect_failure "table error" "$work/out.png" render "$work/table_error.lua" -o "$work/out.png"
-expect_in_stderr "table error" "table_error.lua: error(table) without a message"
+expect_in_stderr "table error" "table_error.lua:1: error(table) without a message"
 expect_failure "multi-line error" "$work/out.png" render "$work/multiline.lua" -o "$work/out.png"
 expect_in_stderr "multi-line error" "multiline.lua:1: first second"
 expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"

@@ -458,5 +458,16 @@ TEST(Script, LongNamesAreCutInMessages) {
   EXPECT_LE(e.size(), 2000u);
 }
 
+// error() with a value that is not a string names the line that raised it,
+// as Lua names the line of error("text"); the scripts' own pcall is not
+// touched.
+TEST(Script, ErrorsWithoutAMessageNameTheirLine) {
+  EXPECT_EQ(scriptError("local x = 1\nerror()"), "part.lua:2: error(nil) without a message");
+  EXPECT_EQ(scriptError("local t = {}\n\nerror(t)"), "part.lua:3: error(table) without a message");
+  EXPECT_EQ(scriptError("local function f() error(sphere(1)) end\nf()"),
+            "part.lua:1: error(userdata) without a message");
+  EXPECT_EQ(scriptError("local ok, e = pcall(error, {})\nerror(type(e))"), "part.lua:2: table");
+}
+
 }  // namespace
 }  // namespace csgray::detail
