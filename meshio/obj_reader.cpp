@@ -42,6 +42,9 @@ TriangleMesh readObj(std::string_view bytes, const std::string& name,
         if (!tokens.next(token)) fail(where, "a vertex needs x, y and z");
         p[axis] = coordinate(token, where);
       }
+      // What may follow is numbers: a weight w, or a colour r g b that
+      // some programs write. A word there is a file that is not OBJ.
+      while (tokens.next(token)) coordinate(token, where);
       raw.points.push_back(p);
     } else if (keyword == "f") {
       corners.clear();

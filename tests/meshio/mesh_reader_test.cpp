@@ -271,6 +271,16 @@ TEST(MeshReader, TheMostNegativeObjIndexIsOutOfRange) {
   }
 }
 
+// An OBJ vertex may carry a weight or a colour after x, y and z, and
+// nothing else.
+TEST(MeshReader, ObjVertexTakesNumbersAfterItsCoordinates) {
+  const std::string faces = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const std::string coloured = "v 0 0 0 0.5 0.2 0.1\nv 1 0 0 1\nv 0 1 0\nv 0 0 1\n" + faces;
+  EXPECT_EQ(readObj(coloured, "coloured.obj").triangles.size(), 4u);
+  const std::string word = "v 0 0 0\nv 1 0 0 extra\nv 0 1 0\nv 0 0 1\n" + faces;
+  EXPECT_EQ(errorOf([&] { readObj(word, "word.obj"); }), "word.obj:2: \"extra\" is not a number");
+}
+
 // ---- Vertices that are not three finite numbers, in every text format ----------
 
 // A tetrahedron in the text of a format, its second vertex written as
