@@ -63,7 +63,13 @@ $(MANIFOLD): bench/manifold/package.json
 	cd bench/manifold && npm install --no-audit --no-fund --loglevel=error
 	@touch $@
 
-bench: build $(MANIFOLD)
+# POV-Ray 3.7, the anchor of the render rows: installed by the benchmark
+# only, never by run or test.
+POVRAY := /usr/bin/povray
+$(POVRAY):
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends povray
+
+bench: build $(MANIFOLD) $(POVRAY)
 	bench/run.sh $(CSGRAY)
 
 # The fuzzers need clang and its sanitizer runtime (Debian: clang,

@@ -133,6 +133,18 @@ const parts = {
     }));
     return cylinder(15, 15, 10).subtract(Manifold.union(pixels));
   },
+  // Slices of the twist and segments of the turn: csgray's own for the
+  // same tolerance, given on the command line (the rows of bench/run.sh
+  // read them from csgray's --stats).
+  gear(slices = 1) {
+    const twist = slices > 1 ? 30 : 0;
+    const gear = new CrossSection([gearPoints()]).extrude(20, slices - 1, twist);
+    const bore = cylinder(10, 10, 22).translate([0, 0, -1]).add(box(6, 4, 22).translate([7, -2, -1]));
+    return gear.subtract(bore);
+  },
+  turned_vase(segments = 128) {
+    return new CrossSection([vaseProfile()]).revolve(segments);
+  },
   knurled_knob() {
     const [R, H, f] = [15, 12, 2];
     const body = Manifold.union([cylinder(R, R, H - f), cylinder(R - f, R - f, H),
@@ -143,6 +155,40 @@ const parts = {
     return body.subtract(Manifold.union(grooves));
   },
 };
+// bench/parts/gear.lua's involute gear: the same 1 200 points.
+function gearPoints() {
+  const teeth = 60, module = 2, pitch = module * teeth / 2;
+  const base = pitch * Math.cos(20 * Math.PI / 180);
+  const tip = pitch + module, root = pitch - 1.25 * module, flank = 9;
+  const involute = r => { const a = Math.sqrt(Math.max(0, (r / base) ** 2 - 1)); return a - Math.atan(a); };
+  const half = Math.PI / (2 * teeth) + involute(pitch), points = [];
+  const add = (r, angle) => points.push([r * Math.cos(angle), r * Math.sin(angle)]);
+  for (let i = 0; i < teeth; ++i) {
+    const c = 2 * Math.PI * i / teeth;
+    for (let k = 0; k < flank; ++k) {
+      const r = root + (tip - root) * k / (flank - 1);
+      add(r, c - (half - involute(Math.max(r, base))));
+    }
+    for (let k = flank - 1; k >= 0; --k) {
+      const r = root + (tip - root) * k / (flank - 1);
+      add(r, c + (half - involute(Math.max(r, base))));
+    }
+    const from = c + half - involute(Math.max(root, base));
+    const to = c + 2 * Math.PI / teeth - half + involute(Math.max(root, base));
+    add(root, from + (to - from) / 3);
+    add(root, from + 2 * (to - from) / 3);
+  }
+  return points;
+}
+// bench/parts/turned_vase.lua's 200-point profile.
+function vaseProfile() {
+  const n = 99, height = 120, points = [[0, 0]];
+  const radius = z => 30 + 12 * Math.sin(z / 22) - 8 * Math.cos(z / 9) * (z / height);
+  for (let k = 0; k < n; ++k) { const z = height * k / (n - 1); points.push([radius(z), z]); }
+  for (let k = n - 1; k >= 0; --k) { const z = 3 + (height - 3) * k / (n - 1); points.push([radius(z) - 2, z]); }
+  points.push([0, 3]);
+  return points;
+}
 function radius(i) { return 20 + 6 * Math.sin(i * 0.25); }
 function frustums(n, inset, lift) {
   const list = [];
