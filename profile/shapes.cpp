@@ -73,8 +73,13 @@ bool collinear(const std::vector<dvec2>& corners) {
 
 RegionPtr rectangleRegion(const char* kind, double width, double height, bool center) {
   const std::string function(kind);
-  requirePositive(function, "the width", width);
-  requirePositive(function, "the height", height);
+  const std::string given = " (got " + shown(width) + ", " + shown(height) + ")";
+  if (!std::isfinite(width) || !std::isfinite(height))
+    throw std::invalid_argument(function + ": size must be finite" + given);
+  if (!(width > 0.0) || !(height > 0.0))
+    throw std::invalid_argument(function + ": size must be > 0" + given);
+  if (width > kLargest || height > kLargest)
+    throw std::invalid_argument(function + ": size is too large" + given);
   const dvec2 lo = center ? dvec2(-width / 2, -height / 2) : dvec2(0.0);
   const dvec2 hi = lo + dvec2(width, height);
   Profile p;

@@ -114,13 +114,13 @@ TEST(Shapes, RegularPolygonsByCornersOrAcrossFlats) {
 
 TEST(Shapes, BadInputIsRefusedWithTheReason) {
   expectRefused([] { rectangleRegion("square", 0, 0, false); },
-                "square: the width must be > 0 (got 0)");
+                "square: size must be > 0 (got 0, 0)");
   expectRefused([] { rectangleRegion("rectangle", 1, -1, false); },
-                "rectangle: the height must be > 0");
+                "rectangle: size must be > 0 (got 1, -1)");
   expectRefused([] { rectangleRegion("rectangle", NAN, 1, false); },
-                "rectangle: the width must be finite");
+                "rectangle: size must be finite");
   expectRefused([] { rectangleRegion("rectangle", 1e200, 1, false); },
-                "rectangle: the width is too large");
+                "rectangle: size is too large");
   expectRefused([] { circleRegion(std::nullopt, std::nullopt); }, "circle: needs r");
   expectRefused([] { circleRegion(1.0, 2.0); }, "circle: give r or d, not both");
   expectRefused([] { circleRegion(-1.0, std::nullopt); }, "circle: the radius must be > 0");
