@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "primitives/check.h"
+#include "profile/shapes.h"
 #include "scene/value_checks.h"
 
 namespace csgray::detail {
@@ -258,8 +259,9 @@ SurfacePtr discOf(std::optional<double> r, std::optional<double> d, const dvec3&
 }
 
 SurfacePtr rectangleOf(const char* kind, double width, double height, bool center) {
-  if (!(width > 0.0) || !(height > 0.0))
-    throw std::invalid_argument(std::string(kind) + ": size must be > 0");
+  // The checks and messages of the script's square{} and rectangle{},
+  // which are regions (profile/shapes.h).
+  rectangleRegion(kind, width, height, center);
   const dvec3 origin = center ? dvec3(-width / 2, -height / 2, 0) : dvec3(0.0);
   return Surface::parallelogram(origin, dvec3(width, 0, 0), dvec3(0, height, 0), kind);
 }
