@@ -256,5 +256,116 @@ TEST(Region, NonFiniteInputIsRefused) {
   EXPECT_THROW(Region::boolean(Region::Op::Union, {}), std::invalid_argument);
 }
 
+// ---- Offsets ------------------------------------------------------------------
+
+TEST(RegionOffset, RoundedSquareHasQuarterCircleCorners) {
+  const double a = 2.0, r = 0.3;
+  const Profile p = offsetRounded(*rect(0, 0, a, a), r, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_NEAR(area(p), a * a + 4.0 * a * r + kPi * r * r, 1e-12);
+  int arcs = 0;
+  for (const ProfileEdge& e : p.loops[0].edges)
+    if (e.kind == ProfileEdge::Kind::Arc) {
+      ++arcs;
+      EXPECT_NEAR(std::abs(e.angle1 - e.angle0), 0.5 * kPi, 1e-9);
+    }
+  EXPECT_EQ(arcs, 4);
+  EXPECT_EQ(p.loops[0].edges.size(), 8u);
+  expectClosed(p);
+}
+
+TEST(RegionOffset, InsetOfADiscIsTheSmallerDisc) {
+  const Profile p = offsetRounded(*disc({1, 1}, 2.0), -0.5, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  ASSERT_EQ(p.loops[0].edges.size(), 1u);
+  EXPECT_NEAR(area(p), kPi * 1.5 * 1.5, 1e-12);
+  EXPECT_TRUE(offsetRounded(*disc({1, 1}, 2.0), -2.5, kTolerance).loops.empty());
+}
+
+TEST(RegionOffset, RoundedInsetKeepsSharpCorners) {
+  const Profile p = offsetRounded(*rect(0, 0, 3, 2), -0.5, kTolerance);
+  EXPECT_NEAR(area(p), 2.0 * 1.0, 1e-12);
+  // An inset of an L rounds its inner corner: the square 1×1 at the
+  // corner loses a quarter disc's complement, (1 − π/4)·r².
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  const double r = 0.25;
+  const Profile q = offsetRounded(*l, -r, kTolerance);
+  EXPECT_NEAR(area(q), 1.5 * 1.5 - 1.0 + (1.0 - kPi / 4.0) * r * r, 1e-12);
+}
+
+TEST(RegionOffset, RoundedOffsetOfAHoleAndAnArc) {
+  // A washer grown by r: the outer circle grows, the hole shrinks.
+  const RegionPtr washer = subtract(disc({0, 0}, 3), disc({0, 0}, 1));
+  const Profile p = offsetRounded(*washer, 0.5, kTolerance);
+  ASSERT_EQ(p.loops.size(), 2u);
+  EXPECT_NEAR(area(p), kPi * (3.5 * 3.5 - 0.5 * 0.5), 1e-12);
+  // Grown further, the hole closes.
+  EXPECT_EQ(offsetRounded(*washer, 1.5, kTolerance).loops.size(), 1u);
+  // A half disc grown by r: (π/2)(R + r)² for the arc side, plus the
+  // strip along the diameter and two quarter discs at its ends.
+  Profile half;
+  half.loops.push_back(
+      {{ProfileEdge::segment({-1, 0}, {1, 0}), ProfileEdge::arc({0, 0}, dmat2(1), 0.0, kPi)}});
+  half.loops[0].edges[1].from = {1, 0};
+  half.loops[0].edges[1].to = {-1, 0};
+  const double r = 0.25;
+  const Profile q = offsetRounded(*Region::leaf(half), r, kTolerance);
+  EXPECT_NEAR(area(q), 0.5 * kPi * (1 + r) * (1 + r) + 2.0 * r + 0.5 * kPi * r * r, 1e-12);
+}
+
+TEST(RegionOffset, DeltaOffsetsMitreOrChamfer) {
+  const double a = 2.0, d = 0.25;
+  EXPECT_NEAR(area(offsetDelta(*rect(0, 0, a, a), d, false, kTolerance)), (a + 2 * d) * (a + 2 * d),
+              1e-12);
+  // The chamfer cuts each corner at distance d from it: a right triangle
+  // with legs d(2 − √2), (3 − 2√2)·d² each.
+  const double cut = (3.0 - 2.0 * std::sqrt(2.0)) * d * d;
+  const Profile chamfered = offsetDelta(*rect(0, 0, a, a), d, true, kTolerance);
+  EXPECT_NEAR(area(chamfered), (a + 2 * d) * (a + 2 * d) - 4.0 * cut, 1e-12);
+  EXPECT_EQ(chamfered.loops.at(0).edges.size(), 8u);
+  EXPECT_NEAR(area(offsetDelta(*rect(0, 0, a, a), -d, true, kTolerance)), (a - 2 * d) * (a - 2 * d),
+              1e-12);
+  // An L: its inner corner stays sharp when grown, and is mitred (or
+  // chamfered) when shrunk.
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  EXPECT_NEAR(area(offsetDelta(*l, d, false, kTolerance)), (2 + 2 * d) * (2 + 2 * d) - 1.0, 1e-12);
+  EXPECT_NEAR(area(offsetDelta(*l, -d, false, kTolerance)), (2 - 2 * d) * (2 - 2 * d) - 1.0, 1e-12);
+  EXPECT_NEAR(area(offsetDelta(*l, -d, true, kTolerance)), (2 - 2 * d) * (2 - 2 * d) - 1.0 + cut,
+              1e-12);
+  // Arcs become concentric arcs.
+  const Profile grown = offsetDelta(*disc({0, 0}, 1), d, false, kTolerance);
+  ASSERT_EQ(grown.loops.size(), 1u);
+  EXPECT_EQ(grown.loops[0].edges.size(), 1u);
+  EXPECT_NEAR(area(grown), kPi * (1 + d) * (1 + d), 1e-12);
+}
+
+TEST(RegionOffset, OffsetsAgreeWithDistances) {
+  // A point is in offset(r) exactly when it is within r of the region:
+  // for a square that distance is known in closed form.
+  const double r = 0.4;
+  const RegionPtr square = rect(0, 0, 1, 1);
+  const Profile grown = offsetRounded(*square, r, kTolerance);
+  const Profile shrunk = offsetRounded(*square, -r, kTolerance);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1.0, 2.0);
+  for (int i = 0; i < 4000; ++i) {
+    const dvec2 p(u(random), u(random));
+    const dvec2 nearest = glm::clamp(p, dvec2(0.0), dvec2(1.0));
+    const double outside = glm::length(p - nearest);
+    const double inside = std::min(std::min(p.x, 1.0 - p.x), std::min(p.y, 1.0 - p.y));
+    if (std::abs(outside - r) > 1e-9)
+      EXPECT_EQ(grown.contains(p), outside < r) << p.x << ", " << p.y;
+    if (std::abs(inside - r) > 1e-9)
+      EXPECT_EQ(shrunk.contains(p), inside > r) << p.x << ", " << p.y;
+  }
+}
+
+TEST(RegionOffset, BadOffsetsAreRefused) {
+  EXPECT_THROW(offsetRounded(*rect(0, 0, 1, 1), std::nan(""), kTolerance), std::invalid_argument);
+  EXPECT_THROW(offsetDelta(*rect(0, 0, 1, 1), INFINITY, false, kTolerance), std::invalid_argument);
+  EXPECT_TRUE(offsetRounded(*rect(0, 0, 1, 1), -0.5, kTolerance).loops.empty());
+  EXPECT_NEAR(area(offsetRounded(*rect(0, 0, 1, 1), 0.0, kTolerance)), 1.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace csgray::detail
