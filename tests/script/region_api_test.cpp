@@ -313,9 +313,13 @@ TEST(ScriptRegion, OffsetsAndHullsAreAnalytic) {
   expectArea("square(2):offset{r=1}", 4 + 8 + pi);
   // Inwards: the square shrinks to side a − 2r, its corners stay sharp.
   expectArea("square(4):offset{r=-1}", 4);
-  // delta mitres the corners: (a + 2d)²; chamfer cuts them: less 2d².
+  // delta mitres the corners: (a + 2d)². chamfer cuts each, as OpenSCAD
+  // (Clipper's square join) does, by the line at distance d from the
+  // corner across its bisector: a triangle of height (√2 − 1)d and base
+  // twice that, (√2 − 1)²d².
   expectArea("square(2):offset{delta=1}", 16);
-  expectArea("square(2):offset{delta=1, chamfer=true}", 16 - 2);
+  expectArea("square(2):offset{delta=1, chamfer=true}",
+             16 - 4 * (std::sqrt(2.0) - 1) * (std::sqrt(2.0) - 1));
   // The hull of two circles of radius r at distance d: πr² + 2rd.
   expectArea("hull(circle(1), circle(1):translate(5, 0))", pi + 10);
   expectArea("hull{square(1), square(1):translate(3, 3)}", 7);
