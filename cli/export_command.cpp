@@ -13,10 +13,13 @@ namespace csgray::detail {
 Command exportCommand(CLI::App& app, ScriptArguments& script) {
   auto arguments = std::make_shared<ExportOptions>();
   CLI::App* exporter = addScriptCommand(
-      app, "export", "Write a part script's solids as a closed, printable mesh", script);
+      app, "export",
+      "Write a part script's solids as a closed, printable mesh, or its 2D regions' outline",
+      script);
   exporter
       ->add_option("-o,--output", arguments->output,
-                   "Mesh file; its extension picks the format (.stl, .obj, .off, .ply, .3mf)")
+                   "Mesh file; its extension picks the format (.stl, .obj, .off, .ply, .3mf), "
+                   "or .svg or .dxf for the outline of the 2D regions")
       ->required();
   exporter
       ->add_option("--tolerance", arguments->tolerance,

@@ -12,11 +12,59 @@
 #include "export/printed_part.h"
 #include "io/atomic_file.h"
 #include "meshio/mesh_writer.h"
+#include "meshio/outline_writer.h"
+#include "profile/region_evaluation.h"
+#include "scene/region_surface.h"
 
 namespace csgray::detail {
 
+namespace {
+
+// The outline of the scene's 2D regions (their union) as SVG or DXF.
+void exportOutline(const Scene& scene, const ExportOptions& options, double scriptSeconds) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<RegionPtr> regions;
+  for (const SurfacePtr& surface : scene.surfaces) {
+    if (surface->shape() != Surface::Shape::Region) continue;
+    RegionPtr region = regionInPlane(*surface);
+    if (!region)
+      throw std::runtime_error(options.script + ": a " + surface->kind() +
+                               " placed in space by a 3D transform has no outline in the plane "
+                               "z = 0");
+    regions.push_back(std::move(region));
+  }
+  if (regions.empty())
+    throw std::runtime_error(options.script +
+                             ": there is no 2D region to outline (.svg and .dxf hold the outlines "
+                             "of regions: square{}, circle{}, polygon{}, ...)");
+  const std::size_t others = scene.objects.size() + scene.surfaces.size() - regions.size();
+  if (others > 0)
+    printWarning(options.script + ": " + std::to_string(others) +
+                 (others == 1 ? " solid or surface is" : " solids or surfaces are") +
+                 " not outlined: only 2D regions are");
+  Profile outline;
+  try {
+    const RegionPtr all =
+        regions.size() == 1 ? regions[0] : Region::boolean(Region::Op::Union, regions);
+    outline = evaluate(*all, options.tolerance);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(options.script + ": " + e.what());
+  }
+  if (options.meshed) options.meshed();
+  if (outline.loops.empty()) throw std::runtime_error(options.script + ": the region is empty");
+  writeOutlineFile(options.output, outline, options.tolerance);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("csgray: wrote %s (%zu loop%s, area %.6g) in %.2f s\n", options.output.c_str(),
+              outline.loops.size(), outline.loops.size() == 1 ? "" : "s", area(outline),
+              scriptSeconds + seconds);
+}
+
+}  // namespace
+
 void checkExportOutput(const ExportOptions& options) {
-  meshFormatFor(options.output);  // throws for an unknown extension
+  // Throws for an unknown extension.
+  if (!outlineFormatFor(options.output)) meshFormatFor(options.output);
   std::error_code same;
   if (std::filesystem::equivalent(options.script, options.output, same))
     throw std::runtime_error("cannot write " + options.output + ": it is the script itself");
@@ -25,6 +73,19 @@ void checkExportOutput(const ExportOptions& options) {
 }
 
 void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {
+  if (outlineFormatFor(options.output)) {
+    exportOutline(scene, options, scriptSeconds);
+    return;
+  }
+  if (scene.objects.empty())
+    for (const SurfacePtr& surface : scene.surfaces)
+      if (surface->shape() == Surface::Shape::Region)
+        throw std::runtime_error(
+            options.script + ": the 2D region" +
+            (surface->kind() == "region" ? "" : " (a " + surface->kind() + ")") +
+            " is not a solid, so it has no mesh: extrude it "
+            "(linear_extrude, rotate_extrude) or export its outline to .svg "
+            "or .dxf");
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const SolidPtr part = printedPart(scene, options.script, "export", printWarning);

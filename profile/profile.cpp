@@ -1,7 +1,7 @@
 #include "profile/profile.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>

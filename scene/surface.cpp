@@ -85,6 +85,14 @@ Surface::Surface(Shape shape, const Affine& worldFromObject, std::string kind)
   update();
 }
 
+Surface::Surface(RegionPtr region, const Affine& worldFromObject, std::string kind)
+    : shape_(Shape::Region),
+      region_(std::move(region)),
+      frame_(worldFromObject),
+      kind_(std::move(kind)) {
+  update();
+}
+
 SurfacePtr Surface::plane(const dvec3& point, const dvec3& normal) {
   requireFinite("plane", "point", point);
   dvec3 n = unitNormal("plane", normal);
@@ -156,6 +164,9 @@ std::optional<double> Surface::hit(const Ray& ray) const {
     case Shape::Parallelogram:
       inside = x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0;
       break;
+    case Shape::Region:
+      inside = std::isfinite(x) && std::isfinite(y) && region_->contains(dvec2(x, y));
+      break;
   }
   if (!inside) return std::nullopt;
   return t;
@@ -203,6 +214,12 @@ void Surface::update() {
     for (int i = 0; i < 3; ++i) half[i] = std::sqrt(m[0][i] * m[0][i] + m[1][i] * m[1][i]);
     bounds_.include(c - half);
     bounds_.include(c + half);
+  } else if (shape_ == Shape::Region) {
+    // The corners of the region's box in its plane bound its image.
+    const ProfileBounds& box = region_->bounds();
+    if (box.empty()) return;  // an empty region: nothing to hit
+    for (double x : {box.lo.x, box.hi.x})
+      for (double y : {box.lo.y, box.hi.y}) bounds_.include(frame_.pointToWorld(dvec3(x, y, 0)));
   } else {
     bounds_.include(frame_.pointToWorld(dvec3(0, 0, 0)));
     bounds_.include(frame_.pointToWorld(dvec3(1, 0, 0)));

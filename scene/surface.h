@@ -15,6 +15,7 @@
 
 #include "engine/affine.h"
 #include "engine/bounds.h"
+#include "profile/region.h"
 #include "scene/material.h"
 
 namespace csgray::detail {
@@ -29,10 +30,13 @@ class Surface : public std::enable_shared_from_this<Surface> {
     Disc,           // ϑ² + φ² ≤ 1
     Triangle,       // ϑ, φ ≥ 0 and ϑ + φ ≤ 1
     Parallelogram,  // ϑ, φ ∈ [0, 1]
+    Region,         // (ϑ, φ) in a 2D region (scene/region_surface.h)
   };
 
   // worldFromObject maps the unit shape into place; it must be invertible.
   Surface(Shape shape, const Affine& worldFromObject, std::string kind);
+  // A 2D region in the plane z = 0 of its frame (scene/region_surface.h).
+  Surface(RegionPtr region, const Affine& worldFromObject, std::string kind);
 
   // A plane through point with the given normal.
   static SurfacePtr plane(const dvec3& point, const dvec3& normal);
@@ -55,6 +59,7 @@ class Surface : public std::enable_shared_from_this<Surface> {
   Shape shape() const { return shape_; }
   const std::string& kind() const { return kind_; }
   const Affine& frame() const { return frame_; }
+  const RegionPtr& region() const { return region_; }  // a Region's, else null
 
   const MaterialPtr& material() const { return material_; }
   // Texture space: the world as it was when the material was given.
@@ -68,6 +73,7 @@ class Surface : public std::enable_shared_from_this<Surface> {
   void update();
 
   Shape shape_;
+  RegionPtr region_;
   Affine frame_;
   std::string kind_;
   MaterialPtr material_;

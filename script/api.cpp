@@ -352,6 +352,9 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerConvexApi(L);
   registerMeshApi(L);
   registerCheckApi(L);
+  // After the solids' booleans, which union() and its kin call for solids,
+  // and after the surfaces: square and rectangle are regions.
+  registerRegionApi(L);
 }
 
 }  // namespace csgray::detail

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/camera.h"
+#include "scene/region_surface.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
@@ -57,14 +58,20 @@ int scene(lua_State* L) {
   // the limit on primitives.
   PendingCharge pending(L);
   ObjectTally tally;
-  // Objects: solids and open surfaces, alone or in a list.
+  // Objects: solids, open surfaces and 2D regions (shown flat in the plane
+  // z = 0), alone or in a list.
   forEachListed(L, args, "objects", [&](const std::string& what) {
-    if (SurfacePtr* surface = toValue<SurfacePtr>(L, -1)) {
+    if (RegionPtr* region = toValue<RegionPtr>(L, -1)) {
+      tally.add(1, what);
+      pending.add(sizeof(SurfacePtr));
+      s.surfaces.push_back(regionSurface(*region, regionKind(L, -1)));
+    } else if (SurfacePtr* surface = toValue<SurfacePtr>(L, -1)) {
       tally.add(1, what);
       pending.add(sizeof(SurfacePtr));
       s.surfaces.push_back(*surface);
     } else {
-      const SolidPtr& solid = checkValue<SolidPtr>(L, -1, what + " (a solid or surface)");
+      const SolidPtr& solid =
+          checkValue<SolidPtr>(L, -1, what + " (a solid, a surface or a region)");
       tally.add(solid->primitiveCount(), what);
       pending.add(sizeof(SolidPtr));
       s.objects.push_back(solid);
@@ -114,9 +121,14 @@ Scene sceneFromValue(lua_State* L, int index) {
     s.surfaces.push_back(*surface);
     return s;
   }
+  if (RegionPtr* region = toValue<RegionPtr>(L, index)) {
+    Scene s;
+    s.surfaces.push_back(regionSurface(*region, regionKind(L, index)));
+    return s;
+  }
   if (Scene* s = toValue<Scene>(L, index)) return *s;
-  throw std::invalid_argument(std::string("the script must return a solid, a surface or "
-                                          "scene{...}, not ") +
+  throw std::invalid_argument(std::string("the script must return a solid, a surface, a region "
+                                          "or scene{...}, not ") +
                               luaL_typename(L, index));
 }
 

@@ -1,6 +1,7 @@
 // Open surfaces in the script (docs/script.md, Open surfaces): planes,
-// discs, triangles, parallelograms, rectangles and squares. They enclose
-// no volume, so they take no part in booleans.
+// discs, triangles and parallelograms. They enclose no volume, so they
+// take no part in booleans. square{} and rectangle{} are 2D regions
+// (api_region.cpp), shown as flat surfaces like these.
 #include <stdexcept>
 #include <string>
 
@@ -68,31 +69,6 @@ int parallelogram(lua_State* L) {
   return 1;
 }
 
-// rectangle{size={w, h}} and square{size=s}.
-template <bool isSquare>
-int rectangle(lua_State* L) {
-  const char* name = isSquare ? "square" : "rectangle";
-  checkArgumentCount(L, name, 1);
-  LuaArgs args(L, 1, name);
-  double w, h;
-  if (isSquare) {
-    w = h = args.number("size").value_or(-1.0);
-  } else {
-    if (!args.push("size")) throw std::invalid_argument("rectangle: needs size={w, h}");
-    if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 2)
-      throw std::invalid_argument("rectangle: size must be {w, h}");
-    lua_rawgeti(L, -1, 1);
-    lua_rawgeti(L, -2, 2);
-    w = toNumber(L, -2, "rectangle: size[1]");
-    h = toNumber(L, -1, "rectangle: size[2]");
-    lua_pop(L, 3);
-  }
-  bool center = args.boolean("center").value_or(false);
-  args.finish();
-  pushSurface(L, rectangleOf(name, w, h, center));
-  return 1;
-}
-
 int surfaceMaterial(lua_State* L) {
   const SurfacePtr& surface = checkValue<SurfacePtr>(L, 1, "material: the receiver");
   checkArgumentCount(L, "material", 1, 2);
@@ -142,8 +118,6 @@ void registerSurfaceApi(lua_State* L, const luaL_Reg* transformMethods) {
       {"disc", guarded<disc>},
       {"triangle", guarded<triangle>},
       {"parallelogram", guarded<parallelogram>},
-      {"rectangle", guarded<rectangle<false>>},
-      {"square", guarded<rectangle<true>>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }

@@ -41,6 +41,11 @@ struct TypeName<SurfacePtr> {
   static constexpr const char* shown = "surface";
 };
 template <>
+struct TypeName<RegionPtr> {
+  static constexpr const char* value = "csgray.region";
+  static constexpr const char* shown = "region";
+};
+template <>
 struct TypeName<TexturePtr> {
   static constexpr const char* value = "csgray.texture";
   static constexpr const char* shown = "texture";
@@ -86,8 +91,25 @@ inline T* toValue(lua_State* L, int index) {
   return held ? &held->value : nullptr;
 }
 
+// What a region value was made as ("square", "circle"; "region" for a
+// boolean's, an offset's, ...): the user value of its userdata
+// (script/api_region.cpp).
+inline std::string regionKind(lua_State* L, int index) {
+  std::string kind = "region";
+  if (lua_getiuservalue(L, index, 1) == LUA_TSTRING) kind = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  return kind;
+}
+
+// " (a square)" for messages; nothing for a plain "region".
+inline std::string regionShown(lua_State* L, int index) {
+  const std::string kind = regionKind(L, index);
+  return kind == "region" ? std::string() : " (a " + kind + ")";
+}
+
 // The value at index, or an error "<what> must be a <type>". A surface
-// given for a solid is told apart: what it cannot do is `solidUse`.
+// given for a solid is told apart: what it cannot do is `solidUse`; so is
+// a 2D region.
 template <class T>
 inline const T& checkValue(
     lua_State* L, int index, const std::string& what,
@@ -97,6 +119,11 @@ inline const T& checkValue(
     if (SurfacePtr* s = toValue<SurfacePtr>(L, index))
       throw std::invalid_argument(what + " must be a solid, but a " + (*s)->kind() +
                                   " is a surface: it encloses no volume, so it cannot " + solidUse);
+    if (toValue<RegionPtr>(L, index))
+      throw std::invalid_argument(what + " must be a solid, not a 2D region" +
+                                  regionShown(L, index) +
+                                  ": it has no volume until it is extruded (linear_extrude, "
+                                  "rotate_extrude)");
   }
   throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + ", got " +
                               luaL_typename(L, index));

@@ -688,5 +688,42 @@ expect_exit 1 "metatable of a solid" "$work/out.png" render "$work/solid_metatab
 expect_in_stderr "metatable of a solid" \
   "solid_metatable.lua:2: setmetatable: a solid cannot take a metatable; only a table can"
 
+# ---- 2D regions: outlines as SVG and DXF, refused as meshes -----------------
+printf 'local plate = square{size=40, center=true}\nreturn plate - circle{r=8} - circle(3):translate(14, 14)\n' \
+  > "$work/plate2d.lua"
+printf 'return scene{objects={box(1), circle(1)}}\n' > "$work/mixed2d.lua"
+printf 'return square(10):rotate(90, 0, 0)\n' > "$work/wall2d.lua"
+printf 'local r = circle(1)\nreturn polygon{{0, 0}, {1, 1}, {2, 2}}\n' > "$work/collinear2d.lua"
+for ext in svg dxf SVG; do
+  if "$csgray" export "$work/plate2d.lua" -o "$work/plate.$ext" >"$work/stdout" 2>"$work/stderr" &&
+    [ -s "$work/plate.$ext" ] && grep -q "wrote $work/plate.$ext (3 loops, area 1370.66)" "$work/stdout"; then
+    pass
+  else
+    fail "outline .$ext"; cat "$work/stdout" "$work/stderr"
+  fi
+done
+grep -q '<path fill="none" fill-rule="evenodd"' "$work/plate.svg" && grep -q ' A 8 8 0 ' "$work/plate.svg" &&
+  pass || fail "the SVG outline has no arc of the hole"
+grep -q '^CIRCLE$\|^ARC$' "$work/plate.dxf" && tail -1 "$work/plate.dxf" | grep -q '^EOF$' &&
+  pass || fail "the DXF outline has no arc or no EOF"
+# Solids beside regions are left out with a warning.
+if "$csgray" export "$work/mixed2d.lua" -o "$work/mixed.svg" >"$work/stdout" 2>"$work/stderr" &&
+  grep -q "1 solid or surface is not outlined" "$work/stderr"; then pass; else fail "mixed outline"; cat "$work/stderr"; fi
+expect_exit 1 "a region exported as a mesh" "$work/plate.stl" export "$work/plate2d.lua" -o "$work/plate.stl"
+expect_in_stderr "a region exported as a mesh" \
+  "plate2d.lua: the 2D region is not a solid, so it has no mesh: extrude it (linear_extrude, rotate_extrude) or export its outline to .svg or .dxf"
+expect_exit 1 "a solid outlined" "$work/part.svg" export "$work/part.lua" -o "$work/part.svg"
+expect_in_stderr "a solid outlined" "part.lua: there is no 2D region to outline"
+expect_exit 1 "a region stood up" "$work/wall.svg" export "$work/wall2d.lua" -o "$work/wall.svg"
+expect_in_stderr "a region stood up" \
+  "wall2d.lua: a square placed in space by a 3D transform has no outline in the plane z = 0"
+expect_exit 1 "an unknown outline format" "" export "$work/plate2d.lua" -o "$work/plate.eps"
+expect_exit 1 "a collinear polygon" "$work/bad.svg" export "$work/collinear2d.lua" -o "$work/bad.svg"
+expect_in_stderr "a collinear polygon" \
+  "collinear2d.lua:2: polygon: the points are collinear, so they enclose no area"
+# A region renders, flat in the plane z = 0.
+if "$csgray" render "$work/plate2d.lua" -o "$work/plate.png" --size 64x48 >/dev/null 2>"$work/stderr" &&
+  [ -s "$work/plate.png" ]; then pass; else fail "render a region"; cat "$work/stderr"; fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

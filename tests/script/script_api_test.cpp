@@ -656,8 +656,8 @@ TEST(ScriptSurface, SurfacesAreNotSolids) {
       "local b = box(1)\nreturn b - disc{r=1}",
       "local t = triangle{points={{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}\nreturn union(box(1), t)",
       "local d = disc{r=1}\nreturn d * box(1)",
-      "local s = square{size=1}\nreturn intersection{box(1), s}",
-      "local s = rectangle{size={1, 2}}\nreturn difference(s, box(1))",
+      "local s = square{size=1}:rotate(90, 0, 0)\nreturn intersection{box(1), s}",
+      "local s = rectangle{size={1, 2}}:translate(0, 0, 1)\nreturn difference(s, box(1))",
       "local s = plane{}\nreturn box(1) + s",
   };
   const char* kinds[] = {"plane", "disc", "triangle", "disc", "square", "rectangle", "plane"};
@@ -697,7 +697,7 @@ TEST(ScriptSurface, DegenerateShapesAreErrors) {
       {"rectangle{size={1, -1}}", "rectangle: size must be > 0"},
       {"rectangle{size=1}", "rectangle: size must be {w, h}"},
       {"square{size=0}", "square: size must be > 0"},
-      {"square{}", "square: size must be > 0"},
+      {"square{}", "square: needs size=s"},
       {"disc{r=1, radius=2}", "disc: unknown parameter 'radius'"},
   };
   for (const Case& c : cases)
@@ -718,7 +718,8 @@ TEST(ScriptSurface, AScriptMayReturnASurface) {
   scene = sceneOf("return scene{objects={plane{}}, camera=camera{eye={0, -5, 5}}}");
   EXPECT_EQ(scene.surfaces.size(), 1u);
   expectError("return scene{objects={1}}",
-              "part.lua:1: scene: objects[1] (a solid or surface) must be a solid, got number");
+              "part.lua:1: scene: objects[1] (a solid, a surface or a region) must be a solid, got "
+              "number");
 }
 
 // ---- Lights -----------------------------------------------------------------

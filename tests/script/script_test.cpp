@@ -192,7 +192,8 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"error('custom')", "part.lua:1: custom"},
       {"local s = sphere(1)", "part.lua: the script returned nothing"},
       {"return 42",
-       "part.lua: the script must return a solid, a surface or scene{...}, not number"},
+       "part.lua: the script must return a solid, a surface, a region or scene{...}, not "
+       "number"},
       {"return scene{objects={}}", "part.lua:1: scene: objects is empty"},
       {"return scene{objects={sphere(1)}, lights={42}}",
        "part.lua:1: scene: lights[1] must be a light, got number"},
@@ -411,6 +412,10 @@ TEST(Script, MistakesAreSaidInTheApisWords) {
        "part.lua:1: contains: a disc is a surface, not a solid, and contains is a method of "
        "solids only"},
       {"local s = sphere(1)\nlocal inside = s.contains(square{size=1}, 0, 0, 0)",
+       "part.lua:2: contains: the receiver (call it as s:contains(...)) must be a solid, not a 2D "
+       "region (a square): it has no volume until it is extruded (linear_extrude, "
+       "rotate_extrude)"},
+      {"local s = sphere(1)\nlocal inside = s.contains(square{size=1}:translate(0, 0, 1), 0, 0, 0)",
        "part.lua:2: contains: a square is a surface, not a solid, and contains is a method of "
        "solids only"},
       {"local inside = sphere(1):contains(0/0)", "part.lua:1: contains: point must be finite"},
