@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "tessellation/tessellation.h"
+#include "profile/region_evaluation.h"
 
 namespace csgray::detail {
 
@@ -26,30 +26,6 @@ bool pointInLoop(const std::vector<dvec2>& loop, const dvec2& p) {
       inside = !inside;
   }
   return inside;
-}
-
-// A loop's points within tolerance of its edges; the first point of each
-// edge, so the loop closes on its own.
-std::vector<dvec2> flattenLoop(const ProfileLoop& loop, double tolerance) {
-  std::vector<dvec2> points;
-  for (const ProfileEdge& e : loop.edges) {
-    if (e.kind == ProfileEdge::Kind::Segment) {
-      points.push_back(e.from);
-      continue;
-    }
-    const double sweep = e.angle1 - e.angle0;
-    const double radius = std::max(glm::length(e.axes[0]), glm::length(e.axes[1]));
-    const int least = std::max(1, int(std::ceil(8.0 * std::abs(sweep) / (2.0 * std::numbers::pi))));
-    const int n = arcSegments(radius, std::abs(sweep), tolerance, least);
-    points.push_back(e.from);
-    for (int k = 1; k < n; ++k) points.push_back(e.arcPoint(e.angle0 + sweep * k / n));
-  }
-  // Points repeated by joined edges (a zero-length segment) are one.
-  std::vector<dvec2> unique;
-  for (const dvec2& p : points)
-    if (unique.empty() || p != unique.back()) unique.push_back(p);
-  while (unique.size() > 1 && unique.front() == unique.back()) unique.pop_back();
-  return unique;
 }
 
 struct Corner {
@@ -179,25 +155,14 @@ double signedArea2(const std::vector<dvec2>& loop) {
 }
 
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind) {
-  if (region.op() != Region::Op::Leaf)
-    throw std::invalid_argument(std::string(kind) +
-                                ": exporting a boolean of regions needs the region evaluation, "
-                                "which is not available yet");
+  // Evaluated exactly (circles stay circles through the booleans), then
+  // flattened by the sagitta rule: loops that neither cross nor share an
+  // edge, outer ones counter-clockwise, holes clockwise.
   SweepLoops loops;
-  for (const ProfileLoop& loop : region.profile().loops) {
-    std::vector<dvec2> points = flattenLoop(loop, tolerance);
-    if (points.size() >= 3 && signedArea2(points) != 0.0) loops.push_back(std::move(points));
-  }
+  for (std::vector<dvec2>& loop : flatten(evaluate(region, tolerance), tolerance))
+    if (loop.size() >= 3 && signedArea2(loop) != 0.0) loops.push_back(std::move(loop));
   if (loops.empty())
     throw std::invalid_argument(std::string(kind) + ": the region has no area to export");
-  // Even-odd: a loop inside an odd number of others is a hole.
-  for (std::size_t i = 0; i < loops.size(); ++i) {
-    int depth = 0;
-    for (std::size_t j = 0; j < loops.size(); ++j)
-      if (j != i && pointInLoop(loops[j], loops[i][0])) ++depth;
-    const bool hole = depth % 2 == 1;
-    if ((signedArea2(loops[i]) > 0.0) == hole) std::reverse(loops[i].begin(), loops[i].end());
-  }
   return loops;
 }
 

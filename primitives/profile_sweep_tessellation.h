@@ -15,12 +15,10 @@ namespace csgray::detail {
 
 using SweepLoops = std::vector<std::vector<dvec2>>;
 
-// The region as loops within `tolerance` of its edges (arcs by the sagitta
-// rule), outer loops counter-clockwise, holes clockwise, none crossing
-// another. A region of one leaf is taken as it is (its loops must not
-// cross; nesting decides which are holes); a boolean of regions is
-// evaluated first (profile/region_evaluation.h). Throws
-// std::invalid_argument naming kind when it cannot be done.
+// The region evaluated (profile/region_evaluation.h) and flattened into
+// loops within `tolerance` of its edges (arcs by the sagitta rule), outer
+// loops counter-clockwise, holes clockwise, none crossing another. Throws
+// std::invalid_argument naming kind for a region without area.
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind);
 
 // Triangles covering the polygon set (loops as sweepLoops makes them),
