@@ -170,6 +170,34 @@ ProfileLoop loopOf(const ArcPolygon& polygon) {
   return loop;
 }
 
+// Joins segments that follow each other on what doubles cannot tell from
+// one line (the corner between them within `shortest` of the chord).
+void mergeStraightRuns(ProfileLoop& loop, double shortest) {
+  const auto straight = [&](const ProfileEdge& a, const ProfileEdge& b) {
+    if (a.kind != ProfileEdge::Kind::Segment || b.kind != ProfileEdge::Kind::Segment) return false;
+    const dvec2 chord = b.to - a.from;
+    const double length = glm::length(chord);
+    if (length <= shortest) return false;
+    const dvec2 side = a.to - a.from;
+    return std::abs(side.x * chord.y - side.y * chord.x) <= shortest * length &&
+           glm::dot(side, chord) > 0.0 && glm::dot(b.to - a.to, chord) > 0.0;
+  };
+  bool merged = true;
+  while (merged && loop.edges.size() > 3) {
+    merged = false;
+    for (std::size_t i = 0; i < loop.edges.size() && loop.edges.size() > 3; ++i) {
+      const std::size_t next = (i + 1) % loop.edges.size();
+      if (!straight(loop.edges[i], loop.edges[next])) continue;
+      loop.edges[i].to = loop.edges[next].to;
+      loop.edges.erase(loop.edges.begin() + static_cast<std::ptrdiff_t>(next));
+      if (next < i) --i;  // the first edge went; i moved down
+      merged = true;
+    }
+  }
+  const std::size_t n = loop.edges.size();
+  for (std::size_t i = 0; i < n; ++i) loop.edges[(i + 1) % n].from = loop.edges[i].to;
+}
+
 // Drops edges shorter than `shortest` (slivers of rounding where curves
 // nearly touch), keeping the loop closed, and loops that are left with no
 // area to speak of.
@@ -190,6 +218,7 @@ void dropSlivers(Profile& profile) {
     }
     if (out.edges.empty()) continue;
     out.edges.front().from = out.edges.back().to;
+    mergeStraightRuns(out, shortest);
     double area = 0.0;
     for (const ProfileEdge& e : out.edges) area += edgeArea(e);
     if (std::abs(area) <= shortest * size) continue;

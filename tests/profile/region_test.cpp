@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -254,6 +255,253 @@ TEST(Region, NonFiniteInputIsRefused) {
   EXPECT_THROW(evaluate(*disc({0, 0}, nan), kTolerance), std::invalid_argument);
   EXPECT_THROW(evaluate(*rect(0, 0, 1, 1), nan), std::invalid_argument);
   EXPECT_THROW(Region::boolean(Region::Op::Union, {}), std::invalid_argument);
+}
+
+// ---- Offsets ------------------------------------------------------------------
+
+TEST(RegionOffset, RoundedSquareHasQuarterCircleCorners) {
+  const double a = 2.0, r = 0.3;
+  const Profile p = offsetRounded(*rect(0, 0, a, a), r, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_NEAR(area(p), a * a + 4.0 * a * r + kPi * r * r, 1e-12);
+  int arcs = 0;
+  for (const ProfileEdge& e : p.loops[0].edges)
+    if (e.kind == ProfileEdge::Kind::Arc) {
+      ++arcs;
+      EXPECT_NEAR(std::abs(e.angle1 - e.angle0), 0.5 * kPi, 1e-9);
+    }
+  EXPECT_EQ(arcs, 4);
+  EXPECT_EQ(p.loops[0].edges.size(), 8u);
+  expectClosed(p);
+}
+
+TEST(RegionOffset, InsetOfADiscIsTheSmallerDisc) {
+  const Profile p = offsetRounded(*disc({1, 1}, 2.0), -0.5, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  ASSERT_EQ(p.loops[0].edges.size(), 1u);
+  EXPECT_NEAR(area(p), kPi * 1.5 * 1.5, 1e-12);
+  EXPECT_TRUE(offsetRounded(*disc({1, 1}, 2.0), -2.5, kTolerance).loops.empty());
+}
+
+TEST(RegionOffset, RoundedInsetKeepsSharpCorners) {
+  const Profile p = offsetRounded(*rect(0, 0, 3, 2), -0.5, kTolerance);
+  EXPECT_NEAR(area(p), 2.0 * 1.0, 1e-12);
+  // An inset of an L rounds its inner corner: the square 1×1 at the
+  // corner loses a quarter disc's complement, (1 − π/4)·r².
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  const double r = 0.25;
+  const Profile q = offsetRounded(*l, -r, kTolerance);
+  EXPECT_NEAR(area(q), 1.5 * 1.5 - 1.0 + (1.0 - kPi / 4.0) * r * r, 1e-12);
+}
+
+TEST(RegionOffset, RoundedOffsetOfAHoleAndAnArc) {
+  // A washer grown by r: the outer circle grows, the hole shrinks.
+  const RegionPtr washer = subtract(disc({0, 0}, 3), disc({0, 0}, 1));
+  const Profile p = offsetRounded(*washer, 0.5, kTolerance);
+  ASSERT_EQ(p.loops.size(), 2u);
+  EXPECT_NEAR(area(p), kPi * (3.5 * 3.5 - 0.5 * 0.5), 1e-12);
+  // Grown further, the hole closes.
+  EXPECT_EQ(offsetRounded(*washer, 1.5, kTolerance).loops.size(), 1u);
+  // A half disc grown by r: (π/2)(R + r)² for the arc side, plus the
+  // strip along the diameter and two quarter discs at its ends.
+  Profile half;
+  half.loops.push_back(
+      {{ProfileEdge::segment({-1, 0}, {1, 0}), ProfileEdge::arc({0, 0}, dmat2(1), 0.0, kPi)}});
+  half.loops[0].edges[1].from = {1, 0};
+  half.loops[0].edges[1].to = {-1, 0};
+  const double r = 0.25;
+  const Profile q = offsetRounded(*Region::leaf(half), r, kTolerance);
+  EXPECT_NEAR(area(q), 0.5 * kPi * (1 + r) * (1 + r) + 2.0 * r + 0.5 * kPi * r * r, 1e-12);
+}
+
+TEST(RegionOffset, DeltaOffsetsMitreOrChamfer) {
+  const double a = 2.0, d = 0.25;
+  EXPECT_NEAR(area(offsetDelta(*rect(0, 0, a, a), d, false, kTolerance)), (a + 2 * d) * (a + 2 * d),
+              1e-12);
+  // The chamfer cuts each corner at distance d from it: a right triangle
+  // with legs d(2 − √2), (3 − 2√2)·d² each.
+  const double cut = (3.0 - 2.0 * std::sqrt(2.0)) * d * d;
+  const Profile chamfered = offsetDelta(*rect(0, 0, a, a), d, true, kTolerance);
+  EXPECT_NEAR(area(chamfered), (a + 2 * d) * (a + 2 * d) - 4.0 * cut, 1e-12);
+  EXPECT_EQ(chamfered.loops.at(0).edges.size(), 8u);
+  EXPECT_NEAR(area(offsetDelta(*rect(0, 0, a, a), -d, true, kTolerance)), (a - 2 * d) * (a - 2 * d),
+              1e-12);
+  // An L: its inner corner stays sharp when grown, and is mitred (or
+  // chamfered) when shrunk.
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  EXPECT_NEAR(area(offsetDelta(*l, d, false, kTolerance)), (2 + 2 * d) * (2 + 2 * d) - 1.0, 1e-12);
+  EXPECT_NEAR(area(offsetDelta(*l, -d, false, kTolerance)), (2 - 2 * d) * (2 - 2 * d) - 1.0, 1e-12);
+  EXPECT_NEAR(area(offsetDelta(*l, -d, true, kTolerance)), (2 - 2 * d) * (2 - 2 * d) - 1.0 + cut,
+              1e-12);
+  // Arcs become concentric arcs.
+  const Profile grown = offsetDelta(*disc({0, 0}, 1), d, false, kTolerance);
+  ASSERT_EQ(grown.loops.size(), 1u);
+  EXPECT_EQ(grown.loops[0].edges.size(), 1u);
+  EXPECT_NEAR(area(grown), kPi * (1 + d) * (1 + d), 1e-12);
+}
+
+TEST(RegionOffset, OffsetsAgreeWithDistances) {
+  // A point is in offset(r) exactly when it is within r of the region:
+  // for a square that distance is known in closed form.
+  const double r = 0.4;
+  const RegionPtr square = rect(0, 0, 1, 1);
+  const Profile grown = offsetRounded(*square, r, kTolerance);
+  const Profile shrunk = offsetRounded(*square, -r, kTolerance);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1.0, 2.0);
+  for (int i = 0; i < 4000; ++i) {
+    const dvec2 p(u(random), u(random));
+    const dvec2 nearest = glm::clamp(p, dvec2(0.0), dvec2(1.0));
+    const double outside = glm::length(p - nearest);
+    const double inside = std::min(std::min(p.x, 1.0 - p.x), std::min(p.y, 1.0 - p.y));
+    if (std::abs(outside - r) > 1e-9)
+      EXPECT_EQ(grown.contains(p), outside < r) << p.x << ", " << p.y;
+    if (std::abs(inside - r) > 1e-9)
+      EXPECT_EQ(shrunk.contains(p), inside > r) << p.x << ", " << p.y;
+  }
+}
+
+TEST(RegionOffset, BadOffsetsAreRefused) {
+  EXPECT_THROW(offsetRounded(*rect(0, 0, 1, 1), std::nan(""), kTolerance), std::invalid_argument);
+  EXPECT_THROW(offsetDelta(*rect(0, 0, 1, 1), INFINITY, false, kTolerance), std::invalid_argument);
+  EXPECT_TRUE(offsetRounded(*rect(0, 0, 1, 1), -0.5, kTolerance).loops.empty());
+  EXPECT_NEAR(area(offsetRounded(*rect(0, 0, 1, 1), 0.0, kTolerance)), 1.0, 1e-15);
+}
+
+// ---- Hulls --------------------------------------------------------------------
+
+// The area of the convex hull of points (Andrew's monotone chain).
+double convexHullArea(std::vector<dvec2> points) {
+  std::sort(points.begin(), points.end(),
+            [](dvec2 a, dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::vector<dvec2> h(2 * points.size());
+  std::size_t k = 0;
+  const auto turn = [](dvec2 o, dvec2 a, dvec2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && turn(h[k - 2], h[k - 1], points[i]) <= 0) --k;
+    h[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && turn(h[k - 2], h[k - 1], points[i]) <= 0) --k;
+    h[k++] = points[i];
+  }
+  double a = 0.0;
+  for (std::size_t i = 0; i + 1 < k; ++i) a += h[i].x * h[i + 1].y - h[i + 1].x * h[i].y;
+  return 0.5 * a;
+}
+
+TEST(RegionHull, TwoDiscs) {
+  const double r = 0.75, d = 3.0;
+  const std::vector<RegionPtr> discs{disc({0, 0}, r), disc({d, 0}, r)};
+  const Profile p = hull(discs, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_EQ(p.loops[0].edges.size(), 4u);
+  EXPECT_NEAR(area(p), kPi * r * r + 2.0 * r * d, 1e-12);
+  expectClosed(p);
+  // Discs of different radii, along a diagonal.
+  const std::vector<RegionPtr> unequal{disc({0, 0}, 1.0), disc({2, 2}, 0.5)};
+  const Profile q = hull(unequal, kTolerance);
+  EXPECT_EQ(q.loops.at(0).edges.size(), 4u);
+  // The belt: the tangent segments' length is √(D² − Δr²) each, and the
+  // arcs take π ± 2·asin(Δr/D) of their circles.
+  const double distance = std::sqrt(8.0), dr = 0.5, beta = std::asin(dr / distance);
+  const double expected = std::sqrt(distance * distance - dr * dr) * (1.0 + 0.5) +
+                          0.5 * (kPi + 2.0 * beta) * 1.0 + 0.5 * (kPi - 2.0 * beta) * 0.25;
+  EXPECT_NEAR(area(q), expected, 1e-12);
+}
+
+TEST(RegionHull, OfPointsIsTheirConvexPolygon) {
+  std::mt19937 random(11);
+  std::normal_distribution<double> u(0.0, 1.0);
+  std::vector<dvec2> points;
+  for (int i = 0; i < 300; ++i) points.emplace_back(u(random), u(random));
+  // A polygon through all of them (even-odd, self-crossing): its hull is
+  // the points'.
+  const std::vector<RegionPtr> regions{polygon({points})};
+  const Profile p = hull(regions, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_NEAR(area(p), convexHullArea(points), 1e-9);
+  expectClosed(p);
+  // Squares on a grid, corners collinear along the hull's sides.
+  std::vector<RegionPtr> squares;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) squares.push_back(rect(2 * i, 2 * j, 2 * i + 1, 2 * j + 1));
+  const Profile grid = hull(squares, kTolerance);
+  EXPECT_EQ(grid.loops.at(0).edges.size(), 4u);
+  EXPECT_NEAR(area(grid), 7.0 * 5.0, 1e-12);
+}
+
+TEST(RegionHull, ArcsOnlyWhereTheyBulge) {
+  // An L has a pentagon for a hull; a rounded square is its own hull; a
+  // washer's is its outer disc.
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  EXPECT_NEAR(area(hull(std::vector{l}, kTolerance)), 3.5, 1e-12);
+  const Profile rounded = offsetRounded(*rect(0, 0, 2, 1), 0.25, kTolerance);
+  const Profile h = hull(std::vector{Region::leaf(rounded)}, kTolerance);
+  EXPECT_NEAR(area(h), area(rounded), 1e-12);
+  EXPECT_EQ(h.loops.at(0).edges.size(), 8u);
+  const Profile w = hull(std::vector{subtract(disc({1, 1}, 2), disc({1.5, 1}, 1))}, kTolerance);
+  EXPECT_EQ(w.loops.at(0).edges.size(), 1u);
+  EXPECT_NEAR(area(w), 4.0 * kPi, 1e-12);
+  // A disc and a point: two tangents and the far arc of the circle.
+  const double r = 1.0, d = 3.0;
+  const Profile cone =
+      hull(std::vector{disc({0, 0}, r), polygon({{{d, 0}, {d, 1e-9}, {d + 1e-9, 0}}})}, kTolerance);
+  EXPECT_NEAR(area(cone), r * std::sqrt(d * d - r * r) + r * r * (kPi - std::acos(r / d)), 1e-8);
+  // A crescent of a disc bulges only on its outer arc.
+  const RegionPtr crescent = subtract(disc({0, 0}, 1), disc({0.5, 0}, 0.8));
+  const Profile c = hull(std::vector{crescent}, kTolerance);
+  const Profile e = evaluate(*crescent, kTolerance);
+  EXPECT_GT(area(c), area(e));
+  for (const ProfileEdge& edge : c.loops.at(0).edges)
+    if (edge.kind == ProfileEdge::Kind::Arc) EXPECT_NEAR(glm::length(edge.center), 0.0, 1e-12);
+}
+
+TEST(RegionHull, RandomDiscsAndBoxesAgreeWithAFinePolygon) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-3.0, 3.0), size(0.05, 1.5);
+  for (int round = 0; round < 40; ++round) {
+    std::vector<RegionPtr> regions;
+    const int n = 1 + round % 6;
+    for (int i = 0; i < n; ++i) {
+      const dvec2 c(u(random), u(random));
+      const double s = size(random);
+      if (i % 3 == 2)
+        regions.push_back(rect(c.x, c.y, c.x + s, c.y + 0.5 * s));
+      else if (i % 3 == 1)
+        regions.push_back(subtract(disc(c, s), disc(c + dvec2(0.5 * s, 0.0), 0.8 * s)));
+      else
+        regions.push_back(disc(c, s));
+    }
+    const Profile h = hull(regions, kTolerance);
+    ASSERT_EQ(h.loops.size(), 1u) << round;
+    expectClosed(h);
+    // The hull of a fine inscribed polygon of every outline is inside it,
+    // and short of it by at most the tolerance along its perimeter (< 50).
+    const double fine = 1e-7;
+    std::vector<dvec2> points;
+    for (const RegionPtr& r : regions)
+      for (const auto& loop : flatten(evaluate(*r, kTolerance), fine))
+        points.insert(points.end(), loop.begin(), loop.end());
+    const double polygonArea = convexHullArea(points);
+    EXPECT_GE(area(h), polygonArea - 1e-9) << round;
+    EXPECT_LE(area(h), polygonArea + 50.0 * fine) << round;
+    // Convex: it never turns right.
+    const auto polygon = flatten(h, 1e-3).front();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const dvec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()],
+                  c = polygon[(i + 2) % polygon.size()];
+      EXPECT_GE((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), -1e-9) << round;
+    }
+  }
+}
+
+TEST(RegionHull, EmptyInput) {
+  EXPECT_TRUE(hull({}, kTolerance).loops.empty());
+  EXPECT_TRUE(
+      hull(std::vector{intersect(rect(0, 0, 1, 1), rect(2, 2, 3, 3))}, kTolerance).loops.empty());
 }
 
 }  // namespace

@@ -1,0 +1,280 @@
+// Offsets of regions, as OpenSCAD's offset() has them, with true arcs.
+//
+// Both offsets are the region united with, or less, a band along its
+// boundary: the points within d of an edge, measured along the edge's
+// normals (a strip beside a segment, an annular sector beside an arc, on
+// both sides: the side away from the offset is in the region, or outside
+// it, anyway), plus what each corner adds. A rounded offset adds a disc of
+// radius d at every corner, so that the band is every point within d of
+// the boundary: offset(r) = region ∪ band for r > 0, region − band for
+// r < 0. An offset by delta adds, at the corners that turn towards the
+// offset's side, the mitre (the wedge up to where the moved tangent lines
+// meet) or the chamfer (the mitre cut by the line at distance d from the
+// corner, perpendicular to the mitre's bisector: Clipper's square joins,
+// which OpenSCAD's chamfer uses). Where an arc meets a corner, its tangent
+// line there is what the mitre extends.
+//
+// The strips' corners are rational points exactly on the circles they
+// meet (the tangent half-angle substitution gives rational points of a
+// circle with a rational radius), so that strips and discs meet without
+// slivers where they can; what rounding leaves is dropped by profileOf.
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "profile/cgal/polygon_set.h"
+#include "profile/region_evaluation.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray::detail {
+
+namespace {
+
+using FT = PlaneKernel::FT;
+using ExactPoint = PlaneKernel::Point_2;
+using ArcTraits = CGAL::Arr_circle_segment_traits_2<PlaneKernel>;
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
+dvec2 rightNormal(const dvec2& t) { return {t.y, -t.x}; }
+
+dvec2 toDouble(const ExactPoint& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+// A rational point on the circle about c of radius r, at about angle θ:
+// c ± r·((1 − t²)/(1 + t²), 2t/(1 + t²)) with t = tan(θ/2) (or tan of
+// half of θ − π, for the far half, so that |t| ≤ 1) is on the circle
+// exactly for any rational t.
+ExactPoint pointOnCircle(const ExactPoint& c, const FT& r, double theta) {
+  const double s = std::remainder(theta, kTwoPi);
+  const bool near = std::abs(s) <= 0.5 * kPi;
+  const FT t(std::tan(0.5 * (near ? s : std::remainder(s - kPi, kTwoPi))));
+  const FT w = r / (1 + t * t);
+  const FT x = w * (1 - t * t), y = w * 2 * t;
+  return near ? ExactPoint(c.x() + x, c.y() + y) : ExactPoint(c.x() - x, c.y() - y);
+}
+
+ArcTraits::Point_2 onePoint(const ExactPoint& p) { return {p.x(), p.y()}; }
+
+// An edge's direction at its start and end, and its offset corners there:
+// the points at distance d along the normals on the left (inner, -1) and
+// right (outer, +1) side, exact.
+struct EdgeEnds {
+  dvec2 startTangent, endTangent;
+  ExactPoint startCorner[2], endCorner[2];  // [0]: inner side, [1]: outer side
+};
+
+struct Band {
+  double d;
+  std::vector<ArcPolygon> pieces;
+};
+
+// A closed loop of curves (counterclockwise) as a polygon of x-monotone
+// pieces that follow each other.
+ArcPolygon polygonOfCurves(const std::vector<CircleSegment>& curves) {
+  const ArcTraits traits;
+  const auto makeMonotone = traits.make_x_monotone_2_object();
+  std::vector<ArcTraits::X_monotone_curve_2> pieces;
+  for (const CircleSegment& c : curves) {
+    std::vector<boost::variant<ArcTraits::Point_2, ArcTraits::X_monotone_curve_2>> parts;
+    makeMonotone(c, std::back_inserter(parts));
+    std::vector<ArcTraits::X_monotone_curve_2> own;
+    for (const auto& part : parts)
+      if (const auto* x = boost::get<ArcTraits::X_monotone_curve_2>(&part)) own.push_back(*x);
+    // Chain them from the curve's source (a whole circle from any piece).
+    for (std::size_t i = 0; i < own.size(); ++i) {
+      if (i == 0 && !c.is_full()) {
+        for (std::size_t j = 0; j < own.size(); ++j)
+          if (own[j].source() == c.source()) std::swap(own[0], own[j]);
+      } else if (i > 0) {
+        for (std::size_t j = i; j < own.size(); ++j)
+          if (own[j].source() == own[i - 1].target()) std::swap(own[i], own[j]);
+      }
+    }
+    pieces.insert(pieces.end(), own.begin(), own.end());
+  }
+  return ArcPolygon(pieces.begin(), pieces.end());
+}
+
+// The polygon of corner points (doubles or exact), turned counterclockwise.
+void addPolygon(Band& band, std::vector<ExactPoint> points) {
+  double twiceArea = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    twiceArea += cross(toDouble(points[i]), toDouble(points[(i + 1) % points.size()]));
+  if (twiceArea == 0.0) return;
+  if (twiceArea < 0.0) std::reverse(points.begin(), points.end());
+  std::vector<CircleSegment> curves;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ExactPoint& a = points[i];
+    const ExactPoint& b = points[(i + 1) % points.size()];
+    if (a != b) curves.emplace_back(a, b);
+  }
+  if (curves.size() >= 3) band.pieces.push_back(polygonOfCurves(curves));
+}
+
+void addDisc(Band& band, const dvec2& center) {
+  const FT r(band.d);
+  band.pieces.push_back(
+      polygonOfCurves({CircleSegment(PlaneKernel::Circle_2(exactPoint(center), r * r))}));
+}
+
+// The points within d of a segment along its normals.
+EdgeEnds addSegmentStrip(Band& band, const ProfileEdge& e) {
+  const dvec2 t = glm::normalize(e.to - e.from);
+  const double angle = std::atan2(-t.x, t.y);  // of the right normal
+  const ExactPoint a = exactPoint(e.from), b = exactPoint(e.to);
+  const FT d(band.d);
+  EdgeEnds ends{t,
+                t,
+                {pointOnCircle(a, d, angle + kPi), pointOnCircle(a, d, angle)},
+                {pointOnCircle(b, d, angle + kPi), pointOnCircle(b, d, angle)}};
+  addPolygon(band,
+             {ends.startCorner[0], ends.endCorner[0], ends.endCorner[1], ends.startCorner[1]});
+  return ends;
+}
+
+// The annular sector of the points within d of an arc along its radii
+// (a pie where d reaches the centre), in halves if the arc is a whole
+// circle, so that each piece is one simple loop.
+void addSector(Band& band, const ExactPoint& c, const FT& radius, double lo, double hi) {
+  const FT outer = radius + FT(band.d), inner = radius - FT(band.d);
+  const ExactPoint p0 = pointOnCircle(c, outer, lo), p1 = pointOnCircle(c, outer, hi);
+  if (p0 == p1) return;
+  std::vector<CircleSegment> curves;
+  curves.emplace_back(PlaneKernel::Circle_2(c, outer * outer, CGAL::COUNTERCLOCKWISE), onePoint(p0),
+                      onePoint(p1));
+  if (inner > 0) {
+    const ExactPoint q0 = pointOnCircle(c, inner, lo), q1 = pointOnCircle(c, inner, hi);
+    curves.emplace_back(p1, q1);
+    curves.emplace_back(PlaneKernel::Circle_2(c, inner * inner, CGAL::CLOCKWISE), onePoint(q1),
+                        onePoint(q0));
+    curves.emplace_back(q0, p0);
+  } else {
+    curves.emplace_back(p1, c);
+    curves.emplace_back(c, p0);
+  }
+  band.pieces.push_back(polygonOfCurves(curves));
+}
+
+EdgeEnds addArcSector(Band& band, const ProfileEdge& e) {
+  const double radius = std::sqrt(std::abs(glm::determinant(e.axes)));
+  const double sweep = std::clamp(e.angle1 - e.angle0, -kTwoPi, kTwoPi);
+  const ExactPoint c = exactPoint(e.center);
+  const FT r(radius);
+  const double lo = std::min(e.angle0, e.angle0 + sweep), hi = std::max(e.angle0, e.angle0 + sweep);
+  if (hi - lo > kPi) {
+    addSector(band, c, r, lo, 0.5 * (lo + hi));
+    addSector(band, c, r, 0.5 * (lo + hi), hi);
+  } else {
+    addSector(band, c, r, lo, hi);
+  }
+  // The tangent turns with the arc; the right normal of a counterclockwise
+  // arc points away from the centre.
+  const double turn = sweep > 0.0 ? 1.0 : -1.0;
+  const auto tangent = [&](double theta) {
+    return turn * dvec2(-std::sin(theta), std::cos(theta));
+  };
+  // A side that reaches past the centre ends there.
+  const FT in = CGAL::max(FT(0), r - turn * FT(band.d)),
+           out = CGAL::max(FT(0), r + turn * FT(band.d));
+  const double end = e.angle0 + sweep;
+  return {tangent(e.angle0),
+          tangent(end),
+          {pointOnCircle(c, in, e.angle0), pointOnCircle(c, out, e.angle0)},
+          {pointOnCircle(c, in, end), pointOnCircle(c, out, end)}};
+}
+
+EdgeEnds addEdgeBand(Band& band, const ProfileEdge& e) {
+  return e.kind == ProfileEdge::Kind::Segment ? addSegmentStrip(band, e) : addArcSector(band, e);
+}
+
+enum class Corners { Round, Mitre, Chamfer };
+
+// The wedge that fills the corner at v between an edge that ends there and
+// one that starts there, on the given side (+1 outer, -1 inner), if the
+// boundary turns towards that side.
+void addCornerWedge(Band& band, const dvec2& v, const EdgeEnds& in, const EdgeEnds& out, int side,
+                    Corners corners) {
+  const double turn = cross(in.endTangent, out.startTangent);
+  if (turn * side <= 0.0) return;
+  const ExactPoint& p1 = in.endCorner[side > 0 ? 1 : 0];
+  const ExactPoint& p2 = out.startCorner[side > 0 ? 1 : 0];
+  const dvec2 n1 = rightNormal(in.endTangent), n2 = rightNormal(out.startTangent);
+  const double c = glm::dot(n1, n2);
+  const double alpha = std::atan2(std::abs(cross(n1, n2)), c);  // the angle the normal turns
+  const double d = band.d;
+  // Mitres of corners that nearly turn back reach far: cut them as
+  // Clipper does past its mitre limit.
+  constexpr double kMitreLimit = 1e6;
+  if (corners == Corners::Mitre && 1.0 + c >= 2.0 / (kMitreLimit * kMitreLimit)) {
+    const dvec2 mitre = v + side * d * (n1 + n2) / (1.0 + c);
+    addPolygon(band, {exactPoint(v), p1, exactPoint(mitre), p2});
+    return;
+  }
+  // The square cut at distance d from v: the moved lines reach it
+  // d·tan(α/4) past the moved corners (Clipper's square join).
+  const double reach = d * std::tan(0.25 * alpha);
+  const dvec2 c1 = toDouble(p1) + reach * in.endTangent;
+  const dvec2 c2 = toDouble(p2) - reach * out.startTangent;
+  addPolygon(band, {exactPoint(v), p1, exactPoint(c1), exactPoint(c2), p2});
+}
+
+// The band of the boundary of an evaluated profile, on both sides of its
+// edges, with the corners of `side` filled as `corners` says.
+ArcPolygonSet boundaryBand(const Profile& boundary, double d, int side, Corners corners) {
+  Band band{d, {}};
+  for (const ProfileLoop& loop : boundary.loops) {
+    std::vector<EdgeEnds> ends;
+    ends.reserve(loop.edges.size());
+    for (const ProfileEdge& e : loop.edges) ends.push_back(addEdgeBand(band, e));
+    for (std::size_t i = 0; i < loop.edges.size(); ++i) {
+      const std::size_t next = (i + 1) % loop.edges.size();
+      const dvec2 v = loop.edges[i].to;
+      if (corners == Corners::Round)
+        addDisc(band, v);
+      else
+        addCornerWedge(band, v, ends[i], ends[next], side, corners);
+    }
+  }
+  ArcPolygonSet set;
+  if (!band.pieces.empty()) set.join(band.pieces.begin(), band.pieces.end());
+  return set;
+}
+
+void requireFiniteOffset(double d, const char* name) {
+  if (std::isfinite(d)) return;
+  std::ostringstream msg;
+  msg << "offset: " << name << " must be a finite number (got " << d << ")";
+  throw std::invalid_argument(msg.str());
+}
+
+Profile offsetBy(const Region& region, double d, Corners corners, double ellipseTolerance) {
+  requireTolerance("a region's ellipses", ellipseTolerance);
+  ArcPolygonSet set = polygonSetOf(region, ellipseTolerance);
+  if (d == 0.0) return profileOf(set);
+  const Profile boundary = profileOf(set);
+  const ArcPolygonSet band = boundaryBand(boundary, std::abs(d), d > 0.0 ? 1 : -1, corners);
+  if (d > 0.0)
+    set.join(band);
+  else
+    set.difference(band);
+  return profileOf(set);
+}
+
+}  // namespace
+
+Profile offsetRounded(const Region& region, double r, double ellipseTolerance) {
+  requireFiniteOffset(r, "r");
+  return offsetBy(region, r, Corners::Round, ellipseTolerance);
+}
+
+Profile offsetDelta(const Region& region, double delta, bool chamfer, double ellipseTolerance) {
+  requireFiniteOffset(delta, "delta");
+  return offsetBy(region, delta, chamfer ? Corners::Chamfer : Corners::Mitre, ellipseTolerance);
+}
+
+}  // namespace csgray::detail
