@@ -36,7 +36,7 @@ TEST(SweepApi, LinearExtrudeMakesPrismsOfRegions) {
   EXPECT_NEAR(volumeOf(s), 4 * 1.5, 0.01 * 6);
   // A solid like any other: booleans and transforms.
   s = solidOf("return (linear_extrude{square(2), height=2} - sphere{r=0.5}):translate(5, 0, 0)");
-  EXPECT_NEAR(volumeOf(s), 8 - kPi / 12, 0.01 * 8);
+  EXPECT_NEAR(volumeOf(s), 8 - kPi / 48, 0.01 * 8);  // less the ball's octant
 }
 
 TEST(SweepApi, RotateExtrudeTurnsRegionsAboutZ) {
