@@ -355,6 +355,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   // After the solids' booleans, which union() and its kin call for solids,
   // and after the surfaces: square and rectangle are regions.
   registerRegionApi(L);
+  registerSweepApi(L);
 }
 
 }  // namespace csgray::detail

@@ -1,0 +1,356 @@
+#include "primitives/linear_extrusion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/solvers/quartic.h"
+#include "primitives/check.h"
+
+namespace csgray::detail {
+
+namespace {
+
+dvec2 rotated(const dvec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+// The ray's coordinates in a normalised parameter: t = middle + half·s,
+// s ∈ [-1, 1] over the window, so that the polynomials' coefficients are
+// of the size of the part however far away the ray starts.
+struct Normalised {
+  double middle, half;
+  double toS(double t) const { return (t - middle) / half; }
+  double toT(double s) const { return middle + half * s; }
+};
+
+// Without twist: u(t) = (x(t)/σx(t), y(t)/σy(t)), each a ratio of linear
+// functions of t. An edge's implicit function times σx·σy (both positive
+// in the slab), or times its square for an ellipse, is a polynomial:
+// degree 1 and 2 for a uniform scale (the factors σ cancel), 2 and 4
+// otherwise.
+struct ScaledPath {
+  Normalised n;
+  SweepPolynomial x, y, sx, sy;  // in s
+  bool uniform;
+
+  dvec2 at(double t) const {
+    const double s = n.toS(t);
+    return {polynomialValue(x.c, 1, s) / polynomialValue(sx.c, 1, s),
+            polynomialValue(y.c, 1, s) / polynomialValue(sy.c, 1, s)};
+  }
+
+  int roots(const SweepEdge& e, double t0, double t1, double* out) const {
+    SweepPolynomial p;
+    if (uniform) {
+      if (!e.arc) {
+        p = x * e.normal.x + y * e.normal.y - sx * e.offset;
+      } else {
+        const SweepPolynomial X = x - sx * e.center.x, Y = y - sx * e.center.y;
+        const SweepPolynomial w0 = X * e.toUnit[0][0] + Y * e.toUnit[1][0];
+        const SweepPolynomial w1 = X * e.toUnit[0][1] + Y * e.toUnit[1][1];
+        p = w0 * w0 + w1 * w1 - sx * sx;
+      }
+    } else if (!e.arc) {
+      p = x * sy * e.normal.x + y * sx * e.normal.y - sx * sy * e.offset;
+    } else {
+      const SweepPolynomial X = (x - sx * e.center.x) * sy, Y = (y - sy * e.center.y) * sx;
+      const SweepPolynomial w0 = X * e.toUnit[0][0] + Y * e.toUnit[1][0];
+      const SweepPolynomial w1 = X * e.toUnit[0][1] + Y * e.toUnit[1][1];
+      const SweepPolynomial both = sx * sy;
+      p = w0 * w0 + w1 * w1 - both * both;
+    }
+    double s[4];
+    const int count = sweepPolynomialRoots(p, n.toS(t0), n.toS(t1), s);
+    for (int i = 0; i < count; ++i) out[i] = n.toT(s[i]);
+    return count;
+  }
+};
+
+// With twist: u(t) = Rot(τ·ζ(t))·v(t), v = (x/σx, y/σy), τ the twist in
+// radians. The roots of an edge's implicit function f(t) = g(u(t)) are
+// isolated on bounded intervals: with bounds L1 on |f'| and L2 on |f''|
+// over the window, an interval of half-width w about m holds no root when
+// |f(m)| > L1·w, and f is monotone on it when |f'(m)| > L2·w, so that a
+// change of sign brackets its only root; otherwise it is halved. Intervals
+// narrower than the resolution that may still hold roots are a grazing
+// touch: reported as a double root, which the spans resolve by asking the
+// region (profile_sweep.h).
+struct TwistedPath {
+  Normalised n;
+  dvec3 o, d;
+  double z0, h, tau;
+  dvec2 scale;
+  // Bounds over the window: |u'| and |u''| (per unit t), |u|.
+  double speed, bend, reach;
+  double resolution;  // in t
+
+  double zeta(double t) const { return (o.z + t * d.z - z0) / h; }
+  dvec2 at(double t) const {
+    const double z = zeta(t);
+    const dvec2 v((o.x + t * d.x) / (1.0 + (scale.x - 1.0) * z),
+                  (o.y + t * d.y) / (1.0 + (scale.y - 1.0) * z));
+    return rotated(v, tau * z);
+  }
+  // u'(t), by the product rule: u = Rot(τζ)·v, u' = Rot(τζ)·(v' + τζ'·J·v).
+  dvec2 velocity(double t) const {
+    const double z = zeta(t), dz = d.z / h;
+    const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
+    const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
+    const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
+                   (d.y - v.y * (scale.y - 1.0) * dz) / sy);
+    return rotated(dv + tau * dz * dvec2(-v.y, v.x), tau * z);
+  }
+
+  int roots(const SweepEdge& e, double t0, double t1, double* out) const {
+    // |∇g| and the norm of the Hessian of g over the curve's reach.
+    double grad = 1.0, hess = 0.0;
+    if (e.arc) {
+      const glm::dmat2 g = glm::transpose(e.toUnit) * e.toUnit;
+      const double norm =
+          std::sqrt(g[0][0] * g[0][0] + g[0][1] * g[0][1] + g[1][0] * g[1][0] + g[1][1] * g[1][1]);
+      grad = 2.0 * norm * (reach + glm::length(e.center));
+      hess = 2.0 * norm;
+    }
+    const double L1 = grad * speed, L2 = hess * speed * speed + grad * bend;
+    auto f = [&](double t) {
+      const dvec2 u = at(t);
+      const double value = e.implicit(u);
+      const dvec2 gradient =
+          e.arc ? 2.0 * (glm::transpose(e.toUnit) * (e.toUnit * (u - e.center))) : e.normal;
+      return std::pair<double, double>(value, glm::dot(gradient, velocity(t)));
+    };
+    int count = 0;
+    struct Interval {
+      double lo, hi;
+    };
+    Interval stack[64];
+    int top = 0;
+    stack[top++] = {t0, t1};
+    while (top > 0 && count < 7) {
+      const Interval iv = stack[--top];
+      const double m = 0.5 * (iv.lo + iv.hi), w = 0.5 * (iv.hi - iv.lo);
+      const auto [value, slope] = f(m);
+      if (std::abs(value) > L1 * w) continue;
+      if (std::abs(slope) > L2 * w) {
+        // Monotone: a root where the ends differ in sign.
+        const double flo = f(iv.lo).first, fhi = f(iv.hi).first;
+        if ((flo <= 0.0) != (fhi <= 0.0))
+          out[count++] = bracketedRoot(f, iv.lo, iv.hi, flo <= 0.0, 1e-3 * resolution);
+        continue;
+      }
+      if (w <= resolution || top + 2 > 64) {
+        out[count++] = m;  // grazing: twice, so that the spans ask the region
+        out[count++] = m;
+        continue;
+      }
+      // The later half first on the stack, so roots come out in order.
+      stack[top++] = {m, iv.hi};
+      stack[top++] = {iv.lo, m};
+    }
+    return count;
+  }
+};
+
+}  // namespace
+
+LinearExtrusion::LinearExtrusion(RegionPtr region, double height, bool center, double twistDegrees,
+                                 dvec2 scale)
+    : height_(height),
+      z0_(center ? -0.5 * height : 0.0),
+      twistDegrees_(twistDegrees),
+      twist_(twistDegrees * std::numbers::pi / 180.0),
+      scale_(scale) {
+  requirePositive("linear_extrude", "height", height);
+  requireFinite("linear_extrude", "twist", twistDegrees);
+  if (std::abs(twistDegrees) > kMaxTwistDegrees) {
+    std::ostringstream msg;
+    msg << "linear_extrude: twist must be at most " << kMaxTwistDegrees
+        << " degrees either way (got " << twistDegrees << ")";
+    throw std::invalid_argument(msg.str());
+  }
+  for (double s : {scale.x, scale.y}) {
+    if (!std::isfinite(s) || s < 0.0) {
+      std::ostringstream msg;
+      msg << "linear_extrude: scale must be >= 0 and finite (got " << s << ")";
+      throw std::invalid_argument(msg.str());
+    }
+  }
+  swept_ = std::make_shared<SweptRegion>(std::move(region), "linear_extrude");
+}
+
+dvec2 LinearExtrusion::profilePoint(const dvec3& p) const {
+  const double zeta = (p.z - z0_) / height_;
+  const dvec2 v(p.x / (1.0 + (scale_.x - 1.0) * zeta), p.y / (1.0 + (scale_.y - 1.0) * zeta));
+  return twist_ == 0.0 ? v : rotated(v, twist_ * zeta);
+}
+
+void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
+  const dvec3& o = ray.origin;
+  const dvec3& d = ray.dir;
+  // The slab, and the box of the sides.
+  double t0 = -kInfinity, t1 = kInfinity;
+  std::uint32_t face0 = kSweepStartFace, face1 = kSweepEndFace;
+  // A scale of 0 makes the top a point or a segment, where the map to the
+  // profile plane is singular: the window stops just below it.
+  const double top = z0_ + height_ * (std::min(scale_.x, scale_.y) > 0.0 ? 1.0 : 1.0 - 1e-12);
+  if (d.z == 0.0) {
+    if (o.z < z0_ || o.z > top) return;
+  } else {
+    t0 = (z0_ - o.z) / d.z;
+    t1 = (top - o.z) / d.z;
+    if (t0 > t1) std::swap(t0, t1), std::swap(face0, face1);
+  }
+  // The sides' box, grown a little so that an edge on it is a crossing
+  // inside the window.
+  const Bounds box = objectBounds();
+  const double pad = 1e-9 * swept_->size() * std::max({1.0, scale_.x, scale_.y});
+  for (int axis = 0; axis < 2; ++axis) {
+    const double lo = box.lo[axis] - pad, hi = box.hi[axis] + pad;
+    if (d[axis] == 0.0) {
+      if (o[axis] < lo || o[axis] > hi) return;
+      continue;
+    }
+    double a = (lo - o[axis]) / d[axis], b = (hi - o[axis]) / d[axis];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  if (!(t0 < t1) || t1 < ray.tMin || t0 > ray.tMax) return;
+
+  SpanList spans;
+  const Normalised n{0.5 * (t0 + t1), 0.5 * (t1 - t0)};
+  if (twist_ == 0.0) {
+    ScaledPath path;
+    path.n = n;
+    const double zm = (o.z + n.middle * d.z - z0_) / height_, zs = n.half * d.z / height_;
+    path.x = SweepPolynomial::linear(o.x + n.middle * d.x, n.half * d.x);
+    path.y = SweepPolynomial::linear(o.y + n.middle * d.y, n.half * d.y);
+    path.sx = SweepPolynomial::linear(1.0 + (scale_.x - 1.0) * zm, (scale_.x - 1.0) * zs);
+    path.sy = SweepPolynomial::linear(1.0 + (scale_.y - 1.0) * zm, (scale_.y - 1.0) * zs);
+    path.uniform = scale_.x == scale_.y;
+    SweepPiece pieces[8];
+    int count = 0;
+    if (path.uniform) {
+      // The curve is a straight line in the plane (a projective image of
+      // the ray): one piece, tested against the index as a segment.
+      const dvec2 a = path.at(t0), b = path.at(t1);
+      pieces[count++] = {t0, t1, glm::min(a, b), glm::max(a, b), true, a, b};
+    } else {
+      // Each coordinate is monotone in t: a piece lies in its ends' box.
+      const int k = 8;
+      dvec2 a = path.at(t0);
+      for (int i = 0; i < k; ++i) {
+        const double ta = t0 + (t1 - t0) * i / k,
+                     tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
+        const dvec2 b = path.at(tb);
+        pieces[count++] = {ta, tb, glm::min(a, b), glm::max(a, b), false, a, b};
+        a = b;
+      }
+    }
+    swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans);
+  } else {
+    TwistedPath path;
+    path.n = n;
+    path.o = o;
+    path.d = d;
+    path.z0 = z0_;
+    path.h = height_;
+    path.tau = twist_;
+    path.scale = scale_;
+    // Bounds over the window: the planar distance |xy(t)| is largest at an
+    // end; σ is smallest at an end.
+    const dvec3 pa = o + t0 * d, pb = o + t1 * d;
+    const double far = std::max(glm::length(dvec2(pa)), glm::length(dvec2(pb)));
+    auto sigmaAt = [&](const dvec3& p, double s) {
+      return 1.0 + (s - 1.0) * (p.z - z0_) / height_;
+    };
+    const double sigmaMin =
+        std::max(1e-12, std::min({sigmaAt(pa, scale_.x), sigmaAt(pb, scale_.x),
+                                  sigmaAt(pa, scale_.y), sigmaAt(pb, scale_.y)}));
+    const double dz = std::abs(d.z) / height_;
+    const double sigmaRate = std::max(std::abs(scale_.x - 1.0), std::abs(scale_.y - 1.0)) * dz;
+    const double v = far / sigmaMin;
+    const double dv = (glm::length(dvec2(d)) + v * sigmaRate) / sigmaMin;
+    const double ddv = 2.0 * sigmaRate * dv / sigmaMin;
+    const double spin = std::abs(twist_) * dz;
+    path.reach = v;
+    path.speed = dv + spin * v;
+    path.bend = ddv + 2.0 * spin * dv + spin * spin * v;
+    path.resolution = 1e-9 * swept_->size() / std::max(glm::length(d), 1e-300);
+    // Pieces short enough that each box is a small part of the region.
+    const double length = path.speed * (t1 - t0);
+    const int k = std::clamp(int(std::ceil(length / (0.125 * swept_->size()))), 1, 64);
+    SweepPiece pieces[64];
+    for (int i = 0; i < k; ++i) {
+      const double ta = t0 + (t1 - t0) * i / k, tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
+      const dvec2 m = path.at(0.5 * (ta + tb));
+      const double r = path.speed * 0.5 * (tb - ta);
+      pieces[i] = {ta, tb, m - dvec2(r), m + dvec2(r), false, m, m};
+    }
+    swept_->spans(this, path, t0, t1, face0, face1, pieces, k, spans);
+  }
+  for (const Span& s : spans)
+    if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);
+}
+
+bool LinearExtrusion::objectContains(const dvec3& p) const {
+  if (p.z < z0_ || p.z > z0_ + height_) return false;
+  const double zeta = (p.z - z0_) / height_;
+  if (!(1.0 + (scale_.x - 1.0) * zeta > 0.0) || !(1.0 + (scale_.y - 1.0) * zeta > 0.0))
+    return false;
+  return swept_->contains(profilePoint(p));
+}
+
+// The gradient of g(u(p)) by the chain rule, u = Rot(−ψ)·S⁻¹·p_xy with
+// ψ = −τζ: ∂u/∂(x, y) = Rot(τζ)·S⁻¹, whose transpose S⁻¹·Rot(−τζ) takes
+// the profile's normal n to the normal's x and y; and ∂u/∂z =
+// Rot(τζ)·(−σ'ᵢvᵢ/σᵢ) + τζ'·J·u (J the quarter turn), whose dot product
+// with n is its z.
+dvec3 LinearExtrusion::objectNormal(const dvec3& p, int face) const {
+  if (face == int(kSweepStartFace)) return {0.0, 0.0, -1.0};
+  if (face == int(kSweepEndFace)) return {0.0, 0.0, 1.0};
+  const double zeta = (p.z - z0_) / height_;
+  const dvec2 sigma(1.0 + (scale_.x - 1.0) * zeta, 1.0 + (scale_.y - 1.0) * zeta);
+  if (!(sigma.x > 0.0) || !(sigma.y > 0.0)) return {0.0, 0.0, 1.0};  // the apex
+  const dvec2 v(p.x / sigma.x, p.y / sigma.y);
+  const double angle = twist_ * zeta;
+  const dvec2 u = rotated(v, angle);
+  const dvec2 n = swept_->outwardNormal(std::uint32_t(face), u);
+  const dvec2 back = rotated(n, -angle);
+  const dvec2 xy(back.x / sigma.x, back.y / sigma.y);
+  const dvec2 rate((scale_.x - 1.0) / height_, (scale_.y - 1.0) / height_);
+  const dvec2 dudz = rotated(dvec2(-rate.x * v.x / sigma.x, -rate.y * v.y / sigma.y), angle) +
+                     (twist_ / height_) * dvec2(-u.y, u.x);
+  return {xy.x, xy.y, glm::dot(n, dudz)};
+}
+
+Bounds LinearExtrusion::objectBounds() const {
+  const ProfileBounds& b = swept_->bounds();
+  Bounds box;
+  box.lo.z = z0_;
+  box.hi.z = z0_ + height_;
+  if (twist_ == 0.0) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double s = scale_[axis];
+      box.lo[axis] = std::min(b.lo[axis], s * b.lo[axis]);
+      box.hi[axis] = std::max(b.hi[axis], s * b.hi[axis]);
+    }
+    return box;
+  }
+  const double r =
+      std::max({glm::length(b.lo), glm::length(b.hi), glm::length(dvec2(b.lo.x, b.hi.y)),
+                glm::length(dvec2(b.hi.x, b.lo.y))});
+  for (int axis = 0; axis < 2; ++axis) {
+    const double reach = r * std::max(1.0, scale_[axis]);
+    box.lo[axis] = -reach;
+    box.hi[axis] = reach;
+  }
+  return box;
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,58 @@
+// OpenSCAD's linear_extrude of a region, exact: the points (x, y, z) with
+// z in [z0, z0 + h] (z0 = 0, or −h/2 centred) whose image in the profile
+// plane lies in the region. At the fraction ζ = (z − z0)/h of the height
+// the profile is the region turned by −twist·ζ (a positive twist turns
+// clockwise seen from +z, OpenSCAD's convention) and then scaled by
+// σ(ζ) = 1 + (s − 1)·ζ on each axis: p = S(ζ)·Rot(−twist·ζ)·u.
+//
+// Sides: without twist and with a uniform scale a segment sweeps a plane
+// and an arc a cone (or cylinder), so a ray meets them where a linear or
+// quadratic equation vanishes; a non-uniform scale makes them ruled
+// quadratic patches and quartic surfaces; a twist makes them helicoids,
+// whose crossings are isolated numerically on bounded intervals
+// (docs/architecture.md, "Sweeps"). Faces: kSweepStartFace the bottom cap,
+// kSweepEndFace the top, then one per edge of the region (profile_sweep.h).
+#pragma once
+
+#include "primitives/primitive_shape.h"
+#include "primitives/profile_sweep.h"
+
+namespace csgray::detail {
+
+class LinearExtrusion : public PrimitiveShape<LinearExtrusion> {
+ public:
+  // A twist beyond this many degrees is refused: more turns than any part
+  // can show, and the numeric search's work grows with them.
+  static constexpr double kMaxTwistDegrees = 360.0 * 1000.0;
+
+  // Throws std::invalid_argument for a height that is not a positive
+  // finite number, a twist that is not finite or beyond kMaxTwistDegrees,
+  // a scale that is negative or not finite, or a bad region.
+  LinearExtrusion(RegionPtr region, double height, bool center, double twistDegrees, dvec2 scale);
+
+  const RegionPtr& region() const { return swept_->region(); }
+  double height() const { return height_; }
+  double bottom() const { return z0_; }
+  double twistDegrees() const { return twistDegrees_; }
+  dvec2 scale() const { return scale_; }
+  std::string kind() const override { return "linear_extrude"; }
+
+  // The point of the profile plane that p (object space) lies over, and
+  // whether the extrusion holds p.
+  dvec2 profilePoint(const dvec3& p) const;
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+
+ private:
+  std::shared_ptr<const SweptRegion> swept_;  // shared by copies (transforms, materials)
+  double height_, z0_;
+  double twistDegrees_, twist_;  // twist_ in radians
+  dvec2 scale_;
+};
+
+}  // namespace csgray::detail

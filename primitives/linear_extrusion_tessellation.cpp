@@ -1,0 +1,136 @@
+// LinearExtrusion::objectTessellate: the extrusion's mesh (its exact part
+// is linear_extrusion.cpp).
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+#include <vector>
+
+#include "primitives/linear_extrusion.h"
+#include "primitives/profile_sweep_tessellation.h"
+#include "tessellation/tessellation.h"
+
+namespace csgray::detail {
+
+// The region's loops (within half the tolerance) placed at slices
+// ζ = k/N of the height, p = S(ζ)·Rot(−τζ)·u, with the sides between
+// consecutive slices and a cap at each end (the same triangulation of the
+// loops, reversed at the bottom). Slices: one without twist and with a
+// uniform scale, where each side quad is planar (a trapezoid) and the mesh
+// is exact up to the loops' chords. A twist turns a point at distance r by
+// τ over the height, along a helix whose chords over N slices stay within
+// the sagitta rule's r(1 − cos(τ/2N)); a non-uniform scale bends a side
+// quad over an edge of length ℓ out of its plane by at most
+// |sx − sy|·ℓ/(4N) (the bilinear patch between its corners is the exact
+// surface). N holds both within the other half of the tolerance.
+TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) const {
+  requireTolerance(kind(), tolerance);
+  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude");
+  auto measure = [&](double& reach, double& longest, std::size_t& points) {
+    reach = longest = 0.0;
+    points = 0;
+    for (const auto& loop : loops) {
+      points += loop.size();
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        reach = std::max(reach, glm::length(loop[i]));
+        longest = std::max(longest, glm::length(loop[(i + 1) % loop.size()] - loop[i]));
+      }
+    }
+  };
+  double reach, longest;
+  std::size_t points;
+  measure(reach, longest, points);
+  const bool apex = scale_.x == 0.0 && scale_.y == 0.0;
+  if (apex && loops.size() > 1)
+    throw std::invalid_argument(
+        "linear_extrude: scale 0 makes every loop of the region end in one point at the top, "
+        "which no closed 2-manifold mesh can have with more than one loop; use a small "
+        "positive scale");
+  if (!apex && (scale_.x == 0.0 || scale_.y == 0.0))
+    throw std::invalid_argument(
+        "linear_extrude: a scale of 0 on one axis flattens the top to a segment, which cannot be "
+        "exported; use scale 0 on both axes or a small positive scale");
+  const double half = 0.5 * tolerance;
+  int slices = 1;
+  if (twist_ != 0.0) {
+    // Half of the half for the helices' chords, half for the twist of a
+    // side quad over an edge of length ℓ turned by Δθ between slices,
+    // which bends it out of its plane by at most Δθ·ℓ/4: longer edges
+    // are split.
+    const double r = reach * std::max({1.0, scale_.x, scale_.y});
+    slices = arcSegments(r, std::abs(twist_), 0.5 * half, 1);
+    requireTriangleBudget(kind(), 2.0 * double(points) * slices, tolerance);
+    const double step = std::abs(twist_) / slices;
+    const double most = 4.0 * 0.5 * half / (step * std::max({1.0, scale_.x, scale_.y}));
+    if (longest > most) {
+      requireTriangleBudget(kind(), 2.0 * double(points) * slices * std::ceil(longest / most),
+                            tolerance);
+      for (auto& loop : loops) {
+        std::vector<dvec2> split;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          const dvec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+          const int parts = int(std::ceil(glm::length(b - a) / most));
+          for (int k = 0; k < parts; ++k) split.push_back(a + (b - a) * (double(k) / parts));
+        }
+        loop = std::move(split);
+      }
+      measure(reach, longest, points);
+    }
+  }
+  if (scale_.x != scale_.y) {
+    const double bend = std::abs(scale_.x - scale_.y) * longest / (4.0 * half);
+    slices = std::max(slices, int(std::min(std::ceil(bend), 1e9)));
+  }
+  requireTriangleBudget(kind(), 2.0 * double(points) * slices + 2.0 * double(points), tolerance);
+
+  TriangleMesh mesh;
+  const int rings = apex ? slices : slices + 1;  // the apex is one point, not a ring
+  // ids[k][loop][i]: loop point i at slice k.
+  std::vector<std::vector<std::vector<std::uint32_t>>> ids(rings);
+  for (int k = 0; k < rings; ++k) {
+    const double zeta = double(k) / slices;
+    const dvec2 sigma(1.0 + (scale_.x - 1.0) * zeta, 1.0 + (scale_.y - 1.0) * zeta);
+    const double angle = -twist_ * zeta, c = std::cos(angle), s = std::sin(angle);
+    const double z = k == slices ? z0_ + height_ : z0_ + height_ * zeta;
+    ids[k].resize(loops.size());
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      for (const dvec2& u : loops[l]) {
+        ids[k][l].push_back(std::uint32_t(mesh.points.size()));
+        const dvec2 turned(c * u.x - s * u.y, s * u.x + c * u.y);
+        mesh.points.emplace_back(sigma.x * turned.x, sigma.y * turned.y, z);
+      }
+  }
+  std::uint32_t top = 0;
+  if (apex) {
+    top = std::uint32_t(mesh.points.size());
+    mesh.points.emplace_back(0.0, 0.0, z0_ + height_);
+  }
+  // The sides: outer loops run counter-clockwise, so a quad a b c d (a → b
+  // along the loop at slice k, d above a) faces out; holes likewise.
+  for (int k = 0; k < slices; ++k)
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::size_t n = loops[l].size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t a = ids[k][l][i], b = ids[k][l][(i + 1) % n];
+        if (apex && k + 1 == slices) {
+          mesh.triangles.push_back({a, b, top});
+          continue;
+        }
+        const std::uint32_t c = ids[k + 1][l][(i + 1) % n], d = ids[k + 1][l][i];
+        mesh.triangles.push_back({a, b, c});
+        mesh.triangles.push_back({a, c, d});
+      }
+    }
+  // The caps: counter-clockwise seen from above at the top, reversed at
+  // the bottom.
+  triangulateLoops(loops, ids[0], [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    mesh.triangles.push_back({a, c, b});
+  });
+  if (!apex)
+    triangulateLoops(loops, ids[slices], [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+      mesh.triangles.push_back({a, b, c});
+    });
+  return mesh;
+}
+
+}  // namespace csgray::detail

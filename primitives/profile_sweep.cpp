@@ -1,0 +1,329 @@
+#include "primitives/profile_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "engine/solvers/quartic.h"
+
+namespace csgray::detail {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr std::uint32_t kLeafEdges = 4;
+
+double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+// Profile::contains's rules (profile.cpp), edge by edge: does the half-line
+// from p towards +x cross the segment a–b (half-open in y, so that a vertex
+// counts once)?
+bool segmentCrosses(const dvec2& p, const dvec2& a, const dvec2& b) {
+  if ((a.y > p.y) == (b.y > p.y)) return false;
+  const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+  return x > p.x;
+}
+
+// Is p between the arc and its chord?
+bool inArcCap(const dvec2& p, const SweepEdge& e) {
+  const dvec2 w = e.toUnit * (p - e.center);
+  if (glm::dot(w, w) >= 1.0) return false;
+  if (e.fullTurn) return true;
+  const dvec2 a(std::cos(e.lo), std::sin(e.lo));
+  const dvec2 b(std::cos(e.hi), std::sin(e.hi));
+  const double mid = 0.5 * (e.lo + e.hi);
+  const dvec2 m(std::cos(mid), std::sin(mid));
+  return (cross(b - a, w - a) > 0.0) == (cross(b - a, m - a) > 0.0);
+}
+
+ProfileBounds edgeBox(const ProfileEdge& e) {
+  Profile one;
+  one.loops.push_back(ProfileLoop{{e}});
+  return one.bounds();
+}
+
+// The edge's middle point.
+dvec2 middleOf(const SweepEdge& e) {
+  if (!e.arc) return 0.5 * (e.from + e.to);
+  const double theta = 0.5 * (e.lo + e.hi);
+  return e.center + glm::inverse(e.toUnit) * dvec2(std::cos(theta), std::sin(theta));
+}
+
+}  // namespace
+
+namespace sweep_detail {
+std::vector<SweepCrossing>& crossingBuffer() {
+  thread_local std::vector<SweepCrossing> buffer;
+  return buffer;
+}
+}  // namespace sweep_detail
+
+// ---- SweepEdge -----------------------------------------------------------------
+
+double SweepEdge::implicit(const dvec2& u) const {
+  if (!arc) return glm::dot(normal, u) - offset;
+  const dvec2 w = toUnit * (u - center);
+  return glm::dot(w, w) - 1.0;
+}
+
+dvec2 SweepEdge::outwardGradient(const dvec2& u) const {
+  if (!arc) return outward * normal;
+  return outward * (glm::transpose(toUnit) * (toUnit * (u - center)));
+}
+
+bool SweepEdge::holds(const dvec2& u, double slack, bool& clean) const {
+  if (!arc) {
+    const dvec2 d = to - from;
+    const double s = glm::dot(u - from, d) / glm::dot(d, d);
+    clean = s > slack && s < 1.0 - slack;
+    return s >= -slack && s <= 1.0 + slack;
+  }
+  if (fullTurn) {
+    clean = true;
+    return true;
+  }
+  const dvec2 w = toUnit * (u - center);
+  const double theta = std::atan2(w.y, w.x);
+  // theta moved into [lo, lo + 2π).
+  double x = lo + std::fmod(std::fmod(theta - lo, kTwoPi) + kTwoPi, kTwoPi);
+  if (x >= lo + kTwoPi) x -= kTwoPi;
+  clean = x > lo + slack && x < hi - slack;
+  return x <= hi + slack || x >= lo + kTwoPi - slack;
+}
+
+double SweepEdge::distance(const dvec2& u) const {
+  if (!arc) return std::abs(glm::dot(normal, u) - offset);
+  const dvec2 w = toUnit * (u - center);
+  return std::abs(glm::length(w) - 1.0) * size;
+}
+
+// ---- SweptRegion ------------------------------------------------------------------
+
+SweptRegion::SweptRegion(RegionPtr region, const char* kind) : region_(std::move(region)) {
+  if (!region_) throw std::invalid_argument(std::string(kind) + ": needs a region");
+  const ProfileBounds& b = region_->bounds();
+  if (b.empty())
+    throw std::invalid_argument(std::string(kind) + ": the region is empty (it has no edges)");
+  if (!std::isfinite(b.lo.x) || !std::isfinite(b.lo.y) || !std::isfinite(b.hi.x) ||
+      !std::isfinite(b.hi.y))
+    throw std::invalid_argument(std::string(kind) + ": the region's coordinates must be finite");
+  size_ = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, std::abs(b.lo.x), std::abs(b.hi.x),
+                    std::abs(b.lo.y), std::abs(b.hi.y), 1e-300});
+  std::uint32_t nextLeaf = 0;
+  addTree(*region_, nextLeaf);
+  // The orientation of each edge: which side of it is the leaf's inside.
+  for (SweepEdge& e : edges_) {
+    const dvec2 m = middleOf(e);
+    dvec2 g = e.arc ? glm::transpose(e.toUnit) * (e.toUnit * (m - e.center)) : e.normal;
+    const double length = glm::length(g);
+    if (!(length > 0.0)) continue;
+    g /= length;
+    const double step = std::min(1e-7 * size_, 1e-3 * e.size);
+    const bool before = leafContains(e.leaf, m - step * g);
+    const bool after = leafContains(e.leaf, m + step * g);
+    e.outward = before || !after ? 1.0 : -1.0;
+  }
+}
+
+std::uint32_t SweptRegion::addTree(const Region& region, std::uint32_t& nextLeaf) {
+  const std::uint32_t index = std::uint32_t(tree_.size());
+  tree_.push_back(TreeNode{region.op(), 0, {}});
+  if (region.op() != Region::Op::Leaf) {
+    std::vector<std::uint32_t> operands;
+    for (const RegionPtr& r : region.operands()) operands.push_back(addTree(*r, nextLeaf));
+    tree_[index].operands = std::move(operands);
+    return index;
+  }
+  const std::uint32_t leafIndex = nextLeaf++;
+  tree_[index].leaf = leafIndex;
+  std::vector<std::uint32_t> mine;
+  for (const ProfileLoop& loop : region.profile().loops)
+    for (const ProfileEdge& pe : loop.edges) {
+      SweepEdge e;
+      e.leaf = leafIndex;
+      e.from = pe.from;
+      e.to = pe.to;
+      e.box = edgeBox(pe);
+      if (pe.kind == ProfileEdge::Kind::Segment) {
+        const dvec2 d = pe.to - pe.from;
+        const double length = glm::length(d);
+        if (!(length > 0.0)) continue;  // a point: crosses nothing
+        e.normal = dvec2(d.y, -d.x) / length;
+        e.offset = glm::dot(e.normal, pe.from);
+        e.size = length;
+      } else {
+        if (!(std::abs(glm::determinant(pe.axes)) > 0.0)) continue;  // a flat ellipse
+        e.arc = true;
+        e.center = pe.center;
+        e.toUnit = glm::inverse(pe.axes);
+        e.lo = std::min(pe.angle0, pe.angle1);
+        e.hi = std::max(pe.angle0, pe.angle1);
+        e.fullTurn = e.hi - e.lo >= kTwoPi;
+        e.size = std::max(glm::length(pe.axes[0]), glm::length(pe.axes[1]));
+      }
+      mine.push_back(std::uint32_t(edges_.size()));
+      edges_.push_back(e);
+    }
+  if (leaves_.size() <= leafIndex) leaves_.resize(leafIndex + 1);
+  Leaf& leaf = leaves_[leafIndex];
+  leaf.box = region.profile().bounds();
+  buildIndex(leaf, std::move(mine));
+  return index;
+}
+
+void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
+  if (edges.empty()) return;
+  leaf.nodes.reserve(2 * edges.size() / kLeafEdges + 2);
+  leaf.nodes.push_back({});
+  const std::uint32_t root = 0;
+  // Built in place: buildNode fills node `root` and appends the others.
+  std::vector<std::uint32_t> order = std::move(edges);
+  leaf.items.clear();
+  struct Task {
+    std::uint32_t node, begin, end;
+  };
+  std::vector<Task> tasks{{root, 0, std::uint32_t(order.size())}};
+  while (!tasks.empty()) {
+    Task task = tasks.back();
+    tasks.pop_back();
+    Node node{};
+    node.lo = dvec2(1e300);
+    node.hi = dvec2(-1e300);
+    dvec2 clo(1e300), chi(-1e300);
+    for (std::uint32_t i = task.begin; i < task.end; ++i) {
+      const ProfileBounds& b = edges_[order[i]].box;
+      node.lo = glm::min(node.lo, b.lo);
+      node.hi = glm::max(node.hi, b.hi);
+      const dvec2 c = 0.5 * (b.lo + b.hi);
+      clo = glm::min(clo, c);
+      chi = glm::max(chi, c);
+    }
+    if (task.end - task.begin <= kLeafEdges) {
+      node.start = std::uint32_t(leaf.items.size());
+      node.count = task.end - task.begin;
+      for (std::uint32_t i = task.begin; i < task.end; ++i) leaf.items.push_back(order[i]);
+      leaf.nodes[task.node] = node;
+      continue;
+    }
+    // Split at the median of the centres along the longer side.
+    const int axis = chi.x - clo.x >= chi.y - clo.y ? 0 : 1;
+    const std::uint32_t mid = task.begin + (task.end - task.begin) / 2;
+    std::nth_element(order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       const ProfileBounds& x = edges_[a].box;
+                       const ProfileBounds& y = edges_[b].box;
+                       return x.lo[axis] + x.hi[axis] < y.lo[axis] + y.hi[axis];
+                     });
+    node.start = std::uint32_t(leaf.nodes.size());
+    node.count = 0;
+    leaf.nodes[task.node] = node;
+    leaf.nodes.push_back({});
+    leaf.nodes.push_back({});
+    tasks.push_back({node.start, task.begin, mid});
+    tasks.push_back({node.start + 1, mid, task.end});
+  }
+}
+
+bool SweptRegion::leafContains(std::uint32_t index, const dvec2& u) const {
+  const Leaf& leaf = leaves_[index];
+  if (u.x < leaf.box.lo.x || u.x > leaf.box.hi.x || u.y < leaf.box.lo.y || u.y > leaf.box.hi.y)
+    return false;
+  bool inside = false;
+  const dvec2 end(leaf.box.hi.x + 1.0, u.y);
+  forEachEdgeNear(leaf, u, end, false, u, end, [&](std::uint32_t i) {
+    const SweepEdge& e = edges_[i];
+    if (segmentCrosses(u, e.from, e.to)) inside = !inside;
+    if (e.arc && inArcCap(u, e)) inside = !inside;
+  });
+  return inside;
+}
+
+bool SweptRegion::treeContains(std::uint32_t index, const dvec2& u) const {
+  const TreeNode& node = tree_[index];
+  switch (node.op) {
+    case Region::Op::Leaf:
+      return leafContains(node.leaf, u);
+    case Region::Op::Union:
+      for (std::uint32_t c : node.operands)
+        if (treeContains(c, u)) return true;
+      return false;
+    case Region::Op::Intersection:
+      for (std::uint32_t c : node.operands)
+        if (!treeContains(c, u)) return false;
+      return true;
+    case Region::Op::Difference:
+      if (!treeContains(node.operands.front(), u)) return false;
+      for (std::size_t i = 1; i < node.operands.size(); ++i)
+        if (treeContains(node.operands[i], u)) return false;
+      return true;
+  }
+  return false;
+}
+
+bool SweptRegion::contains(const dvec2& u) const { return treeContains(0, u); }
+
+// ---- polynomials -----------------------------------------------------------------
+
+SweepPolynomial SweepPolynomial::operator*(const SweepPolynomial& o) const {
+  SweepPolynomial p;
+  p.n = std::min(4, n + o.n);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= o.n && i + j <= 4; ++j) p.c[i + j] += c[i] * o.c[j];
+  return p;
+}
+
+SweepPolynomial SweepPolynomial::operator+(const SweepPolynomial& o) const {
+  SweepPolynomial p;
+  p.n = std::max(n, o.n);
+  for (int i = 0; i <= 4; ++i) p.c[i] = c[i] + o.c[i];
+  return p;
+}
+
+SweepPolynomial SweepPolynomial::operator-(const SweepPolynomial& o) const {
+  return *this + o * -1.0;
+}
+
+SweepPolynomial SweepPolynomial::operator*(double k) const {
+  SweepPolynomial p = *this;
+  for (double& x : p.c) x *= k;
+  return p;
+}
+
+int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots) {
+  int n = p.n;
+  double scale = 0.0;
+  for (int i = 0; i <= n; ++i) scale = std::max(scale, std::abs(p.c[i]));
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 0;
+  // On [-1, 1] a term this small moves the polynomial by less than rounding.
+  while (n > 0 && std::abs(p.c[n]) <= 1e-14 * scale) --n;
+  if (n == 0) return 0;
+  int count = 0;
+  auto keep = [&](double s) {
+    if (s >= s0 && s <= s1) roots[count++] = s;
+  };
+  if (n == 1) {
+    keep(-p.c[0] / p.c[1]);
+    return count;
+  }
+  if (n == 2) {
+    // The cancellation-free form (Numerical Recipes 5.6); a double root is
+    // kept once, a discriminant that rounding took below zero is a
+    // tangency and gives nothing.
+    const double a = p.c[2], b = p.c[1], c = p.c[0];
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    keep(r0);
+    if (r1 != r0) keep(r1);
+    return count;
+  }
+  return polynomialSublevelBoundaries(p.c, n, s0, s1, roots);
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,199 @@
+// What the sweeps of a region (linear_extrusion.h, revolution.h) share: a
+// sweep is the preimage of a region under a map from space to the profile
+// plane, so a ray is inside it where its image, a curve u(t) in the plane,
+// is inside the region. SweptRegion finds where that curve crosses the
+// edges of each leaf of the region, decides which stretches between
+// crossings lie inside the leaf, and merges the leaves' spans as the
+// region's tree says (docs/architecture.md, "Sweeps").
+//
+// The curve is given by a path object (see SweptRegion::spans) that knows
+// the map: its point at t, and the roots of an edge's implicit function
+// along it in closed form or numerically. Everything else is here: an index
+// over the edges (a 2D bounding volume hierarchy) so that a ray tests only
+// the edges near its curve, the even-odd classification, the faces and the
+// edges' outward normals.
+#pragma once
+
+#include <cstdint>
+#include <glm/mat2x2.hpp>
+#include <glm/vec2.hpp>
+#include <vector>
+
+#include "engine/primitive.h"
+#include "engine/span_list.h"
+#include "profile/region.h"
+
+namespace csgray::detail {
+
+// Faces of a sweep: the two caps of an extrusion (or the two flat faces of
+// a revolution's wedge), then one face per edge of the region's leaves, in
+// forEachLeaf order.
+inline constexpr std::uint32_t kSweepStartFace = 0;  // bottom cap, or the wedge's face at angle 0
+inline constexpr std::uint32_t kSweepEndFace = 1;    // top cap, or the wedge's face at its angle
+inline constexpr std::uint32_t kSweepFirstEdgeFace = 2;
+// Set on an edge's face where the edge bounds a hole of the region's tree
+// (a leaf subtracted once): the solid lies on the side its leaf does not,
+// so the normal is reversed. Spans of a sweep never carry Boundary::flip.
+inline constexpr std::uint32_t kSweepReversedFace = 1u << 30;
+
+// One edge of a leaf, with what the crossings need at hand.
+struct SweepEdge {
+  bool arc = false;
+  bool fullTurn = false;   // an arc all round its ellipse
+  std::uint32_t leaf = 0;  // forEachLeaf's numbering
+  dvec2 from{0.0}, to{0.0};
+  // Segments: the unit normal and the line n·u = offset.
+  dvec2 normal{0.0};
+  double offset = 0.0;
+  // Arcs: the ellipse is |toUnit·(u − center)| = 1; angles lo <= hi.
+  dvec2 center{0.0};
+  dmat2 toUnit{1.0};
+  double lo = 0.0, hi = 0.0;
+  double size = 0.0;     // largest semi-axis (arcs), length (segments)
+  double outward = 1.0;  // +1 when the gradient of the implicit function points out of the leaf
+  ProfileBounds box;
+
+  // The implicit function: n·u − offset, or |toUnit(u − center)|² − 1.
+  double implicit(const dvec2& u) const;
+  // Its gradient, turned to point out of the leaf.
+  dvec2 outwardGradient(const dvec2& u) const;
+  // Is u (a point on the edge's line or ellipse) on the edge, allowing
+  // `slack` of its parameter (segment fraction, or radians)? clean: and not
+  // within slack of an end.
+  bool holds(const dvec2& u, double slack, bool& clean) const;
+  // How far u is from the edge's line or ellipse, roughly (exact for
+  // segments and circles).
+  double distance(const dvec2& u) const;
+};
+
+// A stretch of the curve, t0 <= t <= t1, whose image in the plane lies in
+// the box lo–hi; straight: it lies on the segment from–to.
+struct SweepPiece {
+  double t0, t1;
+  dvec2 lo, hi;
+  bool straight = false;
+  dvec2 from{0.0}, to{0.0};
+};
+
+// Where the curve meets an edge.
+struct SweepCrossing {
+  double t;
+  std::uint32_t face;
+  bool clean;  // transversal, away from the edge's ends and from other crossings
+};
+
+class SweptRegion {
+ public:
+  // Throws std::invalid_argument (naming `kind`) for an empty region or one
+  // with non-finite coordinates.
+  SweptRegion(RegionPtr region, const char* kind);
+
+  const RegionPtr& region() const { return region_; }
+  const ProfileBounds& bounds() const { return region_->bounds(); }
+  double size() const { return size_; }
+  const SweepEdge& edgeOfFace(std::uint32_t face) const {
+    return edges_[(face & ~kSweepReversedFace) - kSweepFirstEdgeFace];
+  }
+  // The outward normal (any length) in the plane at u on an edge's face.
+  dvec2 outwardNormal(std::uint32_t face, const dvec2& u) const {
+    const dvec2 n = edgeOfFace(face).outwardGradient(u);
+    return face & kSweepReversedFace ? -n : n;
+  }
+  std::size_t edgeCount() const { return edges_.size(); }
+
+  // Is the point of the plane in the region (even-odd in each leaf, as
+  // Profile::contains, through the edge index)?
+  bool contains(const dvec2& u) const;
+
+  // The spans of the curve of `path` within [t0, t1], where the ray is in
+  // the sweep's slab (or bounding cylinder): boundaries at the window's
+  // ends get faces face0 and face1. The pieces cover the window in order,
+  // each with a box that holds its image. Path must provide
+  //   dvec2 at(double t) const;
+  //   int roots(const SweepEdge&, double t0, double t1, double* out) const;
+  // roots writes at most 8 values of t in [t0, t1] where the edge's
+  // implicit function vanishes along the curve (more is harmless: each is
+  // checked to lie on the edge; a root it misses must be a tangency).
+  template <class Path>
+  void spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
+             std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out) const;
+
+ private:
+  // A 2D bounding volume hierarchy over one leaf's edges.
+  struct Node {
+    dvec2 lo, hi;
+    std::uint32_t start,
+        count;  // leaf: items [start, start + count); inner: children start, start + 1
+  };
+  struct Leaf {
+    ProfileBounds box;
+    std::vector<Node> nodes;
+    std::vector<std::uint32_t> items;  // edge indices
+  };
+  struct TreeNode {
+    Region::Op op;
+    std::uint32_t leaf;                   // for Op::Leaf
+    std::vector<std::uint32_t> operands;  // indices into tree_
+  };
+
+  void buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges);
+  std::uint32_t addTree(const Region& region, std::uint32_t& nextLeaf);
+  // Calls f(edge) for each edge of the leaf whose box meets the box lo–hi
+  // (and the segment a–b, if straight).
+  template <class F>
+  void forEachEdgeNear(const Leaf& leaf, const dvec2& lo, const dvec2& hi, bool straight,
+                       const dvec2& a, const dvec2& b, F&& f) const;
+  bool leafContains(std::uint32_t leaf, const dvec2& u) const;
+  bool treeContains(std::uint32_t node, const dvec2& u) const;
+  template <class Path>
+  void treeSpans(const Primitive* owner, std::uint32_t node, const Path& path, double t0, double t1,
+                 std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces, int pieceCount,
+                 SpanList& out) const;
+
+  // A root of a path is the edge's when the curve's point there is this
+  // close to the edge's line or ellipse (in units of the region's size):
+  // far above rounding, far below the distance of a squared equation's
+  // mirrored roots (revolution.cpp) except next to the axis, where both
+  // are the same crossing.
+  static constexpr double kAcceptDistance = 1e-7;
+  // How far past an edge's end (a fraction of a segment, radians of an
+  // arc) a crossing still counts as on it, and within which of an end it
+  // is not clean: a vertex met through both its edges must not be lost.
+  static constexpr double kEdgeSlack = 1e-9;
+
+  RegionPtr region_;
+  std::vector<SweepEdge> edges_;
+  std::vector<Leaf> leaves_;
+  std::vector<TreeNode> tree_;  // tree_[0] is the root
+  double size_ = 1.0;
+};
+
+// ---- polynomials in a normalised parameter s ∈ [-1, 1] -----------------------
+
+// c[0] + c[1]·s + ... + c[n]·sⁿ, n <= 4.
+struct SweepPolynomial {
+  double c[5] = {0, 0, 0, 0, 0};
+  int n = 0;
+
+  static SweepPolynomial linear(double c0, double c1) {
+    SweepPolynomial p;
+    p.c[0] = c0;
+    p.c[1] = c1;
+    p.n = 1;
+    return p;
+  }
+  SweepPolynomial operator*(const SweepPolynomial& o) const;
+  SweepPolynomial operator+(const SweepPolynomial& o) const;
+  SweepPolynomial operator-(const SweepPolynomial& o) const;
+  SweepPolynomial operator*(double k) const;
+};
+
+// The roots in [s0, s1] of the polynomial, each once (a double root once
+// or twice, or not at all when rounding keeps it off zero). Leading
+// coefficients negligible next to the others are dropped first. Returns the
+// count (at most 4).
+int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots);
+
+}  // namespace csgray::detail
+
+#include "primitives/profile_sweep_spans.h"

@@ -1,0 +1,207 @@
+#include "primitives/profile_sweep_tessellation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "profile/region_evaluation.h"
+
+namespace csgray::detail {
+
+namespace {
+
+double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
+double orient(const dvec2& a, const dvec2& b, const dvec2& c) { return cross(b - a, c - a); }
+
+bool pointInLoop(const std::vector<dvec2>& loop, const dvec2& p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+    const dvec2& a = loop[j];
+    const dvec2& b = loop[i];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+      inside = !inside;
+  }
+  return inside;
+}
+
+struct Corner {
+  dvec2 p;
+  std::uint32_t id;
+};
+
+// Joins a hole (clockwise) to the polygon (counter-clockwise) by a bridge
+// from the hole's rightmost point to a point of the polygon it sees.
+void bridge(std::vector<Corner>& polygon, const std::vector<Corner>& hole) {
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < hole.size(); ++i)
+    if (hole[i].p.x > hole[m].p.x || (hole[i].p.x == hole[m].p.x && hole[i].p.y < hole[m].p.y))
+      m = i;
+  const dvec2 M = hole[m].p;
+  // The nearest edge the half-line from M towards +x meets.
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t visible = 0;
+  dvec2 hit(0.0);
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const dvec2& a = polygon[i].p;
+    const dvec2& b = polygon[(i + 1) % n].p;
+    if (a.y == b.y || std::min(a.y, b.y) > M.y || std::max(a.y, b.y) < M.y) continue;
+    const double x = a.x + (M.y - a.y) * (b.x - a.x) / (b.y - a.y);
+    if (x < M.x || x - M.x >= best) continue;
+    best = x - M.x;
+    hit = dvec2(x, M.y);
+    visible = a.x > b.x ? i : (i + 1) % n;
+  }
+  if (!std::isfinite(best)) {
+    // No edge to the right (cannot happen for a hole inside): the nearest point.
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i)
+      if (double e = glm::length(polygon[i].p - M); e < d) d = e, visible = i;
+  } else if (polygon[visible].p != hit) {
+    // A reflex point inside the triangle M, hit, P hides P: take the one of
+    // them at the least angle from the half-line.
+    const dvec2 P = polygon[visible].p;
+    double bestCos = -2.0, bestDistance = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const dvec2& q = polygon[i].p;
+      const dvec2& before = polygon[(i + n - 1) % n].p;
+      const dvec2& after = polygon[(i + 1) % n].p;
+      if (orient(before, q, after) > 0.0) continue;  // convex
+      const double o1 = orient(M, hit, q), o2 = orient(hit, P, q), o3 = orient(P, M, q);
+      const bool inside = (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
+      if (!inside || q == M) continue;
+      const dvec2 d = q - M;
+      const double length = glm::length(d);
+      if (!(length > 0.0)) continue;
+      const double c = d.x / length;
+      if (c > bestCos || (c == bestCos && length < bestDistance)) {
+        bestCos = c;
+        bestDistance = length;
+        visible = i;
+      }
+    }
+  }
+  std::vector<Corner> joined;
+  joined.reserve(n + hole.size() + 2);
+  for (std::size_t i = 0; i <= visible; ++i) joined.push_back(polygon[i]);
+  for (std::size_t k = 0; k <= hole.size(); ++k) joined.push_back(hole[(m + k) % hole.size()]);
+  joined.push_back(polygon[visible]);
+  for (std::size_t i = visible + 1; i < n; ++i) joined.push_back(polygon[i]);
+  polygon = std::move(joined);
+}
+
+void earClip(const std::vector<Corner>& polygon,
+             const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& triangle) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return;
+  std::vector<std::size_t> prev(n), next(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    prev[i] = (i + n - 1) % n;
+    next[i] = (i + 1) % n;
+  }
+  auto isEar = [&](std::size_t i) {
+    const dvec2 &a = polygon[prev[i]].p, &b = polygon[i].p, &c = polygon[next[i]].p;
+    // Strictly convex, beyond rounding: a corner between collinear points
+    // (an edge split for a twist) is cut later, with a third point off
+    // their line.
+    if (!(orient(a, b, c) > 1e-10 * glm::length(b - a) * glm::length(c - b))) return false;
+    for (std::size_t j = next[next[i]]; j != prev[i]; j = next[j]) {
+      const dvec2& q = polygon[j].p;
+      if (q == a || q == b || q == c) continue;
+      if (orient(a, b, q) >= 0.0 && orient(b, c, q) >= 0.0 && orient(c, a, q) >= 0.0) return false;
+    }
+    return true;
+  };
+  std::size_t remaining = n, i = 0, tried = 0;
+  while (remaining > 3) {
+    if (isEar(i) || tried > remaining) {
+      if (tried > remaining) {
+        // No ear (rounding, or a degenerate polygon): cut the corner that
+        // turns left the most, so the cap stays closed.
+        std::size_t best = i;
+        double most = -std::numeric_limits<double>::infinity();
+        std::size_t j = i;
+        for (std::size_t k = 0; k < remaining; ++k, j = next[j]) {
+          const double o = orient(polygon[prev[j]].p, polygon[j].p, polygon[next[j]].p);
+          if (o > most) most = o, best = j;
+        }
+        i = best;
+      }
+      triangle(polygon[prev[i]].id, polygon[i].id, polygon[next[i]].id);
+      next[prev[i]] = next[i];
+      prev[next[i]] = prev[i];
+      i = prev[i];
+      --remaining;
+      tried = 0;
+      continue;
+    }
+    i = next[i];
+    ++tried;
+  }
+  triangle(polygon[prev[i]].id, polygon[i].id, polygon[next[i]].id);
+}
+
+}  // namespace
+
+double signedArea2(const std::vector<dvec2>& loop) {
+  double a = 0.0;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+    a += cross(loop[j], loop[i]);
+  return a;
+}
+
+SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind) {
+  // Evaluated exactly (circles stay circles through the booleans), then
+  // flattened by the sagitta rule: loops that neither cross nor share an
+  // edge, outer ones counter-clockwise, holes clockwise.
+  SweepLoops loops;
+  for (std::vector<dvec2>& loop : flatten(evaluate(region, tolerance), tolerance))
+    if (loop.size() >= 3 && signedArea2(loop) != 0.0) loops.push_back(std::move(loop));
+  if (loops.empty())
+    throw std::invalid_argument(std::string(kind) + ": the region has no area to export");
+  return loops;
+}
+
+void triangulateLoops(
+    const SweepLoops& loops, const std::vector<std::vector<std::uint32_t>>& ids,
+    const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& triangle) {
+  std::vector<std::size_t> outers, holes;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    (signedArea2(loops[i]) > 0.0 ? outers : holes).push_back(i);
+  // Each hole belongs to the smallest outer loop around it.
+  std::vector<std::vector<std::size_t>> holesOf(loops.size());
+  for (std::size_t h : holes) {
+    std::size_t owner = loops.size();
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t o : outers) {
+      const double area = signedArea2(loops[o]);
+      if (area < smallest && pointInLoop(loops[o], loops[h][0])) smallest = area, owner = o;
+    }
+    if (owner < loops.size()) holesOf[owner].push_back(h);
+  }
+  auto corners = [&](std::size_t loop) {
+    std::vector<Corner> c;
+    for (std::size_t k = 0; k < loops[loop].size(); ++k)
+      c.push_back({loops[loop][k], ids[loop][k]});
+    return c;
+  };
+  for (std::size_t o : outers) {
+    std::vector<Corner> polygon = corners(o);
+    std::vector<std::size_t>& mine = holesOf[o];
+    auto rightmost = [&](std::size_t h) {
+      double x = -std::numeric_limits<double>::infinity();
+      for (const dvec2& p : loops[h]) x = std::max(x, p.x);
+      return x;
+    };
+    std::sort(mine.begin(), mine.end(),
+              [&](std::size_t a, std::size_t b) { return rightmost(a) > rightmost(b); });
+    for (std::size_t h : mine) bridge(polygon, corners(h));
+    earClip(polygon, triangle);
+  }
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,47 @@
+// OpenSCAD's rotate_extrude of a region, exact: the region, drawn in the
+// profile plane (u, v) = (ρ, z) with ρ = √(x² + y²) >= 0, turned about the
+// z axis. Every point of the region must have u >= 0. With an angle under
+// 360° only the wedge from +x counter-clockwise (seen from +z) over that
+// angle is kept; its two flat faces are faces of the primitive.
+//
+// A ray's curve in the profile plane is (ρ(t), z(t)) with ρ² quadratic in
+// t: a segment's line aρ + bz = c becomes a²ρ² = (c − bz)², a quadratic
+// (cones, cylinders, flat rings), and an arc's ellipse, with its odd
+// powers of ρ moved to one side and squared, a quartic (tori, spheres and
+// their elliptic kin); the roots of the squared equations that are not the
+// edge's own (those of the profile mirrored in the axis) are dropped
+// (profile_sweep.h). Faces: kSweepStartFace the wedge's face at angle 0,
+// kSweepEndFace the one at its angle, then one per edge of the region.
+#pragma once
+
+#include "primitives/primitive_shape.h"
+#include "primitives/profile_sweep.h"
+
+namespace csgray::detail {
+
+class Revolution : public PrimitiveShape<Revolution> {
+ public:
+  // Throws std::invalid_argument for an angle not in (0, 360], or a
+  // region with points at u < 0 (crossing the axis), or a bad region.
+  Revolution(RegionPtr region, double angleDegrees);
+
+  const RegionPtr& region() const { return swept_->region(); }
+  double angleDegrees() const { return angleDegrees_; }
+  std::string kind() const override { return "rotate_extrude"; }
+
+ protected:
+  void objectSpans(const Ray& ray, SpanList& out) const override;
+  bool objectContains(const dvec3& p) const override;
+  dvec3 objectNormal(const dvec3& p, int face) const override;
+  Bounds objectBounds() const override;
+  TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
+
+ private:
+  bool inWedge(const dvec3& p) const;
+
+  std::shared_ptr<const SweptRegion> swept_;
+  double angleDegrees_, angle_;  // angle_ in radians
+  bool fullTurn_;
+};
+
+}  // namespace csgray::detail

@@ -1,0 +1,182 @@
+// Revolutions of regions: analytic hits, volumes from spans by Pappus's
+// theorem (V = 2π·x̄·area: tori, tubes, cylinders, balls, wedges),
+// agreement of spans with contains(), outward normals, valid meshes of the
+// right volume, and refused regions.
+#include "primitives/revolution.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "export/cgal/mesh_validity.h"
+#include "primitives/sweep_shapes.h"
+#include "tessellation/triangle_mesh.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::shared_ptr<Revolution> revolve(RegionPtr region, double angle = 360.0) {
+  return Primitive::create<Revolution>(std::move(region), angle);
+}
+
+void expectVolume(const SolidPtr& s, double exact, double relative = 0.005) {
+  EXPECT_NEAR(test::gridVolume(*s, s->bounds(), 300), exact, relative * exact) << "along z";
+  for (const dvec3& axis : {dvec3(0, 1, 0), dvec3(1, 0, 0)}) {
+    SolidPtr turned = s->transformed(Affine::rotation(kPi / 2, axis));
+    EXPECT_NEAR(test::gridVolume(*turned, turned->bounds(), 300), exact, relative * exact)
+        << "turned about " << axis.x << " " << axis.y;
+  }
+}
+
+void expectValidMesh(const Primitive& p, double tolerance, double exact) {
+  TriangleMesh mesh = p.tessellate(tolerance, Bounds::everything());
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_NEAR(mesh.volume(), exact, 0.01 * exact);
+}
+
+// A half-disc of radius r on the axis: its arc from −90° to 90° and the
+// axis's segment, which joins the arc's ends exactly (cos(π/2) is not 0 in
+// doubles, so they are a hair off the axis).
+RegionPtr halfDisc(double r) {
+  ProfileLoop loop;
+  loop.edges.push_back(ProfileEdge::arc(dvec2(0.0), dmat2(r), -kPi / 2, kPi / 2));
+  loop.edges.push_back(ProfileEdge::segment(loop.edges[0].to, loop.edges[0].from));
+  return test::regionOf({loop});
+}
+
+TEST(Revolution, RaysHitTubesAndTori) {
+  auto tube = revolve(test::rectangle({1, 0}, {2, 3}));
+  SpanList spans = test::spansOf(*tube, Ray(dvec3(-5, 0, 1), dvec3(1, 0, 0)));
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_NEAR(spans[0].in.t, 3.0, 1e-12);
+  EXPECT_NEAR(spans[0].out.t, 4.0, 1e-12);
+  EXPECT_NEAR(spans[1].in.t, 6.0, 1e-12);
+  EXPECT_NEAR(spans[1].out.t, 7.0, 1e-12);
+  test::expectVecNear(tube->normal(dvec3(-2, 0, 1), spans[0].in.face), dvec3(-1, 0, 0), 1e-12);
+  test::expectVecNear(tube->normal(dvec3(-1, 0, 1), spans[0].out.face), dvec3(1, 0, 0), 1e-12);
+  // Down through the wall: from the top ring to the bottom one.
+  spans = test::spansOf(*tube, Ray(dvec3(0, 1.5, 5), dvec3(0, 0, -1)));
+  ASSERT_EQ(spans.size(), 1u);
+  EXPECT_NEAR(spans[0].in.t, 2.0, 1e-12);
+  EXPECT_NEAR(spans[0].out.t, 5.0, 1e-12);
+  test::expectVecNear(tube->normal(dvec3(0, 1.5, 3), spans[0].in.face), dvec3(0, 0, 1), 1e-12);
+  // A torus: circle of radius 1 at distance 3.
+  auto torus = revolve(test::circle({3, 0}, 1));
+  spans = test::spansOf(*torus, Ray(dvec3(-10, 0, 0), dvec3(1, 0, 0)));
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_NEAR(spans[0].in.t, 6.0, 1e-12);
+  EXPECT_NEAR(spans[0].out.t, 8.0, 1e-12);
+  EXPECT_NEAR(spans[1].in.t, 12.0, 1e-12);
+  EXPECT_NEAR(spans[1].out.t, 14.0, 1e-12);
+  EXPECT_TRUE(torus->contains(dvec3(0, 3.5, 0.5)));
+  EXPECT_FALSE(torus->contains(dvec3(0, 0, 0)));
+}
+
+// Pappus: V = 2π·x̄·area.
+TEST(Revolution, PappusVolumes) {
+  expectVolume(revolve(test::circle({3, 0}, 1)), 2 * kPi * kPi * 3);
+  expectVolume(revolve(test::rectangle({1, 0}, {2, 3})), kPi * (4 - 1) * 3);
+  expectVolume(revolve(test::rectangle({0, -1}, {1, 1})), kPi * 2);
+  expectVolume(revolve(halfDisc(1.5)), 4.0 / 3.0 * kPi * 1.5 * 1.5 * 1.5);
+  // An ellipse (semi-axes 0.5 across, 1 up) at distance 2: area π/2.
+  RegionPtr ellipse = test::regionOf(
+      {ProfileLoop{{ProfileEdge::arc({2, 0}, dmat2(dvec2(0.5, 0), dvec2(0, 1)), 0, 2 * kPi)}}});
+  expectVolume(revolve(ellipse), 2 * kPi * 2 * kPi * 0.5);
+  // A triangle (a cone's section) and a region with a hole.
+  expectVolume(revolve(test::regionOf({test::polygonLoop({{0, 0}, {2, 0}, {0, 3}})})),
+               kPi * 4 * 3 / 3.0);
+  RegionPtr holed =
+      test::regionOf({test::rectangleLoop({1, -1}, {3, 1}), test::circleLoop({2, 0}, 0.5)});
+  expectVolume(revolve(holed), 2 * kPi * 2 * (4 - kPi * 0.25));
+}
+
+TEST(Revolution, WedgesKeepTheirShareOfTheVolume) {
+  const double whole = 2 * kPi * kPi * 3;
+  for (double angle : {30.0, 90.0, 180.0, 270.0}) {
+    SCOPED_TRACE(angle);
+    expectVolume(revolve(test::circle({3, 0}, 1), angle), whole * angle / 360.0);
+  }
+  auto quarter = revolve(test::rectangle({0, 0}, {1, 1}), 90.0);
+  EXPECT_TRUE(quarter->contains(dvec3(0.5, 0.5, 0.5)));
+  EXPECT_FALSE(quarter->contains(dvec3(-0.5, 0.5, 0.5)));
+  EXPECT_FALSE(quarter->contains(dvec3(0.5, -0.5, 0.5)));
+}
+
+std::vector<std::pair<std::string, SolidPtr>> assorted() {
+  RegionPtr holed =
+      test::regionOf({test::rectangleLoop({1, -1}, {3, 1}), test::circleLoop({2, 0}, 0.5)});
+  RegionPtr vase = test::regionOf({test::polygonLoop({{0, 0},
+                                                      {2, 0},
+                                                      {2.5, 1},
+                                                      {1.2, 3},
+                                                      {1.6, 4.5},
+                                                      {1.4, 4.5},
+                                                      {1.0, 3},
+                                                      {2.2, 1},
+                                                      {1.8, 0.2},
+                                                      {0, 0.2}})});
+  RegionPtr difference = Region::boolean(
+      Region::Op::Difference, {test::rectangle({0, -1}, {2, 1}), test::circle({2, 0}, 0.6)});
+  const Affine skew = Affine::rotation(0.7, glm::normalize(dvec3(1, 2, 3)))
+                          .then(Affine::translation(dvec3(0.5, -2, 1)));
+  return {
+      {"torus", revolve(test::circle({3, 0}, 1))},
+      {"holed", revolve(holed)},
+      {"ball", revolve(halfDisc(1.0))},
+      {"vase", revolve(vase)},
+      {"wedge 100", revolve(holed, 100.0)},
+      {"wedge 300", revolve(vase, 300.0)},
+      {"difference", revolve(difference)->transformed(skew)},
+  };
+}
+
+TEST(Revolution, SpansAgreeWithContainsOnRandomLines) {
+  for (const auto& [name, solid] : assorted()) {
+    SCOPED_TRACE(name);
+    test::expectSpansAgreeWithContainsOnRandomLines(*solid, 3000, 3);
+  }
+}
+
+TEST(Revolution, NormalsFaceOutward) {
+  for (const auto& [name, solid] : assorted()) {
+    SCOPED_TRACE(name);
+    auto p = std::dynamic_pointer_cast<const Primitive>(solid);
+    ASSERT_TRUE(p);
+    test::expectOutwardUnitNormals(*p, 1e-9, 500, 7);
+  }
+}
+
+TEST(Revolution, MeshesAreValidSolids) {
+  expectValidMesh(*revolve(test::circle({3, 0}, 1)), 0.001, 2 * kPi * kPi * 3);
+  expectValidMesh(*revolve(test::rectangle({0, -1}, {1, 1})), 0.001, 2 * kPi);
+  expectValidMesh(*revolve(halfDisc(1.5)), 0.001, 4.0 / 3.0 * kPi * 1.5 * 1.5 * 1.5);
+  RegionPtr holed =
+      test::regionOf({test::rectangleLoop({1, -1}, {3, 1}), test::circleLoop({2, 0}, 0.5)});
+  expectValidMesh(*revolve(holed), 0.001, 2 * kPi * 2 * (4 - kPi * 0.25));
+  expectValidMesh(*revolve(holed, 100.0), 0.001, 2 * kPi * 2 * (4 - kPi * 0.25) * 100 / 360);
+  expectValidMesh(*revolve(test::rectangle({0, -1}, {1, 1}), 250.0), 0.001, 2 * kPi * 250 / 360);
+}
+
+TEST(Revolution, RefusesRegionsAcrossTheAxisAndBadAngles) {
+  EXPECT_THROW(revolve(test::rectangle({-0.5, 0}, {1, 1})), std::invalid_argument);
+  try {
+    revolve(test::circle({0.5, 0}, 1));
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("crosses the axis"), std::string::npos) << e.what();
+  }
+  RegionPtr r = test::rectangle({1, 0}, {2, 1});
+  EXPECT_THROW(revolve(r, 0.0), std::invalid_argument);
+  EXPECT_THROW(revolve(r, -10.0), std::invalid_argument);
+  EXPECT_THROW(revolve(r, 361.0), std::invalid_argument);
+  EXPECT_THROW(revolve(r, std::nan("")), std::invalid_argument);
+  EXPECT_NO_THROW(revolve(r, 360.0));
+}
+
+}  // namespace
+}  // namespace csgray::detail
