@@ -90,6 +90,15 @@ for n in $export_sizes; do
     "$script" "$mesh" "$check" "$write" "${triangles:--}" "${booleans:--}" "$verdict"
 done
 
+pairs=${PAIRS:-5}
+one_core="taskset -c 0"
+median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+# time_of <command...>: wall seconds, or "failed"
+time_of() {
+  local start=$EPOCHREALTIME
+  if "$@" >/dev/null 2>"$out/err"; then elapsed "$start"; else echo failed; fi
+}
+
 # Export against Manifold (its WebAssembly build, bench/manifold/parts.mjs,
 # installed by `make bench`): the same geometry with csgray's segment counts,
 # written as a binary STL by both, whole process. The two commands alternate,
@@ -98,14 +107,6 @@ done
 # WebAssembly build runs on one either way).
 manifold=bench/manifold/parts.mjs
 if [ -d bench/manifold/node_modules/manifold-3d ] && command -v node >/dev/null; then
-  pairs=${PAIRS:-5}
-  one_core="taskset -c 0"
-  median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-  # time_of <command...>: wall seconds, or "failed"
-  time_of() {
-    local start=$EPOCHREALTIME
-    if "$@" >/dev/null 2>"$out/err"; then elapsed "$start"; else echo failed; fi
-  }
   echo
   echo "| export vs Manifold | cores | csgray median (s) | Manifold median (s) | csgray / Manifold | csgray valid |"
   echo "|---|---:|---:|---:|---:|---|"
@@ -114,7 +115,8 @@ if [ -d bench/manifold/node_modules/manifold-3d ] && command -v node >/dev/null;
         shaft_on_hub::bench/parts/shaft_on_hub.lua two_frustums::bench/parts/two_frustums.lua
         frustum_stack::bench/parts/frustum_stack.lua vase:layers=40:examples/vase.lua
         rounded_box::examples/rounded_box.lua pixel_knob::examples/pixel_knob.lua
-        knurled_knob::examples/knurled_knob.lua plate:n=32:bench/plate.lua:all"
+        knurled_knob::examples/knurled_knob.lua gear:twist=30:bench/parts/gear.lua
+        turned_vase::bench/parts/turned_vase.lua plate:n=32:bench/plate.lua:all"
   for row in $rows; do
     IFS=: read -r name parameter script cores <<<"$row"
     pin=$one_core
@@ -163,3 +165,40 @@ for n in $check_sizes; do
   done
   printf '| plate(%s) | %s | %d | %s |\n' "$n" "$best" "$memory" "$result"
 done
+
+# Sweeps against POV-Ray 3.7 (installed by `make bench`): the involute gear
+# (bench/parts/gear.lua, a prism of 1 200 points with a keyed bore) and the
+# turned vase (a lathe of 200 points) at 1024x768 on one core, whole
+# process, against their twins in bench/povray/, alternating PAIRS times;
+# medians compared. POV-Ray's prism cannot twist, so the gear is compared
+# untwisted; the twisted one (30°) is timed beside it, on its own.
+if command -v povray >/dev/null; then
+  echo
+  echo "| render vs POV-Ray | csgray median (s) | POV-Ray median (s) | POV-Ray / csgray |"
+  echo "|---|---:|---:|---:|"
+  for row in gear:bench/parts/gear.lua:twist=0 turned_vase:bench/parts/turned_vase.lua:; do
+    IFS=: read -r name script define <<<"$row"
+    defines=()
+    [ -n "$define" ] && defines=(-D "$define")
+    : >"$out/a"; : >"$out/b"
+    for ((r = 0; r < pairs; r++)); do
+      time_of $one_core "$csgray" render "$script" "${defines[@]}" -o "$out/$name.png" \
+        --size 1024x768 --threads 1 >>"$out/a"
+      time_of $one_core povray +I"bench/povray/$name.pov" +O"$out/${name}_pov.png" +W1024 +H768 \
+        -D +WT1 -GA >>"$out/b"
+    done
+    a=$(grep -v failed "$out/a" | median); b=$(grep -v failed "$out/b" | median)
+    printf '| %s | %s | %s | %s |\n' "$name" "${a:--}" "${b:--}" \
+      "$(awk -v a="$a" -v b="$b" 'BEGIN {if (a == "" || b == "") print "-"; else printf "%.1f", b / a}')"
+  done
+  : >"$out/a"
+  for ((r = 0; r < pairs; r++)); do
+    time_of $one_core "$csgray" render bench/parts/gear.lua -o "$out/gear.png" --size 1024x768 \
+      --threads 1 >>"$out/a"
+  done
+  echo
+  echo "gear twisted by 30°, csgray alone: median $(grep -v failed "$out/a" | median) s"
+else
+  echo
+  echo "(render vs POV-Ray left out: make bench installs povray)"
+fi

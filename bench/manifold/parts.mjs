@@ -133,17 +133,21 @@ const parts = {
     }));
     return cylinder(15, 15, 10).subtract(Manifold.union(pixels));
   },
-  // Slices of the twist and segments of the turn: csgray's own for the
-  // same tolerance, given on the command line (the rows of bench/run.sh
-  // read them from csgray's --stats).
-  gear(slices = 1) {
-    const twist = slices > 1 ? 30 : 0;
+  // Slices of the twist and segments of the turn as csgray makes them for
+  // the tolerance (primitives/linear_extrusion_tessellation.cpp: helices
+  // within a quarter of it; revolution_tessellation.cpp: the widest circle
+  // within half of it). csgray also splits long edges of a twisted
+  // profile, which Manifold does not: csgray's mesh is the larger.
+  gear(twist = 30) {
+    const tip = 62, angle = twist * Math.PI / 180;
+    const slices = twist ? arcSegments(tip, angle, tolerance / 4, 1) : 1;
     const gear = new CrossSection([gearPoints()]).extrude(20, slices - 1, twist);
     const bore = cylinder(10, 10, 22).translate([0, 0, -1]).add(box(6, 4, 22).translate([7, -2, -1]));
     return gear.subtract(bore);
   },
-  turned_vase(segments = 128) {
-    return new CrossSection([vaseProfile()]).revolve(segments);
+  turned_vase() {
+    const profile = vaseProfile(), reach = Math.max(...profile.map(p => p[0]));
+    return new CrossSection([profile]).revolve(arcSegments(reach, 2 * Math.PI, tolerance / 2, 8));
   },
   knurled_knob() {
     const [R, H, f] = [15, 12, 2];
