@@ -57,11 +57,29 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
     // side quad over an edge of length ℓ turned by Δθ between slices,
     // which bends it out of its plane by at most Δθ·ℓ/4: longer edges
     // are split.
-    const double r = reach * std::max({1.0, scale_.x, scale_.y});
+    const double stretch = std::max({1.0, scale_.x, scale_.y});
+    const double r = reach * stretch;
     slices = arcSegments(r, std::abs(twist_), 0.5 * half, 1);
     requireTriangleBudget(kind(), 2.0 * double(points) * slices, tolerance);
-    const double step = std::abs(twist_) / slices;
-    const double most = 4.0 * 0.5 * half / (step * std::max({1.0, scale_.x, scale_.y}));
+    // The longest edge that a turn of |τ|/N leaves within the tolerance.
+    auto longestFor = [&](double n) { return 4.0 * 0.5 * half * n / (std::abs(twist_) * stretch); };
+    // More slices than the helices need may take fewer triangles in all:
+    // each slice turns less, so fewer edges are split. Of the counts up to
+    // four times the least, the one with the fewest side quads.
+    double fewest = kInfinity;
+    const int least = slices;
+    for (int k = 0; k <= 48; ++k) {
+      const int n = int(std::min(1e9, std::ceil(least * (1.0 + k / 16.0))));
+      double quads = 0.0;
+      for (const auto& loop : loops)
+        for (std::size_t i = 0; i < loop.size(); ++i)
+          quads += std::ceil(glm::length(loop[(i + 1) % loop.size()] - loop[i]) / longestFor(n));
+      if (quads * n < fewest) {
+        fewest = quads * n;
+        slices = n;
+      }
+    }
+    const double most = longestFor(slices);
     if (longest > most) {
       requireTriangleBudget(kind(), 2.0 * double(points) * slices * std::ceil(longest / most),
                             tolerance);
