@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
@@ -447,6 +448,42 @@ TEST(RegionOffset, AGearKeepsOneLoopAndItsDistances) {
     if (chamferOut.contains(p)) EXPECT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
     if (mitreIn.contains(p)) EXPECT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
     if (chamferIn.contains(p)) EXPECT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+  }
+}
+
+TEST(RegionOffset, GrownUnionsOfDiscsAndBoxesHoldWhatIsNear) {
+  // The distance to a union is the least distance to its parts: a point is
+  // in offset(r) exactly when some part is nearer than r.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> u(-2.0, 2.0), size(0.1, 1.0), grow(0.02, 0.6);
+  for (int round = 0; round < 12; ++round) {
+    std::vector<RegionPtr> parts;
+    std::vector<std::function<double(dvec2)>> distances;
+    for (int i = 0; i < 2 + round % 4; ++i) {
+      const dvec2 c(u(random), u(random));
+      const double s = size(random);
+      if (i % 2 == 0) {
+        parts.push_back(disc(c, s));
+        distances.push_back([=](dvec2 p) { return std::max(0.0, glm::length(p - c) - s); });
+      } else {
+        parts.push_back(rect(c.x, c.y, c.x + s, c.y + 0.7 * s));
+        distances.push_back(
+            [=](dvec2 p) { return glm::length(p - glm::clamp(p, c, c + dvec2(s, 0.7 * s))); });
+      }
+    }
+    const RegionPtr all = Region::boolean(Region::Op::Union, parts);
+    const double r = grow(random);
+    const Profile grown = offsetRounded(*all, r, kTolerance);
+    expectClosed(grown);
+    std::uniform_real_distribution<double> w(-3.5, 3.5);
+    for (int i = 0; i < 1500; ++i) {
+      const dvec2 p(w(random), w(random));
+      double e = INFINITY;
+      for (const auto& distance : distances) e = std::min(e, distance(p));
+      if (std::abs(e - r) < 1e-9) continue;
+      ASSERT_EQ(grown.contains(p), e < r)
+          << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+    }
   }
 }
 
