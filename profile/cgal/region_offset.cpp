@@ -4,15 +4,14 @@
 // boundary: the points within d of an edge, measured along the edge's
 // normals (a strip beside a segment, an annular sector beside an arc, on
 // both sides: the side away from the offset is in the region, or outside
-// it, anyway), plus what each corner adds. A rounded offset adds a disc of
-// radius d at every corner, so that the band is every point within d of
-// the boundary: offset(r) = region ∪ band for r > 0, region − band for
-// r < 0. An offset by delta adds, at the corners that turn towards the
-// offset's side, the mitre (the wedge up to where the moved tangent lines
-// meet) or the chamfer (the mitre cut by the line at distance d from the
-// corner, perpendicular to the mitre's bisector: Clipper's square joins,
-// which OpenSCAD's chamfer uses). Where an arc meets a corner, its tangent
-// line there is what the mitre extends.
+// it, anyway), plus what each corner adds. A rounded offset adds the
+// sector of the disc of radius d about the corner that the strips miss, so
+// that the band is every point within d of the boundary: offset(r) =
+// region ∪ band for r > 0, region − band for r < 0. An offset by delta adds, at the corners that
+// turn towards the offset's side, the mitre (the wedge up to where the moved tangent lines meet) or
+// the chamfer (the mitre cut by the line at distance d from the corner, perpendicular to the
+// mitre's bisector: Clipper's square joins, which OpenSCAD's chamfer uses). Where an arc meets a
+// corner, its tangent line there is what the mitre extends.
 //
 // The strips' corners are rational points exactly on the circles they
 // meet (the tangent half-angle substitution gives rational points of a
@@ -241,6 +240,33 @@ bool smooth(const EdgeEnds& in, const EdgeEnds& out) {
          std::abs(cross(in.endTangent, out.startTangent)) <= 1e-12;
 }
 
+// The part of the disc of radius d about a corner that the strips miss:
+// the sector between the edges' normals on the side the boundary turns
+// towards. A point within d of the boundary whose nearest boundary point
+// is the corner is there; every other one is in the strip of the edge its
+// nearest point is on. The sector's tip is behind the corner, as the
+// wedges' are.
+void addCornerSector(Band& band, const dvec2& v, const EdgeEnds& in, const EdgeEnds& out) {
+  const bool left = cross(in.endTangent, out.startTangent) > 0.0;
+  const int side = left ? 1 : 0;  // a left turn opens on the right
+  const ExactPoint& p1 = in.endCorner[side];
+  const ExactPoint& p2 = out.startCorner[side];
+  if (p1 == p2) return;
+  const dvec2 n1 = rightNormal(in.endTangent), n2 = rightNormal(out.startTangent);
+  const double spread = glm::length(n1 + n2);
+  const dvec2 gap = spread > 1e-9 ? (left ? 1.0 : -1.0) * (n1 + n2) / spread : in.endTangent;
+  const ExactPoint tip = exactPoint(v - 0.5 * band.d * gap);
+  const FT d(band.d);
+  const PlaneKernel::Circle_2 circle(exactPoint(v), d * d, CGAL::COUNTERCLOCKWISE);
+  // Counterclockwise: the arc runs from p1 to p2 on a left turn, back on a
+  // right one.
+  const ExactPoint& a = left ? p1 : p2;
+  const ExactPoint& b = left ? p2 : p1;
+  band.pieces.push_back(
+      polygonOfCurves({CircleSegment(tip, a), CircleSegment(circle, onePoint(a), onePoint(b)),
+                       CircleSegment(b, tip)}));
+}
+
 // The wedge that fills the corner at v between an edge that ends there and
 // one that starts there, on the given side (+1 outer, -1 inner), if the
 // boundary turns towards that side.
@@ -290,8 +316,10 @@ ArcPolygonSet boundaryBand(const Profile& boundary, double d, int side, Corners 
       if (loop.edges.size() == 1) break;  // a whole circle has no corner
       const std::size_t next = (i + 1) % loop.edges.size();
       const dvec2 v = loop.edges[i].to;
-      if (corners == Corners::Round || smooth(ends[i], ends[next]))
+      if (smooth(ends[i], ends[next]))
         addDisc(band, v);
+      else if (corners == Corners::Round)
+        addCornerSector(band, v, ends[i], ends[next]);
       else
         addCornerWedge(band, v, ends[i], ends[next], side, corners);
     }
