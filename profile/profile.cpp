@@ -30,21 +30,20 @@ bool segmentCrosses(const dvec2& p, const dvec2& a, const dvec2& b) {
   return x > p.x;
 }
 
-double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
-
 // Is p between an arc and its chord? The chord cuts the ellipse in two; the
 // arc bounds the part that holds its middle point. In the frame where the
-// ellipse is the unit circle that is a disc cut by a line. A whole ellipse
-// (from == to) bounds its disc.
+// ellipse is the unit circle that is a disc cut by a line: the chord over
+// a half-angle h about the middle direction m is the line w·m = cos h, and
+// the arc's side is w·m > cos h (for an arc past a half circle too, where
+// cos h < 0). Tested so, not by the side of the chord's two ends, a tiny
+// arc's cap stays tiny. A whole ellipse (from == to) bounds its disc.
 bool inArcCap(const dvec2& p, const ProfileEdge& e) {
   const dvec2 w = glm::inverse(e.axes) * (p - e.center);
   if (glm::dot(w, w) >= 1.0) return false;
   if (std::abs(e.angle1 - e.angle0) >= kTwoPi) return true;
-  const dvec2 a(std::cos(e.angle0), std::sin(e.angle0));
-  const dvec2 b(std::cos(e.angle1), std::sin(e.angle1));
   const double mid = 0.5 * (e.angle0 + e.angle1);
-  const dvec2 m(std::cos(mid), std::sin(mid));
-  return (cross(b - a, w - a) > 0.0) == (cross(b - a, m - a) > 0.0);
+  const double halfAngle = 0.5 * std::abs(e.angle1 - e.angle0);
+  return glm::dot(w, dvec2(std::cos(mid), std::sin(mid))) > std::cos(halfAngle);
 }
 
 }  // namespace

@@ -1,10 +1,15 @@
 // A region evaluated into one profile whose loops neither cross nor touch
-// along an edge: outer loops counterclockwise, holes clockwise. What
-// offsets, hulls, areas, outlines (SVG, DXF) and the tessellation of sweeps
-// start from. Booleans of segments and circular arcs are exact (CGAL's
-// general polygon sets with circle-segment traits); an arc of an ellipse
-// that is not a circle is first replaced by a polygon within
-// `ellipseTolerance`.
+// along an edge (they may touch at a point, and a loop may pass through a
+// point twice: a bow tie is one loop or two): outer loops counterclockwise,
+// holes clockwise. What offsets, hulls, areas, outlines (SVG, DXF) and the
+// tessellation of sweeps start from. Booleans of segments and circular arcs
+// are exact (CGAL's general polygon sets with circle-segment traits); an
+// arc of an ellipse that is not a circle is first replaced by a polygon
+// within `ellipseTolerance`. Its arcs are circles (axes r·I), angle1 >
+// angle0 for counterclockwise ones; each edge's `from` is the previous
+// one's `to` exactly. Every function here throws std::invalid_argument for
+// a coordinate, distance or tolerance that is not a finite number (and a
+// tolerance that is not positive), with a message that says which.
 #pragma once
 
 #include <span>
@@ -29,9 +34,14 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
 // corners it makes round are true arcs.
 Profile offsetRounded(const Region& region, double r, double ellipseTolerance);
 // OpenSCAD's offset(delta = d, chamfer = c): the edges moved by d along
-// their normals; corners mitred, or cut flat with chamfer.
+// their normals (arcs to concentric arcs); the corners that turn towards
+// the offset's side mitred, or with chamfer cut flat by the line at
+// distance |d| from the corner across the mitre's bisector (Clipper's
+// square join, which OpenSCAD uses: a square of side a grows to
+// (a + 2d)² − 4(3 − 2√2)d²).
 Profile offsetDelta(const Region& region, double delta, bool chamfer, double ellipseTolerance);
-// The convex hull of the regions: segments and arcs of their circles.
+// The convex hull of the regions: segments and arcs of their circles (an
+// empty profile for no regions, or for a hull without area).
 Profile hull(std::span<const RegionPtr> regions, double ellipseTolerance);
 
 }  // namespace csgray::detail

@@ -4,15 +4,14 @@
 // boundary: the points within d of an edge, measured along the edge's
 // normals (a strip beside a segment, an annular sector beside an arc, on
 // both sides: the side away from the offset is in the region, or outside
-// it, anyway), plus what each corner adds. A rounded offset adds a disc of
-// radius d at every corner, so that the band is every point within d of
-// the boundary: offset(r) = region ∪ band for r > 0, region − band for
-// r < 0. An offset by delta adds, at the corners that turn towards the
-// offset's side, the mitre (the wedge up to where the moved tangent lines
-// meet) or the chamfer (the mitre cut by the line at distance d from the
-// corner, perpendicular to the mitre's bisector: Clipper's square joins,
-// which OpenSCAD's chamfer uses). Where an arc meets a corner, its tangent
-// line there is what the mitre extends.
+// it, anyway), plus what each corner adds. A rounded offset adds the
+// sector of the disc of radius d about the corner that the strips miss, so
+// that the band is every point within d of the boundary: offset(r) =
+// region ∪ band for r > 0, region − band for r < 0. An offset by delta adds, at the corners that
+// turn towards the offset's side, the mitre (the wedge up to where the moved tangent lines meet) or
+// the chamfer (the mitre cut by the line at distance d from the corner, perpendicular to the
+// mitre's bisector: Clipper's square joins, which OpenSCAD's chamfer uses). Where an arc meets a
+// corner, its tangent line there is what the mitre extends.
 //
 // The strips' corners are rational points exactly on the circles they
 // meet (the tangent half-angle substitution gives rational points of a
@@ -42,6 +41,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
 dvec2 rightNormal(const dvec2& t) { return {t.y, -t.x}; }
+dvec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
 dvec2 toDouble(const ExactPoint& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
 
@@ -137,55 +137,91 @@ EdgeEnds addSegmentStrip(Band& band, const ProfileEdge& e) {
   return ends;
 }
 
-// The annular sector of the points within d of an arc along its radii
-// (a pie where d reaches the centre), in halves if the arc is a whole
-// circle, so that each piece is one simple loop.
-void addSector(Band& band, const ExactPoint& c, const FT& radius, double lo, double hi) {
+// The annulus of the points within d of a whole circle, in two halves so
+// that each piece is one simple loop: concentric circles, exactly.
+void addAnnulus(Band& band, const ExactPoint& c, const FT& radius, double start) {
   const FT outer = radius + FT(band.d), inner = radius - FT(band.d);
-  const ExactPoint p0 = pointOnCircle(c, outer, lo), p1 = pointOnCircle(c, outer, hi);
-  if (p0 == p1) return;
-  std::vector<CircleSegment> curves;
-  curves.emplace_back(PlaneKernel::Circle_2(c, outer * outer, CGAL::COUNTERCLOCKWISE), onePoint(p0),
-                      onePoint(p1));
-  if (inner > 0) {
-    const ExactPoint q0 = pointOnCircle(c, inner, lo), q1 = pointOnCircle(c, inner, hi);
-    curves.emplace_back(p1, q1);
-    curves.emplace_back(PlaneKernel::Circle_2(c, inner * inner, CGAL::CLOCKWISE), onePoint(q1),
-                        onePoint(q0));
-    curves.emplace_back(q0, p0);
-  } else {
-    curves.emplace_back(p1, c);
-    curves.emplace_back(c, p0);
+  for (const double lo : {start, start + kPi}) {
+    const double hi = lo + kPi;
+    const ExactPoint p0 = pointOnCircle(c, outer, lo), p1 = pointOnCircle(c, outer, hi);
+    std::vector<CircleSegment> curves;
+    curves.emplace_back(PlaneKernel::Circle_2(c, outer * outer, CGAL::COUNTERCLOCKWISE),
+                        onePoint(p0), onePoint(p1));
+    if (inner > 0) {
+      const ExactPoint q0 = pointOnCircle(c, inner, lo), q1 = pointOnCircle(c, inner, hi);
+      curves.emplace_back(p1, q1);
+      curves.emplace_back(PlaneKernel::Circle_2(c, inner * inner, CGAL::CLOCKWISE), onePoint(q1),
+                          onePoint(q0));
+      curves.emplace_back(q0, p0);
+    } else {
+      curves.emplace_back(p1, c);
+      curves.emplace_back(c, p0);
+    }
+    band.pieces.push_back(polygonOfCurves(curves));
   }
-  band.pieces.push_back(polygonOfCurves(curves));
 }
 
+// The annular sector of the points within d of an arc along its radii (a
+// pie where d reaches the centre). Its corners are on the discs of radius
+// d about the arc's ends exactly, so that a rounded offset's discs meet
+// them without slivers; its arcs are the circles through those corners
+// and the middle of the ideal ones.
 EdgeEnds addArcSector(Band& band, const ProfileEdge& e) {
   const double radius = std::sqrt(std::abs(glm::determinant(e.axes)));
   const double sweep = std::clamp(e.angle1 - e.angle0, -kTwoPi, kTwoPi);
-  const ExactPoint c = exactPoint(e.center);
-  const FT r(radius);
-  const double lo = std::min(e.angle0, e.angle0 + sweep), hi = std::max(e.angle0, e.angle0 + sweep);
-  if (hi - lo > kPi) {
-    addSector(band, c, r, lo, 0.5 * (lo + hi));
-    addSector(band, c, r, 0.5 * (lo + hi), hi);
-  } else {
-    addSector(band, c, r, lo, hi);
-  }
+  const double turn = sweep > 0.0 ? 1.0 : -1.0;
+  const double end = e.angle0 + sweep, middle = e.angle0 + 0.5 * sweep;
   // The tangent turns with the arc; the right normal of a counterclockwise
   // arc points away from the centre.
-  const double turn = sweep > 0.0 ? 1.0 : -1.0;
   const auto tangent = [&](double theta) {
     return turn * dvec2(-std::sin(theta), std::cos(theta));
   };
-  // A side that reaches past the centre ends there.
-  const FT in = CGAL::max(FT(0), r - turn * FT(band.d)),
-           out = CGAL::max(FT(0), r + turn * FT(band.d));
-  const double end = e.angle0 + sweep;
-  return {tangent(e.angle0),
-          tangent(end),
-          {pointOnCircle(c, in, e.angle0), pointOnCircle(c, out, e.angle0)},
-          {pointOnCircle(c, in, end), pointOnCircle(c, out, end)}};
+  const FT d(band.d);
+  const ExactPoint c = exactPoint(e.center);
+  if (std::abs(sweep) >= kTwoPi) {
+    addAnnulus(band, c, FT(radius), e.angle0);
+    const ExactPoint a = pointOnCircle(c, FT(radius) - d, e.angle0),
+                     b = pointOnCircle(c, FT(radius) + d, e.angle0);
+    return {tangent(e.angle0),
+            tangent(end),
+            {turn > 0 ? a : b, turn > 0 ? b : a},
+            {turn > 0 ? a : b, turn > 0 ? b : a}};
+  }
+  const ExactPoint from = exactPoint(e.from), to = exactPoint(e.to);
+  const ExactPoint startAway = pointOnCircle(from, d, e.angle0),
+                   startIn = pointOnCircle(from, d, e.angle0 + kPi);
+  const ExactPoint endAway = pointOnCircle(to, d, end), endIn = pointOnCircle(to, d, end + kPi);
+  const ExactPoint outerMiddle = exactPoint(e.center + (radius + band.d) * direction(middle));
+  // Counterclockwise for a counterclockwise arc: out along the far arc,
+  // back along the near one (or through the centre).
+  std::vector<CircleSegment> curves;
+  if (turn > 0.0) {
+    curves.emplace_back(startAway, outerMiddle, endAway);
+    if (radius > band.d) {
+      curves.emplace_back(endAway, endIn);
+      curves.emplace_back(endIn, exactPoint(e.center + (radius - band.d) * direction(middle)),
+                          startIn);
+      curves.emplace_back(startIn, startAway);
+    } else {
+      curves.emplace_back(endAway, c);
+      curves.emplace_back(c, startAway);
+    }
+  } else {
+    curves.emplace_back(endAway, outerMiddle, startAway);
+    if (radius > band.d) {
+      curves.emplace_back(startAway, startIn);
+      curves.emplace_back(startIn, exactPoint(e.center + (radius - band.d) * direction(middle)),
+                          endIn);
+      curves.emplace_back(endIn, endAway);
+    } else {
+      curves.emplace_back(startAway, c);
+      curves.emplace_back(c, endAway);
+    }
+  }
+  band.pieces.push_back(polygonOfCurves(curves));
+  // [0]: the left side, [1]: the right side.
+  if (turn > 0.0) return {tangent(e.angle0), tangent(end), {startIn, startAway}, {endIn, endAway}};
+  return {tangent(e.angle0), tangent(end), {startAway, startIn}, {endAway, endIn}};
 }
 
 EdgeEnds addEdgeBand(Band& band, const ProfileEdge& e) {
@@ -193,6 +229,43 @@ EdgeEnds addEdgeBand(Band& band, const ProfileEdge& e) {
 }
 
 enum class Corners { Round, Mitre, Chamfer };
+
+// Do two edges meet without a corner (an arc and its tangent)? Their
+// strips' ends then lie a rounding error apart, and which way the boundary
+// turns is noise: a disc of radius d about the point covers the seam, and
+// what it adds is within d of the boundary, in any offset (or out of any
+// inset) anyway.
+bool smooth(const EdgeEnds& in, const EdgeEnds& out) {
+  return glm::dot(in.endTangent, out.startTangent) > 0.0 &&
+         std::abs(cross(in.endTangent, out.startTangent)) <= 1e-12;
+}
+
+// The part of the disc of radius d about a corner that the strips miss:
+// the sector between the edges' normals on the side the boundary turns
+// towards. A point within d of the boundary whose nearest boundary point
+// is the corner is there; every other one is in the strip of the edge its
+// nearest point is on. The sector's tip is behind the corner, as the
+// wedges' are.
+void addCornerSector(Band& band, const dvec2& v, const EdgeEnds& in, const EdgeEnds& out) {
+  const bool left = cross(in.endTangent, out.startTangent) > 0.0;
+  const int side = left ? 1 : 0;  // a left turn opens on the right
+  const ExactPoint& p1 = in.endCorner[side];
+  const ExactPoint& p2 = out.startCorner[side];
+  if (p1 == p2) return;
+  const dvec2 n1 = rightNormal(in.endTangent), n2 = rightNormal(out.startTangent);
+  const double spread = glm::length(n1 + n2);
+  const dvec2 gap = spread > 1e-9 ? (left ? 1.0 : -1.0) * (n1 + n2) / spread : in.endTangent;
+  const ExactPoint tip = exactPoint(v - 0.5 * band.d * gap);
+  const FT d(band.d);
+  const PlaneKernel::Circle_2 circle(exactPoint(v), d * d, CGAL::COUNTERCLOCKWISE);
+  // Counterclockwise: the arc runs from p1 to p2 on a left turn, back on a
+  // right one.
+  const ExactPoint& a = left ? p1 : p2;
+  const ExactPoint& b = left ? p2 : p1;
+  band.pieces.push_back(
+      polygonOfCurves({CircleSegment(tip, a), CircleSegment(circle, onePoint(a), onePoint(b)),
+                       CircleSegment(b, tip)}));
+}
 
 // The wedge that fills the corner at v between an edge that ends there and
 // one that starts there, on the given side (+1 outer, -1 inner), if the
@@ -210,9 +283,17 @@ void addCornerWedge(Band& band, const dvec2& v, const EdgeEnds& in, const EdgeEn
   // Mitres of corners that nearly turn back reach far: cut them as
   // Clipper does past its mitre limit.
   constexpr double kMitreLimit = 1e6;
+  // The wedge's tip is not the corner but a point d/2 behind it, on the
+  // other side: its sides then cross the strips' ends instead of running
+  // along them a rounding error apart (which left needles), and what it
+  // adds there is within d of the corner, in the band anyway.
+  const double spread = glm::length(n1 + n2);
+  const dvec2 gap =
+      spread > 1e-9 ? double(side) * (n1 + n2) / spread : in.endTangent;  // the way the wedge opens
+  const ExactPoint tip = exactPoint(v - 0.5 * d * gap);
   if (corners == Corners::Mitre && 1.0 + c >= 2.0 / (kMitreLimit * kMitreLimit)) {
     const dvec2 mitre = v + side * d * (n1 + n2) / (1.0 + c);
-    addPolygon(band, {exactPoint(v), p1, exactPoint(mitre), p2});
+    addPolygon(band, {tip, p1, exactPoint(mitre), p2});
     return;
   }
   // The square cut at distance d from v: the moved lines reach it
@@ -220,7 +301,7 @@ void addCornerWedge(Band& band, const dvec2& v, const EdgeEnds& in, const EdgeEn
   const double reach = d * std::tan(0.25 * alpha);
   const dvec2 c1 = toDouble(p1) + reach * in.endTangent;
   const dvec2 c2 = toDouble(p2) - reach * out.startTangent;
-  addPolygon(band, {exactPoint(v), p1, exactPoint(c1), exactPoint(c2), p2});
+  addPolygon(band, {tip, p1, exactPoint(c1), exactPoint(c2), p2});
 }
 
 // The band of the boundary of an evaluated profile, on both sides of its
@@ -232,10 +313,13 @@ ArcPolygonSet boundaryBand(const Profile& boundary, double d, int side, Corners 
     ends.reserve(loop.edges.size());
     for (const ProfileEdge& e : loop.edges) ends.push_back(addEdgeBand(band, e));
     for (std::size_t i = 0; i < loop.edges.size(); ++i) {
+      if (loop.edges.size() == 1) break;  // a whole circle has no corner
       const std::size_t next = (i + 1) % loop.edges.size();
       const dvec2 v = loop.edges[i].to;
-      if (corners == Corners::Round)
+      if (smooth(ends[i], ends[next]))
         addDisc(band, v);
+      else if (corners == Corners::Round)
+        addCornerSector(band, v, ends[i], ends[next]);
       else
         addCornerWedge(band, v, ends[i], ends[next], side, corners);
     }

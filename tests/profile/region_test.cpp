@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
@@ -73,6 +74,26 @@ void expectSameContainment(const RegionPtr& region, const Profile& evaluated) {
   for (int i = 0; i < 4000; ++i) {
     const dvec2 p(x(random), y(random));
     ASSERT_EQ(region->contains(p), evaluated.contains(p)) << p.x << ", " << p.y;
+  }
+}
+
+TEST(Region, ATinyArcHasATinyCap) {
+  // A square whose top edge has a dent along a billionth of a radian of a
+  // circle (as a disc grazing a line leaves in a boolean): points well
+  // inside stay inside, whichever side of the arc's chord rounding puts
+  // them.
+  for (const double h : {1e-6, 1e-9, 1e-10}) {
+    const ProfileEdge dent =
+        ProfileEdge::arc({0.5, 1.3}, dmat2(0.3), -0.5 * kPi + h, -0.5 * kPi - h);
+    Profile p;
+    p.loops.push_back(
+        {{ProfileEdge::segment({0, 0}, {1, 0}), ProfileEdge::segment({1, 0}, {1, 1}),
+          ProfileEdge::segment({1, 1}, dent.from), dent, ProfileEdge::segment(dent.to, {0, 1}),
+          ProfileEdge::segment({0, 1}, {0, 0})}});
+    for (const dvec2 q : {dvec2(0.5, 0.5), dvec2(0.5, 0.99), dvec2(0.5, 0.9999), dvec2(0.2, 0.5),
+                          dvec2(0.45, 0.95)})
+      EXPECT_TRUE(p.contains(q)) << h << ": " << q.x << ", " << q.y;
+    EXPECT_FALSE(p.contains({0.5, 1.0001})) << h;
   }
 }
 
@@ -275,6 +296,27 @@ TEST(RegionOffset, RoundedSquareHasQuarterCircleCorners) {
   expectClosed(p);
 }
 
+TEST(RegionOffset, OffsetsOfArcsMeetTheirNeighboursCleanly) {
+  // Offsets of a rounded square: its quarter circles grow or shrink, and
+  // each stays one arc between two segments.
+  const Profile rounded = offsetRounded(*rect(0, 0, 2, 2), 0.3, kTolerance);
+  const RegionPtr r = Region::leaf(rounded);
+  const struct {
+    Profile p;
+    double radius;
+  } cases[] = {{offsetRounded(*r, 0.2, kTolerance), 0.5},
+               {offsetRounded(*r, -0.1, kTolerance), 0.2},
+               {offsetDelta(*r, 0.1, false, kTolerance), 0.4},
+               {offsetDelta(*r, -0.2, true, kTolerance), 0.1}};
+  for (const auto& [p, radius] : cases) {
+    ASSERT_EQ(p.loops.size(), 1u);
+    EXPECT_EQ(p.loops[0].edges.size(), 8u);
+    const double side = 2.0 + 2.0 * radius;
+    EXPECT_NEAR(area(p), side * side - (4.0 - kPi) * radius * radius, 1e-12);
+    expectClosed(p);
+  }
+}
+
 TEST(RegionOffset, InsetOfADiscIsTheSmallerDisc) {
   const Profile p = offsetRounded(*disc({1, 1}, 2.0), -0.5, kTolerance);
   ASSERT_EQ(p.loops.size(), 1u);
@@ -358,6 +400,90 @@ TEST(RegionOffset, OffsetsAgreeWithDistances) {
       EXPECT_EQ(grown.contains(p), outside < r) << p.x << ", " << p.y;
     if (std::abs(inside - r) > 1e-9)
       EXPECT_EQ(shrunk.contains(p), inside > r) << p.x << ", " << p.y;
+  }
+}
+
+TEST(RegionOffset, AGearKeepsOneLoopAndItsDistances) {
+  // 30 teeth of 8 points: many short edges and corners both ways, where
+  // strips and wedges of neighbours overlap.
+  std::vector<dvec2> points;
+  const int n = 240;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * kPi * i / n;
+    const double r = 10.0 + 0.8 * std::tanh(3.0 * std::sin(30.0 * t));
+    points.emplace_back(r * std::cos(t), r * std::sin(t));
+  }
+  const RegionPtr gear = polygon({points});
+  const auto distance = [&](const dvec2& p) {
+    double best = INFINITY;
+    for (int i = 0; i < n; ++i) {
+      const dvec2 a = points[i], ab = points[(i + 1) % n] - a;
+      const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+      best = std::min(best, glm::length(p - a - t * ab));
+    }
+    return best;
+  };
+  const double d = 0.3;
+  const Profile grown = offsetRounded(*gear, d, kTolerance),
+                shrunk = offsetRounded(*gear, -d, kTolerance);
+  const Profile mitreOut = offsetDelta(*gear, d, false, kTolerance),
+                mitreIn = offsetDelta(*gear, -d, false, kTolerance);
+  const Profile chamferOut = offsetDelta(*gear, d, true, kTolerance),
+                chamferIn = offsetDelta(*gear, -d, true, kTolerance);
+  for (const Profile* p : {&grown, &shrunk, &mitreOut, &mitreIn, &chamferOut, &chamferIn}) {
+    EXPECT_EQ(p->loops.size(), 1u);
+    expectClosed(*p);
+  }
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> u(-11.5, 11.5);
+  for (int i = 0; i < 3000; ++i) {
+    const dvec2 p(u(random), u(random));
+    const double e = distance(p);
+    if (std::abs(e - d) < 1e-9) continue;
+    const bool in = gear->contains(p);
+    EXPECT_EQ(grown.contains(p), in || e < d) << p.x << ", " << p.y;
+    EXPECT_EQ(shrunk.contains(p), in && e > d) << p.x << ", " << p.y;
+    // A mitre reaches further than the rounding, a chamfer between.
+    if (grown.contains(p)) EXPECT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
+    if (chamferOut.contains(p)) EXPECT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
+    if (mitreIn.contains(p)) EXPECT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
+    if (chamferIn.contains(p)) EXPECT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+  }
+}
+
+TEST(RegionOffset, GrownUnionsOfDiscsAndBoxesHoldWhatIsNear) {
+  // The distance to a union is the least distance to its parts: a point is
+  // in offset(r) exactly when some part is nearer than r.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> u(-2.0, 2.0), size(0.1, 1.0), grow(0.02, 0.6);
+  for (int round = 0; round < 12; ++round) {
+    std::vector<RegionPtr> parts;
+    std::vector<std::function<double(dvec2)>> distances;
+    for (int i = 0; i < 2 + round % 4; ++i) {
+      const dvec2 c(u(random), u(random));
+      const double s = size(random);
+      if (i % 2 == 0) {
+        parts.push_back(disc(c, s));
+        distances.push_back([=](dvec2 p) { return std::max(0.0, glm::length(p - c) - s); });
+      } else {
+        parts.push_back(rect(c.x, c.y, c.x + s, c.y + 0.7 * s));
+        distances.push_back(
+            [=](dvec2 p) { return glm::length(p - glm::clamp(p, c, c + dvec2(s, 0.7 * s))); });
+      }
+    }
+    const RegionPtr all = Region::boolean(Region::Op::Union, parts);
+    const double r = grow(random);
+    const Profile grown = offsetRounded(*all, r, kTolerance);
+    expectClosed(grown);
+    std::uniform_real_distribution<double> w(-3.5, 3.5);
+    for (int i = 0; i < 1500; ++i) {
+      const dvec2 p(w(random), w(random));
+      double e = INFINITY;
+      for (const auto& distance : distances) e = std::min(e, distance(p));
+      if (std::abs(e - r) < 1e-9) continue;
+      ASSERT_EQ(grown.contains(p), e < r)
+          << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+    }
   }
 }
 
