@@ -241,7 +241,13 @@ std::vector<std::vector<CircleSegment>> exactLoops(const Profile& profile,
     const auto addSegment = [&](const dvec2& a, const dvec2& b) {
       if (a != b) curves.emplace_back(exactPoint(a), exactPoint(b));
     };
-    for (const ProfileEdge& e : loop.edges) {
+    for (std::size_t i = 0; i < loop.edges.size(); ++i) {
+      // Each edge starts where the one before it ends: a loop built in
+      // doubles may miss that by a rounding error (an arc's end computed
+      // from its angle), which would leave the arrangement a gap and drop
+      // the loop.
+      ProfileEdge e = loop.edges[i];
+      e.from = loop.edges[i == 0 ? loop.edges.size() - 1 : i - 1].to;
       requireFinite(e);
       if (e.kind == ProfileEdge::Kind::Segment) {
         addSegment(e.from, e.to);

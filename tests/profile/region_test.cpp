@@ -106,6 +106,20 @@ TEST(Region, ASquareIsOneCounterclockwiseLoop) {
   expectClosed(p);
 }
 
+// A half disc whose arc's ends come from cos and sin (x = 6e-17, not 0)
+// and whose straight side runs along x = 0: the loop misses closing by a
+// rounding error, and is still one region.
+TEST(Region, ALoopThatMissesClosingByARoundingErrorIsKept) {
+  Profile half;
+  half.loops.push_back({{ProfileEdge::arc({0, 0}, dmat2(2.0), -kPi / 2, kPi / 2),
+                         ProfileEdge::segment({0, 2}, {0, -2})}});
+  ASSERT_NE(half.loops[0].edges[0].to.x, 0.0);  // the rounding error is there
+  const Profile p = evaluate(*Region::leaf(half), kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_NEAR(area(p), 2.0 * kPi, 1e-12);
+  expectClosed(p);
+}
+
 TEST(Region, ACircleStaysOneArc) {
   const Profile p = evaluate(*disc({1, 2}, 3), kTolerance);
   ASSERT_EQ(p.loops.size(), 1u);
