@@ -43,8 +43,17 @@ function axes() {
   return { forward, right, up: cross(right, forward) };
 }
 
+// An orthographic camera's rays start on a screen through the eye: it
+// stands back beyond the part, however far in the view is zoomed.
+function cameraEye() {
+  if (!view.ortho || !state || !state.bounds) return eye();
+  const { lo, hi } = state.bounds;
+  const reach = Math.hypot(...sub(hi, lo)) + Math.hypot(...sub(view.target, scale(add(lo, hi), 0.5)));
+  return add(view.target, scale(norm(sub(eye(), view.target)), view.distance + reach));
+}
+
 function cameraQuery() {
-  const e = eye(), u = up(), t = view.target;
+  const e = cameraEye(), u = up(), t = view.target;
   const numbers = [...e, ...t, ...u].map((x) => +x.toPrecision(17));
   return 'camera=' + numbers.join(',') +
     (view.ortho ? '&ortho=' + screenWidth().toPrecision(17) : '&fov=' + view.fov);
