@@ -16,7 +16,8 @@ CSGRAY     := $(BUILD)/cli/csgray
 # Debian 12 packages the build and the tests need.
 PACKAGES := build-essential cmake pkg-config \
             libcgal-dev libopenmesh-dev libglm-dev libopenimageio-dev \
-            liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev libzip-dev zlib1g-dev time
+            liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev libzip-dev zlib1g-dev time \
+            libcpp-httplib-dev
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 

@@ -35,4 +35,8 @@ Command checkCommand(CLI::App& app, ScriptArguments& script);
 // csgray info: the bounds and tree size of a part script.
 Command infoCommand(CLI::App& app, ScriptArguments& script);
 
+// csgray view: a web page that shows the part, renders it again as the
+// camera moves and reloads it when its files change (view/view_app.h).
+Command viewCommand(CLI::App& app, ScriptArguments& script);
+
 }  // namespace csgray::detail

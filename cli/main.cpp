@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
 
   ScriptArguments script;
   const Command commands[] = {renderCommand(app, script), exportCommand(app, script),
-                              checkCommand(app, script), infoCommand(app, script)};
+                              checkCommand(app, script), infoCommand(app, script),
+                              viewCommand(app, script)};
 
   try {
     app.parse(argc, argv);
@@ -79,9 +80,10 @@ int main(int argc, char** argv) {
     return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
     if (const char* name = unknownCommand(app, argc, argv))
-      return error("unknown command '" + std::string(name) +
-                       "'; the commands are render, export, check and info (see csgray --help)",
-                   2, true);
+      return error(
+          "unknown command '" + std::string(name) +
+              "'; the commands are render, export, check, info and view (see csgray --help)",
+          2, true);
     return error(std::string(e.what()) + " (see csgray --help)", 2, true);
   }
 

@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <regex>
 #include <stdexcept>
@@ -21,6 +23,7 @@
 #include "io/image_formats.h"
 #include "raytrace/ray_estimate.h"
 #include "raytrace/renderer.h"
+#include "view/file_watcher.h"
 
 namespace csgray::detail {
 
@@ -42,7 +45,7 @@ constexpr double kDefaultMaxRays = 1e11;
 struct RenderArguments {
   std::string output, size = "800x600";
   int threads = 0, samples = 1;
-  bool adaptive = false, stats = false;
+  bool adaptive = false, stats = false, watch = false;
   std::vector<std::string> aovs;
   double maxRays = kDefaultMaxRays;  // 0: no limit
 };
@@ -182,6 +185,61 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
   return 0;
 }
 
+// Renders, then again each time the script or a file it read changes,
+// until the process is ended. A failed render says why and waits for the
+// next change; the image stays as the last good render left it.
+int watchRender(const RenderArguments& arguments, const PartScript& script) {
+  if (script.runTimeout() > 0.0)
+    throw CLI::ValidationError("--watch", "renders until Ctrl-C; --timeout does not go with it");
+  PartScript part = script;
+  // The loaders note the files the script reads, to watch them with it.
+  auto files = std::make_shared<std::vector<std::string>>();
+  ScriptOptions& options = part.options();
+  if (options.loadImage)
+    options.loadImage = [files, load = options.loadImage](const std::string& path) {
+      files->push_back(path);
+      return load(path);
+    };
+  if (options.loadMesh)
+    options.loadMesh = [files, load = options.loadMesh](const std::string& path, bool repair,
+                                                        std::string& report) {
+      files->push_back(path);
+      return load(path, repair, report);
+    };
+  std::mutex mutex;
+  std::condition_variable wake;
+  bool changed = false;
+  FileWatcher watcher([&] {
+    std::lock_guard lock(mutex);
+    changed = true;
+    wake.notify_one();
+  });
+  std::vector<std::string> watched;
+  for (bool first = true;; first = false) {
+    files->assign(1, part.path());
+    try {
+      renderImage(arguments, part);
+      watched.clear();
+    } catch (const DefineError& e) {
+      if (first) throw;  // the command line's -D: as without --watch
+      std::fprintf(stderr, "csgray: error: %s\n", e.what());
+    } catch (const CLI::ValidationError&) {
+      throw;  // the options, not the script
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "csgray: error: %s\n", e.what());
+    }
+    // After a failure, the files the last good run read stay watched too.
+    watched.insert(watched.end(), files->begin(), files->end());
+    watcher.watch(watched);
+    if (first)
+      std::printf("csgray: watching %s for changes (Ctrl-C to stop)\n", part.path().c_str());
+    std::fflush(stdout);
+    std::unique_lock lock(mutex);
+    wake.wait(lock, [&] { return changed; });
+    changed = false;
+  }
+}
+
 }  // namespace
 
 Command renderCommand(CLI::App& app, ScriptArguments& script) {
@@ -214,8 +272,12 @@ Command renderCommand(CLI::App& app, ScriptArguments& script) {
                    "Refuse a render that could trace more rays than this (0: no limit)")
       ->check(rayCountRange)
       ->capture_default_str();
+  render->add_flag("--watch", arguments->watch,
+                   "Render again each time the script or a file it reads changes, until Ctrl-C");
   addScriptOptions(*render, script);
-  return {render, [arguments](const PartScript& part) { return renderImage(*arguments, part); }};
+  return {render, [arguments](const PartScript& part) {
+            return arguments->watch ? watchRender(*arguments, part) : renderImage(*arguments, part);
+          }};
 }
 
 }  // namespace csgray::detail

@@ -43,6 +43,12 @@ class PartScript {
   PartScript(const ScriptArguments& arguments, std::string command);
 
   const std::string& path() const { return path_; }
+  // What the script runs with: its -D, the loaders of meshes and images,
+  // the folders it may read (csgray view and render --watch run it
+  // themselves, again and again).
+  const ScriptOptions& options() const { return options_; }
+  ScriptOptions& options() { return options_; }
+  double runTimeout() const { return runTimeout_; }
   // Runs the script under the watchdog (cli/watchdog.h), so nothing may be
   // written meanwhile; it ends the process at --script-timeout or at the
   // end of --timeout, whichever comes first. Throws std::exception with a

@@ -1,8 +1,7 @@
 #include "script/script.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -10,43 +9,33 @@
 #include "io/input_file.h"
 #include "scene/value_checks.h"
 #include "script/api.h"
+#include "script/parameters.h"
 #include "script/sandbox.h"
 
 namespace csgray::detail {
 
 namespace {
 
-// -D values: numbers, true/false, or strings with optional quotes.
-void pushDefine(lua_State* L, const std::string& name, const std::string& value) {
-  if (value == "true" || value == "false") {
-    lua_pushboolean(L, value == "true");
-    return;
-  }
-  if (!value.empty()) {
-    char* end = nullptr;
-    errno = 0;
-    double number = std::strtod(value.c_str(), &end);
-    if (*end == '\0') {
-      // strtod's ERANGE is also set for a denormal such as 4.9e-324, which
-      // is finite and taken; "inf" and "nan" are written so; digits that
-      // overflow are too large, and those that underflow to 0 too small.
-      const std::string refused = "-D " + shownValue(name) + "=" + shownValue(value) + ": ";
-      if (!std::isfinite(number))
-        throw DefineError(refused +
-                          (value.find_first_of("iInN") != std::string::npos
-                               ? "not a finite number"
-                               : "out of range (numbers reach 1.8e308 either side of 0)"));
-      if (errno == ERANGE && number == 0.0)
-        throw DefineError(refused + "too close to 0 (the least number above 0 is 4.9e-324)");
-      lua_pushnumber(L, number);
+// A -D value as a global.
+void pushDefine(lua_State* L, const ParameterValue& value) {
+  switch (value.kind) {
+    case ParameterKind::Number:
+      lua_pushnumber(L, value.number);
       return;
-    }
+    case ParameterKind::Boolean:
+      lua_pushboolean(L, value.boolean);
+      return;
+    case ParameterKind::String:
+      lua_pushlstring(L, value.text.data(), value.text.size());
+      return;
+    case ParameterKind::Vector:
+      lua_createtable(L, int(value.vector.size()), 0);
+      for (std::size_t i = 0; i < value.vector.size(); ++i) {
+        lua_pushnumber(L, value.vector[i]);
+        lua_rawseti(L, -2, lua_Integer(i + 1));
+      }
+      return;
   }
-  std::string text = value;
-  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') &&
-      text.back() == text.front())
-    text = text.substr(1, text.size() - 2);
-  lua_pushlstring(L, text.data(), text.size());
 }
 
 constexpr std::size_t kMaxScriptBytes = std::size_t{16} << 20;
@@ -71,17 +60,26 @@ Scene runScript(const std::string& source, const std::string& chunkName,
   Sandbox sandbox(options.limits);
   lua_State* L = sandbox.state();
   registerScriptApi(L, options);
-  for (const auto& [name, value] : options.defines) {
+  // Annotated globals (script/parameters.h): a -D is checked against its
+  // annotation, and replaces the default of a plain `name = value`.
+  const std::vector<Parameter> parameters = findParameters(source, chunkName);
+  std::vector<std::string> defined;
+  for (const auto& [name, text] : options.defines) {
     const std::string shown = shownValue(name);
     if (!isIdentifier(name))
       throw DefineError("-D " + shown + "=...: '" + shown + "' is not a valid Lua name");
     bool builtIn = lua_getglobal(L, name.c_str()) != LUA_TNIL;
     lua_pop(L, 1);
     if (builtIn) throw DefineError("-D " + shown + "=...: '" + shown + "' is a built-in name");
-    pushDefine(L, name, value);
+    auto parameter = std::find_if(parameters.begin(), parameters.end(),
+                                  [&](const Parameter& p) { return p.name == name; });
+    pushDefine(L, parameter == parameters.end()
+                      ? plainDefineValue(name, text)
+                      : parameterDefineValue(*parameter, text, chunkName));
     lua_setglobal(L, name.c_str());
+    defined.push_back(name);
   }
-  int results = sandbox.run(source, chunkName);
+  int results = sandbox.run(withDefinedDefaults(source, parameters, defined), chunkName);
   if (results == 0)
     throw ScriptError(chunkName +
                       ": the script returned nothing; end it with 'return <solid>' or "
@@ -93,7 +91,11 @@ Scene runScript(const std::string& source, const std::string& chunkName,
   }
 }
 
-Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
+namespace {
+
+// The text of a script file, without a byte-order mark and with a first
+// "#!" line kept empty. Throws ScriptError.
+std::string readScriptText(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw ScriptError(path + ": is a folder, not a script");
@@ -113,10 +115,21 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
   if (text.starts_with("#"))
     text.erase(0, text.find('\n') == std::string::npos ? text.size() : text.find('\n'));
+  return text;
+}
+
+}  // namespace
+
+Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
+  const std::string text = readScriptText(path);
   ScriptOptions withFolder = options;
   withFolder.folder = std::filesystem::path(path).parent_path().string();
   if (withFolder.folder.empty()) withFolder.folder = ".";
   return runScript(text, path, withFolder);
+}
+
+std::vector<Parameter> scriptFileParameters(const std::string& path) {
+  return findParameters(readScriptText(path), path);
 }
 
 }  // namespace csgray::detail

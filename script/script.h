@@ -11,6 +11,7 @@
 
 #include "check/check_report.h"
 #include "scene/scene.h"
+#include "script/parameters.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
@@ -68,5 +69,8 @@ Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
 // Runs source text; chunkName is used in messages in place of a file name.
 Scene runScript(const std::string& source, const std::string& chunkName,
                 const ScriptOptions& options = {});
+// The annotated parameters of the script file at path (script/parameters.h),
+// for a customizer. Throws ScriptError.
+std::vector<Parameter> scriptFileParameters(const std::string& path);
 
 }  // namespace csgray::detail

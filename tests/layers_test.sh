@@ -9,7 +9,7 @@ set -u
 cd "$1" || exit 2
 
 # Bottom to top.
-layers=(engine tessellation profile primitives scene raytrace io export meshio check script api cli)
+layers=(engine tessellation profile primitives scene raytrace io export meshio check script view api cli)
 rank() {
   local i
   for i in "${!layers[@]}"; do [[ ${layers[$i]} == "$1" ]] && echo "$i" && return; done
@@ -50,6 +50,7 @@ check_dependency 'CGAL/' '^(export|profile)/cgal/' CGAL
 check_dependency 'OpenMesh/|lib3mf' '^meshio/' 'OpenMesh or lib3MF'
 check_dependency 'OpenImageIO/' '^io/image_formats_module\.cpp$' OpenImageIO
 check_dependency 'lua\.|lauxlib|lualib' '^script/' Lua
+check_dependency 'httplib' '^view/view_server\.cpp$' cpp-httplib
 
 # The public headers: each other and the standard library, nothing else.
 while IFS= read -r line; do

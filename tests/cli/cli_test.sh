@@ -583,6 +583,45 @@ expect_exit 2 "threads in hexadecimal" "$work/out.png" render "$work/part.lua" -
 # command-line error that says why.
 if "$csgray" info "$work/param.lua" -D radius=4.9e-324 >"$work/stdout" 2>"$work/stderr" &&
    grep -q '4.94066e-324' "$work/stdout"; then pass; else fail "-D radius=4.9e-324"; cat "$work/stderr"; fi
+# -D takes vectors, and is checked against a parameter's annotation
+# (docs/view.md) on every command.
+printf 'return box{size=size}\n' > "$work/vector.lua"
+if "$csgray" info "$work/vector.lua" -D 'size={90,60,30}' >"$work/stdout" 2>"$work/stderr" &&
+   grep -q 'bounds: *\[0, 0, 0\] \.\. \[90, 60, 30\]' "$work/stdout"; then pass; else
+  fail "-D size={90,60,30}"; cat "$work/stderr"; fi
+printf 'width = 40 -- [10:100] the width\nreturn box{size={width, 1, 1}}\n' > "$work/annotated.lua"
+if "$csgray" info "$work/annotated.lua" -D width=25 >"$work/stdout" 2>"$work/stderr" &&
+   grep -q '\[25, 1, 1\]' "$work/stdout"; then pass; else fail "-D replaces an annotated default"; cat "$work/stderr"; fi
+for command in render export check info; do
+  output=()
+  [ $command = render ] && output=(-o "$work/out.png")
+  [ $command = export ] && output=(-o "$work/out.stl")
+  expect_exit 2 "annotated define ($command)" "" $command "$work/annotated.lua" "${output[@]}" -D width=500
+  expect_in_stderr "annotated define ($command)" "-D width=500: width must be from 10 to 100 ($work/annotated.lua:1)"
+done
+# render --watch renders again when the script is saved (by a rename, as
+# editors do), says why a broken save fails, and renders the fixed one.
+printf 'return box(1)\n' > "$work/watched.lua"
+"$csgray" render "$work/watched.lua" -o "$work/watched.png" --size 16x16 --watch >"$work/watch.out" 2>"$work/watch.err" &
+watcher=$!
+wait_for() {  # wait_for FILE PATTERN COUNT: up to 20 s for COUNT lines matching
+  for _ in $(seq 200); do
+    [ "$(grep -c -- "$2" "$1")" -ge "$3" ] && return 0
+    sleep 0.1
+  done
+  return 1
+}
+if wait_for "$work/watch.out" "watching" 1; then
+  printf 'return box(\n' > "$work/watched.tmp" && mv "$work/watched.tmp" "$work/watched.lua"
+  wait_for "$work/watch.err" "watched.lua:2:" 1 && pass || fail "render --watch: no error for a broken save"
+  printf 'return sphere(1)\n' > "$work/watched.tmp" && mv "$work/watched.tmp" "$work/watched.lua"
+  wait_for "$work/watch.out" "wrote $work/watched.png" 2 && pass || fail "render --watch: no second render"
+else
+  fail "render --watch did not start"; cat "$work/watch.err"
+fi
+kill "$watcher"; wait "$watcher" 2>/dev/null
+expect_exit 2 "view with --timeout" "" view "$work/annotated.lua" --timeout 5
+expect_exit 2 "render --watch with --timeout" "" render "$work/annotated.lua" -o "$work/out.png" --watch --timeout 5
 expect_exit 2 "define past the range of a double" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
 expect_in_stderr "define past the range of a double" "-D radius=1e999: out of range"
 expect_exit 2 "define that underflows to 0" "" info "$work/param.lua" -D radius=1e-400
@@ -606,7 +645,7 @@ expect_exit 2 "huge unknown option" "" info "$work/param.lua" "--$huge"
 short_stderr "huge unknown option"
 # An unknown command is named.
 expect_exit 2 "unknown command" "" rendr "$work/part.lua" -o "$work/out.png"
-expect_in_stderr "unknown command" "csgray: error: unknown command 'rendr'; the commands are render, export, check and info"
+expect_in_stderr "unknown command" "csgray: error: unknown command 'rendr'; the commands are render, export, check, info and view"
 expect_exit 2 "huge unknown command" "" "$huge"
 short_stderr "huge unknown command"
 

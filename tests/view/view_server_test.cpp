@@ -1,0 +1,271 @@
+// csgray view's server, in this process on 127.0.0.1, asked as the page
+// asks: frames as PNG files of the size asked for, what lies under a
+// pixel, reloads when the script is written, a broken script's error with
+// its line while the last good scene stays, the customizer's values, and
+// requests it refuses.
+#include "view/view_server.h"
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "raytrace/renderer.h"
+#include "view/file_watcher.h"
+#include "view/view_frame.h"
+#include "view/view_routes.h"
+#include "view/view_session.h"
+
+namespace csgray::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A script in a folder of its own, the session and watcher as `csgray
+// view` makes them, and a client of the server.
+class ViewServerTest : public testing::Test {
+ protected:
+  void start(const std::string& source) {
+    folder_ =
+        fs::temp_directory_path() / ("csgray_view_test_" + std::to_string(::getpid()) + "_" +
+                                     testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(folder_);
+    script_ = (folder_ / "part.lua").string();
+    write(source);
+    session_ = std::make_unique<ViewSession>(script_, ScriptOptions{}, 2);
+    watcher_ = std::make_unique<FileWatcher>(
+        [this] {
+          session_->reload();
+          watcher_->watch(session_->state().files);
+        },
+        std::chrono::milliseconds(20));
+    watcher_->watch(session_->state().files);
+    routes_ = std::make_unique<ViewRoutes>(*session_);
+    server_ = makeViewServer(*routes_, "127.0.0.1", 0);
+    server_->start();
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->port());
+    client_->set_read_timeout(60, 0);
+  }
+  void TearDown() override {
+    client_.reset();
+    server_.reset();
+    routes_.reset();
+    watcher_.reset();
+    session_.reset();
+    fs::remove_all(folder_);
+  }
+  // Written as editors do: a new file renamed over the old one.
+  void write(const std::string& source) {
+    const fs::path temporary = folder_ / ".part.lua.swp";
+    std::ofstream(temporary) << source;
+    fs::rename(temporary, script_);
+  }
+  std::string get(const std::string& path, int status = 200) {
+    auto response = client_->Get(path.c_str());
+    EXPECT_TRUE(response) << path;
+    if (!response) return {};
+    EXPECT_EQ(response->status, status) << path << ": " << response->body;
+    return response->body;
+  }
+  // The state once a run after `version` is done.
+  std::string waitAfter(std::uint64_t version) {
+    return get("/wait?version=" + std::to_string(version));
+  }
+
+  fs::path folder_;
+  std::string script_;
+  std::unique_ptr<ViewSession> session_;
+  std::unique_ptr<FileWatcher> watcher_;
+  std::unique_ptr<ViewRoutes> routes_;
+  std::unique_ptr<HttpServer> server_;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+// The width and height of a PNG file's IHDR chunk.
+std::pair<int, int> pngSize(const std::string& png) {
+  EXPECT_GE(png.size(), 24u);
+  EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  auto be = [&](std::size_t at) {
+    return int((std::uint8_t(png[at]) << 24) | (std::uint8_t(png[at + 1]) << 16) |
+               (std::uint8_t(png[at + 2]) << 8) | std::uint8_t(png[at + 3]));
+  };
+  return {be(16), be(20)};
+}
+
+const std::string kFront = "camera=0,-50,0,0,0,0,0,0,1";
+
+TEST_F(ViewServerTest, FramesArePngFilesOfThePassSize) {
+  start("return box{size={10, 10, 10}, center=true}\n");
+  EXPECT_EQ(pngSize(get("/frame?size=64x48&pass=1")), std::make_pair(64, 48));
+  EXPECT_EQ(pngSize(get("/frame?size=64x48&pass=0")), std::make_pair(16, 12));
+  EXPECT_EQ(pngSize(get("/frame?size=64x48&pass=2&" + kFront + "&fov=30")), std::make_pair(64, 48));
+  EXPECT_EQ(pngSize(get("/frame?size=30x20&" + kFront + "&ortho=40")), std::make_pair(30, 20));
+  // Another camera, another picture.
+  EXPECT_NE(get("/frame?size=32x32&" + kFront + "&fov=45"),
+            get("/frame?size=32x32&camera=50,0,50,0,0,0,0,0,1&fov=45"));
+  EXPECT_NE(get("/").find("<canvas"), std::string::npos);
+  EXPECT_NE(get("/view.js").find("/frame?"), std::string::npos);
+}
+
+TEST_F(ViewServerTest, PickNamesThePointThePrimitiveAndItsLine) {
+  start(
+      "local base = box{size={10, 10, 10}, center=true}\n"
+      "return base - sphere{r=2}:translate(0, -5, 0)\n");
+  // Through the centre of the front face: into the sphere's dent, 2 deep.
+  std::string hit = get("/pick?size=101x101&" + kFront + "&fov=30&x=50.5&y=50.5");
+  EXPECT_NE(hit.find("\"hit\":true"), std::string::npos) << hit;
+  EXPECT_NE(hit.find("\"point\":[0,-3,0]"), std::string::npos) << hit;
+  EXPECT_NE(hit.find("\"kind\":\"sphere\""), std::string::npos) << hit;
+  EXPECT_NE(hit.find("part.lua:2"), std::string::npos) << hit;
+  // Beside the dent, on the box's face.
+  std::string face = get("/pick?size=101x101&" + kFront + "&ortho=20&x=50.5&y=35.5");
+  EXPECT_NE(face.find("\"kind\":\"box\""), std::string::npos) << face;
+  EXPECT_NE(face.find("part.lua:1"), std::string::npos) << face;
+  EXPECT_NE(face.find("\"normal\":[0,-1,0]"), std::string::npos) << face;
+  EXPECT_EQ(get("/pick?size=101x101&" + kFront + "&ortho=20&x=1&y=1"), "{\"hit\":false}");
+}
+
+TEST_F(ViewServerTest, ReloadsWhenTheScriptIsWrittenAndKeepsTheLastGoodSceneOnAnError) {
+  start("return box{size={10, 10, 10}}\n");
+  std::string state = get("/scene");
+  EXPECT_NE(state.find("\"hi\":[10,10,10]"), std::string::npos) << state;
+  const std::uint64_t first = session_->state().version;
+  write("return sphere{r=3}\n");
+  state = waitAfter(first);
+  EXPECT_NE(state.find("\"lo\":[-3,-3,-3]"), std::string::npos) << state;
+  EXPECT_NE(state.find("\"error\":\"\""), std::string::npos) << state;
+  const std::uint64_t second = session_->state().version;
+  write("local r = 3\nreturn sphere{r=r, h=2}\n");
+  state = waitAfter(second);
+  EXPECT_NE(state.find("part.lua:2:"), std::string::npos) << state;
+  // The sphere is still what the page shows, and renders.
+  EXPECT_NE(state.find("\"lo\":[-3,-3,-3]"), std::string::npos) << state;
+  EXPECT_EQ(pngSize(get("/frame?size=20x10")), std::make_pair(20, 10));
+}
+
+TEST(ViewSession, WatchesTheFilesTheScriptReads) {
+  const fs::path folder =
+      fs::temp_directory_path() / ("csgray_view_files_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / "part.lua") << "local t = image_texture{file='wood.png'}\nreturn box(1)\n";
+  std::ofstream(folder / "wood.png") << "x";
+  // The loader stands in for the command line's: the session notes the
+  // names it is given.
+  ScriptOptions options;
+  options.loadImage = [](const std::string&) { return TextureImage(); };
+  ViewSession session((folder / "part.lua").string(), options, 1);
+  const std::vector<std::string> files = session.state().files;
+  ASSERT_EQ(files.size(), 2u) << session.state().error;
+  EXPECT_NE(files[1].find("wood.png"), std::string::npos);
+  std::atomic<int> changes = 0;
+  FileWatcher watcher([&] { ++changes; }, std::chrono::milliseconds(20));
+  watcher.watch(files);
+  std::ofstream(folder / "other.txt") << "not watched";
+  std::ofstream(folder / "wood.png") << "y";
+  for (int i = 0; i < 500 && changes == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(changes, 1);
+  fs::remove_all(folder);
+}
+
+TEST_F(ViewServerTest, CustomizerValuesRunTheScriptAgain) {
+  start(
+      "width = 40 -- [10:100] the width\n"
+      "size = {1, 2, 3} -- [1:10]\n"
+      "return box{size={width, size[2], size[3]}}\n");
+  std::string state = get("/scene");
+  EXPECT_NE(state.find("{\"name\":\"width\",\"line\":1,\"kind\":\"number\",\"value\":40,"
+                       "\"default\":40,\"min\":10,\"max\":100,\"step\":0,"
+                       "\"description\":\"the width\"}"),
+            std::string::npos)
+      << state;
+  auto post = [&](const std::string& query) { return client_->Post(query.c_str()); };
+  auto response = post("/define?name=width&value=20");
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 200);
+  EXPECT_NE(response->body.find("\"hi\":[20,2,3]"), std::string::npos) << response->body;
+  EXPECT_NE(response->body.find("\"value\":20"), std::string::npos) << response->body;
+  response = post("/define?name=size&value=%7B1%2C5%2C7%7D");
+  EXPECT_NE(response->body.find("\"hi\":[20,5,7]"), std::string::npos) << response->body;
+  // Refused: nothing changes.
+  response = post("/define?name=width&value=500");
+  EXPECT_EQ(response->status, 400);
+  EXPECT_EQ(response->body, "-D width=500: width must be from 10 to 100 (" + script_ + ":1)\n");
+  EXPECT_NE(get("/scene").find("\"hi\":[20,5,7]"), std::string::npos);
+  // Without a value: the script's default again.
+  response = post("/define?name=width");
+  EXPECT_NE(response->body.find("\"hi\":[40,5,7]"), std::string::npos) << response->body;
+}
+
+TEST_F(ViewServerTest, RefusesWhatItCannotTakeWithOneLine) {
+  start("return box(1)\n");
+  EXPECT_EQ(get("/frame?size=abc", 400), "size must be WIDTHxHEIGHT, e.g. 800x600\n");
+  EXPECT_EQ(get("/frame?size=99999x2", 400), "size must be 1 to 4096 per side\n");
+  EXPECT_EQ(get("/frame?camera=1,2,3", 400), "camera must be 9 numbers: eye, target and up\n");
+  EXPECT_EQ(get("/frame?camera=0,0,0,0,0,0,0,0,1", 400),
+            "camera: eye and look_at are the same point\n");
+  EXPECT_EQ(get("/frame?camera=0,-5,0,0,0,0,0,-1,0", 400),
+            "camera: up must not be parallel to the view direction\n");
+  EXPECT_EQ(get("/frame?pass=7", 400), "pass must be 0, 1 or 2\n");
+  EXPECT_EQ(get("/frame?" + kFront + "&fov=200", 400), "fov must be between 0 and 180 degrees\n");
+  EXPECT_EQ(get("/frame?size=1x1&size=2x2", 400), "size is given twice\n");
+  EXPECT_EQ(get("/pick?size=10x10&y=1", 400), "x must be given once\n");
+  EXPECT_EQ(get("/pick?size=10x10&x=20&y=1", 400), "x and y must be within the frame's size\n");
+  EXPECT_EQ(get("/wait?version=x", 400), "version must be a number\n");
+  EXPECT_EQ(get("/nothing", 404), "no such page: /nothing\n");
+  auto response = client_->Post("/define");
+  EXPECT_EQ(response->status, 400);
+}
+
+TEST_F(ViewServerTest, AnswersOnlyItsOwnAddress) {
+  start("return box(1)\n");
+  httplib::Headers rebound = {{"Host", "attacker.example:" + std::to_string(server_->port())}};
+  auto response = client_->Get("/scene", rebound);
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 403);
+  httplib::Headers crossSite = {{"Origin", "http://attacker.example"}};
+  response = client_->Post("/define?name=x&value=1", crossSite, "", "text/plain");
+  EXPECT_EQ(response->status, 403);
+  httplib::Headers local = {{"Host", "localhost:" + std::to_string(server_->port())}};
+  EXPECT_EQ(client_->Get("/scene", local)->status, 200);
+  EXPECT_EQ(server_->url(), "http://127.0.0.1:" + std::to_string(server_->port()) + "/");
+  EXPECT_TRUE(isLoopback("127.0.0.1"));
+  EXPECT_TRUE(isLoopback("::1"));
+  EXPECT_TRUE(isLoopback("localhost"));
+  EXPECT_FALSE(isLoopback("0.0.0.0"));
+  EXPECT_FALSE(isLoopback("192.168.1.2"));
+}
+
+TEST(ViewSession, ANewerFrameCancelsTheOneInProgress) {
+  const fs::path script =
+      fs::temp_directory_path() / ("csgray_view_cancel_" + std::to_string(::getpid()) + ".lua");
+  std::ofstream(script)
+      << "local s = sphere(1)\nfor i = 1, 40 do s = s + sphere(1):translate(i * 0.1, 0, 0) end\n"
+         "return s\n";
+  ViewSession session(script.string(), {}, 1);
+  FrameRequest large;
+  large.width = large.height = 4096;
+  large.pass = 2;
+  std::atomic<bool> cancelled = false;
+  std::thread slow([&] {
+    try {
+      session.frame(large);
+    } catch (const RenderCancelled&) {
+      cancelled = true;
+    }
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  FrameRequest small;
+  small.width = small.height = 8;
+  EXPECT_FALSE(session.frame(small).empty());
+  slow.join();
+  EXPECT_TRUE(cancelled);
+  fs::remove(script);
+}
+
+}  // namespace
+}  // namespace csgray::detail

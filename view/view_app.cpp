@@ -1,0 +1,58 @@
+#include "view/view_app.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <thread>
+
+#include "view/file_watcher.h"
+#include "view/view_routes.h"
+#include "view/view_session.h"
+
+extern char** environ;
+
+namespace csgray::detail {
+
+namespace {
+
+// The page in the user's browser, by xdg-open; a note when there is none.
+void openBrowser(const std::string& url) {
+  const char* argv[] = {"xdg-open", url.c_str(), nullptr};
+  pid_t pid;
+  if (posix_spawnp(&pid, "xdg-open", nullptr, nullptr, const_cast<char* const*>(argv), environ) !=
+      0) {
+    std::fprintf(stderr, "csgray: cannot start xdg-open; open %s in a browser\n", url.c_str());
+    return;
+  }
+  // xdg-open returns once the browser has it; not waited for, it would
+  // stay a zombie until then.
+  std::thread([pid] { waitpid(pid, nullptr, 0); }).detach();
+}
+
+}  // namespace
+
+int serveView(const ViewOptions& options) {
+  ViewSession session(options.script, options.scriptOptions, options.threads);
+  FileWatcher watcher([&] {
+    session.reload();
+    watcher.watch(session.state().files);
+  });
+  watcher.watch(session.state().files);
+  ViewRoutes routes(session);
+  const std::unique_ptr<HttpServer> server =
+      options.makeServer(routes, options.address, options.port);
+  if (!isLoopback(options.address))
+    std::fprintf(stderr,
+                 "csgray: warning: listening on %s: other machines on the network can see this "
+                 "part and set its parameters\n",
+                 options.address.c_str());
+  std::printf("csgray: viewing %s at %s (Ctrl-C to stop)\n", options.script.c_str(),
+              server->url().c_str());
+  std::fflush(stdout);
+  if (options.open) openBrowser(server->url());
+  server->run();
+  return 0;
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,31 @@
+// `csgray view` as a whole: the session, the file watcher that reloads it,
+// and the server, until the process is ended (Ctrl-C).
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "script/script.h"
+#include "view/view_service.h"
+
+namespace csgray::detail {
+
+struct ViewOptions {
+  std::string script;
+  ScriptOptions scriptOptions;  // its -D are the customizer's first values
+  std::string address = "127.0.0.1";
+  int port = 0;       // 0: a free one
+  bool open = false;  // open the page in the browser (xdg-open)
+  int threads = 0;    // 0: one per core
+  // Makes the web server (makeViewServer of view_server.h, which the
+  // command line loads from a module).
+  std::function<std::unique_ptr<HttpServer>(ViewService&, const std::string& address, int port)>
+      makeServer;
+};
+
+// Serves the view; returns only when it cannot start (a port in use: throws
+// std::runtime_error; a -D the script refuses: DefineError). Prints the
+// page's address, and a warning when it is reachable from other machines.
+int serveView(const ViewOptions& options);
+
+}  // namespace csgray::detail

@@ -1,0 +1,91 @@
+#include "view/view_frame.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+#include <stdexcept>
+#include <vector>
+
+#include "scene/camera.h"
+
+namespace csgray::detail {
+
+namespace {
+
+constexpr int kMaxSide = 4096;
+
+// The one value of a parameter, or nothing; twice is an error.
+std::optional<std::string> single(const std::multimap<std::string, std::string>& query,
+                                  const std::string& key) {
+  auto [first, last] = query.equal_range(key);
+  if (first == last) return std::nullopt;
+  if (std::next(first) != last) throw std::invalid_argument(key + " is given twice");
+  return first->second;
+}
+
+double finiteNumber(const std::string& text, const std::string& key) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+    throw std::invalid_argument(key + " must be a finite number");
+  return value;
+}
+
+}  // namespace
+
+int FrameRequest::passWidth() const { return pass == 0 ? (width + 3) / 4 : width; }
+int FrameRequest::passHeight() const { return pass == 0 ? (height + 3) / 4 : height; }
+
+FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& query) {
+  FrameRequest request;
+  if (auto size = single(query, "size")) {
+    std::smatch m;
+    if (!std::regex_match(*size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+      throw std::invalid_argument("size must be WIDTHxHEIGHT, e.g. 800x600");
+    request.width = std::stoi(m[1]);
+    request.height = std::stoi(m[2]);
+    if (request.width < 1 || request.height < 1 || request.width > kMaxSide ||
+        request.height > kMaxSide)
+      throw std::invalid_argument("size must be 1 to " + std::to_string(kMaxSide) + " per side");
+  }
+  if (auto pass = single(query, "pass")) {
+    if (*pass != "0" && *pass != "1" && *pass != "2")
+      throw std::invalid_argument("pass must be 0, 1 or 2");
+    request.pass = (*pass)[0] - '0';
+  }
+  const auto fov = single(query, "fov"), ortho = single(query, "ortho");
+  if (fov && ortho) throw std::invalid_argument("give fov or ortho, not both");
+  if (auto camera = single(query, "camera")) {
+    std::vector<double> numbers;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = camera->find(',', start);
+      numbers.push_back(finiteNumber(camera->substr(start, comma - start), "camera"));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (numbers.size() != 9)
+      throw std::invalid_argument("camera must be 9 numbers: eye, target and up");
+    CameraSpec spec;
+    spec.eye = {numbers[0], numbers[1], numbers[2]};
+    spec.lookAt = {numbers[3], numbers[4], numbers[5]};
+    spec.up = {numbers[6], numbers[7], numbers[8]};
+    std::optional<double> width;
+    if (fov) {
+      spec.fovDegrees = finiteNumber(*fov, "fov");
+      if (!(spec.fovDegrees > 0.0 && spec.fovDegrees < 180.0))
+        throw std::invalid_argument("fov must be between 0 and 180 degrees");
+    }
+    if (ortho) {
+      spec.orthographic = true;
+      width = finiteNumber(*ortho, "ortho");
+      if (!(*width > 0.0)) throw std::invalid_argument("ortho must be a width above 0");
+    }
+    request.camera = checkedCamera(spec, width);  // throws for a degenerate camera
+  } else if (fov || ortho) {
+    throw std::invalid_argument("fov and ortho need a camera");
+  }
+  return request;
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,120 @@
+#include "view/view_server.h"
+
+#include <httplib.h>
+
+#include <chrono>
+#include <thread>
+
+#include "view/page_assets.h"
+
+namespace csgray::detail {
+
+namespace {
+
+void reply(httplib::Response& response, int status, const std::string& line) {
+  response.status = status;
+  response.set_content(line + "\n", "text/plain; charset=utf-8");
+}
+
+class ViewServer final : public HttpServer {
+ public:
+  ViewServer(ViewService& service, const std::string& address, int port)
+      : service_(service), address_(address) {
+    // Frames, the long poll, picks and the page's own files at once; a
+    // browser keeps a few connections open.
+    server_.new_task_queue = [] { return new httplib::ThreadPool(16); };
+    server_.set_pre_routing_handler(
+        [this](const httplib::Request& request, httplib::Response& response) {
+          return refused(request, response) ? httplib::Server::HandlerResponse::Handled
+                                            : httplib::Server::HandlerResponse::Unhandled;
+        });
+    for (const PageAsset& asset : pageAssets())
+      server_.Get(asset.path == "/index.html" ? "/" : std::string(asset.path),
+                  [asset](const httplib::Request&, httplib::Response& response) {
+                    response.set_header("Cache-Control", "no-store");
+                    response.set_content(asset.body.data(), asset.body.size(), asset.type.data());
+                  });
+    for (const char* path : {"/scene", "/wait", "/frame", "/pick"})
+      server_.Get(path, [this](const httplib::Request& request, httplib::Response& response) {
+        pass("GET", request, response);
+      });
+    for (const char* path : {"/define", "/reload"})
+      server_.Post(path, [this](const httplib::Request& request, httplib::Response& response) {
+        pass("POST", request, response);
+      });
+    server_.set_exception_handler(
+        [](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
+          reply(response, 500, "the server failed on this request");
+        });
+    server_.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
+      if (response.body.empty())
+        reply(response, response.status,
+              response.status == 404 ? "no such page: " + request.path : "bad request");
+    });
+    port_ = port == 0 ? server_.bind_to_any_port(address)
+                      : (server_.bind_to_port(address, port) ? port : -1);
+    if (port_ <= 0)
+      throw std::runtime_error("cannot listen on " + address + ":" + std::to_string(port) +
+                               (port == 0 ? "" : " (is the port in use?)"));
+  }
+
+  ~ViewServer() override {
+    stop();
+    if (thread_.joinable()) thread_.join();
+  }
+
+  int port() const override { return port_; }
+  std::string url() const override {
+    const std::string host =
+        address_.find(':') != std::string::npos ? "[" + address_ + "]" : address_;
+    return "http://" + host + ":" + std::to_string(port_) + "/";
+  }
+  void run() override { server_.listen_after_bind(); }
+  void start() override {
+    thread_ = std::thread([this] { run(); });
+    while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  void stop() override {
+    service_.shutdown();
+    server_.stop();
+  }
+
+ private:
+  // Another site's page, or a name that rebinds to this machine.
+  bool refused(const httplib::Request& request, httplib::Response& response) const {
+    const std::string host = request.get_header_value("Host");
+    const std::string port = ":" + std::to_string(port_);
+    if (isLoopback(address_) && host != "127.0.0.1" + port && host != "localhost" + port &&
+        host != "[::1]" + port) {
+      reply(response, 403, "this server answers only to its own address, not to Host " + host);
+      return true;
+    }
+    if (request.has_header("Origin") && request.get_header_value("Origin") != "http://" + host) {
+      reply(response, 403, "requests from other web pages are refused");
+      return true;
+    }
+    return false;
+  }
+
+  void pass(const char* method, const httplib::Request& request, httplib::Response& response) {
+    ViewReply answer = service_.handle(method, request.path, request.params);
+    response.status = answer.status;
+    for (const auto& [name, value] : answer.headers) response.set_header(name, value);
+    response.set_content(std::move(answer.body), answer.type.c_str());
+  }
+
+  ViewService& service_;
+  std::string address_;
+  int port_ = 0;
+  httplib::Server server_;
+  std::thread thread_;
+};
+
+}  // namespace
+
+std::unique_ptr<HttpServer> makeViewServer(ViewService& service, const std::string& address,
+                                           int port) {
+  return std::make_unique<ViewServer>(service, address, port);
+}
+
+}  // namespace csgray::detail
