@@ -44,8 +44,10 @@ constexpr double kDefaultMaxRays = 1e11;
 
 struct RenderArguments {
   std::string output, size = "800x600";
-  int threads = 0, samples = 1;
-  bool adaptive = false, stats = false, watch = false;
+  int threads = 0;
+  // None: 1, or for a bare solid (the CAD look) kCadLookSamples, adaptive.
+  std::optional<int> samples;
+  bool adaptive = false, stats = false, edges = false, watch = false;
   std::vector<std::string> aovs;
   double maxRays = kDefaultMaxRays;  // 0: no limit
 };
@@ -84,7 +86,7 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
   std::error_code same;
   if (std::filesystem::equivalent(script.path(), output, same))
     throw std::runtime_error("cannot write " + output + ": it is the script itself");
-  if (arguments.adaptive && arguments.samples < 2)
+  if (arguments.adaptive && arguments.samples && *arguments.samples < 2)
     throw CLI::ValidationError("--adaptive", "needs --samples of 2 or more to spend");
   const std::vector<std::string>& aovs = arguments.aovs;
   bool depthAov = std::count(aovs.begin(), aovs.end(), "depth") > 0;
@@ -128,8 +130,14 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
     options.height = height;
     options.threads = arguments.threads;
     options.threadPool = &renderThreads;
-    options.samples = arguments.samples;
-    options.adaptive = arguments.adaptive;
+    // A bare solid is antialiased unless --samples says otherwise; the
+    // samples go to the pixels at edges, which keeps a part's render fast.
+    const bool cadSamples = !arguments.samples && scene.cadLook;
+    options.samples = arguments.samples.value_or(cadSamples ? kCadLookSamples : 1);
+    options.adaptive = arguments.adaptive || cadSamples;
+    if (options.adaptive && options.samples < 2)
+      throw CLI::ValidationError("--adaptive", "needs --samples of 2 or more to spend");
+    options.edges = arguments.edges;
     options.depthAov = depthAov;
     options.normalAov = normalAov;
     options.cancel = &late;
@@ -254,14 +262,19 @@ Command renderCommand(CLI::App& app, ScriptArguments& script) {
       ->check(decimal)
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  render->add_option("--samples", arguments->samples, "Rays per pixel, jittered (antialiasing)")
+  render
+      ->add_option("--samples", arguments->samples,
+                   "Rays per pixel, jittered (antialiasing); default 1, or " +
+                       std::to_string(kCadLookSamples) +
+                       " with --adaptive for a script that returns a bare solid")
       ->check(decimal)
-      ->check(CLI::Range(1, 1024))
-      ->capture_default_str();
+      ->check(CLI::Range(1, 1024));
   render->add_flag("--stats", arguments->stats,
                    "Print the time of each stage and the rays traced per second to stderr");
   render->add_flag("--adaptive", arguments->adaptive,
                    "Spend the --samples only on pixels at edges; others get one ray");
+  render->add_flag("--edges", arguments->edges,
+                   "Draw edge lines: outlines and creases (also scene{edges=true})");
   render
       ->add_option("--aov", arguments->aovs,
                    "Also write depth and/or normal images beside the output: depth,normal")

@@ -4,10 +4,12 @@
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <optional>
 #include <vector>
 
 #include "engine/primitive.h"
+#include "raytrace/edge_lines.h"
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
 
@@ -17,6 +19,10 @@ namespace csgray::detail {
 struct TraceContext {
   Sampler rng;
   RayCounts counts{};
+  // The CAD look's ground shadow where the pixel's first ray met the
+  // ground: it changes slowly, so the pixel's other rays take it too
+  // instead of tracing up to 24 shadow rays each.
+  std::optional<double> skyHidden;
 };
 
 namespace {
@@ -109,6 +115,10 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       cameraSpec_(cameraFor(scene, options)),
       camera_(cameraSpec_, options.width, options.height),
       lights_(scene.lights) {
+  if (scene.cadLook) {
+    cadLook_.emplace(cameraSpec_, double(options.width) / options.height, scene.bounds());
+    if (lights_.empty()) lights_ = cadLook_->lights();
+  }
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
   for (const SolidPtr& s : scene.objects) {
     s->prepare();
@@ -218,9 +228,12 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
       if (cosAlpha <= 0.0) continue;
       dvec3 radiance = light.radianceAt(sp.point, s);
       if (largest(radiance) <= 0.0) continue;
-      ++ctx.counts.shadow;
-      dvec3 pass = transmittance(origin, s);
-      if (largest(pass) <= 0.0) continue;
+      dvec3 pass(1.0);
+      if (light.castsShadows) {
+        ++ctx.counts.shadow;
+        pass = transmittance(origin, s);
+        if (largest(pass) <= 0.0) continue;
+      }
       double highlight = 0.0;
       if (m.specular > 0.0) {
         double cosBeta = glm::dot(reflect(-l, sp.normal), -viewDir);
@@ -230,6 +243,33 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
     }
   }
   return color;
+}
+
+dvec3 Renderer::missed(const Ray& ray, TraceContext& ctx) const {
+  if (!cadLook_) return scene_.background;
+  const dvec3 background = cadLook_->background(ray);
+  const std::optional<dvec3> ground = cadLook_->groundPoint(ray);
+  return ground ? cadLook_->shadowed(background, skyHidden(*ground, ctx)) : background;
+}
+
+double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
+  if (ctx.skyHidden) return *ctx.skyHidden;
+  const dvec3 origin = ground + dvec3(0.0, 0.0, 1e-9 * (scale_ + glm::length(ground)));
+  const auto& sky = cadLook_->skyPoints();
+  auto hidden = [&](int i) {
+    ++ctx.counts.shadow;
+    const dvec3 pass = transmittance(origin, sky[i]);
+    return 1.0 - (pass.x + pass.y + pass.z) / 3.0;
+  };
+  // Wholly lit or wholly in shadow when the probes agree; else every point.
+  double sum = 0.0;
+  for (int i = 0; i < CadLook::kProbes; ++i) sum += hidden(i);
+  if (sum > 0.0 && sum < CadLook::kProbes) {
+    for (int i = CadLook::kProbes; i < CadLook::kSkyPoints; ++i) sum += hidden(i);
+    sum *= double(CadLook::kProbes) / CadLook::kSkyPoints;
+  }
+  ctx.skyHidden = sum / CadLook::kProbes;
+  return *ctx.skyHidden;
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {
@@ -244,7 +284,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
                       TraceContext& ctx, int raysLeft) const {
   ++(depth == 0 ? ctx.counts.primary : ctx.counts.secondary);
   std::optional<SurfaceHit> hit = firstHit(ray);
-  if (!hit) return scene_.background;
+  if (!hit) return missed(ray, ctx);
 
   ShadingPoint sp;
   sp.point = ray.at(hit->t);
@@ -343,7 +383,11 @@ RenderResult Renderer::renderAll() const {
   if (options_.depthAov) result.depth = Image(w, h);
   if (options_.normalAov) result.normal = Image(w, h);
   bool refine = options_.adaptive && options_.samples > 1;
-  const double rows = double(h) * (refine ? 2 : 1);
+  // Edge lines need what each pixel's centre ray meets first, all of it,
+  // before the last pass draws them.
+  const bool edges = options_.edges || scene_.edges;
+  std::vector<SurfaceSample> seen(edges ? std::size_t(w) * h : 0);
+  const double rows = double(h) * (1 + int(refine) + int(edges));
   std::atomic<int> pixelsDone = 0;
   std::atomic<std::uint64_t> primary = 0, shadow = 0, secondary = 0;
 
@@ -408,21 +452,29 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
-  forEachTile(!refine, [&](int x, int y, RayCounts& counts) {
+  forEachTile(!refine && !edges, [&](int x, int y, RayCounts& counts) {
     TraceContext ctx{Sampler(x, y)};
     result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, ctx));
     add(counts, ctx.counts);
-    if (!options_.depthAov && !options_.normalAov) return;
+    if (!options_.depthAov && !options_.normalAov && !edges) return;
     Ray ray = camera_.ray(x + 0.5, y + 0.5);
     std::optional<SurfaceHit> hit = firstHit(ray);
     if (options_.depthAov)
       result.depth.set(x, y,
                        dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
-    if (options_.normalAov && hit) {
-      dvec3 p = ray.at(hit->t);
-      dvec3 n = hit->surface ? hit->surface->normal()
-                             : hit->boundary.primitive->normal(p, hit->boundary.face);
-      result.normal.set(x, y, glm::dot(n, ray.dir) > 0.0 ? -n : n);
+    if (!hit) return;
+    dvec3 p = ray.at(hit->t);
+    dvec3 n = hit->surface ? hit->surface->normal()
+                           : hit->boundary.primitive->normal(p, hit->boundary.face);
+    if (glm::dot(n, ray.dir) > 0.0) n = -n;
+    if (options_.normalAov) result.normal.set(x, y, n);
+    if (edges) {
+      SurfaceSample& sample = seen[std::size_t(y) * w + x];
+      sample.surface = hit->surface ? static_cast<const void*>(hit->surface)
+                                    : static_cast<const void*>(hit->boundary.primitive);
+      sample.face = hit->surface ? 0 : hit->boundary.face;
+      sample.t = float(hit->t);
+      sample.normal = glm::vec3(glm::normalize(n));
     }
   });
 
@@ -442,11 +494,39 @@ RenderResult Renderer::renderAll() const {
         }
       return false;
     };
-    forEachTile(true, [&](int x, int y, RayCounts& counts) {
+    forEachTile(!edges, [&](int x, int y, RayCounts& counts) {
       if (!differs(x, y)) return;
       TraceContext ctx{Sampler(x, y, 1)};
       result.color.set(x, y, pixel(x, y, options_.samples, ctx));
       add(counts, ctx.counts);
+    });
+  }
+  if (edges) {
+    // A pixel draws the edge between it and a neighbour when it is on
+    // the nearer side (raytrace/edge_lines.h).
+    const double pixelsPerUnit =
+        cameraSpec_.orthographic
+            ? cameraSpec_.orthoWidth / w
+            : 2.0 * std::tan(0.5 * cameraSpec_.fovDegrees * std::numbers::pi / 180.0) / w;
+    auto footprint = [&](double t) {
+      return cameraSpec_.orthographic ? pixelsPerUnit : t * pixelsPerUnit;
+    };
+    auto at = [&](int x, int y) -> const SurfaceSample& { return seen[std::size_t(y) * w + x]; };
+    auto point = [&](int x, int y) { return camera_.ray(x + 0.5, y + 0.5).at(at(x, y).t); };
+    forEachTile(true, [&](int x, int y, RayCounts&) {
+      const SurfaceSample& here = at(x, y);
+      if (!here.surface) return;
+      static constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+      for (const auto& step : kSteps) {
+        const int nx = x + step[0], ny = y + step[1];
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const SurfaceSample& there = at(nx, ny);
+        const double t = there.surface ? std::min(here.t, there.t) : here.t;
+        if (edgeBetween(here, point(x, y), there, point(nx, ny), footprint(t)) == EdgeSide::First) {
+          result.color.set(x, y, withEdge(result.color.at(x, y)));
+          return;
+        }
+      }
     });
   }
   result.rays = RayCounts{primary, shadow, secondary};

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/bvh.h"
+#include "raytrace/cad_look.h"
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
 #include "scene/camera.h"
@@ -46,6 +47,8 @@ struct RenderOptions {
   // Also produce depth and normal images (arbitrary output values).
   bool depthAov = false;
   bool normalAov = false;
+  // Draw edge lines (raytrace/edge_lines.h), as scene.edges does too.
+  bool edges = false;
   // Called from worker threads with the share of the image done, in [0, 1].
   std::function<void(double)> progress;
   // Called once for each band of bandRows rows of the colour image, rows
@@ -139,6 +142,11 @@ class Renderer {
               int raysLeft = kRaysPerCameraRay - 1) const;
   dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
   dvec3 pixel(int x, int y, int samples, TraceContext& ctx) const;
+  // What a ray that meets nothing sees: the background, and in the CAD
+  // look the ground's shadow.
+  dvec3 missed(const Ray& ray, TraceContext& ctx) const;
+  // The share of the CAD look's sky that the scene hides from a ground point.
+  double skyHidden(const dvec3& ground, TraceContext& ctx) const;
 
   const Scene& scene_;
   // Over the objects (items 0 .. n−1) and then the surfaces.
@@ -147,6 +155,7 @@ class Renderer {
   CameraSpec cameraSpec_;
   Camera camera_;
   std::vector<Light> lights_;
+  std::optional<CadLook> cadLook_;  // for a bare solid's scene
   Media cameraMedia_;
   std::vector<bool> seeThrough_;  // per object: does any of it let light through?
   double scale_;                  // a length for the size of the scene

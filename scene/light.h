@@ -18,6 +18,10 @@ struct Light {
   // Divide by the squared distance d². Off by default, so
   // that intensity 1 means full strength at any distance.
   bool inverseSquare = false;
+  // Shadow rays test whether the light reaches a point. The fill and rim
+  // lights of a bare solid's look (raytrace/cad_look.h) light everything,
+  // as such lights do: a scene's lights always cast shadows.
+  bool castsShadows = true;
 
   // Spot (Warn, "Lighting Controls for Synthetic Images", 1983): light along direction,
   // cos^exponent of the angle off the axis, nothing beyond coneDegrees off it.

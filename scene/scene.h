@@ -41,6 +41,12 @@ struct Scene {
   std::vector<Light> lights;         // none: a default light beside the camera
   dvec3 background{0.05, 0.05, 0.08};
   TraceLimits limits;
+  // A bare solid's scene (the script returned a solid, a surface or a
+  // region, not scene{}): it gets the look of raytrace/cad_look.h, in place
+  // of the background and of the default light when it has no lights.
+  bool cadLook = false;
+  // Draw edge lines (raytrace/edge_lines.h): scene{edges=true}.
+  bool edges = false;
 
   // The union of the objects' and the bounded surfaces' bounds.
   Bounds bounds() const;

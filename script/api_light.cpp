@@ -34,7 +34,7 @@ int light(lua_State* L) {
   if (kind == Light::Kind::Sphere) p.radius = args.number("r").value_or(p.radius);
   if (kind == Light::Kind::Rectangle || kind == Light::Kind::Sphere)
     p.samples = args.number("samples").value_or(p.samples);
-  p.color = args.vec3("color").value_or(p.color);
+  p.color = args.color("color").value_or(p.color);
   p.intensity = args.number("intensity").value_or(p.intensity);
   p.falloff = args.boolean("falloff").value_or(false);
   Light made = makeLight(p);

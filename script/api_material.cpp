@@ -17,7 +17,7 @@ MaterialPtr materialArg(lua_State* L, int index) {
       lua_pop(L, 1);
     } else {
       lua_pop(L, 1);
-      m->color = *args.vec3("color");
+      m->color = *args.color("color");
     }
   }
   m->ambient = args.number("ambient").value_or(m->ambient);
@@ -26,7 +26,7 @@ MaterialPtr materialArg(lua_State* L, int index) {
   m->shininess = args.number("shininess").value_or(m->shininess);
   m->reflection = args.number("reflection").value_or(m->reflection);
   m->transparency = args.number("transparency").value_or(m->transparency);
-  m->filter = args.vec3("filter").value_or(m->filter);
+  m->filter = args.color("filter").value_or(m->filter);
   m->ior = args.number("ior").value_or(m->ior);
   m->fresnel = args.boolean("fresnel").value_or(false);
   checkMaterial(*m);

@@ -1,9 +1,11 @@
-// The camera and the scene in the script (docs/script.md, Scenes), and the
-// scene a script's return value stands for.
+// The camera and the scene in the script (docs/script.md, Scenes), the
+// scene a script's return value stands for (a bare solid's gets the CAD
+// look, raytrace/cad_look.h), and srgb(), colours as paint programs give them.
 #include <stdexcept>
 #include <string>
 
 #include "scene/camera.h"
+#include "scene/color_names.h"
 #include "scene/region_surface.h"
 #include "script/api.h"
 #include "script/lua_args.h"
@@ -85,14 +87,35 @@ int scene(lua_State* L) {
     s.camera = checkValue<CameraSpec>(L, -1, "scene: camera");
     lua_pop(L, 1);
   }
-  s.background = args.vec3("background").value_or(s.background);
+  s.background = args.color("background").value_or(s.background);
   checkBackground(s.background);
   s.limits.maxDepth = checkedMaxDepth(args.number("max_depth").value_or(s.limits.maxDepth));
   s.limits.minWeight = args.number("min_weight").value_or(s.limits.minWeight);
   checkMinWeight(s.limits.minWeight);
+  s.edges = args.boolean("edges").value_or(false);
   args.finish();
   checkHasObjects(s);
   pushValue(L, std::move(s), kBytesPerValue + pending.settle());
+  return 1;
+}
+
+// srgb(r, g, b) or srgb{r, g, b}: the linear colour {r, g, b} that the
+// sRGB components (each in [0, 1], as a paint program shows them) stand for.
+int srgb(lua_State* L) {
+  const char* f = "srgb";
+  dvec3 c;
+  if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TTABLE) {
+    c = toVec3(L, 1, f);
+  } else {
+    checkArgumentCount(L, f, 3);
+    if (lua_gettop(L) != 3) throw std::invalid_argument("srgb: takes r, g, b or {r, g, b}");
+    c = dvec3(toNumber(L, 1, "srgb: r"), toNumber(L, 2, "srgb: g"), toNumber(L, 3, "srgb: b"));
+  }
+  for (int i = 0; i < 3; ++i)
+    if (!(c[i] >= 0.0 && c[i] <= 1.0))
+      throw std::invalid_argument(
+          "srgb: components must be in [0, 1] (for 0 to 255, divide by 255 or write \"#rrggbb\")");
+  pushVec3(L, srgbToLinear(c));
   return 1;
 }
 
@@ -106,6 +129,7 @@ void registerSceneApi(lua_State* L) {
   static const luaL_Reg globals[] = {
       {"camera", guarded<camera>},
       {"scene", guarded<scene>},
+      {"srgb", guarded<srgb>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }
@@ -114,16 +138,19 @@ Scene sceneFromValue(lua_State* L, int index) {
   if (SolidPtr* solid = toValue<SolidPtr>(L, index)) {
     Scene s;
     s.objects.push_back(*solid);
+    s.cadLook = true;
     return s;
   }
   if (SurfacePtr* surface = toValue<SurfacePtr>(L, index)) {
     Scene s;
     s.surfaces.push_back(*surface);
+    s.cadLook = true;
     return s;
   }
   if (RegionPtr* region = toValue<RegionPtr>(L, index)) {
     Scene s;
     s.surfaces.push_back(regionSurface(*region, regionKind(L, index)));
+    s.cadLook = true;
     return s;
   }
   if (Scene* s = toValue<Scene>(L, index)) return *s;

@@ -23,7 +23,7 @@ std::optional<ColorPair> colorsArg(lua_State* L, LuaArgs& args) {
   dvec3 c[2];
   for (int i = 0; i < 2; ++i) {
     lua_rawgeti(L, -1, i + 1);
-    c[i] = toVec3(L, -1, what + "[" + std::to_string(i + 1) + "]");
+    c[i] = toColor(L, -1, what + "[" + std::to_string(i + 1) + "]");
     lua_pop(L, 1);
   }
   lua_pop(L, 1);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/color_names.h"
+
 namespace csgray::detail {
 
 LuaArgs::LuaArgs(lua_State* L, int index, std::string function)
@@ -36,6 +38,13 @@ std::optional<double> LuaArgs::number(const char* key) {
 std::optional<dvec3> LuaArgs::vec3(const char* key) {
   if (!push(key)) return std::nullopt;
   dvec3 v = toVec3(L_, -1, function_ + ": " + key);
+  lua_pop(L_, 1);
+  return v;
+}
+
+std::optional<dvec3> LuaArgs::color(const char* key) {
+  if (!push(key)) return std::nullopt;
+  dvec3 v = toColor(L_, -1, function_ + ": " + key);
   lua_pop(L_, 1);
   return v;
 }
@@ -133,6 +142,18 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
     lua_pop(L, 1);
   }
   return v;
+}
+
+dvec3 toColor(lua_State* L, int index, const std::string& what) {
+  const int type = lua_type(L, index);
+  if (type == LUA_TNUMBER || (type == LUA_TTABLE && lua_rawlen(L, index) == 3))
+    return toVec3(L, index, what);
+  if (type != LUA_TSTRING)
+    throw std::invalid_argument(
+        what + " must be a colour: {r, g, b}, a name such as \"red\" or \"#rrggbb\"");
+  std::size_t length = 0;
+  const char* text = lua_tolstring(L, index, &length);
+  return parseColor(std::string_view(text, length), what);
 }
 
 void pushVec3(lua_State* L, const dvec3& v) {

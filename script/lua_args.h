@@ -19,6 +19,8 @@ class LuaArgs {
 
   std::optional<double> number(const char* key);
   std::optional<dvec3> vec3(const char* key);
+  // A colour: a linear {r, g, b}, or a name or hex code (toColor).
+  std::optional<dvec3> color(const char* key);
   std::optional<bool> boolean(const char* key);
   std::optional<std::string> string(const char* key);
   // True if the key is present; leaves its value on top of the stack.
@@ -51,6 +53,9 @@ bool hasStringKey(lua_State* L, int index);
 // Values at a stack index, with errors that name what was expected.
 double toNumber(lua_State* L, int index, const std::string& what);
 dvec3 toVec3(lua_State* L, int index, const std::string& what);
+// A colour as linear RGB: a string is a CSS name or a hex code, in sRGB
+// (scene/color_names.h); anything else is a linear {r, g, b} (toVec3).
+dvec3 toColor(lua_State* L, int index, const std::string& what);
 // Pushes {x, y, z}.
 void pushVec3(lua_State* L, const dvec3& v);
 

@@ -215,8 +215,17 @@ source_abs=$(cd "$source_dir" && pwd)
 # depth and normal. A wrong command line is exit code 2.
 expect_exit 2 "zero samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --samples 0
 expect_exit 2 "too many samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --samples 2000
-expect_exit 2 "adaptive without samples" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --adaptive
+# A scene{} gets one sample by default; a bare solid gets the CAD look's
+# adaptive samples, so --adaptive alone is enough for it.
+printf 'return scene{objects={box(1)}}\n' > "$work/scene_part.lua"
+expect_exit 2 "adaptive without samples" "$work/out.png" render "$work/scene_part.lua" -o "$work/out.png" --adaptive
 expect_in_stderr "adaptive without samples" "--samples"
+if "$csgray" render "$work/part.lua" -o "$work/bare_adaptive.png" --size 32x24 --adaptive --edges \
+     >/dev/null 2>"$work/stderr" && [ "$(png_size "$work/bare_adaptive.png")" = 32x24 ]; then
+  pass
+else
+  fail "a bare solid with --adaptive --edges"; cat "$work/stderr"
+fi
 expect_exit 2 "adaptive with one sample" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --adaptive --samples 1
 expect_exit 2 "unknown aov" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --aov foo
 expect_exit 2 "unknown aov in a list" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --aov depth,foo

@@ -208,8 +208,8 @@ TEST(ScriptMaterial, OutOfRangeValuesAreErrors) {
       {"ior=11", "material: ior must be from 1 to 10"},
       {"color={1, -0.5, 0}", "material: color components must be >= 0"},
       {"color=-1", "material: color components must be >= 0"},
-      {"color={1, 1}", "material: color must be a list of three numbers"},
-      {"color='red'", "material: color must be a list of three numbers"},
+      {"color={1, 1}", "material: color must be a colour: {r, g, b}, a name"},
+      {"color='redd'", "material: color 'redd' is not a colour name (did you mean red?)"},
       {"filter={1, 1.5, 1}", "material: filter components must be in [0, 1]"},
       {"filter={-1, 1, 1}", "material: filter components must be >= 0"},
       {"shininess=0", "material: shininess must be > 0"},
@@ -243,9 +243,9 @@ TEST(ScriptTexture, EveryTextureGivesAMaterialWithATexture) {
   }
   // A texture is a value: not a colour list, but accepted where a colour is.
   expectError("return sphere(1):material{filter=checker{}}",
-              "part.lua:1: material: filter must be a list of three numbers");
+              "part.lua:1: material: filter must be a colour: {r, g, b}");
   expectError("return point_light{pos={0, 0, 1}, color=checker{}}",
-              "part.lua:1: point_light: color must be a list of three numbers");
+              "part.lua:1: point_light: color must be a colour: {r, g, b}");
 }
 
 TEST(ScriptTexture, PatternsFollowTheirDefinitions) {
