@@ -37,6 +37,7 @@ struct ScaledPath {
   Normalised n;
   SweepPolynomial x, y, sx, sy;  // in s
   bool uniform;
+  SweepSegmentTest straight;  // uniform: the curve's segment
 
   dvec2 at(double t) const {
     const double s = n.toS(t);
@@ -44,16 +45,29 @@ struct ScaledPath {
             polynomialValue(y.c, 1, s) / polynomialValue(sy.c, 1, s)};
   }
 
+  bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
+    return uniform ? straight.meets(lo, hi) : sweepPieceMeets(piece, lo, hi);
+  }
+
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
     SweepPolynomial p;
     if (uniform) {
+      // The products of linear polynomials written out.
       if (!e.arc) {
-        p = x * e.normal.x + y * e.normal.y - sx * e.offset;
+        p.n = 1;
+        for (int i = 0; i < 2; ++i)
+          p.c[i] = x.c[i] * e.normal.x + y.c[i] * e.normal.y - sx.c[i] * e.offset;
       } else {
-        const SweepPolynomial X = x - sx * e.center.x, Y = y - sx * e.center.y;
-        const SweepPolynomial w0 = X * e.toUnit[0][0] + Y * e.toUnit[1][0];
-        const SweepPolynomial w1 = X * e.toUnit[0][1] + Y * e.toUnit[1][1];
-        p = w0 * w0 + w1 * w1 - sx * sx;
+        const double X0 = x.c[0] - sx.c[0] * e.center.x, X1 = x.c[1] - sx.c[1] * e.center.x;
+        const double Y0 = y.c[0] - sx.c[0] * e.center.y, Y1 = y.c[1] - sx.c[1] * e.center.y;
+        const double a0 = X0 * e.toUnit[0][0] + Y0 * e.toUnit[1][0];
+        const double a1 = X1 * e.toUnit[0][0] + Y1 * e.toUnit[1][0];
+        const double b0 = X0 * e.toUnit[0][1] + Y0 * e.toUnit[1][1];
+        const double b1 = X1 * e.toUnit[0][1] + Y1 * e.toUnit[1][1];
+        p.n = 2;
+        p.c[0] = a0 * a0 + b0 * b0 - sx.c[0] * sx.c[0];
+        p.c[1] = 2.0 * (a0 * a1) + 2.0 * (b0 * b1) - 2.0 * (sx.c[0] * sx.c[1]);
+        p.c[2] = a1 * a1 + b1 * b1 - sx.c[1] * sx.c[1];
       }
     } else if (!e.arc) {
       p = x * sy * e.normal.x + y * sx * e.normal.y - sx * sy * e.offset;
@@ -90,6 +104,9 @@ struct TwistedPath {
   double resolution;  // in t
 
   double zeta(double t) const { return (o.z + t * d.z - z0) / h; }
+  bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
+    return sweepPieceMeets(piece, lo, hi);
+  }
   dvec2 at(double t) const {
     const double z = zeta(t);
     const dvec2 v((o.x + t * d.x) / (1.0 + (scale.x - 1.0) * z),
@@ -240,6 +257,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
       // the ray): one piece, tested against the index as a segment.
       const dvec2 a = path.at(t0), b = path.at(t1);
       pieces[count++] = {t0, t1, glm::min(a, b), glm::max(a, b), true, a, b};
+      path.straight = SweepSegmentTest(a, b);
     } else {
       // Each coordinate is monotone in t: a piece lies in its ends' box.
       const int k = 8;

@@ -113,6 +113,7 @@ SweptRegion::SweptRegion(RegionPtr region, const char* kind) : region_(std::move
     throw std::invalid_argument(std::string(kind) + ": the region's coordinates must be finite");
   size_ = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, std::abs(b.lo.x), std::abs(b.hi.x),
                     std::abs(b.lo.y), std::abs(b.hi.y), 1e-300});
+  pad_ = 1e-9 * size_;
   std::uint32_t nextLeaf = 0;
   addTree(*region_, nextLeaf);
   // The orientation of each edge: which side of it is the leaf's inside.
@@ -196,8 +197,8 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
     dvec2 clo(1e300), chi(-1e300);
     for (std::uint32_t i = task.begin; i < task.end; ++i) {
       const ProfileBounds& b = edges_[order[i]].box;
-      node.lo = glm::min(node.lo, b.lo);
-      node.hi = glm::max(node.hi, b.hi);
+      node.lo = glm::min(node.lo, b.lo - dvec2(pad_));
+      node.hi = glm::max(node.hi, b.hi + dvec2(pad_));
       const dvec2 c = 0.5 * (b.lo + b.hi);
       clo = glm::min(clo, c);
       chi = glm::max(chi, c);
@@ -205,7 +206,10 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
     if (task.end - task.begin <= kLeafEdges) {
       node.start = std::uint32_t(leaf.items.size());
       node.count = task.end - task.begin;
-      for (std::uint32_t i = task.begin; i < task.end; ++i) leaf.items.push_back(order[i]);
+      for (std::uint32_t i = task.begin; i < task.end; ++i) {
+        const ProfileBounds& b = edges_[order[i]].box;
+        leaf.items.push_back({b.lo - dvec2(pad_), b.hi + dvec2(pad_), order[i]});
+      }
       leaf.nodes[task.node] = node;
       continue;
     }
@@ -234,7 +238,10 @@ bool SweptRegion::leafContains(std::uint32_t index, const dvec2& u) const {
     return false;
   bool inside = false;
   const dvec2 end(leaf.box.hi.x + 1.0, u.y);
-  forEachEdgeNear(leaf, u, end, false, u, end, [&](std::uint32_t i) {
+  const auto meets = [&](const dvec2& lo, const dvec2& hi) {
+    return sweep_detail::boxesMeet(u, end, lo, hi);
+  };
+  forEachEdgeNear(leaf, meets, [&](std::uint32_t i) {
     const SweepEdge& e = edges_[i];
     if (segmentCrosses(u, e.from, e.to)) inside = !inside;
     if (e.arc && inArcCap(u, e)) inside = !inside;

@@ -79,7 +79,8 @@ struct SweepPiece {
 struct SweepCrossing {
   double t;
   std::uint32_t face;
-  bool clean;  // transversal, away from the edge's ends and from other crossings
+  bool clean;           // transversal, away from the edge's ends and from other crossings
+  bool before = false;  // worked out by the spans: is the stretch that ends here inside?
 };
 
 class SweptRegion {
@@ -111,24 +112,35 @@ class SweptRegion {
   // each with a box that holds its image. Path must provide
   //   dvec2 at(double t) const;
   //   int roots(const SweepEdge&, double t0, double t1, double* out) const;
+  //   bool meets(const SweepPiece&, const dvec2& lo, const dvec2& hi) const;
   // roots writes at most 8 values of t in [t0, t1] where the edge's
   // implicit function vanishes along the curve (more is harmless: each is
   // checked to lie on the edge; a root it misses must be a tangency).
+  // meets says whether the curve over the piece may pass through the
+  // closed box lo–hi (false only when it surely does not; sweepPieceMeets
+  // is the test of the piece's box, and segment when straight): the index
+  // asks it of its nodes and then of each edge's box before roots.
   template <class Path>
   void spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
              std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out) const;
 
  private:
-  // A 2D bounding volume hierarchy over one leaf's edges.
+  // A 2D bounding volume hierarchy over one leaf's edges. Every box (the
+  // nodes' and the edges') is grown by pad_, so that a curve that passes
+  // within rounding of an edge still reaches it.
   struct Node {
     dvec2 lo, hi;
     std::uint32_t start,
         count;  // leaf: items [start, start + count); inner: children start, start + 1
   };
+  struct Item {
+    dvec2 lo, hi;  // the edge's box
+    std::uint32_t edge;
+  };
   struct Leaf {
     ProfileBounds box;
     std::vector<Node> nodes;
-    std::vector<std::uint32_t> items;  // edge indices
+    std::vector<Item> items;
   };
   struct TreeNode {
     Region::Op op;
@@ -138,11 +150,10 @@ class SweptRegion {
 
   void buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges);
   std::uint32_t addTree(const Region& region, std::uint32_t& nextLeaf);
-  // Calls f(edge) for each edge of the leaf whose box meets the box lo–hi
-  // (and the segment a–b, if straight).
-  template <class F>
-  void forEachEdgeNear(const Leaf& leaf, const dvec2& lo, const dvec2& hi, bool straight,
-                       const dvec2& a, const dvec2& b, F&& f) const;
+  // Calls f(edge) for each edge of the leaf whose box (and the boxes of the
+  // nodes above it) meets(lo, hi) accepts.
+  template <class Meets, class F>
+  void forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;
   bool treeContains(std::uint32_t node, const dvec2& u) const;
   template <class Path>
@@ -166,6 +177,7 @@ class SweptRegion {
   std::vector<Leaf> leaves_;
   std::vector<TreeNode> tree_;  // tree_[0] is the root
   double size_ = 1.0;
+  double pad_ = 0.0;  // 1e-9 of size_
 };
 
 // ---- polynomials in a normalised parameter s ∈ [-1, 1] -----------------------

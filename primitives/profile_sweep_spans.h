@@ -38,19 +38,59 @@ std::vector<SweepCrossing>& crossingBuffer();
 
 }  // namespace sweep_detail
 
-template <class F>
-void SweptRegion::forEachEdgeNear(const Leaf& leaf, const dvec2& lo, const dvec2& hi, bool straight,
-                                  const dvec2& a, const dvec2& b, F&& f) const {
+// The test of a piece's box, and of its segment when it is straight: the
+// meets of paths that know no better.
+inline bool sweepPieceMeets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) {
+  if (!sweep_detail::boxesMeet(piece.lo, piece.hi, lo, hi)) return false;
+  return !piece.straight || sweep_detail::segmentMeetsBox(piece.from, piece.to, lo, hi);
+}
+
+// The slab test of the segment a–b against many boxes, with the reciprocals
+// of its direction computed once (a straight curve's walk down the index).
+class SweepSegmentTest {
+ public:
+  SweepSegmentTest() = default;
+  SweepSegmentTest(const dvec2& a, const dvec2& b)
+      : a_(a), lo_(glm::min(a, b)), hi_(glm::max(a, b)) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double d = b[axis] - a[axis];
+      flat_[axis] = d == 0.0;
+      inverse_[axis] = flat_[axis] ? 0.0 : 1.0 / d;
+    }
+  }
+  bool meets(const dvec2& lo, const dvec2& hi) const {
+    if (!sweep_detail::boxesMeet(lo_, hi_, lo, hi)) return false;
+    double t0 = 0.0, t1 = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (flat_[axis]) continue;  // inside the box's range: boxesMeet said so
+      double near = (lo[axis] - a_[axis]) * inverse_[axis],
+             far = (hi[axis] - a_[axis]) * inverse_[axis];
+      if (near > far) std::swap(near, far);
+      t0 = std::max(t0, near);
+      t1 = std::min(t1, far);
+    }
+    return t0 <= t1;
+  }
+
+ private:
+  dvec2 a_{0.0}, lo_{0.0}, hi_{0.0}, inverse_{0.0};
+  bool flat_[2] = {true, true};
+};
+
+template <class Meets, class F>
+void SweptRegion::forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const {
   if (leaf.nodes.empty()) return;
   std::uint32_t stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = leaf.nodes[stack[--top]];
-    if (!sweep_detail::boxesMeet(node.lo, node.hi, lo, hi)) continue;
-    if (straight && !sweep_detail::segmentMeetsBox(a, b, node.lo, node.hi)) continue;
+    if (!meets(node.lo, node.hi)) continue;
     if (node.count > 0) {
-      for (std::uint32_t i = node.start; i < node.start + node.count; ++i) f(leaf.items[i]);
+      for (std::uint32_t i = node.start; i < node.start + node.count; ++i) {
+        const Item& item = leaf.items[i];
+        if (node.count == 1 || meets(item.lo, item.hi)) f(item.edge);
+      }
     } else {
       stack[top++] = node.start;
       stack[top++] = node.start + 1;
@@ -117,16 +157,17 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   // A leaf: the crossings of the curve with its edges, from the edges near
   // each piece of the curve.
   const Leaf& leaf = leaves_[node.leaf];
-  const double pad = 1e-9 * size_;
+  if (leaf.nodes.empty()) return;
   bool touched = false;
   std::vector<SweepCrossing>& crossings = sweep_detail::crossingBuffer();
   crossings.clear();
   for (int k = 0; k < pieceCount; ++k) {
     const SweepPiece& piece = pieces[k];
-    const dvec2 lo = piece.lo - dvec2(pad), hi = piece.hi + dvec2(pad);
-    if (!sweep_detail::boxesMeet(lo, hi, leaf.box.lo, leaf.box.hi)) continue;
+    const auto meets = [&](const dvec2& lo, const dvec2& hi) { return path.meets(piece, lo, hi); };
+    // (The root's box is the leaf's, grown.)
+    if (!meets(leaf.nodes[0].lo, leaf.nodes[0].hi)) continue;
     touched = true;
-    forEachEdgeNear(leaf, lo, hi, piece.straight, piece.from, piece.to, [&](std::uint32_t e) {
+    forEachEdgeNear(leaf, meets, [&](std::uint32_t e) {
       const SweepEdge& edge = edges_[e];
       double roots[8];
       const int n = path.roots(edge, piece.t0, piece.t1, roots);
@@ -156,10 +197,54 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
 
   // The stretches between crossings: each inside or out. A clean crossing
   // toggles the state of a stretch the leaf was asked about (or one that
-  // was toggled from such); otherwise the leaf is asked at the stretch's
-  // middle.
+  // was toggled from such, or one at an end known to be outside);
+  // otherwise the leaf is asked at the stretch's middle. The states are
+  // worked out from an end known to be outside when there is one (forwards
+  // from the start, else backwards from the end), so that most rays never
+  // ask. Stretch k runs from crossing k − 1 (or t0) to crossing k (or t1);
+  // its state is kept in crossing k's `before` (the last one in lastInside).
   const double reliableLength = 1e-7 * (t1 - t0);
-  bool inside = false, reliable = false, previousClean = false;
+  const auto stretchStart = [&](std::size_t k) { return k == 0 ? t0 : crossings[k - 1].t; };
+  const auto stretchEnd = [&](std::size_t k) { return k == n ? t1 : crossings[k].t; };
+  bool lastInside = false;
+  const auto setState = [&](std::size_t k, bool inside) {
+    if (k == n) {
+      lastInside = inside;
+    } else {
+      crossings[k].before = inside;
+    }
+  };
+  bool inside = false, reliable = false;
+  const auto step = [&](std::size_t k, bool toggles) {
+    if (reliable && toggles) {
+      inside = !inside;
+    } else {
+      const double a = stretchStart(k), b = stretchEnd(k);
+      inside = leafContains(node.leaf, path.at(0.5 * (a + b)));
+      reliable = b - a > reliableLength;
+    }
+    setState(k, inside);
+  };
+  // An end of the window outside the leaf's box (grown) is outside it.
+  const Node& root = leaf.nodes[0];
+  const auto outsideBox = [&](const dvec2& u) {
+    return u.x < root.lo.x || u.x > root.hi.x || u.y < root.lo.y || u.y > root.hi.y;
+  };
+  const bool startOutside = outsideBox(path.at(t0));
+  if (!startOutside && outsideBox(path.at(t1))) {
+    reliable = true;
+    setState(n, false);
+    for (std::size_t k = n; k-- > 0;) step(k, crossings[k].clean);
+  } else {
+    if (startOutside) {
+      reliable = true;
+      setState(0, false);
+    } else {
+      step(0, false);
+    }
+    for (std::size_t k = 1; k <= n; ++k) step(k, crossings[k - 1].clean);
+  }
+
   double a = t0;
   std::uint32_t faceA = face0;
   // The span being grown: stretches inside with only crossings that
@@ -169,21 +254,15 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   for (std::size_t i = 0; i <= n; ++i) {
     const double b = i < n ? crossings[i].t : t1;
     const std::uint32_t faceB = i < n ? crossings[i].face : face1;
-    if (reliable && previousClean) {
-      inside = !inside;
-    } else {
-      inside = leafContains(node.leaf, path.at(0.5 * (a + b)));
-      reliable = b - a > reliableLength;
-    }
-    if (inside && b > a) {
+    const bool stretchInside = i < n ? crossings[i].before : lastInside;
+    if (stretchInside && b > a) {
       if (!open) pending.in = Boundary{a, owner, faceA, false};
       pending.out = Boundary{b, owner, faceB, false};
       open = true;
-    } else if (!inside && b > a && open) {
+    } else if (!stretchInside && b > a && open) {
       out.push_back(pending);
       open = false;
     }
-    previousClean = i < n && crossings[i].clean;
     a = b;
     faceA = faceB;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -16,44 +17,95 @@ namespace csgray::detail {
 namespace {
 
 // The ray's curve in the profile plane, in s ∈ [-1, 1] over the window
-// (t = middle + half·s): ρ(s)² = rho2(s), z(s) linear.
+// (t = middle + half·s): ρ(s)² = q0 + q1·s + q2·s², z(s) = z0 + z1·s. An
+// edge's equation along it is written down in closed form from these
+// coefficients, once per edge and ray.
 struct TurnedPath {
   double middle, half;
   SweepPolynomial rho2, z;
+  // For meets: 1 / z1 (0 for a level ray), the s where ρ² is least (or
+  // NaN), and an allowance for rounding in ρ² (in units of the part's
+  // size squared, far above the rounding of q, far below any feature).
+  double zRate = 0.0, nearest = 0.0, slack2 = 0.0;
 
   double toS(double t) const { return (t - middle) / half; }
+  double q(double s) const { return (rho2.c[2] * s + rho2.c[1]) * s + rho2.c[0]; }
   dvec2 at(double t) const {
     const double s = toS(t);
     return {std::sqrt(std::max(0.0, polynomialValue(rho2.c, 2, s))), polynomialValue(z.c, 1, s)};
   }
 
+  // Does the curve pass through the box? z picks the stretch of s where
+  // the curve is in the box's slab; ρ² is a convex quadratic in s, so its
+  // range there is that of its ends and its least point: the box is missed
+  // when that range misses [ρlo², ρhi²]. (POV-Ray's lathe bounds each
+  // segment by a cylindrical shell the same way; here it is exact, and
+  // asked of the index's nodes as well.)
+  bool meets(const SweepPiece&, const dvec2& lo, const dvec2& hi) const {
+    double s0 = -1.0, s1 = 1.0;
+    if (zRate != 0.0) {
+      double a = (lo.y - z.c[0]) * zRate, b = (hi.y - z.c[0]) * zRate;
+      if (a > b) std::swap(a, b);
+      s0 = std::max(s0, a);
+      s1 = std::min(s1, b);
+      if (!(s0 <= s1)) return false;
+    } else if (z.c[0] < lo.y || z.c[0] > hi.y) {
+      return false;
+    }
+    const double q0 = q(s0), q1 = q(s1);
+    const double least = nearest > s0 && nearest < s1 ? q(nearest) : std::min(q0, q1);
+    if (least > hi.x * hi.x + slack2) return false;
+    return lo.x <= 0.0 || std::max(q0, q1) >= lo.x * lo.x - slack2;
+  }
+
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
     SweepPolynomial p;
+    const double* r = rho2.c;
     if (!e.arc) {
-      // n_ρ·ρ = offset − n_z·z, squared unless the segment is a flat ring.
-      const SweepPolynomial right = z * -e.normal.y + SweepPolynomial::linear(e.offset, 0.0);
+      // n_ρ·ρ = offset − n_z·z = w0 + w1·s, squared unless the segment is a
+      // flat ring: n_ρ²·ρ² − w² = 0.
+      const double w0 = z.c[0] * -e.normal.y + e.offset, w1 = z.c[1] * -e.normal.y;
       if (std::abs(e.normal.x) <= 1e-12) {
-        p = right;
+        p.n = 1;
+        p.c[0] = w0;
+        p.c[1] = w1;
       } else {
-        p = rho2 * (e.normal.x * e.normal.x) - right * right;
+        const double k = e.normal.x * e.normal.x;
+        p.n = 2;
+        p.c[0] = r[0] * k - w0 * w0;
+        p.c[1] = r[1] * k - 2.0 * (w0 * w1);
+        p.c[2] = r[2] * k - w1 * w1;
       }
     } else {
       // |M(u − c)|² = 1 with u = (ρ, z): ρ²|m0|² + 2ρ·(m0·P) + |P|² − 1 = 0,
       // P = (z − c_z)·m1 − c_ρ·m0 (m0, m1 the columns of M). With
       // L = m0·P and Q = ρ²|m0|² + |P|² − 1: 2ρL = −Q, squared 4ρ²L² = Q².
       const dvec2 m0 = e.toUnit[0], m1 = e.toUnit[1];
-      const SweepPolynomial zc = z - SweepPolynomial::linear(e.center.y, 0.0);
-      const SweepPolynomial px = zc * m1.x - SweepPolynomial::linear(e.center.x * m0.x, 0.0);
-      const SweepPolynomial py = zc * m1.y - SweepPolynomial::linear(e.center.x * m0.y, 0.0);
-      const SweepPolynomial L = px * m0.x + py * m0.y;
-      const SweepPolynomial Q =
-          rho2 * glm::dot(m0, m0) + px * px + py * py - SweepPolynomial::linear(1.0, 0.0);
-      const double reference = glm::length(m0) * (std::abs(px.c[0]) + std::abs(px.c[1]) +
-                                                  std::abs(py.c[0]) + std::abs(py.c[1]));
-      if (std::abs(L.c[0]) + std::abs(L.c[1]) <= 1e-12 * reference) {
-        p = Q;  // centred on the axis (a sphere or spheroid): no odd powers of ρ
+      const double zc0 = z.c[0] - e.center.y, zc1 = z.c[1];
+      const double px0 = zc0 * m1.x - e.center.x * m0.x, px1 = zc1 * m1.x;
+      const double py0 = zc0 * m1.y - e.center.x * m0.y, py1 = zc1 * m1.y;
+      const double L0 = px0 * m0.x + py0 * m0.y, L1 = px1 * m0.x + py1 * m0.y;
+      const double k = glm::dot(m0, m0);
+      const double Q0 = r[0] * k + px0 * px0 + py0 * py0 - 1.0;
+      const double Q1 = r[1] * k + 2.0 * (px0 * px1 + py0 * py1);
+      const double Q2 = r[2] * k + px1 * px1 + py1 * py1;
+      const double reference =
+          glm::length(m0) * (std::abs(px0) + std::abs(px1) + std::abs(py0) + std::abs(py1));
+      if (std::abs(L0) + std::abs(L1) <= 1e-12 * reference) {
+        // Centred on the axis (a sphere or spheroid): no odd powers of ρ.
+        p.n = 2;
+        p.c[0] = Q0;
+        p.c[1] = Q1;
+        p.c[2] = Q2;
       } else {
-        p = rho2 * L * L * 4.0 - Q * Q;
+        // 4ρ²L² − Q², the products written out.
+        const double l0 = 4.0 * L0 * L0, l1 = 8.0 * L0 * L1, l2 = 4.0 * L1 * L1;
+        p.n = 4;
+        p.c[0] = r[0] * l0 - Q0 * Q0;
+        p.c[1] = r[0] * l1 + r[1] * l0 - 2.0 * Q0 * Q1;
+        p.c[2] = r[0] * l2 + r[1] * l1 + r[2] * l0 - (2.0 * Q0 * Q2 + Q1 * Q1);
+        p.c[3] = r[1] * l2 + r[2] * l1 - 2.0 * Q1 * Q2;
+        p.c[4] = r[2] * l2 - Q2 * Q2;
       }
     }
     double s[4];
@@ -138,31 +190,15 @@ void Revolution::objectSpans(const Ray& ray, SpanList& out) const {
   path.rho2.c[2] = x1 * x1 + y1 * y1;
   path.z = SweepPolynomial::linear(o.z + path.middle * d.z, path.half * d.z);
 
-  // Pieces: ρ falls until the point of the line nearest the axis and rises
-  // after it, z is linear, so a stretch on one side lies in its ends' box.
-  double breaks[3] = {t0, t1, t1};
-  int parts = 1;
-  if (path.rho2.c[2] > 0.0) {
-    const double nearest = path.middle + path.half * (-path.rho2.c[1] / (2.0 * path.rho2.c[2]));
-    if (nearest > t0 && nearest < t1) {
-      breaks[1] = nearest;
-      parts = 2;
-    }
-  }
-  SweepPiece pieces[8];
-  int count = 0;
-  for (int part = 0; part < parts; ++part) {
-    const double a = breaks[part], bEnd = breaks[part + 1];
-    dvec2 pa = path.at(a);
-    for (int k = 0; k < 4; ++k) {
-      const double ta = a + (bEnd - a) * k / 4, tb = k == 3 ? bEnd : a + (bEnd - a) * (k + 1) / 4;
-      const dvec2 pb = path.at(tb);
-      pieces[count++] = {ta, tb, glm::min(pa, pb), glm::max(pa, pb), false, pa, pb};
-      pa = pb;
-    }
-  }
+  path.zRate = path.z.c[1] != 0.0 ? 1.0 / path.z.c[1] : 0.0;
+  path.nearest = path.rho2.c[2] > 0.0 ? -path.rho2.c[1] / (2.0 * path.rho2.c[2])
+                                      : std::numeric_limits<double>::quiet_NaN();
+  path.slack2 = 1e-12 * swept_->size() * swept_->size();
+
+  // One piece: meets tests the curve itself against the index's boxes.
+  const SweepPiece piece{t0, t1, dvec2(0.0), dvec2(0.0), false, dvec2(0.0), dvec2(0.0)};
   SpanList spans;
-  swept_->spans(this, path, t0, t1, kSweepStartFace, kSweepEndFace, pieces, count, spans);
+  swept_->spans(this, path, t0, t1, kSweepStartFace, kSweepEndFace, &piece, 1, spans);
   if (!fullTurn_ && !spans.empty()) {
     // The wedge: y >= 0 and x·sin a − y·cos a >= 0, both for a <= 180°,
     // either for more.
