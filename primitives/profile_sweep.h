@@ -151,7 +151,8 @@ class SweptRegion {
   void buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges);
   std::uint32_t addTree(const Region& region, std::uint32_t& nextLeaf);
   // Calls f(edge) for each edge of the leaf whose box (and the boxes of the
-  // nodes above it) meets(lo, hi) accepts.
+  // nodes above it) meets(lo, hi) accepts. The caller has asked it of the
+  // root, whose box is the leaf's, grown.
   template <class Meets, class F>
   void forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;

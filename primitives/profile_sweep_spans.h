@@ -80,20 +80,23 @@ class SweepSegmentTest {
 template <class Meets, class F>
 void SweptRegion::forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const {
   if (leaf.nodes.empty()) return;
+  // The nodes on the stack have been accepted (the root by the caller);
+  // children are tested before they are pushed.
   std::uint32_t stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = leaf.nodes[stack[--top]];
-    if (!meets(node.lo, node.hi)) continue;
     if (node.count > 0) {
       for (std::uint32_t i = node.start; i < node.start + node.count; ++i) {
         const Item& item = leaf.items[i];
         if (node.count == 1 || meets(item.lo, item.hi)) f(item.edge);
       }
-    } else {
-      stack[top++] = node.start;
-      stack[top++] = node.start + 1;
+      continue;
+    }
+    for (std::uint32_t child = node.start; child < node.start + 2; ++child) {
+      const Node& c = leaf.nodes[child];
+      if (meets(c.lo, c.hi)) stack[top++] = child;
     }
   }
 }
@@ -225,10 +228,11 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
     }
     setState(k, inside);
   };
-  // An end of the window outside the leaf's box (grown) is outside it.
-  const Node& root = leaf.nodes[0];
+  // An end of the window clearly outside the leaf's box is outside it.
+  // (The sweeps' windows end a pad past the region's box, beyond rounding.)
+  const dvec2 lo = leaf.box.lo - dvec2(0.5 * pad_), hi = leaf.box.hi + dvec2(0.5 * pad_);
   const auto outsideBox = [&](const dvec2& u) {
-    return u.x < root.lo.x || u.x > root.hi.x || u.y < root.lo.y || u.y > root.hi.y;
+    return u.x < lo.x || u.x > hi.x || u.y < lo.y || u.y > hi.y;
   };
   const bool startOutside = outsideBox(path.at(t0));
   if (!startOutside && outsideBox(path.at(t1))) {
