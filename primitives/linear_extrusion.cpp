@@ -238,6 +238,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     t1 = std::min(t1, b);
   }
   if (!(t0 < t1) || t1 < ray.tMin || t0 > ray.tMax) return;
+  cutSweepWindow(ray, t0, t1);
 
   SpanList spans;
   const Normalised n{0.5 * (t0 + t1), 0.5 * (t1 - t0)};

@@ -14,6 +14,7 @@
 // edges' outward normals.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <glm/mat2x2.hpp>
 #include <glm/vec2.hpp>
@@ -180,6 +181,17 @@ class SweptRegion {
   double size_ = 1.0;
   double pad_ = 0.0;  // 1e-9 of size_
 };
+
+// Only boundaries within the ray's [tMin, tMax] are answers (solid.h), so
+// a sweep's window that reaches past them is cut a little outside them:
+// the stretch beyond is never traced (for a shadow ray, which starts on
+// the part, often the most of it). A span may then end at the cut, inside
+// the solid and outside the ray's range, as solid.h allows.
+inline void cutSweepWindow(const Ray& ray, double& t0, double& t1) {
+  const double margin = 1e-6 * (t1 - t0);
+  if (ray.tMin - margin > t0) t0 = ray.tMin - margin - 1e-9 * std::abs(ray.tMin);
+  if (ray.tMax + margin < t1) t1 = ray.tMax + margin + 1e-9 * std::abs(ray.tMax);
+}
 
 // ---- polynomials in a normalised parameter s ∈ [-1, 1] -----------------------
 

@@ -178,6 +178,7 @@ void Revolution::objectSpans(const Ray& ray, SpanList& out) const {
   t1 = std::min(t1, around[n - 1].hi);
   if (!(t0 < t1) || !std::isfinite(t0) || !std::isfinite(t1) || t1 < ray.tMin || t0 > ray.tMax)
     return;
+  cutSweepWindow(ray, t0, t1);
 
   TurnedPath path;
   path.middle = 0.5 * (t0 + t1);
