@@ -14,6 +14,7 @@
 // edges' outward normals.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <glm/mat2x2.hpp>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "engine/primitive.h"
+#include "engine/solvers/quartic.h"
 #include "engine/span_list.h"
 #include "profile/region.h"
 
@@ -61,10 +63,22 @@ struct SweepEdge {
   // Is u (a point on the edge's line or ellipse) on the edge, allowing
   // `slack` of its parameter (segment fraction, or radians)? clean: and not
   // within slack of an end.
-  bool holds(const dvec2& u, double slack, bool& clean) const;
+  bool holds(const dvec2& u, double slack, bool& clean) const {
+    if (arc) return arcHolds(u, slack, clean);
+    const dvec2 d = to - from;
+    const double s = ((u.x - from.x) * d.x + (u.y - from.y) * d.y) / (d.x * d.x + d.y * d.y);
+    clean = s > slack && s < 1.0 - slack;
+    return s >= -slack && s <= 1.0 + slack;
+  }
   // How far u is from the edge's line or ellipse, roughly (exact for
   // segments and circles).
-  double distance(const dvec2& u) const;
+  double distance(const dvec2& u) const {
+    return arc ? arcDistance(u) : std::abs(normal.x * u.x + normal.y * u.y - offset);
+  }
+
+ private:
+  bool arcHolds(const dvec2& u, double slack, bool& clean) const;
+  double arcDistance(const dvec2& u) const;
 };
 
 // A stretch of the curve, t0 <= t <= t1, whose image in the plane lies in
@@ -121,9 +135,20 @@ class SweptRegion {
   // closed box lo–hi (false only when it surely does not; sweepPieceMeets
   // is the test of the piece's box, and segment when straight): the index
   // asks it of its nodes and then of each edge's box before roots.
+  //
+  // firstOnly: only the first boundary is asked for (Solid's
+  // spansToFirstBoundary). A path that provides
+  //   bool meetsFrom(const SweepPiece&, const dvec2& lo, const dvec2& hi,
+  //                  double& from) const;
+  // (meets, and from: a t before which the curve is not in the box) then
+  // has the index walked nearest box first, for a region of one leaf whose
+  // box the window starts outside: the spans are exact up to a little past
+  // the first crossing and end there. Returns true when they were cut so;
+  // if they are then empty, the caller must ask again without firstOnly.
   template <class Path>
-  void spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
-             std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out) const;
+  bool spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
+             std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out,
+             bool firstOnly = false) const;
 
  private:
   // A 2D bounding volume hierarchy over one leaf's edges. Every box (the
@@ -156,12 +181,17 @@ class SweptRegion {
   // root, whose box is the leaf's, grown.
   template <class Meets, class F>
   void forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const;
+  // The same for meetsFrom(lo, hi, from), nearest box first, leaving the
+  // boxes the curve enters only past `bound` (which f may lower).
+  template <class MeetsFrom, class F>
+  void forEachEdgeInOrder(const Leaf& leaf, MeetsFrom&& meetsFrom, const double& bound,
+                          F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;
   bool treeContains(std::uint32_t node, const dvec2& u) const;
   template <class Path>
   void treeSpans(const Primitive* owner, std::uint32_t node, const Path& path, double t0, double t1,
                  std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces, int pieceCount,
-                 SpanList& out) const;
+                 bool firstOnly, bool& truncated, SpanList& out) const;
 
   // A root of a path is the edge's when the curve's point there is this
   // close to the edge's line or ellipse (in units of the region's size):
@@ -216,8 +246,40 @@ struct SweepPolynomial {
 // The roots in [s0, s1] of the polynomial, each once (a double root once
 // or twice, or not at all when rounding keeps it off zero). Leading
 // coefficients negligible next to the others are dropped first. Returns the
-// count (at most 4).
-int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots);
+// count (at most 4). (Inline: it runs for every edge a ray's curve comes
+// near.)
+inline int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots) {
+  int n = p.n;
+  double scale = 0.0;
+  for (int i = 0; i <= n; ++i) scale = std::max(scale, std::abs(p.c[i]));
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 0;
+  // On [-1, 1] a term this small moves the polynomial by less than rounding.
+  while (n > 0 && std::abs(p.c[n]) <= 1e-14 * scale) --n;
+  if (n == 0) return 0;
+  int count = 0;
+  auto keep = [&](double s) {
+    if (s >= s0 && s <= s1) roots[count++] = s;
+  };
+  if (n == 1) {
+    keep(-p.c[0] / p.c[1]);
+    return count;
+  }
+  if (n == 2) {
+    // The cancellation-free form (Numerical Recipes 5.6); a double root is
+    // kept once, a discriminant that rounding took below zero is a
+    // tangency and gives nothing.
+    const double a = p.c[2], b = p.c[1], c = p.c[0];
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    keep(r0);
+    if (r1 != r0) keep(r1);
+    return count;
+  }
+  return polynomialSublevelBoundaries(p.c, n, s0, s1, roots);
+}
 
 }  // namespace csgray::detail
 

@@ -101,16 +101,56 @@ void SweptRegion::forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const 
   }
 }
 
+template <class MeetsFrom, class F>
+void SweptRegion::forEachEdgeInOrder(const Leaf& leaf, MeetsFrom&& meetsFrom, const double& bound,
+                                     F&& f) const {
+  struct Entry {
+    std::uint32_t node;
+    double from;
+  };
+  Entry stack[64];
+  int top = 0;
+  double from = 0.0;
+  if (!meetsFrom(leaf.nodes[0].lo, leaf.nodes[0].hi, from)) return;
+  stack[top++] = {0, from};
+  while (top > 0) {
+    const Entry entry = stack[--top];
+    if (entry.from > bound) continue;
+    const Node& node = leaf.nodes[entry.node];
+    if (node.count > 0) {
+      for (std::uint32_t i = node.start; i < node.start + node.count; ++i) {
+        const Item& item = leaf.items[i];
+        if (node.count == 1 || (meetsFrom(item.lo, item.hi, from) && from <= bound)) f(item.edge);
+      }
+      continue;
+    }
+    // The nearer child on top.
+    double from0 = 0.0, from1 = 0.0;
+    const bool meets0 = meetsFrom(leaf.nodes[node.start].lo, leaf.nodes[node.start].hi, from0);
+    const bool meets1 =
+        meetsFrom(leaf.nodes[node.start + 1].lo, leaf.nodes[node.start + 1].hi, from1);
+    if (meets0 && meets1 && from0 < from1) {
+      stack[top++] = {node.start + 1, from1};
+      stack[top++] = {node.start, from0};
+    } else {
+      if (meets0) stack[top++] = {node.start, from0};
+      if (meets1) stack[top++] = {node.start + 1, from1};
+    }
+  }
+}
+
 template <class Path>
-void SweptRegion::spans(const Primitive* owner, const Path& path, double t0, double t1,
+bool SweptRegion::spans(const Primitive* owner, const Path& path, double t0, double t1,
                         std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces,
-                        int pieceCount, SpanList& out) const {
+                        int pieceCount, SpanList& out, bool firstOnly) const {
   out.clear();
-  if (!(t0 < t1)) return;
-  treeSpans(owner, 0, path, t0, t1, face0, face1, pieces, pieceCount, out);
+  if (!(t0 < t1)) return false;
+  bool truncated = false;
+  treeSpans(owner, 0, path, t0, t1, face0, face1, pieces, pieceCount,
+            firstOnly && tree_.size() == 1, truncated, out);
   bool flipped = false;
   for (const Span& s : out) flipped = flipped || s.in.flip || s.out.flip;
-  if (!flipped) return;
+  if (!flipped) return truncated;
   // A hole's boundaries, flipped by the difference, become reversed faces.
   SpanList unflipped;
   for (Span s : out) {
@@ -123,12 +163,14 @@ void SweptRegion::spans(const Primitive* owner, const Path& path, double t0, dou
     unflipped.push_back(s);
   }
   out = unflipped;
+  return truncated;
 }
 
 template <class Path>
 void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const Path& path,
                             double t0, double t1, std::uint32_t face0, std::uint32_t face1,
-                            const SweepPiece* pieces, int pieceCount, SpanList& out) const {
+                            const SweepPiece* pieces, int pieceCount, bool firstOnly,
+                            bool& truncated, SpanList& out) const {
   out.clear();
   const TreeNode& node = tree_[index];
   if (node.op != Region::Op::Leaf) {
@@ -136,12 +178,14 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
     bool first = true;
     for (std::uint32_t child : node.operands) {
       if (first) {
-        treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, out);
+        treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, false, truncated,
+                  out);
         first = false;
         if (out.empty() && node.op != Region::Op::Union) return;
         continue;
       }
-      treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, operand);
+      treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, false, truncated,
+                operand);
       if (node.op == Region::Op::Union) {
         if (operand.empty()) continue;
         unite(out, operand, merged);
@@ -161,32 +205,79 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   // each piece of the curve.
   const Leaf& leaf = leaves_[node.leaf];
   if (leaf.nodes.empty()) return;
+  // An end of the window clearly outside the leaf's box is outside it.
+  // (The sweeps' windows end a pad past the region's box, beyond rounding.)
+  const dvec2 boxLo = leaf.box.lo - dvec2(0.5 * pad_), boxHi = leaf.box.hi + dvec2(0.5 * pad_);
+  const auto outsideBox = [&](const dvec2& u) {
+    return u.x < boxLo.x || u.x > boxHi.x || u.y < boxLo.y || u.y > boxHi.y;
+  };
+  const bool startOutside = outsideBox(path.at(t0));
   bool touched = false;
   std::vector<SweepCrossing>& crossings = sweep_detail::crossingBuffer();
   crossings.clear();
-  for (int k = 0; k < pieceCount; ++k) {
+  const auto addCrossings = [&](std::uint32_t e, double from, double to) {
+    const SweepEdge& edge = edges_[e];
+    double roots[8];
+    const int n = path.roots(edge, from, to, roots);
+    for (int i = 0; i < n; ++i) {
+      const dvec2 u = path.at(roots[i]);
+      // Roots of a squared equation that are not the edge's own.
+      if (!(edge.distance(u) <= kAcceptDistance * size_)) continue;
+      bool clean = false;
+      if (!edge.holds(u, kEdgeSlack, clean)) continue;
+      crossings.push_back({roots[i], kSweepFirstEdgeFace + e, clean});
+    }
+  };
+  // Where the crossings found are all there are: the window's end, or in
+  // the first-boundary mode a little past the first crossing.
+  double end = t1;
+  bool ordered = false;
+  if constexpr (requires(double from) { path.meetsFrom(pieces[0], dvec2(), dvec2(), from); }) {
+    ordered = firstOnly && startOutside && pieceCount == 1;
+    if (ordered) {
+      // Only the first boundary is needed: the index is walked nearest
+      // box first, and boxes the curve enters only past the first crossing
+      // found (and a margin, within which a crossing may still change
+      // what it means) are left. The stretches up to `end` are exact.
+      const SweepPiece& piece = pieces[0];
+      const double margin = 1e-6 * (t1 - t0);
+      double bound = kInfinity;
+      const auto meetsFrom = [&](const dvec2& lo, const dvec2& hi, double& from) {
+        return path.meetsFrom(piece, lo, hi, from);
+      };
+      forEachEdgeInOrder(leaf, meetsFrom, bound, [&](std::uint32_t e) {
+        const std::size_t before = crossings.size();
+        addCrossings(e, piece.t0, piece.t1);
+        for (std::size_t i = before; i < crossings.size(); ++i)
+          bound = std::min(bound, crossings[i].t + margin);
+      });
+      touched = true;
+      if (bound < t1) {
+        end = bound;
+        truncated = true;
+        std::size_t kept = 0;
+        for (const SweepCrossing& c : crossings)
+          if (c.t <= end) crossings[kept++] = c;
+        crossings.resize(kept);
+      }
+    }
+  }
+  for (int k = 0; k < pieceCount && !ordered; ++k) {
     const SweepPiece& piece = pieces[k];
     const auto meets = [&](const dvec2& lo, const dvec2& hi) { return path.meets(piece, lo, hi); };
     // (The root's box is the leaf's, grown.)
     if (!meets(leaf.nodes[0].lo, leaf.nodes[0].hi)) continue;
     touched = true;
-    forEachEdgeNear(leaf, meets, [&](std::uint32_t e) {
-      const SweepEdge& edge = edges_[e];
-      double roots[8];
-      const int n = path.roots(edge, piece.t0, piece.t1, roots);
-      for (int i = 0; i < n; ++i) {
-        const dvec2 u = path.at(roots[i]);
-        // Roots of a squared equation that are not the edge's own.
-        if (!(edge.distance(u) <= kAcceptDistance * size_)) continue;
-        bool clean = false;
-        if (!edge.holds(u, kEdgeSlack, clean)) continue;
-        crossings.push_back({roots[i], kSweepFirstEdgeFace + e, clean});
-      }
-    });
+    forEachEdgeNear(leaf, meets, [&](std::uint32_t e) { addCrossings(e, piece.t0, piece.t1); });
   }
   if (!touched) return;
-  std::sort(crossings.begin(), crossings.end(),
-            [](const SweepCrossing& a, const SweepCrossing& b) { return a.t < b.t; });
+  // By insertion: a ray meets few edges.
+  for (std::size_t i = 1; i < crossings.size(); ++i) {
+    const SweepCrossing c = crossings[i];
+    std::size_t j = i;
+    for (; j > 0 && c.t < crossings[j - 1].t; --j) crossings[j] = crossings[j - 1];
+    crossings[j] = c;
+  }
   // Crossings this close are a tangency, a vertex met through both its
   // edges, or a crossing found twice: the state after them is asked of the
   // leaf rather than counted.
@@ -208,7 +299,7 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   // its state is kept in crossing k's `before` (the last one in lastInside).
   const double reliableLength = 1e-7 * (t1 - t0);
   const auto stretchStart = [&](std::size_t k) { return k == 0 ? t0 : crossings[k - 1].t; };
-  const auto stretchEnd = [&](std::size_t k) { return k == n ? t1 : crossings[k].t; };
+  const auto stretchEnd = [&](std::size_t k) { return k == n ? end : crossings[k].t; };
   bool lastInside = false;
   const auto setState = [&](std::size_t k, bool inside) {
     if (k == n) {
@@ -228,14 +319,7 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
     }
     setState(k, inside);
   };
-  // An end of the window clearly outside the leaf's box is outside it.
-  // (The sweeps' windows end a pad past the region's box, beyond rounding.)
-  const dvec2 lo = leaf.box.lo - dvec2(0.5 * pad_), hi = leaf.box.hi + dvec2(0.5 * pad_);
-  const auto outsideBox = [&](const dvec2& u) {
-    return u.x < lo.x || u.x > hi.x || u.y < lo.y || u.y > hi.y;
-  };
-  const bool startOutside = outsideBox(path.at(t0));
-  if (!startOutside && outsideBox(path.at(t1))) {
+  if (!startOutside && outsideBox(path.at(end))) {
     reliable = true;
     setState(n, false);
     for (std::size_t k = n; k-- > 0;) step(k, crossings[k].clean);
@@ -256,7 +340,7 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   Span pending{};
   bool open = false;
   for (std::size_t i = 0; i <= n; ++i) {
-    const double b = i < n ? crossings[i].t : t1;
+    const double b = i < n ? crossings[i].t : end;
     const std::uint32_t faceB = i < n ? crossings[i].face : face1;
     const bool stretchInside = i < n ? crossings[i].before : lastInside;
     if (stretchInside && b > a) {

@@ -24,9 +24,9 @@ struct TurnedPath {
   double middle, half;
   SweepPolynomial rho2, z;
   // For meets: 1 / z1 (0 for a level ray), the s where ρ² is least (or
-  // NaN), and an allowance for rounding in ρ² (in units of the part's
+  // NaN) and its value there, and an allowance for rounding in ρ² (in units of the part's
   // size squared, far above the rounding of q, far below any feature).
-  double zRate = 0.0, nearest = 0.0, slack2 = 0.0;
+  double zRate = 0.0, nearest = 0.0, leastValue = 0.0, slack2 = 0.0;
 
   double toS(double t) const { return (t - middle) / half; }
   double q(double s) const { return (rho2.c[2] * s + rho2.c[1]) * s + rho2.c[0]; }
@@ -41,21 +41,29 @@ struct TurnedPath {
   // when that range misses [ρlo², ρhi²]. (POV-Ray's lathe bounds each
   // segment by a cylindrical shell the same way; here it is exact, and
   // asked of the index's nodes as well.)
-  bool meets(const SweepPiece&, const dvec2& lo, const dvec2& hi) const {
+  bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
+    double from = 0.0;
+    return meetsFrom(piece, lo, hi, from);
+  }
+  bool meetsFrom(const SweepPiece&, const dvec2& lo, const dvec2& hi, double& from) const {
+    // Without branches but the level ray's: a node's outcome is a coin
+    // toss that a predicted branch would mostly lose.
     double s0 = -1.0, s1 = 1.0;
+    bool slab = true;
     if (zRate != 0.0) {
-      double a = (lo.y - z.c[0]) * zRate, b = (hi.y - z.c[0]) * zRate;
-      if (a > b) std::swap(a, b);
-      s0 = std::max(s0, a);
-      s1 = std::min(s1, b);
-      if (!(s0 <= s1)) return false;
-    } else if (z.c[0] < lo.y || z.c[0] > hi.y) {
-      return false;
+      const double a = (lo.y - z.c[0]) * zRate, b = (hi.y - z.c[0]) * zRate;
+      s0 = std::max(s0, std::min(a, b));
+      s1 = std::min(s1, std::max(a, b));
+    } else {
+      slab = z.c[0] >= lo.y && z.c[0] <= hi.y;
     }
     const double q0 = q(s0), q1 = q(s1);
-    const double least = nearest > s0 && nearest < s1 ? q(nearest) : std::min(q0, q1);
-    if (least > hi.x * hi.x + slack2) return false;
-    return lo.x <= 0.0 || std::max(q0, q1) >= lo.x * lo.x - slack2;
+    const double least = nearest > s0 && nearest < s1 ? leastValue : std::min(q0, q1);
+    // (A box reaching the axis has no inner radius; ρ² >= 0 up to rounding.)
+    const double inner = lo.x > 0.0 ? lo.x * lo.x : 0.0;
+    from = middle + half * s0;
+    return slab & (s0 <= s1) & (least <= hi.x * hi.x + slack2) &
+           (std::max(q0, q1) >= inner - slack2);
   }
 
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
@@ -152,7 +160,16 @@ Revolution::Revolution(RegionPtr region, double angleDegrees)
   }
 }
 
-void Revolution::objectSpans(const Ray& ray, SpanList& out) const {
+void Revolution::objectSpans(const Ray& ray, SpanList& out) const { spansOf(ray, false, out); }
+
+// The renderer asks an opaque solid for its first boundary only: the
+// revolution then follows the ray's curve only as far as that.
+void Revolution::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  out.clear();
+  spansOf(frame().isIdentity() ? ray : frame().rayToObject(ray), true, out);
+}
+
+void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
   const ProfileBounds& b = swept_->bounds();
@@ -194,12 +211,14 @@ void Revolution::objectSpans(const Ray& ray, SpanList& out) const {
   path.zRate = path.z.c[1] != 0.0 ? 1.0 / path.z.c[1] : 0.0;
   path.nearest = path.rho2.c[2] > 0.0 ? -path.rho2.c[1] / (2.0 * path.rho2.c[2])
                                       : std::numeric_limits<double>::quiet_NaN();
+  path.leastValue = path.q(path.nearest);
   path.slack2 = 1e-12 * swept_->size() * swept_->size();
 
   // One piece: meets tests the curve itself against the index's boxes.
   const SweepPiece piece{t0, t1, dvec2(0.0), dvec2(0.0), false, dvec2(0.0), dvec2(0.0)};
   SpanList spans;
-  swept_->spans(this, path, t0, t1, kSweepStartFace, kSweepEndFace, &piece, 1, spans);
+  const bool truncated = swept_->spans(this, path, t0, t1, kSweepStartFace, kSweepEndFace, &piece,
+                                       1, spans, firstOnly);
   if (!fullTurn_ && !spans.empty()) {
     // The wedge: y >= 0 and x·sin a − y·cos a >= 0, both for a <= 180°,
     // either for more.
@@ -217,6 +236,13 @@ void Revolution::objectSpans(const Ray& ray, SpanList& out) const {
   }
   for (const Span& s : spans)
     if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);
+  if (truncated && (out.empty() || !(out.front().in.t > ray.tMin))) {
+    // Cut short where the first boundary is not yet known (the curve only
+    // touched an edge, the wedge cut the span away, or the ray starts
+    // inside, where the first boundary is an exit): the whole spans.
+    out.clear();
+    spansOf(ray, false, out);
+  }
 }
 
 bool Revolution::inWedge(const dvec3& p) const {
