@@ -21,7 +21,7 @@ namespace {
 // edge's equation along it is written down in closed form from these
 // coefficients, once per edge and ray.
 struct TurnedPath {
-  double middle, half;
+  double middle, half, inverseHalf;
   SweepPolynomial rho2, z;
   // For meets: 1 / z1 (0 for a level ray), the s where ρ² is least (or
   // NaN) and its value there, and an allowance for rounding in ρ² (in units of the part's
@@ -31,7 +31,7 @@ struct TurnedPath {
   double toS(double t) const { return (t - middle) / half; }
   double q(double s) const { return (rho2.c[2] * s + rho2.c[1]) * s + rho2.c[0]; }
   dvec2 at(double t) const {
-    const double s = toS(t);
+    const double s = (t - middle) * inverseHalf;  // (a product: at runs often)
     return {std::sqrt(std::max(0.0, polynomialValue(rho2.c, 2, s))), polynomialValue(z.c, 1, s)};
   }
 
@@ -46,24 +46,22 @@ struct TurnedPath {
     return meetsFrom(piece, lo, hi, from);
   }
   bool meetsFrom(const SweepPiece&, const dvec2& lo, const dvec2& hi, double& from) const {
-    // Without branches but the level ray's: a node's outcome is a coin
-    // toss that a predicted branch would mostly lose.
+    // The slab first: most boxes the curve misses, it misses in z.
     double s0 = -1.0, s1 = 1.0;
-    bool slab = true;
     if (zRate != 0.0) {
       const double a = (lo.y - z.c[0]) * zRate, b = (hi.y - z.c[0]) * zRate;
       s0 = std::max(s0, std::min(a, b));
       s1 = std::min(s1, std::max(a, b));
-    } else {
-      slab = z.c[0] >= lo.y && z.c[0] <= hi.y;
+      if (!(s0 <= s1)) return false;
+    } else if (z.c[0] < lo.y || z.c[0] > hi.y) {
+      return false;
     }
     const double q0 = q(s0), q1 = q(s1);
     const double least = nearest > s0 && nearest < s1 ? leastValue : std::min(q0, q1);
     // (A box reaching the axis has no inner radius; ρ² >= 0 up to rounding.)
     const double inner = lo.x > 0.0 ? lo.x * lo.x : 0.0;
     from = middle + half * s0;
-    return slab & (s0 <= s1) & (least <= hi.x * hi.x + slack2) &
-           (std::max(q0, q1) >= inner - slack2);
+    return (least <= hi.x * hi.x + slack2) & (std::max(q0, q1) >= inner - slack2);
   }
 
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
@@ -200,6 +198,7 @@ void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   TurnedPath path;
   path.middle = 0.5 * (t0 + t1);
   path.half = 0.5 * (t1 - t0);
+  path.inverseHalf = 1.0 / path.half;
   const double x0 = o.x + path.middle * d.x, x1 = path.half * d.x;
   const double y0 = o.y + path.middle * d.y, y1 = path.half * d.y;
   path.rho2.n = 2;
@@ -216,7 +215,9 @@ void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
 
   // One piece: meets tests the curve itself against the index's boxes.
   const SweepPiece piece{t0, t1, dvec2(0.0), dvec2(0.0), false, dvec2(0.0), dvec2(0.0)};
-  SpanList spans;
+  // A full turn's spans go straight to out (spared a copy per ray).
+  SpanList wedged;
+  SpanList& spans = fullTurn_ ? out : wedged;
   const bool truncated = swept_->spans(this, path, t0, t1, kSweepStartFace, kSweepEndFace, &piece,
                                        1, spans, firstOnly);
   if (!fullTurn_ && !spans.empty()) {
@@ -232,10 +233,18 @@ void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
       unite(first, second, wedge);
     }
     intersect(spans, wedge, cut);
-    spans = cut;
+    for (const Span& s : cut) out.push_back(s);
   }
-  for (const Span& s : spans)
-    if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);
+  // Spans wholly outside the ray's range (only the cut's margins can hold
+  // them) are left out.
+  bool outside = false;
+  for (const Span& s : out) outside = outside || s.out.t < ray.tMin || s.in.t > ray.tMax;
+  if (outside) {
+    const SpanList all = out;
+    out.clear();
+    for (const Span& s : all)
+      if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);
+  }
   if (truncated && (out.empty() || !(out.front().in.t > ray.tMin))) {
     // Cut short where the first boundary is not yet known (the curve only
     // touched an edge, the wedge cut the span away, or the ray starts
