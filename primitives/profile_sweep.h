@@ -100,6 +100,13 @@ struct SweepCrossing {
 
 class SweptRegion {
  public:
+  // A root of a path is the edge's when the curve's point there is this
+  // close to the edge's line or ellipse (in units of the region's size):
+  // far above rounding, far below the distance of a squared equation's
+  // mirrored roots (revolution.cpp) except next to the axis, where both
+  // are the same crossing.
+  static constexpr double kAcceptDistance = 1e-7;
+
   // Throws std::invalid_argument (naming `kind`) for an empty region or one
   // with non-finite coordinates.
   SweptRegion(RegionPtr region, const char* kind);
@@ -193,12 +200,6 @@ class SweptRegion {
                  std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces, int pieceCount,
                  bool firstOnly, bool& truncated, SpanList& out) const;
 
-  // A root of a path is the edge's when the curve's point there is this
-  // close to the edge's line or ellipse (in units of the region's size):
-  // far above rounding, far below the distance of a squared equation's
-  // mirrored roots (revolution.cpp) except next to the axis, where both
-  // are the same crossing.
-  static constexpr double kAcceptDistance = 1e-7;
   // How far past an edge's end (a fraction of a segment, radians of an
   // arc) a crossing still counts as on it, and within which of an end it
   // is not clean: a vertex met through both its edges must not be lost.

@@ -27,6 +27,7 @@ struct TurnedPath {
   // NaN) and its value there, and an allowance for rounding in ρ² (in units of the part's
   // size squared, far above the rounding of q, far below any feature).
   double zRate = 0.0, nearest = 0.0, leastValue = 0.0, slack2 = 0.0;
+  double rootSlack = 0.0;  // twice the spans' accepted distance of a root from its edge
 
   double toS(double t) const { return (t - middle) / half; }
   double q(double s) const { return (rho2.c[2] * s + rho2.c[1]) * s + rho2.c[0]; }
@@ -67,10 +68,12 @@ struct TurnedPath {
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
     SweepPolynomial p;
     const double* r = rho2.c;
+    double w0 = 0.0, w1 = 0.0;
     if (!e.arc) {
       // n_ρ·ρ = offset − n_z·z = w0 + w1·s, squared unless the segment is a
       // flat ring: n_ρ²·ρ² − w² = 0.
-      const double w0 = z.c[0] * -e.normal.y + e.offset, w1 = z.c[1] * -e.normal.y;
+      w0 = z.c[0] * -e.normal.y + e.offset;
+      w1 = z.c[1] * -e.normal.y;
       if (std::abs(e.normal.x) <= 1e-12) {
         p.n = 1;
         p.c[0] = w0;
@@ -116,8 +119,19 @@ struct TurnedPath {
     }
     double s[4];
     const int count = sweepPolynomialRoots(p, toS(t0), toS(t1), s);
-    for (int i = 0; i < count; ++i) out[i] = middle + half * s[i];
-    return count;
+    int kept = 0;
+    for (int i = 0; i < count; ++i) {
+      // Roots the spans would drop, dropped here without the point's square
+      // root: z off the edge's slab by more than the accepted distance
+      // (doubled), or a segment's root where n_ρ·ρ = −w, of its mirror image
+      // in the axis, at least |w| off its line.
+      const double zs = z.c[0] + z.c[1] * s[i];
+      if (zs < e.box.lo.y - rootSlack || zs > e.box.hi.y + rootSlack) continue;
+      const double w = w0 + w1 * s[i];
+      if (!e.arc && e.normal.x * w < 0.0 && std::abs(w) > rootSlack) continue;
+      out[kept++] = middle + half * s[i];
+    }
+    return kept;
   }
 };
 
@@ -212,6 +226,7 @@ void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
                                       : std::numeric_limits<double>::quiet_NaN();
   path.leastValue = path.q(path.nearest);
   path.slack2 = 1e-12 * swept_->size() * swept_->size();
+  path.rootSlack = 2.0 * SweptRegion::kAcceptDistance * swept_->size();
 
   // One piece: meets tests the curve itself against the index's boxes.
   const SweepPiece piece{t0, t1, dvec2(0.0), dvec2(0.0), false, dvec2(0.0), dvec2(0.0)};
