@@ -14,10 +14,10 @@ namespace csgray::detail {
 
 namespace {
 
-dvec2 rotated(const dvec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
+// v turned by the angle whose cosine and sine are c and s.
+dvec2 turned(const dvec2& v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
+dvec2 rotated(const dvec2& v, double angle) { return turned(v, std::cos(angle), std::sin(angle)); }
 
 // The ray's coordinates in a normalised parameter: t = middle + half·s,
 // s ∈ [-1, 1] over the window, so that the polynomials' coefficients are
@@ -94,6 +94,12 @@ struct ScaledPath {
 // narrower than the resolution that may still hold roots are a grazing
 // touch: reported as a double root, which the spans resolve by asking the
 // region (profile_sweep.h).
+// Pieces of a twisted path are at most this long (in units of the
+// region's size), so that each piece's box holds few edges and each edge's
+// roots are isolated over a short stretch.
+constexpr double kTwistedPiece = 1.0 / 64.0;
+constexpr int kMaxTwistedPieces = 512;
+
 struct TwistedPath {
   Normalised n;
   dvec3 o, d;
@@ -134,13 +140,23 @@ struct TwistedPath {
       hess = 2.0 * norm;
     }
     const double L1 = grad * speed, L2 = hess * speed * speed + grad * bend;
+    // The implicit function and its slope along the curve, with one sine
+    // and cosine for the point and its velocity.
     auto f = [&](double t) {
-      const dvec2 u = at(t);
+      const double z = zeta(t), dz = d.z / h;
+      const double c = std::cos(tau * z), sn = std::sin(tau * z);
+      const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
+      const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
+      const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
+                     (d.y - v.y * (scale.y - 1.0) * dz) / sy);
+      const dvec2 u = turned(v, c, sn);
+      const dvec2 du = turned(dv + tau * dz * dvec2(-v.y, v.x), c, sn);
       const double value = e.implicit(u);
       const dvec2 gradient =
           e.arc ? 2.0 * (glm::transpose(e.toUnit) * (e.toUnit * (u - e.center))) : e.normal;
-      return std::pair<double, double>(value, glm::dot(gradient, velocity(t)));
+      return std::pair<double, double>(value, glm::dot(gradient, du));
     };
+    auto valueAt = [&](double t) { return e.implicit(at(t)); };
     int count = 0;
     struct Interval {
       double lo, hi;
@@ -155,7 +171,7 @@ struct TwistedPath {
       if (std::abs(value) > L1 * w) continue;
       if (std::abs(slope) > L2 * w) {
         // Monotone: a root where the ends differ in sign.
-        const double flo = f(iv.lo).first, fhi = f(iv.hi).first;
+        const double flo = valueAt(iv.lo), fhi = valueAt(iv.hi);
         if ((flo <= 0.0) != (fhi <= 0.0))
           out[count++] = bracketedRoot(f, iv.lo, iv.hi, flo <= 0.0, 1e-3 * resolution);
         continue;
@@ -303,8 +319,9 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     path.resolution = 1e-9 * swept_->size() / std::max(glm::length(d), 1e-300);
     // Pieces short enough that each box is a small part of the region.
     const double length = path.speed * (t1 - t0);
-    const int k = std::clamp(int(std::ceil(length / (0.125 * swept_->size()))), 1, 64);
-    SweepPiece pieces[64];
+    const int k =
+        std::clamp(int(std::ceil(length / (kTwistedPiece * swept_->size()))), 1, kMaxTwistedPieces);
+    SweepPiece pieces[kMaxTwistedPieces];
     for (int i = 0; i < k; ++i) {
       const double ta = t0 + (t1 - t0) * i / k, tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
       const dvec2 m = path.at(0.5 * (ta + tb));
