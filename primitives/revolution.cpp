@@ -199,12 +199,25 @@ void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
     t1 = (zhi - o.z) / d.z;
     if (t0 > t1) std::swap(t0, t1);
   }
-  Interval around[2];
-  const int n = quadraticSublevel(d.x * d.x + d.y * d.y, 2.0 * (o.x * d.x + o.y * d.y),
-                                  o.x * o.x + o.y * o.y - reach * reach, around);
-  if (n == 0) return;
-  t0 = std::max(t0, around[0].lo);
-  t1 = std::min(t1, around[n - 1].hi);
+  // ρ² <= reach²: quadraticSublevel's arithmetic for a > 0, inline (every
+  // ray that meets the box comes here); a vertical ray is left to it.
+  const double a = d.x * d.x + d.y * d.y, bq = 2.0 * (o.x * d.x + o.y * d.y),
+               c = o.x * o.x + o.y * o.y - reach * reach;
+  if (a > 0.0) {
+    const double disc = bq * bq - 4.0 * a * c;
+    if (disc < 0.0) return;
+    const double q = -0.5 * (bq + std::copysign(std::sqrt(disc), bq));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    t0 = std::max(t0, r0);
+    t1 = std::min(t1, r1);
+  } else {
+    Interval around[2];
+    const int n = quadraticSublevel(a, bq, c, around);
+    if (n == 0) return;
+    t0 = std::max(t0, around[0].lo);
+    t1 = std::min(t1, around[n - 1].hi);
+  }
   if (!(t0 < t1) || !std::isfinite(t0) || !std::isfinite(t1) || t1 < ray.tMin || t0 > ray.tMax)
     return;
   cutSweepWindow(ray, t0, t1);
