@@ -14,10 +14,10 @@ namespace csgray::detail {
 
 namespace {
 
-dvec2 rotated(const dvec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
+// v turned by the angle whose cosine and sine are c and s.
+dvec2 turned(const dvec2& v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
+dvec2 rotated(const dvec2& v, double angle) { return turned(v, std::cos(angle), std::sin(angle)); }
 
 // The ray's coordinates in a normalised parameter: t = middle + half·s,
 // s ∈ [-1, 1] over the window, so that the polynomials' coefficients are
@@ -37,6 +37,7 @@ struct ScaledPath {
   Normalised n;
   SweepPolynomial x, y, sx, sy;  // in s
   bool uniform;
+  SweepSegmentTest straight;  // uniform: the curve's segment
 
   dvec2 at(double t) const {
     const double s = n.toS(t);
@@ -44,16 +45,29 @@ struct ScaledPath {
             polynomialValue(y.c, 1, s) / polynomialValue(sy.c, 1, s)};
   }
 
+  bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
+    return uniform ? straight.meets(lo, hi) : sweepPieceMeets(piece, lo, hi);
+  }
+
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
     SweepPolynomial p;
     if (uniform) {
+      // The products of linear polynomials written out.
       if (!e.arc) {
-        p = x * e.normal.x + y * e.normal.y - sx * e.offset;
+        p.n = 1;
+        for (int i = 0; i < 2; ++i)
+          p.c[i] = x.c[i] * e.normal.x + y.c[i] * e.normal.y - sx.c[i] * e.offset;
       } else {
-        const SweepPolynomial X = x - sx * e.center.x, Y = y - sx * e.center.y;
-        const SweepPolynomial w0 = X * e.toUnit[0][0] + Y * e.toUnit[1][0];
-        const SweepPolynomial w1 = X * e.toUnit[0][1] + Y * e.toUnit[1][1];
-        p = w0 * w0 + w1 * w1 - sx * sx;
+        const double X0 = x.c[0] - sx.c[0] * e.center.x, X1 = x.c[1] - sx.c[1] * e.center.x;
+        const double Y0 = y.c[0] - sx.c[0] * e.center.y, Y1 = y.c[1] - sx.c[1] * e.center.y;
+        const double a0 = X0 * e.toUnit[0][0] + Y0 * e.toUnit[1][0];
+        const double a1 = X1 * e.toUnit[0][0] + Y1 * e.toUnit[1][0];
+        const double b0 = X0 * e.toUnit[0][1] + Y0 * e.toUnit[1][1];
+        const double b1 = X1 * e.toUnit[0][1] + Y1 * e.toUnit[1][1];
+        p.n = 2;
+        p.c[0] = a0 * a0 + b0 * b0 - sx.c[0] * sx.c[0];
+        p.c[1] = 2.0 * (a0 * a1) + 2.0 * (b0 * b1) - 2.0 * (sx.c[0] * sx.c[1]);
+        p.c[2] = a1 * a1 + b1 * b1 - sx.c[1] * sx.c[1];
       }
     } else if (!e.arc) {
       p = x * sy * e.normal.x + y * sx * e.normal.y - sx * sy * e.offset;
@@ -80,6 +94,12 @@ struct ScaledPath {
 // narrower than the resolution that may still hold roots are a grazing
 // touch: reported as a double root, which the spans resolve by asking the
 // region (profile_sweep.h).
+// Pieces of a twisted path are at most this long (in units of the
+// region's size), so that each piece's box holds few edges and each edge's
+// roots are isolated over a short stretch.
+constexpr double kTwistedPiece = 1.0 / 64.0;
+constexpr int kMaxTwistedPieces = 512;
+
 struct TwistedPath {
   Normalised n;
   dvec3 o, d;
@@ -90,6 +110,9 @@ struct TwistedPath {
   double resolution;  // in t
 
   double zeta(double t) const { return (o.z + t * d.z - z0) / h; }
+  bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
+    return sweepPieceMeets(piece, lo, hi);
+  }
   dvec2 at(double t) const {
     const double z = zeta(t);
     const dvec2 v((o.x + t * d.x) / (1.0 + (scale.x - 1.0) * z),
@@ -117,13 +140,23 @@ struct TwistedPath {
       hess = 2.0 * norm;
     }
     const double L1 = grad * speed, L2 = hess * speed * speed + grad * bend;
+    // The implicit function and its slope along the curve, with one sine
+    // and cosine for the point and its velocity.
     auto f = [&](double t) {
-      const dvec2 u = at(t);
+      const double z = zeta(t), dz = d.z / h;
+      const double c = std::cos(tau * z), sn = std::sin(tau * z);
+      const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
+      const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
+      const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
+                     (d.y - v.y * (scale.y - 1.0) * dz) / sy);
+      const dvec2 u = turned(v, c, sn);
+      const dvec2 du = turned(dv + tau * dz * dvec2(-v.y, v.x), c, sn);
       const double value = e.implicit(u);
       const dvec2 gradient =
           e.arc ? 2.0 * (glm::transpose(e.toUnit) * (e.toUnit * (u - e.center))) : e.normal;
-      return std::pair<double, double>(value, glm::dot(gradient, velocity(t)));
+      return std::pair<double, double>(value, glm::dot(gradient, du));
     };
+    auto valueAt = [&](double t) { return e.implicit(at(t)); };
     int count = 0;
     struct Interval {
       double lo, hi;
@@ -138,7 +171,7 @@ struct TwistedPath {
       if (std::abs(value) > L1 * w) continue;
       if (std::abs(slope) > L2 * w) {
         // Monotone: a root where the ends differ in sign.
-        const double flo = f(iv.lo).first, fhi = f(iv.hi).first;
+        const double flo = valueAt(iv.lo), fhi = valueAt(iv.hi);
         if ((flo <= 0.0) != (fhi <= 0.0))
           out[count++] = bracketedRoot(f, iv.lo, iv.hi, flo <= 0.0, 1e-3 * resolution);
         continue;
@@ -221,6 +254,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     t1 = std::min(t1, b);
   }
   if (!(t0 < t1) || t1 < ray.tMin || t0 > ray.tMax) return;
+  cutSweepWindow(ray, t0, t1);
 
   SpanList spans;
   const Normalised n{0.5 * (t0 + t1), 0.5 * (t1 - t0)};
@@ -240,6 +274,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
       // the ray): one piece, tested against the index as a segment.
       const dvec2 a = path.at(t0), b = path.at(t1);
       pieces[count++] = {t0, t1, glm::min(a, b), glm::max(a, b), true, a, b};
+      path.straight = SweepSegmentTest(a, b);
     } else {
       // Each coordinate is monotone in t: a piece lies in its ends' box.
       const int k = 8;
@@ -284,8 +319,9 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     path.resolution = 1e-9 * swept_->size() / std::max(glm::length(d), 1e-300);
     // Pieces short enough that each box is a small part of the region.
     const double length = path.speed * (t1 - t0);
-    const int k = std::clamp(int(std::ceil(length / (0.125 * swept_->size()))), 1, 64);
-    SweepPiece pieces[64];
+    const int k =
+        std::clamp(int(std::ceil(length / (kTwistedPiece * swept_->size()))), 1, kMaxTwistedPieces);
+    SweepPiece pieces[kMaxTwistedPieces];
     for (int i = 0; i < k; ++i) {
       const double ta = t0 + (t1 - t0) * i / k, tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
       const dvec2 m = path.at(0.5 * (ta + tb));

@@ -75,13 +75,7 @@ dvec2 SweepEdge::outwardGradient(const dvec2& u) const {
   return outward * (glm::transpose(toUnit) * (toUnit * (u - center)));
 }
 
-bool SweepEdge::holds(const dvec2& u, double slack, bool& clean) const {
-  if (!arc) {
-    const dvec2 d = to - from;
-    const double s = glm::dot(u - from, d) / glm::dot(d, d);
-    clean = s > slack && s < 1.0 - slack;
-    return s >= -slack && s <= 1.0 + slack;
-  }
+bool SweepEdge::arcHolds(const dvec2& u, double slack, bool& clean) const {
   if (fullTurn) {
     clean = true;
     return true;
@@ -95,8 +89,7 @@ bool SweepEdge::holds(const dvec2& u, double slack, bool& clean) const {
   return x <= hi + slack || x >= lo + kTwoPi - slack;
 }
 
-double SweepEdge::distance(const dvec2& u) const {
-  if (!arc) return std::abs(glm::dot(normal, u) - offset);
+double SweepEdge::arcDistance(const dvec2& u) const {
   const dvec2 w = toUnit * (u - center);
   return std::abs(glm::length(w) - 1.0) * size;
 }
@@ -113,6 +106,7 @@ SweptRegion::SweptRegion(RegionPtr region, const char* kind) : region_(std::move
     throw std::invalid_argument(std::string(kind) + ": the region's coordinates must be finite");
   size_ = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, std::abs(b.lo.x), std::abs(b.hi.x),
                     std::abs(b.lo.y), std::abs(b.hi.y), 1e-300});
+  pad_ = 1e-9 * size_;
   std::uint32_t nextLeaf = 0;
   addTree(*region_, nextLeaf);
   // The orientation of each edge: which side of it is the leaf's inside.
@@ -196,8 +190,8 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
     dvec2 clo(1e300), chi(-1e300);
     for (std::uint32_t i = task.begin; i < task.end; ++i) {
       const ProfileBounds& b = edges_[order[i]].box;
-      node.lo = glm::min(node.lo, b.lo);
-      node.hi = glm::max(node.hi, b.hi);
+      node.lo = glm::min(node.lo, b.lo - dvec2(pad_));
+      node.hi = glm::max(node.hi, b.hi + dvec2(pad_));
       const dvec2 c = 0.5 * (b.lo + b.hi);
       clo = glm::min(clo, c);
       chi = glm::max(chi, c);
@@ -205,7 +199,10 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
     if (task.end - task.begin <= kLeafEdges) {
       node.start = std::uint32_t(leaf.items.size());
       node.count = task.end - task.begin;
-      for (std::uint32_t i = task.begin; i < task.end; ++i) leaf.items.push_back(order[i]);
+      for (std::uint32_t i = task.begin; i < task.end; ++i) {
+        const ProfileBounds& b = edges_[order[i]].box;
+        leaf.items.push_back({b.lo - dvec2(pad_), b.hi + dvec2(pad_), order[i]});
+      }
       leaf.nodes[task.node] = node;
       continue;
     }
@@ -234,7 +231,10 @@ bool SweptRegion::leafContains(std::uint32_t index, const dvec2& u) const {
     return false;
   bool inside = false;
   const dvec2 end(leaf.box.hi.x + 1.0, u.y);
-  forEachEdgeNear(leaf, u, end, false, u, end, [&](std::uint32_t i) {
+  const auto meets = [&](const dvec2& lo, const dvec2& hi) {
+    return sweep_detail::boxesMeet(u, end, lo, hi);
+  };
+  forEachEdgeNear(leaf, meets, [&](std::uint32_t i) {
     const SweepEdge& e = edges_[i];
     if (segmentCrosses(u, e.from, e.to)) inside = !inside;
     if (e.arc && inArcCap(u, e)) inside = !inside;
@@ -291,39 +291,6 @@ SweepPolynomial SweepPolynomial::operator*(double k) const {
   SweepPolynomial p = *this;
   for (double& x : p.c) x *= k;
   return p;
-}
-
-int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots) {
-  int n = p.n;
-  double scale = 0.0;
-  for (int i = 0; i <= n; ++i) scale = std::max(scale, std::abs(p.c[i]));
-  if (!(scale > 0.0) || !std::isfinite(scale)) return 0;
-  // On [-1, 1] a term this small moves the polynomial by less than rounding.
-  while (n > 0 && std::abs(p.c[n]) <= 1e-14 * scale) --n;
-  if (n == 0) return 0;
-  int count = 0;
-  auto keep = [&](double s) {
-    if (s >= s0 && s <= s1) roots[count++] = s;
-  };
-  if (n == 1) {
-    keep(-p.c[0] / p.c[1]);
-    return count;
-  }
-  if (n == 2) {
-    // The cancellation-free form (Numerical Recipes 5.6); a double root is
-    // kept once, a discriminant that rounding took below zero is a
-    // tangency and gives nothing.
-    const double a = p.c[2], b = p.c[1], c = p.c[0];
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) return 0;
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
-    if (r0 > r1) std::swap(r0, r1);
-    keep(r0);
-    if (r1 != r0) keep(r1);
-    return count;
-  }
-  return polynomialSublevelBoundaries(p.c, n, s0, s1, roots);
 }
 
 }  // namespace csgray::detail

@@ -14,12 +14,15 @@
 // edges' outward normals.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <glm/mat2x2.hpp>
 #include <glm/vec2.hpp>
 #include <vector>
 
 #include "engine/primitive.h"
+#include "engine/solvers/quartic.h"
 #include "engine/span_list.h"
 #include "profile/region.h"
 
@@ -60,10 +63,22 @@ struct SweepEdge {
   // Is u (a point on the edge's line or ellipse) on the edge, allowing
   // `slack` of its parameter (segment fraction, or radians)? clean: and not
   // within slack of an end.
-  bool holds(const dvec2& u, double slack, bool& clean) const;
+  bool holds(const dvec2& u, double slack, bool& clean) const {
+    if (arc) return arcHolds(u, slack, clean);
+    const dvec2 d = to - from;
+    const double s = ((u.x - from.x) * d.x + (u.y - from.y) * d.y) / (d.x * d.x + d.y * d.y);
+    clean = s > slack && s < 1.0 - slack;
+    return s >= -slack && s <= 1.0 + slack;
+  }
   // How far u is from the edge's line or ellipse, roughly (exact for
   // segments and circles).
-  double distance(const dvec2& u) const;
+  double distance(const dvec2& u) const {
+    return arc ? arcDistance(u) : std::abs(normal.x * u.x + normal.y * u.y - offset);
+  }
+
+ private:
+  bool arcHolds(const dvec2& u, double slack, bool& clean) const;
+  double arcDistance(const dvec2& u) const;
 };
 
 // A stretch of the curve, t0 <= t <= t1, whose image in the plane lies in
@@ -79,11 +94,19 @@ struct SweepPiece {
 struct SweepCrossing {
   double t;
   std::uint32_t face;
-  bool clean;  // transversal, away from the edge's ends and from other crossings
+  bool clean;           // transversal, away from the edge's ends and from other crossings
+  bool before = false;  // worked out by the spans: is the stretch that ends here inside?
 };
 
 class SweptRegion {
  public:
+  // A root of a path is the edge's when the curve's point there is this
+  // close to the edge's line or ellipse (in units of the region's size):
+  // far above rounding, far below the distance of a squared equation's
+  // mirrored roots (revolution.cpp) except next to the axis, where both
+  // are the same crossing.
+  static constexpr double kAcceptDistance = 1e-7;
+
   // Throws std::invalid_argument (naming `kind`) for an empty region or one
   // with non-finite coordinates.
   SweptRegion(RegionPtr region, const char* kind);
@@ -111,24 +134,46 @@ class SweptRegion {
   // each with a box that holds its image. Path must provide
   //   dvec2 at(double t) const;
   //   int roots(const SweepEdge&, double t0, double t1, double* out) const;
+  //   bool meets(const SweepPiece&, const dvec2& lo, const dvec2& hi) const;
   // roots writes at most 8 values of t in [t0, t1] where the edge's
   // implicit function vanishes along the curve (more is harmless: each is
   // checked to lie on the edge; a root it misses must be a tangency).
+  // meets says whether the curve over the piece may pass through the
+  // closed box lo–hi (false only when it surely does not; sweepPieceMeets
+  // is the test of the piece's box, and segment when straight): the index
+  // asks it of its nodes and then of each edge's box before roots.
+  //
+  // firstOnly: only the first boundary is asked for (Solid's
+  // spansToFirstBoundary). A path that provides
+  //   bool meetsFrom(const SweepPiece&, const dvec2& lo, const dvec2& hi,
+  //                  double& from) const;
+  // (meets, and from: a t before which the curve is not in the box) then
+  // has the index walked nearest box first, for a region of one leaf whose
+  // box the window starts outside: the spans are exact up to a little past
+  // the first crossing and end there. Returns true when they were cut so;
+  // if they are then empty, the caller must ask again without firstOnly.
   template <class Path>
-  void spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
-             std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out) const;
+  bool spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
+             std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out,
+             bool firstOnly = false) const;
 
  private:
-  // A 2D bounding volume hierarchy over one leaf's edges.
+  // A 2D bounding volume hierarchy over one leaf's edges. Every box (the
+  // nodes' and the edges') is grown by pad_, so that a curve that passes
+  // within rounding of an edge still reaches it.
   struct Node {
     dvec2 lo, hi;
     std::uint32_t start,
         count;  // leaf: items [start, start + count); inner: children start, start + 1
   };
+  struct Item {
+    dvec2 lo, hi;  // the edge's box
+    std::uint32_t edge;
+  };
   struct Leaf {
     ProfileBounds box;
     std::vector<Node> nodes;
-    std::vector<std::uint32_t> items;  // edge indices
+    std::vector<Item> items;
   };
   struct TreeNode {
     Region::Op op;
@@ -138,24 +183,23 @@ class SweptRegion {
 
   void buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges);
   std::uint32_t addTree(const Region& region, std::uint32_t& nextLeaf);
-  // Calls f(edge) for each edge of the leaf whose box meets the box lo–hi
-  // (and the segment a–b, if straight).
-  template <class F>
-  void forEachEdgeNear(const Leaf& leaf, const dvec2& lo, const dvec2& hi, bool straight,
-                       const dvec2& a, const dvec2& b, F&& f) const;
+  // Calls f(edge) for each edge of the leaf whose box (and the boxes of the
+  // nodes above it) meets(lo, hi) accepts. The caller has asked it of the
+  // root, whose box is the leaf's, grown.
+  template <class Meets, class F>
+  void forEachEdgeNear(const Leaf& leaf, Meets&& meets, F&& f) const;
+  // The same for meetsFrom(lo, hi, from), nearest box first, leaving the
+  // boxes the curve enters only past `bound` (which f may lower).
+  template <class MeetsFrom, class F>
+  void forEachEdgeInOrder(const Leaf& leaf, MeetsFrom&& meetsFrom, const double& bound,
+                          F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;
   bool treeContains(std::uint32_t node, const dvec2& u) const;
   template <class Path>
   void treeSpans(const Primitive* owner, std::uint32_t node, const Path& path, double t0, double t1,
                  std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces, int pieceCount,
-                 SpanList& out) const;
+                 bool firstOnly, bool& truncated, SpanList& out) const;
 
-  // A root of a path is the edge's when the curve's point there is this
-  // close to the edge's line or ellipse (in units of the region's size):
-  // far above rounding, far below the distance of a squared equation's
-  // mirrored roots (revolution.cpp) except next to the axis, where both
-  // are the same crossing.
-  static constexpr double kAcceptDistance = 1e-7;
   // How far past an edge's end (a fraction of a segment, radians of an
   // arc) a crossing still counts as on it, and within which of an end it
   // is not clean: a vertex met through both its edges must not be lost.
@@ -166,7 +210,19 @@ class SweptRegion {
   std::vector<Leaf> leaves_;
   std::vector<TreeNode> tree_;  // tree_[0] is the root
   double size_ = 1.0;
+  double pad_ = 0.0;  // 1e-9 of size_
 };
+
+// Only boundaries within the ray's [tMin, tMax] are answers (solid.h), so
+// a sweep's window that reaches past them is cut a little outside them:
+// the stretch beyond is never traced (for a shadow ray, which starts on
+// the part, often the most of it). A span may then end at the cut, inside
+// the solid and outside the ray's range, as solid.h allows.
+inline void cutSweepWindow(const Ray& ray, double& t0, double& t1) {
+  const double margin = 1e-6 * (t1 - t0);
+  if (ray.tMin - margin > t0) t0 = ray.tMin - margin - 1e-9 * std::abs(ray.tMin);
+  if (ray.tMax + margin < t1) t1 = ray.tMax + margin + 1e-9 * std::abs(ray.tMax);
+}
 
 // ---- polynomials in a normalised parameter s ∈ [-1, 1] -----------------------
 
@@ -191,8 +247,40 @@ struct SweepPolynomial {
 // The roots in [s0, s1] of the polynomial, each once (a double root once
 // or twice, or not at all when rounding keeps it off zero). Leading
 // coefficients negligible next to the others are dropped first. Returns the
-// count (at most 4).
-int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots);
+// count (at most 4). (Inline: it runs for every edge a ray's curve comes
+// near.)
+inline int sweepPolynomialRoots(const SweepPolynomial& p, double s0, double s1, double* roots) {
+  int n = p.n;
+  double scale = 0.0;
+  for (int i = 0; i <= n; ++i) scale = std::max(scale, std::abs(p.c[i]));
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 0;
+  // On [-1, 1] a term this small moves the polynomial by less than rounding.
+  while (n > 0 && std::abs(p.c[n]) <= 1e-14 * scale) --n;
+  if (n == 0) return 0;
+  int count = 0;
+  auto keep = [&](double s) {
+    if (s >= s0 && s <= s1) roots[count++] = s;
+  };
+  if (n == 1) {
+    keep(-p.c[0] / p.c[1]);
+    return count;
+  }
+  if (n == 2) {
+    // The cancellation-free form (Numerical Recipes 5.6); a double root is
+    // kept once, a discriminant that rounding took below zero is a
+    // tangency and gives nothing.
+    const double a = p.c[2], b = p.c[1], c = p.c[0];
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    keep(r0);
+    if (r1 != r0) keep(r1);
+    return count;
+  }
+  return polynomialSublevelBoundaries(p.c, n, s0, s1, roots);
+}
 
 }  // namespace csgray::detail
 

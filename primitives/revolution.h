@@ -28,6 +28,7 @@ class Revolution : public PrimitiveShape<Revolution> {
   const RegionPtr& region() const { return swept_->region(); }
   double angleDegrees() const { return angleDegrees_; }
   std::string kind() const override { return "rotate_extrude"; }
+  void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
@@ -38,6 +39,9 @@ class Revolution : public PrimitiveShape<Revolution> {
 
  private:
   bool inWedge(const dvec3& p) const;
+  // objectSpans, or with firstOnly only as far as the first boundary
+  // (SweptRegion::spans).
+  void spansOf(const Ray& ray, bool firstOnly, SpanList& out) const;
 
   std::shared_ptr<const SweptRegion> swept_;
   double angleDegrees_, angle_;  // angle_ in radians

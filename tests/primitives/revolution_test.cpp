@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <random>
 #include <stdexcept>
 
 #include "export/cgal/mesh_validity.h"
@@ -139,6 +141,81 @@ TEST(Revolution, SpansAgreeWithContainsOnRandomLines) {
   for (const auto& [name, solid] : assorted()) {
     SCOPED_TRACE(name);
     test::expectSpansAgreeWithContainsOnRandomLines(*solid, 3000, 3);
+  }
+}
+
+// The first boundary within [ray.tMin, ray.tMax] after tMin, and whether
+// the ray enters there (as the renderer takes it); none if there is none.
+std::optional<std::pair<Boundary, bool>> firstBoundary(const SpanList& spans, const Ray& ray) {
+  for (const Span& s : spans) {
+    const bool entering = s.in.t > ray.tMin;
+    const Boundary& b = entering ? s.in : s.out;
+    if (b.t <= ray.tMin) continue;
+    if (b.t > ray.tMax) break;
+    return std::pair{b, entering};
+  }
+  return std::nullopt;
+}
+
+// A thin wall of many segments up a wavy silhouette (as the turned vase of
+// bench/parts), whose edge index is deep.
+RegionPtr wavyWall() {
+  std::vector<dvec2> points{{0, 0}};
+  const int n = 60;
+  for (int k = 0; k < n; ++k) {
+    const double z = 4.0 * k / (n - 1);
+    points.push_back({1.0 + 0.3 * std::sin(2.0 * z), z});
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    const double z = 0.2 + 3.8 * k / (n - 1);
+    points.push_back({0.9 + 0.3 * std::sin(2.0 * z), z});
+  }
+  points.push_back({0, 0.2});
+  return test::regionOf({test::polygonLoop(points)});
+}
+
+// spansToFirstBoundary follows a ray's curve only to its first boundary:
+// that boundary is the one of the whole spans, bit for bit, from outside
+// and inside, over windows that start and end anywhere.
+TEST(Revolution, FirstBoundaryAgreesWithTheWholeSpans) {
+  auto solids = assorted();
+  solids.push_back({"wavy wall", revolve(wavyWall())});
+  solids.push_back({"wavy wedge", revolve(wavyWall(), 250.0)});
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const auto& [name, solid] : solids) {
+    SCOPED_TRACE(name);
+    const Bounds box = solid->bounds();
+    const dvec3 pad = 0.5 * box.size();
+    int hits = 0, entries = 0;
+    for (int r = 0; r < 3000; ++r) {
+      // From around the solid through a point of its box, or from that point.
+      const dvec3 from = test::randomPoint(rng, Bounds{box.lo - pad, box.hi + pad});
+      const dvec3 through = test::randomPoint(rng, box);
+      if (from == through) continue;
+      Ray ray(from, glm::normalize(through - from));
+      // Every other ray from a point of the box (inside the solid or not).
+      if (r % 2) ray = Ray(through, test::randomDirection(rng));
+      const double reach = glm::length(box.size());
+      if (r % 3 == 1) ray.tMin = 2.0 * reach * u(rng);
+      if (r % 5 == 2) ray.tMax = ray.tMin + 2.0 * reach * u(rng);
+      SpanList whole, first;
+      solid->spans(ray, whole);
+      solid->spansToFirstBoundary(ray, first);
+      const auto expected = firstBoundary(whole, ray), actual = firstBoundary(first, ray);
+      ASSERT_EQ(actual.has_value(), expected.has_value()) << "ray " << r;
+      if (!expected) continue;
+      ++hits;
+      entries += expected->second;
+      EXPECT_EQ(actual->first.t, expected->first.t) << "ray " << r;
+      EXPECT_EQ(actual->first.primitive, expected->first.primitive);
+      EXPECT_EQ(actual->first.face, expected->first.face);
+      EXPECT_EQ(actual->second, expected->second);
+    }
+    // Most rays meet the solid, both entering and leaving first.
+    EXPECT_GT(hits, 600);
+    EXPECT_GT(entries, 500);
+    EXPECT_LT(entries, hits - 50);
   }
 }
 
