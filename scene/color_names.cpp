@@ -175,22 +175,6 @@ dvec3 fromHex(unsigned rgb) {
   return srgbToLinear(dvec3((rgb >> 16) & 0xff, (rgb >> 8) & 0xff, rgb & 0xff) / 255.0);
 }
 
-// Levenshtein's edit distance, for the suggestion in a message.
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 int hexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   c = char(std::tolower(static_cast<unsigned char>(c)));

@@ -1,8 +1,10 @@
 #include "scene/value_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <stdexcept>
+#include <vector>
 
 namespace csgray::detail {
 
@@ -66,6 +68,21 @@ std::string shownValue(std::string_view text) {
   while (head > 0 && continues(head)) --head;
   while (tail < text.size() && continues(tail)) ++tail;
   return std::string(text.substr(0, head)) + "..." + std::string(text.substr(tail));
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
 }
 
 }  // namespace csgray::detail

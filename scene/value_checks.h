@@ -6,6 +6,7 @@
 // refused as the script refuses one: "point_light: pos must be finite".
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -26,6 +27,9 @@ void checkNonNegative(const std::string& function, const char* key, double value
 void checkColor(const std::string& function, const char* key, const dvec3& color);
 // Not the zero vector.
 void checkNonZero(const std::string& function, const char* key, const dvec3& vector);
+// The edit distance between two names (Levenshtein 1966: insertions,
+// deletions and substitutions), for the "did you mean" of a message.
+std::size_t editDistance(std::string_view a, std::string_view b);
 // A whole number from lo to hi, returned as an int.
 int checkWhole(const std::string& function, const char* key, double value, int lo, int hi);
 

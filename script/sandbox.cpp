@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/value_checks.h"
 #include "script/lua_args.h"
 
 namespace csgray::detail {
@@ -25,23 +26,6 @@ constexpr std::size_t kBytesPerInstruction = 4;
 constexpr std::size_t kLongestMessage = 2000;
 
 std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
-
-// The edit distance between two names (Levenshtein 1966): insertions,
-// deletions and substitutions, one row of the table at a time.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 // The name of the function nearest `name` (two edits at most) among the
 // string keys of the table on top of the stack whose values are functions,
