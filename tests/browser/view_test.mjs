@@ -24,10 +24,13 @@ const screenshots = process.argv[3] || process.env.CSGRAY_SCREENSHOTS || '';
 const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
 const timeout = 60_000;
 
-// A box 40 × 20 × 10 about the origin whose width is a parameter; line 2
-// makes the solid, so that a broken line 2 names it.
-const part = (width = 40, line2 = 'return box{size={width, 20, 10}, center=true}') =>
-  `width = ${width} -- [10:100] the width, mm\n${line2}\n`;
+// A plate 40 × 20 × 10 about the origin, whose width is a parameter,
+// with two holes through it away from the middle (the picks there hit the
+// plate); line 2 makes the plate, so that a broken line 2 names it.
+const part = (width = 40, line2 = 'local plate = box{size={width, 20, 10}, center=true}') =>
+  `width = ${width} -- [10:100] the width, mm\n${line2}\n` +
+  'local hole = cylinder{r=3, h=12, center=true}\n' +
+  'return plate - hole:translate(width / 4, 0, 0) - hole:translate(-width / 4, 0, 0)\n';
 
 let folder, script, server, browser, page;
 
@@ -61,7 +64,7 @@ before(async () => {
   });
   page = await browser.newPage();
   page.setDefaultTimeout(timeout);
-  await page.setViewport({ width: 1000, height: 600 });
+  await page.setViewport({ width: 900, height: 540 });
   page.on('pageerror', (e) => console.error('page error:', e.message));
   page.on('console', (m) => m.type() === 'error' && console.error('page console:', m.text()));
   await page.goto(url);
@@ -110,10 +113,15 @@ async function pixels() {
     const { data, width, height } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
     const far = (i, j) => Math.abs(data[i] - data[j]) + Math.abs(data[i + 1] - data[j + 1]) +
       Math.abs(data[i + 2] - data[j + 2]) > 24;
-    let part = 0;
-    for (let i = 0; i < data.length; i += 4) if (far(i, 0)) ++part;
+    let part = 0, edge = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (!far(i, 0)) continue;
+      ++part;
+      const x = (i / 4) % width, y = Math.floor(i / 4 / width);
+      if (x === 0 || y === 0 || x === width - 1 || y === height - 1) ++edge;
+    }
     const centre = 4 * (Math.floor(height / 2) * width + Math.floor(width / 2));
-    return { width, height, part, centreIsPart: far(centre, 0), sum: Array.from(data) };
+    return { width, height, part, edge, centreIsPart: far(centre, 0), sum: Array.from(data) };
   });
 }
 
@@ -160,6 +168,7 @@ test('the canvas shows the part, rendered to the last pass', async () => {
   assert.ok(p.width > 300 && p.height > 300, `canvas ${p.width}x${p.height}`);
   assert.ok(p.centreIsPart, 'the middle of the canvas is the part');
   assert.ok(p.part > 0.05 * area && p.part < 0.9 * area, `${p.part} of ${area} pixels are the part`);
+  assert.equal(p.edge, 0, 'framed: no part on the canvas edges');
   assert.match(await text('size'), /^\(40, 20, 10\)$/);
   assert.equal(await page.$eval('#error', (e) => e.hidden), true);
   await shoot('page');
@@ -215,7 +224,7 @@ test('saving the script shows the new part, in place and by rename', async () =>
 test('a broken script shows its error with file:line over the last image', async () => {
   const state = await frameState();
   const image = await pixels();
-  save(part(40, 'return sphere{r=3, h=2}'));
+  save(part(40, 'local plate = sphere{r=3, h=2}'));
   await page.waitForFunction(() => !document.getElementById('error').hidden, { timeout, polling: 50 });
   const error = await text('error');
   assert.ok(error.includes('part.lua:2:'), `the error names the line: ${error}`);
@@ -245,7 +254,14 @@ test('a customizer slider runs the script again and renders', async () => {
   state = await settled({ since: state, version: state.version });
   assert.match(await text('size'), /^\(90, 20, 10\)$/);
   assert.equal(await page.$eval('.parameter[data-name="width"] input[type=number]', (e) => e.value), '90');
-  assert.ok((await pixels()).part > image.part * 1.2, 'the part grew');
+  const grown = await pixels();
+  assert.ok(grown.part > image.part * 1.2, 'the part grew');
+  assert.ok(grown.edge > 0, 'the camera stayed: the longer part leaves the canvas');
+  // f fits it again (keys go to the page once the focus left the boxes).
+  await page.$eval(slider, (e) => e.blur());
+  await page.keyboard.press('f');
+  state = await settled({ since: state });
+  assert.equal((await pixels()).edge, 0, 'fitted: no part on the canvas edges');
   await shoot('customizer');
   // A value the annotation refuses is said under its control; nothing changes.
   const number = '.parameter[data-name="width"] input[type=number]';
@@ -280,7 +296,6 @@ test('the keys for the axis views look along the axes', async () => {
     // A click at the middle picks the face the view looks at.
     normal = await pickedNormalAtCentre(normal);
     assert.equal(normal, expected, `key ${key}`);
-    if (key === '5') await shoot('top');
   }
   let state = await frameState();
   await page.keyboard.press('o');
