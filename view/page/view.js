@@ -103,6 +103,7 @@ function initialView() {
 // (and the server cancels its render when the new request comes).
 let inFlight = null;  // {pass, key, controller}
 let dirty = false;
+let later = null;  // the timer of a full pass put off during a drag
 
 function frameKey() {
   return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height;
@@ -111,6 +112,7 @@ function frameKey() {
 function changed() {
   $('projection').textContent = view.ortho ? 'orthographic' : 'perspective';
   delete canvas.dataset.settled;
+  clearTimeout(later);
   if (inFlight && inFlight.pass === 0) { dirty = true; return; }
   if (inFlight) inFlight.controller.abort();
   request(0);
@@ -141,6 +143,9 @@ async function request(pass) {
   if (inFlight !== mine) return;  // superseded
   inFlight = null;
   if (dirty || frameKey() !== key) request(0);
+  // While a drag goes on the next move is due within milliseconds: the
+  // full size waits for a pause rather than start and be cancelled.
+  else if (pass === 0 && drag && drag.moved) later = setTimeout(() => request(1), 60);
   else if (pass < 2) request(pass + 1);
 }
 
