@@ -13,11 +13,12 @@ JOBS       ?= $(shell nproc)
 ARCH       ?= auto
 CSGRAY     := $(BUILD)/cli/csgray
 
-# Debian 12 packages the build and the tests need.
+# Debian 12 packages the build and the tests need (chromium: the browser test
+# of csgray view, tests/browser/).
 PACKAGES := build-essential cmake pkg-config \
             libcgal-dev libopenmesh-dev libglm-dev libopenimageio-dev \
             liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev libzip-dev zlib1g-dev time \
-            libcpp-httplib-dev
+            libcpp-httplib-dev chromium
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
@@ -52,7 +53,14 @@ run: build
 	$(CSGRAY) check examples/showcase.lua
 	@echo "The rendered showcase is out/showcase.png, its printable mesh out/showcase.stl"
 
+# The browser test (tests/browser/run.sh) needs node and npm too, from
+# Debian when missing, and installs puppeteer-core into tests/browser/ on its
+# first run; without chromium or node it is skipped, and says why.
 test: build
+	@command -v npm >/dev/null || \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends nodejs npm || \
+	  echo "no npm: the browser test will be skipped"
+	@[ -x /usr/bin/chromium ] || echo "no chromium: the browser test will be skipped (make deps installs it)"
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # Manifold's WebAssembly build, the anchor of the export table, from the npm

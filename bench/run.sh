@@ -202,3 +202,22 @@ else
   echo
   echo "(render vs POV-Ray left out: make bench installs povray)"
 fi
+
+# csgray view (bench/view_bench.mjs): frames per second while orbiting at
+# 800x600 on two threads, asked over HTTP as the page asks (one frame at a
+# time), for each of the page's three passes; the frames the page itself
+# draws during a drag in chromium (when the browser test's puppeteer-core
+# and chromium are installed); and the time from a save of the script to
+# its first pass (median of 7; 0.1 s of it is the watcher's debounce).
+if command -v node >/dev/null; then
+  echo
+  echo "| view: orbit at 800x600, 2 threads | primitives | pass 0, 200x150 (frames/s) | pass 1, 800x600 (frames/s) | pass 2, antialiased (frames/s) | drag in chromium (frames/s; moves/s) | save to first pass (ms) |"
+  echo "|---|---:|---:|---:|---:|---:|---:|"
+  for row in bench/plate.lua:n=8 bench/plate.lua:n=16 examples/showcase.lua: examples/bracket.lua:; do
+    IFS=: read -r script define <<<"$row"
+    node bench/view_bench.mjs "$csgray" "$script" $define || echo "| $script $define | failed |"
+  done
+else
+  echo
+  echo "(csgray view left out: it needs node)"
+fi

@@ -103,6 +103,7 @@ function initialView() {
 // (and the server cancels its render when the new request comes).
 let inFlight = null;  // {pass, key, controller}
 let dirty = false;
+let later = null;  // the timer of a full pass put off during a drag
 
 function frameKey() {
   return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height;
@@ -110,6 +111,8 @@ function frameKey() {
 
 function changed() {
   $('projection').textContent = view.ortho ? 'orthographic' : 'perspective';
+  delete canvas.dataset.settled;
+  clearTimeout(later);
   if (inFlight && inFlight.pass === 0) { dirty = true; return; }
   if (inFlight) inFlight.controller.abort();
   request(0);
@@ -128,8 +131,11 @@ async function request(pass) {
       const image = await createImageBitmap(await response.blob());
       context.imageSmoothingEnabled = pass === 0;
       context.drawImage(image, 0, 0, canvas.width, canvas.height);
+      // What is on the canvas, for the browser test (tests/browser/).
       canvas.dataset.pass = pass;
       canvas.dataset.version = response.headers.get('X-Csgray-Version');
+      canvas.dataset.frames = +(canvas.dataset.frames || 0) + 1;
+      if (pass === 2 && !dirty && frameKey() === key) canvas.dataset.settled = '1';
     }
   } catch (e) {
     if (e.name !== 'AbortError') console.warn(e);
@@ -137,6 +143,9 @@ async function request(pass) {
   if (inFlight !== mine) return;  // superseded
   inFlight = null;
   if (dirty || frameKey() !== key) request(0);
+  // While a drag goes on the next move is due within milliseconds: the
+  // full size waits for a pause rather than start and be cancelled.
+  else if (pass === 0 && drag && drag.moved) later = setTimeout(() => request(1), 60);
   else if (pass < 2) request(pass + 1);
 }
 
@@ -191,7 +200,10 @@ canvas.addEventListener('wheel', (e) => {
   view.distance *= factor;
   changed();
 }, { passive: false });
-canvas.addEventListener('keydown', (e) => {
+// Keys anywhere on the page, but not those typed into the customizer's
+// boxes, nor the browser's own shortcuts.
+document.addEventListener('keydown', (e) => {
+  if (e.ctrlKey || e.altKey || e.metaKey || e.target.closest('input, select, textarea')) return;
   const views = { 1: [-90, 0], 2: [90, 0], 3: [180, 0], 4: [0, 0], 5: [-90, 90], 6: [-90, -90], 0: [-50, 30] };
   if (e.key in views) look(...views[e.key]);
   else if (e.key === 'o') { view.ortho = !view.ortho; changed(); }
@@ -233,8 +245,14 @@ async function define(name, value) {
   const query = '/define?name=' + encodeURIComponent(name) +
     (value === undefined ? '' : '&value=' + encodeURIComponent(value));
   const response = await fetch(query, { method: 'POST' });
-  const row = document.querySelector(`.parameter[data-name="${name}"] .refused`);
-  if (row) row.textContent = response.ok ? '' : await response.text();
+  // Taken: the long poll brings the new state (a rebuild now would end the
+  // drag of a slider still under the hand).
+  if (response.ok) return;
+  // Refused: the controls show the value in force again, and why not.
+  const reason = await response.text();
+  if (state) showParameters(state.parameters, true);
+  const row = document.querySelector(`.parameter[data-name="${CSS.escape(name)}"] .refused`);
+  if (row) row.textContent = reason;
 }
 
 function defineText(p, value) {
@@ -260,7 +278,9 @@ function numberInputs(p, value, onChange) {
     range.type = 'range';
     range.min = p.min;
     range.max = p.max;
-    range.step = p.step > 0 ? p.step : (p.max - p.min) / 1000 || 'any';
+    // Without a step the slider is continuous: a grid of its own would
+    // move the value off the script's (40 on [10:100] to 39.97).
+    range.step = p.step > 0 ? p.step : 'any';
     range.value = value;
     range.addEventListener('input', () => { number.value = range.value; onChange(+range.value); });
     row.append(range);
@@ -322,18 +342,23 @@ function parameterRow(p) {
   return div;
 }
 
-function showParameters(parameters) {
+function showParameters(parameters, force = false) {
   // Rebuilt when the annotations change, or a value changed elsewhere; not
-  // under the user's hand, while a slider's own value comes back.
+  // under the user's hand (a slider being dragged, a box being typed in)
+  // unless forced, when the server has answered that control's change.
   const shape = JSON.stringify(parameters.map((p) => ({ ...p, value: null })));
   const values = JSON.stringify(parameters.map((p) => p.value));
-  const editing = document.activeElement && document.activeElement.closest('#customizer');
-  if (shape === parameterShape && (values === parameterValues || editing)) return;
+  const editing = document.activeElement &&
+    document.activeElement.matches('#customizer input, #customizer select');
+  if (!force && shape === parameterShape && (values === parameterValues || editing)) return;
   parameterShape = shape;
   parameterValues = values;
   $('parameters').replaceChildren(...parameters.map(parameterRow));
   $('customizer').hidden = parameters.length === 0;
 }
+
+// Values that came while a control had the focus show when it leaves.
+$('parameters').addEventListener('focusout', () => setTimeout(() => state && showParameters(state.parameters)));
 
 // ---- The script's state, by long poll
 function showState(next) {
