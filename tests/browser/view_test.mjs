@@ -105,8 +105,9 @@ async function settled({ since = { frames: 0 }, version = -1 } = {}) {
   return frameState();
 }
 
-// The canvas's pixels, and how many differ from its top-left corner (the
-// background: the part is framed in the middle).
+// The canvas's pixels, and how many differ from the background: the first
+// pixel of their row, since the part is framed in the middle and a bare
+// solid's background is a vertical gradient.
 async function pixels() {
   return page.evaluate(() => {
     const canvas = document.getElementById('frame');
@@ -115,13 +116,14 @@ async function pixels() {
       Math.abs(data[i + 2] - data[j + 2]) > 24;
     let part = 0, edge = 0;
     for (let i = 0; i < data.length; i += 4) {
-      if (!far(i, 0)) continue;
-      ++part;
       const x = (i / 4) % width, y = Math.floor(i / 4 / width);
+      if (!far(i, 4 * y * width)) continue;
+      ++part;
       if (x === 0 || y === 0 || x === width - 1 || y === height - 1) ++edge;
     }
-    const centre = 4 * (Math.floor(height / 2) * width + Math.floor(width / 2));
-    return { width, height, part, edge, centreIsPart: far(centre, 0), sum: Array.from(data) };
+    const row = 4 * Math.floor(height / 2) * width;
+    const centre = row + 4 * Math.floor(width / 2);
+    return { width, height, part, edge, centreIsPart: far(centre, row), sum: Array.from(data) };
   });
 }
 
