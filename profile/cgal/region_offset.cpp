@@ -195,28 +195,22 @@ EdgeEnds addArcSector(Band& band, const ProfileEdge& e) {
   // Counterclockwise for a counterclockwise arc: out along the far arc,
   // back along the near one (or through the centre).
   std::vector<CircleSegment> curves;
-  if (turn > 0.0) {
-    curves.emplace_back(startAway, outerMiddle, endAway);
-    if (radius > band.d) {
-      curves.emplace_back(endAway, endIn);
-      curves.emplace_back(endIn, exactPoint(e.center + (radius - band.d) * direction(middle)),
-                          startIn);
-      curves.emplace_back(startIn, startAway);
-    } else {
-      curves.emplace_back(endAway, c);
-      curves.emplace_back(c, startAway);
-    }
+  // A clockwise arc's sector is the counterclockwise one with its ends
+  // swapped.
+  const bool ccw = turn > 0.0;
+  const ExactPoint& first = ccw ? startAway : endAway;
+  const ExactPoint& last = ccw ? endAway : startAway;
+  const ExactPoint& firstIn = ccw ? startIn : endIn;
+  const ExactPoint& lastIn = ccw ? endIn : startIn;
+  curves.emplace_back(first, outerMiddle, last);
+  if (radius > band.d) {
+    curves.emplace_back(last, lastIn);
+    curves.emplace_back(lastIn, exactPoint(e.center + (radius - band.d) * direction(middle)),
+                        firstIn);
+    curves.emplace_back(firstIn, first);
   } else {
-    curves.emplace_back(endAway, outerMiddle, startAway);
-    if (radius > band.d) {
-      curves.emplace_back(startAway, startIn);
-      curves.emplace_back(startIn, exactPoint(e.center + (radius - band.d) * direction(middle)),
-                          endIn);
-      curves.emplace_back(endIn, endAway);
-    } else {
-      curves.emplace_back(startAway, c);
-      curves.emplace_back(c, endAway);
-    }
+    curves.emplace_back(last, c);
+    curves.emplace_back(c, first);
   }
   band.pieces.push_back(polygonOfCurves(curves));
   // [0]: the left side, [1]: the right side.

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "export/cgal/mesh_validity.h"
+#include "primitives/sweep_checks.h"
 #include "primitives/sweep_shapes.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
@@ -29,22 +30,8 @@ std::shared_ptr<LinearExtrusion> extrude(RegionPtr region, double h, double twis
   return Primitive::create<LinearExtrusion>(std::move(region), h, center, twist, scale);
 }
 
-// Volumes from spans along z, x and y (the solid turned so each axis is
-// z), within 0.5 %.
-void expectVolume(const SolidPtr& s, double exact, double relative = 0.005) {
-  EXPECT_NEAR(test::gridVolume(*s, s->bounds(), 300), exact, relative * exact) << "along z";
-  for (const dvec3& axis : {dvec3(0, 1, 0), dvec3(1, 0, 0)}) {
-    SolidPtr turned = s->transformed(Affine::rotation(kPi / 2, axis));
-    EXPECT_NEAR(test::gridVolume(*turned, turned->bounds(), 300), exact, relative * exact)
-        << "turned about " << axis.x << " " << axis.y;
-  }
-}
-
-void expectValidMesh(const Primitive& p, double tolerance, double exact) {
-  TriangleMesh mesh = p.tessellate(tolerance, Bounds::everything());
-  EXPECT_EQ(meshDefect(mesh).text, "");
-  EXPECT_NEAR(mesh.volume(), exact, 0.01 * exact);
-}
+using test::expectValidMesh;
+using test::expectVolume;
 
 // ∫₀¹ σx·σy dζ = 1 + (a + b)/2 + ab/3 with a = sx − 1, b = sy − 1: the
 // volume of a scaled extrusion over that of the prism.

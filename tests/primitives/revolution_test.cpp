@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "export/cgal/mesh_validity.h"
+#include "primitives/sweep_checks.h"
 #include "primitives/sweep_shapes.h"
 #include "tessellation/triangle_mesh.h"
 #include "test_support.h"
@@ -26,20 +27,8 @@ std::shared_ptr<Revolution> revolve(RegionPtr region, double angle = 360.0) {
   return Primitive::create<Revolution>(std::move(region), angle);
 }
 
-void expectVolume(const SolidPtr& s, double exact, double relative = 0.005) {
-  EXPECT_NEAR(test::gridVolume(*s, s->bounds(), 300), exact, relative * exact) << "along z";
-  for (const dvec3& axis : {dvec3(0, 1, 0), dvec3(1, 0, 0)}) {
-    SolidPtr turned = s->transformed(Affine::rotation(kPi / 2, axis));
-    EXPECT_NEAR(test::gridVolume(*turned, turned->bounds(), 300), exact, relative * exact)
-        << "turned about " << axis.x << " " << axis.y;
-  }
-}
-
-void expectValidMesh(const Primitive& p, double tolerance, double exact) {
-  TriangleMesh mesh = p.tessellate(tolerance, Bounds::everything());
-  EXPECT_EQ(meshDefect(mesh).text, "");
-  EXPECT_NEAR(mesh.volume(), exact, 0.01 * exact);
-}
+using test::expectValidMesh;
+using test::expectVolume;
 
 // A half-disc of radius r on the axis: its arc from −90° to 90° and the
 // axis's segment, which joins the arc's ends exactly (cos(π/2) is not 0 in
