@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "export/triangle_filters.h"
 #include "tessellation/mesh_edges.h"
 
 namespace csgray::detail {
@@ -200,21 +201,32 @@ bool facesCross(const TriangleMesh& mesh, std::uint32_t f, std::uint32_t g) {
     if (!inB) aOnly = i;
     if (!inA) bOnly = i;
   }
+  // The corners of each, from corner `first` on: the filters in doubles
+  // answer most pairs before CGAL's exact predicates are asked.
+  auto corners = [&](const TriangleMesh::Triangle& t, int first, dvec3 out[3]) {
+    for (int k = 0; k < 3; ++k) out[k] = mesh.points[t[(first + k) % 3]];
+  };
+  dvec3 ca[3], cb[3];
   auto p = [&](std::uint32_t v) { return point(mesh.points[v]); };
   const Kernel::Triangle_3 ta(p(a[0]), p(a[1]), p(a[2])), tb(p(b[0]), p(b[1]), p(b[2]));
   switch (shared) {
     case 0:
-      return CGAL::do_intersect(ta, tb);
+      corners(a, 0, ca), corners(b, 0, cb);
+      return !certainlyApart(ca, cb) && CGAL::do_intersect(ta, tb);
     case 1: {
       // av, bv: where the shared corner is in each; the edges opposite it.
       int av = 0, bv = 0;
       while (a[av] != b[0] && a[av] != b[1] && a[av] != b[2]) ++av;
       while (b[bv] != a[av]) ++bv;
+      corners(a, av, ca), corners(b, bv, cb);
+      if (certainlyMeetOnlyAtCorner(ca, cb)) return false;
       const Kernel::Segment_3 aFar(p(a[(av + 1) % 3]), p(a[(av + 2) % 3]));
       const Kernel::Segment_3 bFar(p(b[(bv + 1) % 3]), p(b[(bv + 2) % 3]));
       return CGAL::do_intersect(aFar, tb) || CGAL::do_intersect(bFar, ta);
     }
     case 2: {
+      corners(a, 0, ca), corners(b, 0, cb);
+      if (certainlyNotFolded(ca, cb)) return false;
       const Point u = p(a[(aOnly + 1) % 3]), w = p(a[(aOnly + 2) % 3]);
       const Point ra = p(a[aOnly]), rb = p(b[bOnly]);
       return CGAL::coplanar(u, w, ra, rb) &&

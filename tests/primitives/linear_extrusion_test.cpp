@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -168,6 +169,33 @@ TEST(LinearExtrusion, MeshesAreValidSolids) {
   const std::vector<dvec2> star = test::starPoints(1200, 2.0, 1.9);
   expectValidMesh(*extrude(test::regionOf({test::polygonLoop(star)}), 1.0, 30.0), 0.001,
                   test::polygonArea(star));
+}
+
+// A cap is cut into triangles near their neighbours, not fanned out from a
+// few corners: the export's booleans and its validity check test pairs of
+// triangles whose boxes overlap, and slivers across the whole cap overlap
+// nearly all. On a 1 200-point star (600 spikes) the corners' triangle
+// counts stay small (a fan from one corner would hold hundreds) and the
+// triangles' boxes together cover a few times the cap's area, not
+// hundreds of times.
+TEST(LinearExtrusion, CapsAreCutIntoLocalTriangles) {
+  const std::vector<dvec2> star = test::starPoints(1200, 2.0, 1.9);
+  const TriangleMesh mesh = extrude(test::regionOf({test::polygonLoop(star)}), 1.0)
+                                ->tessellate(0.001, Bounds::everything());
+  std::vector<int> uses(mesh.points.size(), 0);
+  double boxes = 0.0;
+  int capTriangles = 0;
+  for (const auto& t : mesh.triangles) {
+    const dvec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    if (a.z != 0.0 || b.z != 0.0 || c.z != 0.0) continue;
+    ++capTriangles;
+    for (std::uint32_t v : t) ++uses[v];
+    const dvec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
+    boxes += (hi.x - lo.x) * (hi.y - lo.y);
+  }
+  EXPECT_EQ(capTriangles, 1198);  // n − 2
+  EXPECT_LE(*std::max_element(uses.begin(), uses.end()), 24);
+  EXPECT_LE(boxes, 4.0 * test::polygonArea(star));
 }
 
 TEST(LinearExtrusion, RefusesBadParameters) {
