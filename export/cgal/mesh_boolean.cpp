@@ -665,35 +665,70 @@ class Evaluator {
 // kept.
 template <class Mesh>
 RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredCoordinate stored) {
-  RoundedMesh rounded;
-  rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
-  std::vector<RoundedMesh::Vertex_index> vertex(exact.number_of_vertices() +
-                                                exact.number_of_removed_vertices());
+  // The corefinement returns the same triangles in an order that varies
+  // from run to run, and the repairs that may follow (removeSlivers,
+  // removeCrossings) collapse and fill in the mesh's order: so the copy
+  // takes a canonical order, the points sorted by their coordinates and
+  // the faces by their corners, and the same part always gives the same
+  // file.
+  // Points that rounding to the file's precision put in one place are
+  // ordered by their exact places (to_double of a lazy exact number is
+  // not a canonical rounding: it depends on what was computed before).
+  std::vector<dvec3> points(exact.number_of_vertices() + exact.number_of_removed_vertices());
+  std::vector<typename Mesh::Vertex_index> byPlace;
+  byPlace.reserve(exact.number_of_vertices());
   for (auto v : exact.vertices()) {
     const auto& p = exact.point(v);
     dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!frame.identity) q = frame.worldFromEval * q;
-    vertex[v] =
-        rounded.add_vertex({storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z)});
+    points[v] = dvec3(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
+    byPlace.push_back(v);
+  }
+  std::stable_sort(byPlace.begin(), byPlace.end(), [&](auto a, auto b) {
+    const dvec3 &p = points[a], &q = points[b];
+    if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    return CGAL::compare_xyz(exact.point(a), exact.point(b)) == CGAL::SMALLER;
+  });
+  RoundedMesh rounded;
+  rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
+  std::vector<RoundedMesh::Vertex_index> vertex(points.size());
+  for (auto v : byPlace) {
+    const dvec3& q = points[v];
+    vertex[v] = rounded.add_vertex({q.x, q.y, q.z});
   }
   // A mirror turns the faces inside out on the way back.
   const bool flip = !frame.identity && glm::determinant(frame.worldFromEval) < 0.0;
-  auto tags = tagsOf(rounded);
-  auto exactTags = tagsOf(exact);
+  struct Face {
+    std::array<RoundedMesh::Vertex_index, 3> corners;
+    typename Mesh::Face_index from;
+  };
+  std::vector<Face> faces;
+  faces.reserve(exact.number_of_faces());
   for (auto f : exact.faces()) {
-    std::array<RoundedMesh::Vertex_index, 3> t;
+    Face face{{}, f};
     int k = 0;
     for (auto v : CGAL::vertices_around_face(exact.halfedge(f), exact)) {
       if (k == 3) throw std::logic_error("meshOfSolid: a face of the result is not a triangle");
-      t[k++] = vertex[v];
+      face.corners[k++] = vertex[v];
     }
-    if (flip) std::swap(t[1], t[2]);
+    if (flip) std::swap(face.corners[1], face.corners[2]);
+    // Turned to start at its lowest corner: the same face, one way to write it.
+    auto& c = face.corners;
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    faces.push_back(face);
+  }
+  std::sort(faces.begin(), faces.end(),
+            [](const Face& a, const Face& b) { return a.corners < b.corners; });
+  auto tags = tagsOf(rounded);
+  auto exactTags = tagsOf(exact);
+  for (const Face& face : faces) {
+    const auto& t = face.corners;
     RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
     if (g == RoundedMesh::null_face())
       throw std::runtime_error(
           "the result is not a 2-manifold once rounded to the file's precision (faces meet at "
           "a hair's breadth)");
-    tags[g] = exactTags[f];
+    tags[g] = exactTags[face.from];
   }
   return rounded;
 }
