@@ -4,10 +4,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/value_checks.h"
 #include "script/lua_args.h"
+#include "script/standard_library.h"
 
 namespace csgray::detail {
 
@@ -201,7 +203,8 @@ std::string Sandbox::where(lua_State* L, int level) const {
   // Reads the call stack only: safe inside the allocator too.
   lua_Debug ar;
   for (; lua_getstack(L, level, &ar); ++level)
-    if (lua_getinfo(L, "l", &ar) && ar.currentline > 0)
+    if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0 &&
+        std::string_view(ar.source) != kLibraryChunkName)
       return *chunkName_ + ":" + std::to_string(ar.currentline) + ": ";
   return "";
 }
@@ -417,10 +420,13 @@ int Sandbox::printToStderr(lua_State* L) {
 SourceLine Sandbox::callerLine(lua_State* L) {
   // The nearest Lua frame: a C function in between (pcall, table.sort's
   // comparator caller) has no line of its own.
+  // The script library's frames (script/standard_library.h) are passed
+  // over: a shape it made was asked for at the script's line that called it.
   SourceLine where;
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level) {
-    if (!lua_getinfo(L, "l", &ar) || ar.currentline <= 0) continue;
+    if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) continue;
+    if (std::string_view(ar.source) == kLibraryChunkName) continue;
     if (!where.known())
       where = SourceLine{chunkName_, ar.currentline, 0};
     else
@@ -439,7 +445,8 @@ int Sandbox::positionBareError(lua_State* L) {
   const char* chunk = lua_tostring(L, lua_upvalueindex(1));
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level)
-    if (lua_getinfo(L, "l", &ar) && ar.currentline > 0) {
+    if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0 &&
+        std::string_view(ar.source) != kLibraryChunkName) {
       lua_pushfstring(L, "%s:%d: error(%s) without a message", chunk, ar.currentline,
                       luaL_typename(L, 1));
       return 1;

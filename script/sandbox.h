@@ -59,6 +59,9 @@ class Sandbox {
   // The file and line of the script code that called the running API
   // function; unknown when it was not called from Lua.
   SourceLine callerLine(lua_State* L);
+  // "chunk:line: " for the innermost Lua function of the script at or
+  // above level (the script library's are passed over), or "".
+  std::string where(lua_State* L, int level) const;
 
  private:
   static void* allocate(void* ud, void* ptr, std::size_t oldSize, std::size_t newSize);
@@ -82,9 +85,6 @@ class Sandbox {
   }
   std::string memoryReason() const;
   std::string instructionReason() const;
-  // "chunk:line: " for the innermost Lua function at or above level, or "".
-  std::string where(lua_State* L, int level) const;
-
   lua_State* L_ = nullptr;
   ScriptLimits limits_;
   std::size_t used_ = 0;

@@ -11,6 +11,7 @@
 #include "script/api.h"
 #include "script/parameters.h"
 #include "script/sandbox.h"
+#include "script/standard_library.h"
 
 namespace csgray::detail {
 
@@ -60,6 +61,7 @@ Scene runScript(const std::string& source, const std::string& chunkName,
   Sandbox sandbox(options.limits);
   lua_State* L = sandbox.state();
   registerScriptApi(L, options);
+  loadStandardLibrary(L);
   // Annotated globals (script/parameters.h): a -D is checked against its
   // annotation, and replaces the default of a plain `name = value`.
   const std::vector<Parameter> parameters = findParameters(source, chunkName);
