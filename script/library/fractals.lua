@@ -3,14 +3,17 @@
 -- `level` (0 is the first shape alone). `finite` and `refuse` come from
 -- part 1 (the parts are one chunk).
 
-local function wholeLevel(name, level, most)
+-- A compound's table of arguments, its level (a whole number from 0 to
+-- most) and its size (positive), with their defaults.
+local function compoundArguments(name, args, level, most, size)
+  args = args or {}
+  if type(args) ~= "table" then refuse(name, "takes a table: " .. name .. "{level=, size=}") end
+  level, size = args.level or level, args.size or size
   if not finite(level) or level ~= math.floor(level) or level < 0 or level > most then
     refuse(name, "level must be a whole number from 0 to " .. most .. " (got " .. tostring(level) .. ")")
   end
-end
-
-local function positiveSize(name, size)
   if not finite(size) or size <= 0 then refuse(name, "size must be a positive number") end
+  return args, level, size
 end
 
 -- sierpinski_triangle{level=4, size=100}
@@ -23,10 +26,7 @@ end
 -- renders exactly, and is refused for export.
 function sierpinski_triangle(args)
   local name = "sierpinski_triangle"
-  args = args or {}
-  local level, size = args.level or 4, args.size or 100
-  wholeLevel(name, level, 9)
-  positiveSize(name, size)
+  local args, level, size = compoundArguments(name, args, 4, 9, 100)
   local points, paths = {}, {}
   local function add(x, y)
     points[#points + 1] = {x, y}
@@ -57,10 +57,7 @@ end
 -- Its volume is (1/2)^level of the first's.
 function sierpinski_tetrahedron(args)
   local name = "sierpinski_tetrahedron"
-  args = args or {}
-  local level, size = args.level or 4, args.size or 100
-  wholeLevel(name, level, 8)
-  positiveSize(name, size)
+  local args, level, size = compoundArguments(name, args, 4, 8, 100)
   -- tetrahedron{r=R}'s corners: (0, 0, R) and three on z = -R/3 at
   -- distance 2√2·R/3 from the axis, one of them in the xz plane at x > 0.
   local corners = {{0, 0, 1}}
@@ -119,10 +116,7 @@ end
 -- level + 1 times it in all, until branches meet (about level 5 at 45°).
 function pythagoras_tree(args)
   local name = "pythagoras_tree"
-  args = args or {}
-  local level, size = args.level or 6, args.size or 10
-  wholeLevel(name, level, 12)
-  positiveSize(name, size)
+  local args, level, size = compoundArguments(name, args, 6, 12, 10)
   local angle = treeAngle(name, args.angle or 45)
   local squares = {}
   pythagorasSquares({0, 0}, {size, 0}, angle, level, function(p, q)
@@ -141,10 +135,7 @@ end
 -- about the vertical at each level, so that the tree branches in space.
 function pythagoras_tree_3d(args)
   local name = "pythagoras_tree_3d"
-  args = args or {}
-  local level, size = args.level or 5, args.size or 10
-  wholeLevel(name, level, 10)
-  positiveSize(name, size)
+  local args, level, size = compoundArguments(name, args, 5, 10, 10)
   local angle = treeAngle(name, args.angle or 45)
   local degrees = math.deg(angle)
   local c, s = math.cos(angle), math.sin(angle)

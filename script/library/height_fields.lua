@@ -30,6 +30,20 @@ local function range(value, what)
   return value[1], value[2]
 end
 
+-- The function and the two ranges of graph{} and parametric{}: f, the
+-- low and high ends of the first range, then of the second, or a refusal.
+local function functionOverRanges(name, args, usage, a, b)
+  if type(args) ~= "table" then refuse(name, "takes a table: " .. usage) end
+  if type(args.f) ~= "function" then
+    refuse(name, "f must be a function of " .. a .. " and " .. b)
+  end
+  local a0, a1, whyA = range(args[a], a)
+  if whyA then refuse(name, whyA) end
+  local b0, b1, whyB = range(args[b], b)
+  if whyB then refuse(name, whyB) end
+  return args.f, a0, a1, b0, b1
+end
+
 -- polyhedron{} called for a library function: its error, if any, comes
 -- back as the library function's own, at the script's line.
 local function solidOf(name, points, faces)
@@ -113,15 +127,8 @@ end
 -- hanging points. At most 200 000 triangles.
 function graph(args)
   local name = "graph"
-  if type(args) ~= "table" then
-    refuse(name, "takes a table: graph{f=function(x, y) return ... end, x={x0, x1}, y={y0, y1}}")
-  end
-  local f = args.f
-  if type(f) ~= "function" then refuse(name, "f must be a function of x and y") end
-  local x0, x1, whyX = range(args.x, "x")
-  if whyX then refuse(name, whyX) end
-  local y0, y1, whyY = range(args.y, "y")
-  if whyY then refuse(name, whyY) end
+  local f, x0, x1, y0, y1 = functionOverRanges(name, args,
+      "graph{f=function(x, y) return ... end, x={x0, x1}, y={y0, y1}}", "x", "y")
   local n = args.resolution or 16
   if not finite(n) or n ~= math.floor(n) or n < 1 or n > 1024 then
     refuse(name, "resolution must be a whole number from 1 to 1024 (got " .. tostring(n) .. ")")
@@ -259,15 +266,8 @@ end
 -- place of an open edge.
 function parametric(args)
   local name = "parametric"
-  if type(args) ~= "table" then
-    refuse(name, "takes a table: parametric{f=function(u, v) return {x, y, z} end, u={u0, u1}, v={v0, v1}}")
-  end
-  local f = args.f
-  if type(f) ~= "function" then refuse(name, "f must be a function of u and v giving {x, y, z}") end
-  local u0, u1, whyU = range(args.u, "u")
-  if whyU then refuse(name, whyU) end
-  local v0, v1, whyV = range(args.v, "v")
-  if whyV then refuse(name, whyV) end
+  local f, u0, u1, v0, v1 = functionOverRanges(name, args,
+      "parametric{f=function(u, v) return {x, y, z} end, u={u0, u1}, v={v0, v1}}", "u", "v")
   local resolution = args.resolution or {48, 24}
   if type(resolution) == "number" then resolution = {resolution, resolution} end
   local nu, nv = resolution[1], resolution[2]
