@@ -166,9 +166,10 @@ for n in $check_sizes; do
   printf '| plate(%s) | %s | %d | %s |\n' "$n" "$best" "$memory" "$result"
 done
 
-# Sweeps against POV-Ray 3.7 (installed by `make bench`): the involute gear
-# (bench/parts/gear.lua, a prism of 1 200 points with a keyed bore) and the
-# turned vase (a lathe of 200 points) at 1024x768 on one core, whole
+# Renders against POV-Ray 3.7 (installed by `make bench`): the involute gear
+# (bench/parts/gear.lua, a prism of 1 200 points with a keyed bore), the
+# turned vase (a lathe of 200 points) and a lattice of 400 tori on a plane
+# (bench/parts/torus_lattice.lua) at 1024x768 on one core, whole
 # process, against their twins in bench/povray/, alternating PAIRS times;
 # medians compared. POV-Ray's prism cannot twist, so the gear is compared
 # untwisted; the twisted one (30°) is timed beside it, on its own.
@@ -176,7 +177,8 @@ if command -v povray >/dev/null; then
   echo
   echo "| render vs POV-Ray | csgray median (s) | POV-Ray median (s) | POV-Ray / csgray |"
   echo "|---|---:|---:|---:|"
-  for row in gear:bench/parts/gear.lua:twist=0 turned_vase:bench/parts/turned_vase.lua:; do
+  for row in gear:bench/parts/gear.lua:twist=0 turned_vase:bench/parts/turned_vase.lua: \
+    torus_lattice:bench/parts/torus_lattice.lua:; do
     IFS=: read -r name script define <<<"$row"
     defines=()
     [ -n "$define" ] && defines=(-D "$define")

@@ -23,6 +23,13 @@ constexpr double kMargin = 1e-3;
 // Newton steps that polish a root on the ray as given.
 constexpr int kPolishSteps = 4;
 
+// How narrow the bracket of a boundary gets (in units of the bounding
+// sphere's radius) before the polish: Newton on the quartic along the ray
+// as given doubles the digits at each step, so a bracket of 1e-8 leaves it
+// one or two steps, where a bracket of a few ulps took the bracketing
+// solver several more steps with two square roots each.
+constexpr double kBracket = 1e-8;
+
 // Signed distance from p to the surface along the meridian: the distance
 // from the core circle minus r. Its sign is the torus's inside test, it has
 // the same zeros as the quartic, and its slope along a unit direction is at
@@ -98,11 +105,44 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   double reach = std::sqrt((1.0 + kMargin) * (1.0 + kMargin) - c);
   double scale = size / len;  // t = t0 + s·scale
   if (t0 + reach * scale < ray.tMin || t0 - reach * scale > ray.tMax) return;
+  // The chord of the bounding sphere narrowed to where the ray is in the
+  // slab |z| <= r and in the cylinder ρ <= R + r (each grown by the
+  // margin, so the ends stay outside the torus): a ray that misses this
+  // ring-shaped box, or crosses it only inside the hole (ρ < R − r at both
+  // ends of the piece: ρ² is convex along a line), misses the torus
+  // without a quartic; one that meets it solves on a shorter piece.
+  double lo = -reach, hi = reach;
+  {
+    const double slab = r_ / size * (1.0 + kMargin);
+    if (u.z != 0.0) {
+      double a0 = (-slab - b.z) / u.z, a1 = (slab - b.z) / u.z;
+      if (a0 > a1) std::swap(a0, a1);
+      lo = std::max(lo, a0), hi = std::min(hi, a1);
+    } else if (std::abs(b.z) > slab) {
+      return;
+    }
+    // ρ²(s) = a·s² + 2h·s + g against (1 + margin)².
+    const double a = u.x * u.x + u.y * u.y, h = b.x * u.x + b.y * u.y, g = b.x * b.x + b.y * b.y;
+    const double outer = (1.0 + kMargin) * (1.0 + kMargin);
+    if (a > 0.0) {
+      const double disc = h * h - a * (g - outer);
+      if (!(disc > 0.0)) return;
+      const double root = std::sqrt(disc);
+      lo = std::max(lo, (-h - root) / a), hi = std::min(hi, (-h + root) / a);
+    } else if (g > outer) {
+      return;
+    }
+    if (!(lo < hi)) return;
+    const double hole = (R_ - r_) / size * (1.0 - kMargin);
+    auto rho2 = [&](double s) { return (a * s + 2.0 * h) * s + g; };
+    if (hole > 0.0 && rho2(lo) < hole * hole && rho2(hi) < hole * hole) return;
+    if (t0 + hi * scale < ray.tMin || t0 + lo * scale > ray.tMax) return;
+  }
 
   // The quartic in s: with P(s) = |p|² + R² − r² = s² + 2e·s + k (e ≈ 0
   // is what is left of b·u) and x² + y² = a·s² + 2h·s + g,
   //   q(s) = P² − 4R²(a·s² + 2h·s + g),
-  // and its derivative, whose sign changes split [−reach, reach].
+  // and its derivative, whose sign changes split [lo, hi].
   double e = glm::dot(b, u);
   double k = c + R * R - r * r;
   double a = u.x * u.x + u.y * u.y;
@@ -112,12 +152,12 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   const double derivative[4] = {linear, 2.0 * quadratic, 12.0 * e, 4.0};
   double breaks[5];
   int count = 0;
-  breaks[count++] = -reach;
+  breaks[count++] = lo;
   double critical[3];
-  int n = polynomialSublevelBoundaries(derivative, 3, -reach, reach, critical);
+  int n = polynomialSublevelBoundaries(derivative, 3, lo, hi, critical);
   for (int i = 0; i < n; ++i)
-    if (critical[i] > breaks[count - 1] && critical[i] < reach) breaks[count++] = critical[i];
-  breaks[count++] = reach;
+    if (critical[i] > breaks[count - 1] && critical[i] < hi) breaks[count++] = critical[i];
+  breaks[count++] = hi;
 
   // 2. The boundaries, each with the piece it lies in.
   auto distance = [&](double s) {
@@ -134,7 +174,7 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   for (int i = 1; i < count; ++i) {
     bool next = distance(breaks[i]).first <= 0.0;
     if (next != inside) {
-      double s = bracketedRoot(distance, breaks[i - 1], breaks[i], inside, 4.0 * kEpsilon);
+      double s = bracketedRoot(distance, breaks[i - 1], breaks[i], inside, kBracket);
       roots[found++] = {s, breaks[i - 1], breaks[i]};
     }
     inside = next;

@@ -8,6 +8,13 @@ namespace csgray::detail {
 int polynomialSublevelBoundaries(const double* c, int n, double lo, double hi, double* roots) {
   while (n > 0 && c[n] == 0.0) --n;
   if (n == 0 || !(lo < hi)) return 0;
+  if (n == 1) {
+    // A line changes sign once, at −c0/c1: no search needed.
+    const double root = -c[0] / c[1];
+    if (!(root > lo && root < hi)) return 0;
+    roots[0] = root;
+    return 1;
+  }
   // Far below any distance that matters at the scale of the interval, and
   // about where doubles run out: roots are found to a few ulps.
   double tolerance =
