@@ -169,12 +169,26 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   };
   Root roots[4];
   int found = 0;
+  // Which side each break is on comes from the meridian distance, which
+  // is exact in sign where the quartic may round. Within a piece where the
+  // side changes, a ring torus's quartic (its second factor is positive
+  // there) changes sign at the same point and is far cheaper to evaluate
+  // (no square roots); a spindle's may also vanish on its lemon, so it
+  // keeps the distance.
+  const double quartic[5] = {k * k - 4.0 * R * R * (b.x * b.x + b.y * b.y), linear, quadratic,
+                             4.0 * e, 1.0};
+  auto polynomial = [&](double s) {
+    return std::pair<double, double>(polynomialValue(quartic, 4, s),
+                                     polynomialSlope(quartic, 4, s));
+  };
+  const bool ring = R_ >= r_;
   bool inside = distance(breaks[0]).first <= 0.0;  // false: outside the bounding sphere
   bool startsInside = inside;
   for (int i = 1; i < count; ++i) {
     bool next = distance(breaks[i]).first <= 0.0;
     if (next != inside) {
-      double s = bracketedRoot(distance, breaks[i - 1], breaks[i], inside, kBracket);
+      double s = ring ? bracketedRoot(polynomial, breaks[i - 1], breaks[i], inside, kBracket)
+                      : bracketedRoot(distance, breaks[i - 1], breaks[i], inside, kBracket);
       roots[found++] = {s, breaks[i - 1], breaks[i]};
     }
     inside = next;
