@@ -69,6 +69,23 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
   return scale;
 }
 
+// What a ray met first, as the edge lines compare it.
+SurfaceSample surfaceSample(const SurfaceHit& hit, const dvec3& point, const dvec3& dir) {
+  SurfaceSample sample;
+  dvec3 n = hit.surface ? hit.surface->normal()
+                        : hit.boundary.primitive->normal(point, hit.boundary.face);
+  if (glm::dot(n, dir) > 0.0) n = -n;
+  sample.surface = hit.surface ? static_cast<const void*>(hit.surface)
+                               : static_cast<const void*>(hit.boundary.primitive);
+  sample.face = hit.surface ? 0 : hit.boundary.face;
+  sample.t = float(hit.t);
+  sample.normal = glm::vec3(glm::normalize(n));
+  return sample;
+}
+
+// Bisections that place an edge between two pixel centres: to 1/32 of a pixel.
+constexpr int kEdgeBisections = 4;
+
 }  // namespace
 
 Media Media::entered(int solid, double index) const {
@@ -104,11 +121,13 @@ struct Renderer::ShadingPoint {
 };
 
 Renderer::Renderer(const Scene& scene, const RenderOptions& options)
-    : scene_(scene),
+    : sectioned_(options.section ? std::make_shared<const Scene>(sectioned(scene, *options.section))
+                                 : nullptr),
+      scene_(sectioned_ ? *sectioned_ : scene),
       bvh_([&] {
         std::vector<Bounds> boxes;
-        for (const SolidPtr& s : scene.objects) boxes.push_back(s->bounds());
-        for (const SurfacePtr& s : scene.surfaces) boxes.push_back(s->bounds());
+        for (const SolidPtr& s : scene_.objects) boxes.push_back(s->bounds());
+        for (const SurfacePtr& s : scene_.surfaces) boxes.push_back(s->bounds());
         return Bvh(boxes);
       }()),
       options_(options),
@@ -120,7 +139,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     if (lights_.empty()) lights_ = cadLook_->lights();
   }
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
-  for (const SolidPtr& s : scene.objects) {
+  for (const SolidPtr& s : scene_.objects) {
     s->prepare();
     seeThrough_.push_back(letsLightThrough(*s));
   }
@@ -130,9 +149,9 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
   // which leaf, and so which material, the eye is in.
   SpanList spans;
   Ray view(cameraSpec_.eye, camera_.forward());
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    if (!scene.objects[i]->contains(cameraSpec_.eye)) continue;
-    scene.objects[i]->spans(view, spans);
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    if (!scene_.objects[i]->contains(cameraSpec_.eye)) continue;
+    scene_.objects[i]->spans(view, spans);
     for (const Span& s : spans)
       if (s.in.t <= 0.0 && s.out.t >= 0.0)
         cameraMedia_ = cameraMedia_.entered(int(i), materialOf(s.out).ior);
@@ -468,14 +487,7 @@ RenderResult Renderer::renderAll() const {
                            : hit->boundary.primitive->normal(p, hit->boundary.face);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);
-    if (edges) {
-      SurfaceSample& sample = seen[std::size_t(y) * w + x];
-      sample.surface = hit->surface ? static_cast<const void*>(hit->surface)
-                                    : static_cast<const void*>(hit->boundary.primitive);
-      sample.face = hit->surface ? 0 : hit->boundary.face;
-      sample.t = float(hit->t);
-      sample.normal = glm::vec3(glm::normalize(n));
-    }
+    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, p, ray.dir);
   });
 
   if (refine) {
@@ -502,8 +514,10 @@ RenderResult Renderer::renderAll() const {
     });
   }
   if (edges) {
-    // A pixel draws the edge between it and a neighbour when it is on
-    // the nearer side (raytrace/edge_lines.h).
+    // Each pixel takes the share of a line one pixel wide, centred on the
+    // exact edge between it and a neighbour, that falls within it
+    // (raytrace/edge_lines.h): 1 − d, for the edge d pixels from its
+    // centre, found by bisection along the step between the two centres.
     const double pixelsPerUnit =
         cameraSpec_.orthographic
             ? cameraSpec_.orthoWidth / w
@@ -512,21 +526,48 @@ RenderResult Renderer::renderAll() const {
       return cameraSpec_.orthographic ? pixelsPerUnit : t * pixelsPerUnit;
     };
     auto at = [&](int x, int y) -> const SurfaceSample& { return seen[std::size_t(y) * w + x]; };
-    auto point = [&](int x, int y) { return camera_.ray(x + 0.5, y + 0.5).at(at(x, y).t); };
-    forEachTile(true, [&](int x, int y, RayCounts&) {
+    auto sampleAt = [&](double px, double py, dvec3& point) {
+      const Ray ray = camera_.ray(px, py);
+      const std::optional<SurfaceHit> hit = firstHit(ray);
+      SurfaceSample sample;
+      if (!hit) return sample;
+      point = ray.at(hit->t);
+      sample = surfaceSample(*hit, point, ray.dir);
+      return sample;
+    };
+    forEachTile(true, [&](int x, int y, RayCounts& counts) {
       const SurfaceSample& here = at(x, y);
-      if (!here.surface) return;
+      const dvec3 centre(x + 0.5, y + 0.5, 0.0);
+      dvec3 herePoint = camera_.ray(centre.x, centre.y).at(here.t);
+      double coverage = 0.0;
       static constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
       for (const auto& step : kSteps) {
         const int nx = x + step[0], ny = y + step[1];
         if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
         const SurfaceSample& there = at(nx, ny);
-        const double t = there.surface ? std::min(here.t, there.t) : here.t;
-        if (edgeBetween(here, point(x, y), there, point(nx, ny), footprint(t)) == EdgeSide::First) {
-          result.color.set(x, y, withEdge(result.color.at(x, y)));
-          return;
+        const double t = here.surface && there.surface ? std::min(here.t, there.t)
+                         : here.surface                ? here.t
+                                                       : there.t;
+        const dvec3 therePoint = camera_.ray(nx + 0.5, ny + 0.5).at(there.t);
+        if (edgeBetween(here, herePoint, there, therePoint, footprint(t)) == EdgeSide::None)
+          continue;
+        double lo = 0.0, hi = 1.0;
+        for (int i = 0; i < kEdgeBisections; ++i) {
+          const double m = 0.5 * (lo + hi);
+          dvec3 probePoint(0.0);
+          ++counts.primary;
+          const SurfaceSample probe =
+              sampleAt(centre.x + m * step[0], centre.y + m * step[1], probePoint);
+          const double pt = probe.surface && here.surface ? std::min(here.t, probe.t)
+                            : here.surface                ? here.t
+                                                          : probe.t;
+          (edgeBetween(here, herePoint, probe, probePoint, footprint(pt)) == EdgeSide::None ? lo
+                                                                                            : hi) =
+              m;
         }
+        coverage = std::max(coverage, 1.0 - 0.5 * (lo + hi));
       }
+      if (coverage > 0.0) result.color.set(x, y, withEdge(result.color.at(x, y), coverage));
     });
   }
   result.rays = RayCounts{primary, shadow, secondary};
