@@ -7,12 +7,15 @@
 //   size=WxH                            the full frame's size in pixels
 //   pass=0|1|2                          0: a quarter of each side, 1: full,
 //                                       2: full, 4 rays a pixel at edges
+//   section=nx,ny,nz,d                  cut the part by the plane, keeping
+//                                       the side nx·x + ny·y + nz·z <= d
 #pragma once
 
 #include <map>
 #include <optional>
 #include <string>
 
+#include "raytrace/section_plane.h"
 #include "scene/scene.h"
 
 namespace csgray::detail {
@@ -21,6 +24,7 @@ struct FrameRequest {
   std::optional<CameraSpec> camera;
   int width = 800, height = 600;
   int pass = 1;
+  std::optional<SectionPlane> section;
 
   // The size a pass renders at.
   int passWidth() const;
