@@ -152,10 +152,17 @@ class Renderer {
   dvec3 missed(const Ray& ray, TraceContext& ctx) const;
   // The share of the CAD look's sky that the scene hides from a ground point.
   double skyHidden(const dvec3& ground, TraceContext& ctx) const;
+  // The colour a camera ray sees with the scene's highlighted solids laid
+  // over it (OpenSCAD's `#`): drawn on top, whatever is in front.
+  dvec3 withHighlights(const Ray& ray, const dvec3& color) const;
 
   std::shared_ptr<const Scene> sectioned_;  // the scene cut, when options.section says
   const Scene& scene_;                      // the scene rendered: the given one, or sectioned_
-  // Over the objects (items 0 .. n−1) and then the surfaces.
+  // The scene's objects, then its ghosts in their see-through grey (items
+  // ghostsFrom_ on), which take no part in shadows.
+  std::vector<SolidPtr> objects_;
+  std::size_t ghostsFrom_;
+  // Over the objects_ (items 0 .. n−1) and then the surfaces.
   Bvh bvh_;
   RenderOptions options_;
   CameraSpec cameraSpec_;

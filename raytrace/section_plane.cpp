@@ -22,7 +22,8 @@ Scene sectioned(const Scene& scene, const SectionPlane& plane) {
   const SolidPtr keep =
       Primitive::create<HalfSpace>(plane.normal, plane.offset)->withMaterial(sectionMaterial());
   Scene cut = scene;
-  for (SolidPtr& object : cut.objects) object = intersectionOf({object, keep});
+  for (auto* solids : {&cut.objects, &cut.ghosts, &cut.highlights})
+    for (SolidPtr& solid : *solids) solid = intersectionOf({solid, keep});
   return cut;
 }
 

@@ -23,8 +23,8 @@ dvec3 sectionColor();
 // The material of the cut faces, one for every section: a face with it is a cut.
 const MaterialPtr& sectionMaterial();
 
-// The scene with each solid cut by the plane; open surfaces are kept as
-// they are. Throws std::invalid_argument for a zero or non-finite normal.
+// The scene with each solid cut by the plane (its ghosts and highlights
+// too); open surfaces are kept as they are. Throws std::invalid_argument for a zero or non-finite normal.
 Scene sectioned(const Scene& scene, const SectionPlane& plane);
 
 }  // namespace csgray::detail
