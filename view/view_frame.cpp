@@ -46,10 +46,22 @@ std::vector<double> numberList(const std::string& text, const std::string& key, 
   return numbers;
 }
 
+// A switch: 0 or 1.
+bool flag(const std::string& text, const std::string& key) {
+  if (text != "0" && text != "1") throw std::invalid_argument(key + " must be 0 or 1");
+  return text == "1";
+}
+
 }  // namespace
 
 int FrameRequest::passWidth() const { return pass == 0 ? (width + 3) / 4 : width; }
 int FrameRequest::passHeight() const { return pass == 0 ? (height + 3) / 4 : height; }
+
+void FrameRequest::applyTo(Scene& scene) const {
+  if (camera) scene.camera = camera;
+  if (!ghosts) scene.ghosts.clear();
+  if (!highlights) scene.highlights.clear();
+}
 
 FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& query) {
   FrameRequest request;
@@ -92,6 +104,9 @@ FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& qu
   } else if (fov || ortho) {
     throw std::invalid_argument("fov and ortho need a camera");
   }
+  if (auto ghosts = single(query, "ghosts")) request.ghosts = flag(*ghosts, "ghosts");
+  if (auto highlights = single(query, "highlights"))
+    request.highlights = flag(*highlights, "highlights");
   if (auto section = single(query, "section")) {
     const std::vector<double> n =
         numberList(*section, "section", 4, "4 numbers: the plane's normal and offset");

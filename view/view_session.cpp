@@ -146,7 +146,7 @@ std::string ViewSession::frame(const FrameRequest& request) {
   std::lock_guard rendering(renderMutex_);
   if (*cancel) throw RenderCancelled();
   Scene scene = *currentScene();
-  if (request.camera) scene.camera = request.camera;
+  request.applyTo(scene);
   RenderOptions options(request.passWidth(), request.passHeight());
   options.threadPool = &threads_;
   options.samples = request.samples();
@@ -164,7 +164,7 @@ PickResult ViewSession::pick(const FrameRequest& request, double x, double y) {
     throw std::invalid_argument("x and y must be within the frame's size");
   std::lock_guard rendering(renderMutex_);
   Scene scene = *currentScene();
-  if (request.camera) scene.camera = request.camera;
+  request.applyTo(scene);
   RenderOptions options(request.width, request.height);
   options.section = request.section;
   const Renderer renderer(scene, options);

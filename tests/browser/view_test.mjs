@@ -395,3 +395,19 @@ test('check shows the warnings at their points, export offers the file', async (
   assert.equal((await page.$$('.marker')).length, 0, 'the markers went with the check');
   assert.deepEqual(fs.readdirSync(folder).sort(), ['part.lua'], 'nothing written beside the script');
 });
+
+test('the switches show and hide the script\'s ghosts and highlights', async () => {
+  let state = await frameState();
+  assert.equal(await page.$eval('#modifiers', (e) => e.hidden), true, 'no switches without marks');
+  save('return box{size={20, 20, 10}, center=true} + sphere(8):translate(0, 0, 10):ghost()\n');
+  state = await settled({ since: state, version: state.version });
+  assert.equal(await page.$eval('#modifiers', (e) => e.hidden), false);
+  assert.equal(await page.$eval('#show-ghosts-label', (e) => e.hidden), false);
+  assert.equal(await page.$eval('#show-highlights-label', (e) => e.hidden), true);
+  const shown = await pixels();
+  await page.click('#show-ghosts');
+  state = await settled({ since: state });
+  const hidden = await pixels();
+  assert.ok(changed(shown, hidden) > 0.01 * shown.width * shown.height, 'the ghost is gone');
+  assert.ok(hidden.part < shown.part, `fewer pixels differ from the background: ${hidden.part} < ${shown.part}`);
+});

@@ -169,6 +169,25 @@ TEST_F(ViewServerTest, ASectionCutsThePartInTheFrameAndThePick) {
             "section must be 4 numbers: the plane's normal and offset\n");
 }
 
+TEST_F(ViewServerTest, GhostsAndHighlightsCanBeLeftOutOfTheFrame) {
+  start(
+      "local cutter = cylinder{r=2, h=12, center=true}:rotate(90, 0, 0):highlight()\n"
+      "local bolt = sphere(2):translate(0, -10, 0):ghost()\n"
+      "return box{size={10, 10, 10}, center=true} - cutter + bolt\n");
+  const std::string state = get("/scene");
+  EXPECT_NE(state.find("\"ghosts\":1,\"highlights\":1"), std::string::npos) << state;
+  // Through the middle from the front: the ghost's sphere, or without it
+  // the highlighted cutter's hole through the box, seen to its end.
+  const std::string view = "size=101x101&" + kFront + "&ortho=20&x=50.5&y=50.5";
+  EXPECT_NE(get("/pick?" + view).find("\"point\":[0,-12,0]"), std::string::npos);
+  EXPECT_EQ(get("/pick?" + view + "&ghosts=0"), "{\"hit\":false}");
+  const std::string frame = "/frame?size=64x64&" + kFront + "&ortho=20";
+  EXPECT_NE(get(frame), get(frame + "&highlights=0"));
+  EXPECT_NE(get(frame), get(frame + "&ghosts=0"));
+  EXPECT_EQ(get(frame + "&ghosts=0&highlights=0"), get(frame + "&highlights=0&ghosts=0"));
+  EXPECT_EQ(get("/frame?ghosts=2", 400), "ghosts must be 0 or 1\n");
+}
+
 TEST_F(ViewServerTest, ExportsServeTheFileAsADownloadAndWriteNothingBesideTheScript) {
   start("return box(10)\n");
   auto response = client_->Post("/export?format=stl");

@@ -138,7 +138,8 @@ function sectionQuery() {
   return plane ? '&section=' + plane.join(',') : '';
 }
 
-for (const id of sectionControls) $(id).addEventListener('input', () => changed());
+for (const id of [...sectionControls, 'show-ghosts', 'show-highlights'])
+  $(id).addEventListener('input', () => changed());
 
 // ---- Frames: pass 0, 1 and 2, one request at a time; a move during
 // pass 0 waits for it (it is quick), a move during a later pass aborts it
@@ -148,7 +149,8 @@ let dirty = false;
 let later = null;  // the timer of a full pass put off during a drag
 
 function frameKey() {
-  return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height + sectionQuery();
+  return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height + sectionQuery() +
+    ($('show-ghosts').checked ? '' : '&ghosts=0') + ($('show-highlights').checked ? '' : '&highlights=0');
 }
 
 function changed() {
@@ -421,6 +423,10 @@ function showState(next) {
     $('size').textContent = point(sub(hi, lo));
   }
   $('volume').textContent = state.volume == null ? '–' : shown(state.volume);
+  // The switches of the script's ghosts and highlights, when it has any.
+  $('show-ghosts-label').hidden = !state.ghosts;
+  $('show-highlights-label').hidden = !state.highlights;
+  $('modifiers').hidden = !state.ghosts && !state.highlights;
   $('files').replaceChildren(...state.files.map((f) => {
     const li = document.createElement('li');
     li.textContent = f;
