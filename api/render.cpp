@@ -27,7 +27,7 @@ void checkOptions(const RenderOptions& o) {
     throw std::invalid_argument("render: the image has more than " + std::to_string(kMaxPixels) +
                                 " pixels");
   detail::checkWhole("render", "threads", o.threads, 0, 1024);
-  detail::checkWhole("render", "samples", o.samples, 1, 1024);
+  detail::checkWhole("render", "samples", o.samples, 0, 1024);
 }
 
 }  // namespace
@@ -38,8 +38,12 @@ Image render(const Scene& scene, const RenderOptions& options) {
     const detail::Scene& s = detail::Access::of(scene);
     detail::checkHasObjects(s);
     detail::RenderOptions o(options.width, options.height, options.threads);
-    o.samples = options.samples;
-    o.adaptive = options.adaptive;
+    // As the command: a bare part is antialiased at its edges unless the
+    // samples are given.
+    const bool cadSamples = options.samples == 0 && s.cadLook;
+    o.samples = cadSamples ? detail::kCadLookSamples : std::max(options.samples, 1);
+    o.adaptive = options.adaptive || cadSamples;
+    o.edges = options.edges;
     const detail::Image rendered = detail::Renderer(s, o).render();
     Image image;
     image.width = rendered.width;

@@ -14,6 +14,7 @@
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_probe.h"
 #include "export/cgal/mesh_validity.h"
+#include "export/printed_part.h"
 #include "meshio/mesh_writer.h"
 #include "tessellation/mesh_shells.h"
 
@@ -100,6 +101,12 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
   if (probe.canClassify()) classifyPoints(solid, probe, exact, box, options, report);
   reportFindings(tally, mesh, shells, options, report);
   return report;
+}
+
+CheckReport checkPrintedPart(const Scene& scene, const std::string& script,
+                             const CheckOptions& options,
+                             const std::function<void(const std::string& message)>& warn) {
+  return checkPart(*printedPart(scene, script, "check", warn), options);
 }
 
 CheckReport checkPart(const Solid& solid, const CheckOptions& options) {

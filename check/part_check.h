@@ -5,8 +5,12 @@
 // docs/check.md says what each figure means.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "check/check_report.h"
 #include "engine/solid.h"
+#include "scene/scene.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
@@ -15,6 +19,13 @@ namespace csgray::detail {
 // tolerance, rounded to floats as an STL file holds it) and checks it. A part that cannot be
 // meshed gives a report whose `failure` says why.
 CheckReport checkPart(const Solid& solid, const CheckOptions& options);
+
+// checkPart of the scene's printed part (export/printed_part.h: its
+// solids' union); warn gets what is left out. Throws std::runtime_error,
+// naming the script, when there is no solid.
+CheckReport checkPrintedPart(const Scene& scene, const std::string& script,
+                             const CheckOptions& options,
+                             const std::function<void(const std::string& message)>& warn);
 
 // Checks a given mesh against the solid, as if it were the solid's export
 // at the options' tolerance: a mesh read back from a file, or one broken on

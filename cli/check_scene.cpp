@@ -6,17 +6,15 @@
 #include "cli/crash_guard.h"
 #include "cli/heap_reserve.h"
 #include "cli/warning.h"
-#include "export/printed_part.h"
 
 namespace csgray::detail {
 
 int checkScene(const Scene& scene, const CheckCommandOptions& options) {
-  const SolidPtr part = printedPart(scene, options.script, "check", printWarning);
   // The export's booleans, as in csgray export (cli/heap_reserve.h).
   reserveHugePageHeap(std::size_t(512) << 20);
   const CheckReport report = [&] {
     const CrashGuard guard(options.script);
-    return checkPart(*part, options.check);
+    return checkPrintedPart(scene, options.script, options.check, printWarning);
   }();
   if (options.checked) options.checked();
   const std::string text = options.json ? checkReportJson(report, options.script)

@@ -6,6 +6,7 @@
 // together, so C++ types and exceptions cross between them.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "cli/check_scene.h"
@@ -22,6 +23,15 @@ struct MeshTools {
   int (*checkScene)(const Scene& scene, const CheckCommandOptions& options);
   TriangleMesh (*importMesh)(const std::string& path, bool repair, std::string& repairReport);
   CheckReport (*checkPart)(const Solid& solid, const CheckOptions& options);
+  // As declared in meshio/part_file_bytes.h and check/part_check.h (the
+  // page of csgray view).
+  std::string (*partFileBytes)(const Scene& scene, const std::string& script,
+                               const std::string& extension, double tolerance,
+                               const std::function<void(const std::string& stage)>& stage,
+                               const std::function<void(const std::string& message)>& warn);
+  CheckReport (*checkPrintedPart)(const Scene& scene, const std::string& script,
+                                  const CheckOptions& options,
+                                  const std::function<void(const std::string& message)>& warn);
 };
 
 // The module's table, loaded on the first call (thread-safe). Throws

@@ -5,10 +5,12 @@
 #include "cli/export_scene.h"
 #include "cli/mesh_tools.h"
 #include "meshio/mesh_import.h"
+#include "meshio/part_file_bytes.h"
 
 extern "C" __attribute__((visibility("default"))) const csgray::detail::MeshTools*
 csgray_mesh_tools() {
   using namespace csgray::detail;
-  static const MeshTools tools{checkExportOutput, exportScene, checkScene, importMesh, checkPart};
+  static const MeshTools tools{checkExportOutput, exportScene,   checkScene,      importMesh,
+                               checkPart,         partFileBytes, checkPrintedPart};
   return &tools;
 }

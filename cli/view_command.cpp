@@ -3,8 +3,10 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/mesh_tools.h"
 #include "cli/number_checks.h"
 #include "cli/view_tools.h"
+#include "cli/warning.h"
 #include "view/view_app.h"
 
 namespace csgray::detail {
@@ -29,6 +31,16 @@ int view(const ViewArguments& arguments, const PartScript& script) {
   options.open = arguments.open;
   options.threads = arguments.threads;
   options.makeServer = viewTools().makeViewServer;
+  // The page's buttons; the mesh tools' module is loaded on the first press.
+  options.tools.meshFile = [](const Scene& scene, const std::string& script,
+                              const std::string& format,
+                              const std::function<void(const std::string&)>& stage) {
+    return meshTools().partFileBytes(scene, script, format, ExportOptions{}.tolerance, stage,
+                                     printWarning);
+  };
+  options.tools.check = [](const Scene& scene, const std::string& script) {
+    return meshTools().checkPrintedPart(scene, script, CheckOptions{}, printWarning);
+  };
   return serveView(options);
 }
 

@@ -34,17 +34,21 @@ struct EdgeStyle {
   double opacity = 0.85;
 };
 
-// Which of two neighbouring pixels draws the edge between them: the one on
-// the nearer surface, so that an outline stays on the part and a crease is
-// one pixel wide (the first on a tie). a and b are the samples, pa and pb the points they hit, and
-// footprint the width of a pixel at their distance.
+// Whether an edge lies between two samples, and which of them is on the
+// nearer surface (the first on a tie). a and b are the samples, pa and pb
+// the points they hit, and footprint the width of a pixel at their
+// distance. The renderer draws a line one pixel wide centred on the edge,
+// each pixel darkened by the share of the line that falls within it, so
+// that the lines are smooth and lie where the edges are to a fraction of a
+// pixel: it finds where the edge crosses the step between two pixel
+// centres by bisection with this test.
 enum class EdgeSide { None, First, Second };
 EdgeSide edgeBetween(const SurfaceSample& a, const dvec3& pa, const SurfaceSample& b,
                      const dvec3& pb, double footprint, const EdgeStyle& style = {});
 
-// The colour of a pixel that draws an edge.
-inline dvec3 withEdge(const dvec3& color, const EdgeStyle& style = {}) {
-  return color + style.opacity * (style.color - color);
+// The colour of a pixel that the line covers by the share coverage (0 to 1).
+inline dvec3 withEdge(const dvec3& color, double coverage = 1.0, const EdgeStyle& style = {}) {
+  return color + coverage * style.opacity * (style.color - color);
 }
 
 }  // namespace csgray::detail

@@ -61,6 +61,27 @@ CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
   return camera;
 }
 
+// OpenSCAD's `%`: a ghost is drawn light grey and mostly see-through.
+std::vector<SolidPtr> objectsAndGhosts(const Scene& scene) {
+  static const MaterialPtr ghost = [] {
+    auto m = std::make_shared<Material>();
+    m->color = dvec3(0.45);
+    m->ambient = 0.4;
+    m->diffuse = 0.6;
+    m->transparency = 0.75;
+    return m;
+  }();
+  std::vector<SolidPtr> objects = scene.objects;
+  for (const SolidPtr& s : scene.ghosts)
+    objects.push_back(s->mapPrimitives([&](const Primitive& p) { return p.withMaterial(ghost); }));
+  return objects;
+}
+
+// OpenSCAD's `#`: highlighted solids are laid over the image in a
+// translucent pink (sRGB #ff5078), shaded a little so that their shape shows.
+constexpr dvec3 kHighlightColor{1.0, 0.0802, 0.1878};
+constexpr double kHighlightOpacity = 0.5;
+
 // A length that stands for the scene's size, to scale the surface offset.
 double sceneScale(const Scene& scene, const CameraSpec& camera) {
   Bounds b = scene.bounds();
@@ -68,6 +89,23 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
   if (b.finite()) scale = std::max(scale, glm::length(b.size()));
   return scale;
 }
+
+// What a ray met first, as the edge lines compare it.
+SurfaceSample surfaceSample(const SurfaceHit& hit, const dvec3& point, const dvec3& dir) {
+  SurfaceSample sample;
+  dvec3 n = hit.surface ? hit.surface->normal()
+                        : hit.boundary.primitive->normal(point, hit.boundary.face);
+  if (glm::dot(n, dir) > 0.0) n = -n;
+  sample.surface = hit.surface ? static_cast<const void*>(hit.surface)
+                               : static_cast<const void*>(hit.boundary.primitive);
+  sample.face = hit.surface ? 0 : hit.boundary.face;
+  sample.t = float(hit.t);
+  sample.normal = glm::vec3(glm::normalize(n));
+  return sample;
+}
+
+// Bisections that place an edge between two pixel centres: to 1/32 of a pixel.
+constexpr int kEdgeBisections = 4;
 
 }  // namespace
 
@@ -104,11 +142,15 @@ struct Renderer::ShadingPoint {
 };
 
 Renderer::Renderer(const Scene& scene, const RenderOptions& options)
-    : scene_(scene),
+    : sectioned_(options.section ? std::make_shared<const Scene>(sectioned(scene, *options.section))
+                                 : nullptr),
+      scene_(sectioned_ ? *sectioned_ : scene),
+      objects_(objectsAndGhosts(scene_)),
+      ghostsFrom_(scene_.objects.size()),
       bvh_([&] {
         std::vector<Bounds> boxes;
-        for (const SolidPtr& s : scene.objects) boxes.push_back(s->bounds());
-        for (const SurfacePtr& s : scene.surfaces) boxes.push_back(s->bounds());
+        for (const SolidPtr& s : objects_) boxes.push_back(s->bounds());
+        for (const SurfacePtr& s : scene_.surfaces) boxes.push_back(s->bounds());
         return Bvh(boxes);
       }()),
       options_(options),
@@ -120,19 +162,20 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     if (lights_.empty()) lights_ = cadLook_->lights();
   }
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
-  for (const SolidPtr& s : scene.objects) {
+  for (const SolidPtr& s : objects_) {
     s->prepare();
     seeThrough_.push_back(letsLightThrough(*s));
   }
+  for (const SolidPtr& s : scene_.highlights) s->prepare();
   scale_ = sceneScale(scene, cameraSpec_);
   // A camera inside a solid looks out of it: the solid's index holds
   // until its rays leave it. The boundary where the view ray leaves tells
   // which leaf, and so which material, the eye is in.
   SpanList spans;
   Ray view(cameraSpec_.eye, camera_.forward());
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    if (!scene.objects[i]->contains(cameraSpec_.eye)) continue;
-    scene.objects[i]->spans(view, spans);
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (!objects_[i]->contains(cameraSpec_.eye)) continue;
+    objects_[i]->spans(view, spans);
     for (const Span& s : spans)
       if (s.in.t <= 0.0 && s.out.t >= 0.0)
         cameraMedia_ = cameraMedia_.entered(int(i), materialOf(s.out).ior);
@@ -142,7 +185,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
 std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
   std::optional<SurfaceHit> best;
   SpanList spans;
-  const std::uint32_t solids = std::uint32_t(scene_.objects.size());
+  const std::uint32_t solids = std::uint32_t(objects_.size());
   double tMax = ray.tMax;
   bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
     if (i >= solids) {
@@ -154,11 +197,11 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
     // The first boundary beyond tMin: an entry, or an exit when the ray
     // starts inside the solid. Nothing beyond the best so far matters.
     if (tMax == ray.tMax) {
-      scene_.objects[i]->spansToFirstBoundary(ray, spans);
+      objects_[i]->spansToFirstBoundary(ray, spans);
     } else {
       Ray window = ray;
       window.tMax = tMax;
-      scene_.objects[i]->spansToFirstBoundary(window, spans);
+      objects_[i]->spansToFirstBoundary(window, spans);
     }
     for (const Span& s : spans) {
       bool entering = s.in.t > ray.tMin;
@@ -177,7 +220,7 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   Ray ray(from, to - from, 0.0, 1.0);
   dvec3 pass(1.0);
   SpanList spans;
-  const std::uint32_t solids = std::uint32_t(scene_.objects.size());
+  const std::uint32_t solids = std::uint32_t(objects_.size());
   double tMax = 1.0;
   // Each stretch inside a transparent solid or surface dims the light;
   // anything opaque ends the search.
@@ -190,6 +233,7 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
       const Surface& surface = *scene_.surfaces[i - solids];
       return !surface.hit(ray) || dim(materialOf(surface.material()));
     }
+    if (i >= ghostsFrom_) return true;  // ghosts cast no shadows
     // A stretch inside the solid: its material is the one of the face
     // where the light enters it (or leaves, if the segment starts inside).
     auto material = [](const Span& s) -> const Material& {
@@ -198,9 +242,9 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     // An opaque solid stops the light at its first stretch, which its
     // first boundary tells; a transparent one dims it by every stretch.
     if (seeThrough_[i]) {
-      scene_.objects[i]->spans(ray, spans);
+      objects_[i]->spans(ray, spans);
     } else {
-      scene_.objects[i]->spansToFirstBoundary(ray, spans);
+      objects_[i]->spansToFirstBoundary(ray, spans);
     }
     for (const Span& s : spans)
       if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
@@ -362,8 +406,29 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   return color;
 }
 
+dvec3 Renderer::withHighlights(const Ray& ray, const dvec3& color) const {
+  std::optional<Boundary> nearest;
+  SpanList spans;
+  for (const SolidPtr& s : scene_.highlights) {
+    s->spansToFirstBoundary(ray, spans);
+    for (const Span& span : spans) {
+      const Boundary& b = span.in.t > ray.tMin ? span.in : span.out;
+      if (b.primitive && b.t > ray.tMin && (!nearest || b.t < nearest->t)) nearest = b;
+      break;
+    }
+  }
+  if (!nearest) return color;
+  const dvec3 n = nearest->primitive->normal(ray.at(nearest->t), nearest->face);
+  const double facing = std::abs(glm::dot(glm::normalize(n), glm::normalize(ray.dir)));
+  return glm::mix(color, kHighlightColor * (0.6 + 0.4 * facing), kHighlightOpacity);
+}
+
 dvec3 Renderer::pixel(int x, int y, int samples, TraceContext& ctx) const {
-  if (samples <= 1) return trace(camera_.ray(x + 0.5, y + 0.5), 0, 1.0, cameraMedia_, ctx);
+  auto seen = [&](const Ray& ray) {
+    const dvec3 color = trace(ray, 0, 1.0, cameraMedia_, ctx);
+    return scene_.highlights.empty() ? color : withHighlights(ray, color);
+  };
+  if (samples <= 1) return seen(camera_.ray(x + 0.5, y + 0.5));
   // Jittered supersampling: one random point in each cell of a k × k grid
   // over the pixel; samples beyond k² fall anywhere in it.
   int k = int(std::sqrt(double(samples)));
@@ -371,7 +436,7 @@ dvec3 Renderer::pixel(int x, int y, int samples, TraceContext& ctx) const {
   for (int i = 0; i < samples; ++i) {
     double u = ctx.rng.next(), v = ctx.rng.next();
     if (i < k * k) u = (i % k + u) / k, v = (i / k + v) / k;
-    sum += trace(camera_.ray(x + u, y + v), 0, 1.0, cameraMedia_, ctx);
+    sum += seen(camera_.ray(x + u, y + v));
   }
   return sum / double(samples);
 }
@@ -468,14 +533,7 @@ RenderResult Renderer::renderAll() const {
                            : hit->boundary.primitive->normal(p, hit->boundary.face);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);
-    if (edges) {
-      SurfaceSample& sample = seen[std::size_t(y) * w + x];
-      sample.surface = hit->surface ? static_cast<const void*>(hit->surface)
-                                    : static_cast<const void*>(hit->boundary.primitive);
-      sample.face = hit->surface ? 0 : hit->boundary.face;
-      sample.t = float(hit->t);
-      sample.normal = glm::vec3(glm::normalize(n));
-    }
+    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, p, ray.dir);
   });
 
   if (refine) {
@@ -502,8 +560,10 @@ RenderResult Renderer::renderAll() const {
     });
   }
   if (edges) {
-    // A pixel draws the edge between it and a neighbour when it is on
-    // the nearer side (raytrace/edge_lines.h).
+    // Each pixel takes the share of a line one pixel wide, centred on the
+    // exact edge between it and a neighbour, that falls within it
+    // (raytrace/edge_lines.h): 1 − d, for the edge d pixels from its
+    // centre, found by bisection along the step between the two centres.
     const double pixelsPerUnit =
         cameraSpec_.orthographic
             ? cameraSpec_.orthoWidth / w
@@ -512,21 +572,48 @@ RenderResult Renderer::renderAll() const {
       return cameraSpec_.orthographic ? pixelsPerUnit : t * pixelsPerUnit;
     };
     auto at = [&](int x, int y) -> const SurfaceSample& { return seen[std::size_t(y) * w + x]; };
-    auto point = [&](int x, int y) { return camera_.ray(x + 0.5, y + 0.5).at(at(x, y).t); };
-    forEachTile(true, [&](int x, int y, RayCounts&) {
+    auto sampleAt = [&](double px, double py, dvec3& point) {
+      const Ray ray = camera_.ray(px, py);
+      const std::optional<SurfaceHit> hit = firstHit(ray);
+      SurfaceSample sample;
+      if (!hit) return sample;
+      point = ray.at(hit->t);
+      sample = surfaceSample(*hit, point, ray.dir);
+      return sample;
+    };
+    forEachTile(true, [&](int x, int y, RayCounts& counts) {
       const SurfaceSample& here = at(x, y);
-      if (!here.surface) return;
+      const dvec3 centre(x + 0.5, y + 0.5, 0.0);
+      dvec3 herePoint = camera_.ray(centre.x, centre.y).at(here.t);
+      double coverage = 0.0;
       static constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
       for (const auto& step : kSteps) {
         const int nx = x + step[0], ny = y + step[1];
         if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
         const SurfaceSample& there = at(nx, ny);
-        const double t = there.surface ? std::min(here.t, there.t) : here.t;
-        if (edgeBetween(here, point(x, y), there, point(nx, ny), footprint(t)) == EdgeSide::First) {
-          result.color.set(x, y, withEdge(result.color.at(x, y)));
-          return;
+        const double t = here.surface && there.surface ? std::min(here.t, there.t)
+                         : here.surface                ? here.t
+                                                       : there.t;
+        const dvec3 therePoint = camera_.ray(nx + 0.5, ny + 0.5).at(there.t);
+        if (edgeBetween(here, herePoint, there, therePoint, footprint(t)) == EdgeSide::None)
+          continue;
+        double lo = 0.0, hi = 1.0;
+        for (int i = 0; i < kEdgeBisections; ++i) {
+          const double m = 0.5 * (lo + hi);
+          dvec3 probePoint(0.0);
+          ++counts.primary;
+          const SurfaceSample probe =
+              sampleAt(centre.x + m * step[0], centre.y + m * step[1], probePoint);
+          const double pt = probe.surface && here.surface ? std::min(here.t, probe.t)
+                            : here.surface                ? here.t
+                                                          : probe.t;
+          (edgeBetween(here, herePoint, probe, probePoint, footprint(pt)) == EdgeSide::None ? lo
+                                                                                            : hi) =
+              m;
         }
+        coverage = std::max(coverage, 1.0 - 0.5 * (lo + hi));
       }
+      if (coverage > 0.0) result.color.set(x, y, withEdge(result.color.at(x, y), coverage));
     });
   }
   result.rays = RayCounts{primary, shadow, secondary};

@@ -17,6 +17,7 @@
 #include "raytrace/cad_look.h"
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
+#include "raytrace/section_plane.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -49,6 +50,10 @@ struct RenderOptions {
   bool normalAov = false;
   // Draw edge lines (raytrace/edge_lines.h), as scene.edges does too.
   bool edges = false;
+  // Cut every solid by this plane, the cut faces in the section colour
+  // (raytrace/section_plane.h); the camera, the CAD look's ground and the
+  // framing stay those of the whole part.
+  std::optional<SectionPlane> section;
   // Called from worker threads with the share of the image done, in [0, 1].
   std::function<void(double)> progress;
   // Called once for each band of bandRows rows of the colour image, rows
@@ -147,9 +152,17 @@ class Renderer {
   dvec3 missed(const Ray& ray, TraceContext& ctx) const;
   // The share of the CAD look's sky that the scene hides from a ground point.
   double skyHidden(const dvec3& ground, TraceContext& ctx) const;
+  // The colour a camera ray sees with the scene's highlighted solids laid
+  // over it (OpenSCAD's `#`): drawn on top, whatever is in front.
+  dvec3 withHighlights(const Ray& ray, const dvec3& color) const;
 
-  const Scene& scene_;
-  // Over the objects (items 0 .. n−1) and then the surfaces.
+  std::shared_ptr<const Scene> sectioned_;  // the scene cut, when options.section says
+  const Scene& scene_;                      // the scene rendered: the given one, or sectioned_
+  // The scene's objects, then its ghosts in their see-through grey (items
+  // ghostsFrom_ on), which take no part in shadows.
+  std::vector<SolidPtr> objects_;
+  std::size_t ghostsFrom_;
+  // Over the objects_ (items 0 .. n−1) and then the surfaces.
   Bvh bvh_;
   RenderOptions options_;
   CameraSpec cameraSpec_;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "scene/modifiers.h"
 #include "scene/value_checks.h"
 
 namespace csgray::detail {
@@ -14,10 +15,18 @@ namespace csgray::detail {
 Bounds Scene::bounds() const {
   Bounds b;
   for (const SolidPtr& s : objects) b.include(s->bounds());
+  for (const SolidPtr& s : ghosts) b.include(s->bounds());
   // An infinite plane is a floor or a wall, not part of what to frame.
   for (const SurfacePtr& s : surfaces)
     if (s->bounds().finite()) b.include(s->bounds());
   return b;
+}
+
+void Scene::resolveModifiers() {
+  ResolvedModifiers resolved = detail::resolveModifiers(objects);
+  objects = std::move(resolved.model);
+  ghosts.insert(ghosts.end(), resolved.ghosts.begin(), resolved.ghosts.end());
+  highlights.insert(highlights.end(), resolved.highlights.begin(), resolved.highlights.end());
 }
 
 CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees) {
@@ -74,7 +83,7 @@ int checkedMaxDepth(double depth) { return checkWhole("scene", "max_depth", dept
 void checkMinWeight(double weight) { checkUnit("scene", "min_weight", weight); }
 
 void checkHasObjects(const Scene& scene) {
-  if (scene.objects.empty() && scene.surfaces.empty())
+  if (scene.objects.empty() && scene.surfaces.empty() && scene.ghosts.empty())
     throw std::invalid_argument("scene: objects is empty");
 }
 

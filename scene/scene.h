@@ -37,6 +37,12 @@ struct TraceLimits {
 struct Scene {
   std::vector<SolidPtr> objects;
   std::vector<SurfacePtr> surfaces;  // open surfaces: planes, discs, triangles, ...
+  // OpenSCAD's modifiers (scene/modifiers.h): ghosts (`%`) are shown
+  // see-through and are not part of the model (not exported, not checked);
+  // highlighted solids (`#`) are parts of objects, drawn again over the
+  // image. A viewer may empty either list to hide them.
+  std::vector<SolidPtr> ghosts;
+  std::vector<SolidPtr> highlights;
   std::optional<CameraSpec> camera;  // none: frame the objects' bounds
   std::vector<Light> lights;         // none: a default light beside the camera
   dvec3 background{0.05, 0.05, 0.08};
@@ -48,8 +54,11 @@ struct Scene {
   // Draw edge lines (raytrace/edge_lines.h): scene{edges=true}.
   bool edges = false;
 
-  // The union of the objects' and the bounded surfaces' bounds.
+  // The union of the objects', the ghosts' and the bounded surfaces' bounds.
   Bounds bounds() const;
+  // Takes the modifiers' marks out of the objects (resolveModifiers of
+  // scene/modifiers.h), filling ghosts and highlights.
+  void resolveModifiers();
 };
 
 // A camera that looks at the box from the front-right-top and sees all of

@@ -10,6 +10,7 @@
 
 #include "engine/boolean.h"
 #include "primitives/quadric.h"
+#include "scene/modifiers.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
 #include "script/lua_args.h"
@@ -280,6 +281,22 @@ int solidToString(lua_State* L) {
   return 1;
 }
 
+// s:highlight(), s:ghost(), s:disable() and only(s): OpenSCAD's `#`, `%`,
+// `*` and `!` (scene/modifiers.h).
+template <Modifier modifier>
+int markSolid(lua_State* L) {
+  const std::string name = modifierName(modifier);
+  const SolidPtr& solid = modifier == Modifier::Only
+                              ? checkValue<SolidPtr>(L, 1, name + ": argument")
+                              : methodReceiver(L, name);
+  if (modifier == Modifier::Only)
+    checkArgumentCount(L, name, 1);
+  else
+    checkArgumentCount(L, name, 0, 2);
+  pushSolid(L, std::make_shared<MarkedSolid>(modifier, solid));
+  return 1;
+}
+
 template <Boolean::Op op>
 int booleanOperator(lua_State* L) {
   const char* symbol = op == Boolean::Op::Union ? "+" : op == Boolean::Op::Intersection ? "*" : "-";
@@ -317,6 +334,9 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   static const luaL_Reg methods[] = {{"material", guarded<solidMaterial>},
                                      {"bounds", guarded<bounds>},
                                      {"contains", guarded<contains>},
+                                     {"highlight", guarded<markSolid<Modifier::Highlight>>},
+                                     {"ghost", guarded<markSolid<Modifier::Ghost>>},
+                                     {"disable", guarded<markSolid<Modifier::Disable>>},
                                      {nullptr, nullptr}};
   luaL_newlib(L, methods);
   luaL_setfuncs(L, transforms, 0);
@@ -342,6 +362,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
       {"union", guarded<booleanOf<Boolean::Op::Union>>},
       {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},
+      {"only", guarded<markSolid<Modifier::Only>>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
   registerTextureApi(L);

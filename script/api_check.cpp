@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "scene/modifiers.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
@@ -111,7 +112,12 @@ int check(lua_State* L) {
   args.finish();
   const ScriptOptions& script = scriptOptionsOf(L);
   if (!script.checkSolid) throw std::invalid_argument("check: this program cannot check solids");
-  pushReport(L, script.checkSolid(*solid, options));
+  // The model's part: not its ghosts or disabled solids (scene/modifiers.h).
+  SolidPtr model = modelOf(solid);
+  if (!model)
+    throw std::invalid_argument(
+        "check: nothing is left to check: the solid is disabled or a ghost");
+  pushReport(L, script.checkSolid(*model, options));
   return 1;
 }
 

@@ -134,7 +134,9 @@ void registerSceneApi(lua_State* L) {
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }
 
-Scene sceneFromValue(lua_State* L, int index) {
+namespace {
+
+Scene sceneOfValue(lua_State* L, int index) {
   if (SolidPtr* solid = toValue<SolidPtr>(L, index)) {
     Scene s;
     s.objects.push_back(*solid);
@@ -157,6 +159,16 @@ Scene sceneFromValue(lua_State* L, int index) {
   throw std::invalid_argument(std::string("the script must return a solid, a surface, a region "
                                           "or scene{...}, not ") +
                               luaL_typename(L, index));
+}
+
+}  // namespace
+
+Scene sceneFromValue(lua_State* L, int index) {
+  Scene scene = sceneOfValue(L, index);
+  scene.resolveModifiers();
+  if (scene.objects.empty() && scene.surfaces.empty() && scene.ghosts.empty())
+    throw std::invalid_argument("nothing is left to show: every solid is disabled");
+  return scene;
 }
 
 }  // namespace csgray::detail

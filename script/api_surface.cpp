@@ -77,7 +77,8 @@ int surfaceMaterial(lua_State* L) {
   return 1;
 }
 
-// s:bounds() and s:contains(p) on a surface: methods of solids only.
+// s:bounds(), s:contains(p) and the modifiers (s:ghost(), ...) on a
+// surface: methods of solids only.
 template <const char* method>
 int solidMethod(lua_State* L) {
   methodReceiver(L, method);  // throws for a surface
@@ -85,6 +86,9 @@ int solidMethod(lua_State* L) {
 }
 constexpr char kBounds[] = "bounds";
 constexpr char kContains[] = "contains";
+constexpr char kHighlight[] = "highlight";
+constexpr char kGhost[] = "ghost";
+constexpr char kDisable[] = "disable";
 
 int surfaceBooleanError(lua_State* L) {
   SurfacePtr* s = toValue<SurfacePtr>(L, 1);
@@ -102,6 +106,9 @@ void registerSurfaceApi(lua_State* L, const luaL_Reg* transformMethods) {
   static const luaL_Reg surfaceMethods[] = {{"material", guarded<surfaceMaterial>},
                                             {"bounds", guarded<solidMethod<kBounds>>},
                                             {"contains", guarded<solidMethod<kContains>>},
+                                            {"highlight", guarded<solidMethod<kHighlight>>},
+                                            {"ghost", guarded<solidMethod<kGhost>>},
+                                            {"disable", guarded<solidMethod<kDisable>>},
                                             {nullptr, nullptr}};
   luaL_newlib(L, surfaceMethods);
   luaL_setfuncs(L, transformMethods, 0);

@@ -236,4 +236,16 @@ inline void expectAgreementOnLinesThrough(const Solid& solid, const dvec3& p, in
   }
 }
 
+// A camera on −y, 50 from the origin, looking at it along +y with z up,
+// orthographic over `width` model units: pixel columns map straight to x.
+inline CameraSpec frontOrthographicCamera(double width) {
+  CameraSpec front;
+  front.eye = {0.0, -50.0, 0.0};
+  front.lookAt = {0.0, 0.0, 0.0};
+  front.up = {0.0, 0.0, 1.0};
+  front.orthographic = true;
+  front.orthoWidth = width;
+  return front;
+}
+
 }  // namespace csgray::detail::test

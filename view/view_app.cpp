@@ -39,7 +39,8 @@ int serveView(const ViewOptions& options) {
     watcher.watch(session.state().files);
   });
   watcher.watch(session.state().files);
-  ViewRoutes routes(session);
+  ViewJobs jobs(options.tools);
+  ViewRoutes routes(session, &jobs);
   const std::unique_ptr<HttpServer> server =
       options.makeServer(routes, options.address, options.port);
   if (!isLoopback(options.address))

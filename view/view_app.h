@@ -6,6 +6,7 @@
 #include <string>
 
 #include "script/script.h"
+#include "view/view_jobs.h"
 #include "view/view_service.h"
 
 namespace csgray::detail {
@@ -21,6 +22,8 @@ struct ViewOptions {
   // command line loads from a module).
   std::function<std::unique_ptr<HttpServer>(ViewService&, const std::string& address, int port)>
       makeServer;
+  // The work of the page's export and check buttons (from the mesh tools).
+  PartTools tools;
 };
 
 // Serves the view; returns only when it cannot start (a port in use: throws

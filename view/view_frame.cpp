@@ -31,10 +31,37 @@ double finiteNumber(const std::string& text, const std::string& key) {
   return value;
 }
 
+// Numbers separated by commas, as many as count.
+std::vector<double> numberList(const std::string& text, const std::string& key, std::size_t count,
+                               const std::string& what) {
+  std::vector<double> numbers;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    numbers.push_back(finiteNumber(text.substr(start, comma - start), key));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (numbers.size() != count) throw std::invalid_argument(key + " must be " + what);
+  return numbers;
+}
+
+// A switch: 0 or 1.
+bool flag(const std::string& text, const std::string& key) {
+  if (text != "0" && text != "1") throw std::invalid_argument(key + " must be 0 or 1");
+  return text == "1";
+}
+
 }  // namespace
 
 int FrameRequest::passWidth() const { return pass == 0 ? (width + 3) / 4 : width; }
 int FrameRequest::passHeight() const { return pass == 0 ? (height + 3) / 4 : height; }
+
+void FrameRequest::applyTo(Scene& scene) const {
+  if (camera) scene.camera = camera;
+  if (!ghosts) scene.ghosts.clear();
+  if (!highlights) scene.highlights.clear();
+}
 
 FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& query) {
   FrameRequest request;
@@ -56,16 +83,8 @@ FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& qu
   const auto fov = single(query, "fov"), ortho = single(query, "ortho");
   if (fov && ortho) throw std::invalid_argument("give fov or ortho, not both");
   if (auto camera = single(query, "camera")) {
-    std::vector<double> numbers;
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t comma = camera->find(',', start);
-      numbers.push_back(finiteNumber(camera->substr(start, comma - start), "camera"));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-    if (numbers.size() != 9)
-      throw std::invalid_argument("camera must be 9 numbers: eye, target and up");
+    const std::vector<double> numbers =
+        numberList(*camera, "camera", 9, "9 numbers: eye, target and up");
     CameraSpec spec;
     spec.eye = {numbers[0], numbers[1], numbers[2]};
     spec.lookAt = {numbers[3], numbers[4], numbers[5]};
@@ -84,6 +103,18 @@ FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& qu
     request.camera = checkedCamera(spec, width);  // throws for a degenerate camera
   } else if (fov || ortho) {
     throw std::invalid_argument("fov and ortho need a camera");
+  }
+  if (auto ghosts = single(query, "ghosts")) request.ghosts = flag(*ghosts, "ghosts");
+  if (auto highlights = single(query, "highlights"))
+    request.highlights = flag(*highlights, "highlights");
+  if (auto section = single(query, "section")) {
+    const std::vector<double> n =
+        numberList(*section, "section", 4, "4 numbers: the plane's normal and offset");
+    const dvec3 normal(n[0], n[1], n[2]);
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(length > 0.0) || !std::isfinite(length))
+      throw std::invalid_argument("section's normal must not be zero");
+    request.section = SectionPlane{normal / length, n[3] / length};
   }
   return request;
 }

@@ -7,12 +7,19 @@
 //   size=WxH                            the full frame's size in pixels
 //   pass=0|1|2                          0: a quarter of each side, 1: full,
 //                                       2: full, 4 rays a pixel at edges
+//   section=nx,ny,nz,d                  cut the part by the plane, keeping
+//                                       the side nx·x + ny·y + nz·z <= d
+//   ghosts=0, highlights=0              leave out the script's ghosts
+//                                       (s:ghost()), its highlights
+//                                       (s:highlight()); 1 (the default)
+//                                       shows them
 #pragma once
 
 #include <map>
 #include <optional>
 #include <string>
 
+#include "raytrace/section_plane.h"
 #include "scene/scene.h"
 
 namespace csgray::detail {
@@ -21,6 +28,12 @@ struct FrameRequest {
   std::optional<CameraSpec> camera;
   int width = 800, height = 600;
   int pass = 1;
+  std::optional<SectionPlane> section;
+  bool ghosts = true, highlights = true;
+
+  // The scene as this frame shows it: its camera, without the ghosts or
+  // highlights it leaves out.
+  void applyTo(Scene& scene) const;
 
   // The size a pass renders at.
   int passWidth() const;

@@ -1,8 +1,11 @@
 #include "view/view_routes.h"
 
+#include <cctype>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
+#include "check/check_report.h"
 #include "raytrace/renderer.h"
 #include "view/json_text.h"
 #include "view/view_frame.h"
@@ -43,7 +46,70 @@ std::string pickJson(const PickResult& pick) {
          ",\"source\":" + jsonString(pick.source) + "}";
 }
 
+// The name a download is offered under: the script's, with the format's
+// extension, in characters that need no quoting in a header.
+std::string downloadName(const std::string& script, const std::string& format) {
+  std::string stem = std::filesystem::path(script).stem().string();
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  return (stem.empty() ? "part" : stem) + "." + format;
+}
+
+std::string jobJson(const JobStatus& job, bool stale, const std::string& script) {
+  std::string body =
+      "{\"id\":" + std::to_string(job.id) + ",\"kind\":" + jsonString(job.kind) +
+      ",\"format\":" + jsonString(job.format) + ",\"stage\":" + jsonString(job.stage) +
+      ",\"running\":" + (job.running ? "true" : "false") + ",\"error\":" + jsonString(job.error) +
+      ",\"stale\":" + (stale ? "true" : "false");
+  if (job.kind == "export" && job.stage == "done")
+    body += ",\"bytes\":" + std::to_string(job.bytes) +
+            ",\"name\":" + jsonString(downloadName(script, job.format)) +
+            ",\"file\":\"/job/file?id=" + std::to_string(job.id) + "\"";
+  if (job.report)
+    body += ",\"report\":" + checkReportJson(*job.report, script) +
+            ",\"text\":" + jsonString(checkReportText(*job.report, script));
+  return body + "}";
+}
+
 }  // namespace
+
+ViewReply ViewRoutes::job(const std::string& method, const std::string& path,
+                          const std::multimap<std::string, std::string>& query) {
+  const std::string& script = session_.script();
+  if (!jobs_) return line(400, "export and check are not available here");
+  const SessionState state = session_.state();
+  if (method == "POST") {
+    if (!state.scene) return line(409, "there is no part to " + path.substr(1) + " yet");
+    if (!state.error.empty()) return line(409, "the script has an error; fix it first");
+    try {
+      if (path == "/export")
+        jobs_->startExport(state.scene, state.version, script, parameter(query, "format"));
+      else
+        jobs_->startCheck(state.scene, state.version, script);
+    } catch (const JobBusy& e) {
+      return line(409, e.what());
+    }
+    const JobStatus started = jobs_->status();
+    ViewReply reply = json(jobJson(started, false, script));
+    reply.status = 202;
+    return reply;
+  }
+  const JobStatus status = jobs_->status();
+  const bool stale = status.id != 0 && status.version != state.version;
+  if (path == "/job") return json(jobJson(status, stale, script));
+  // GET /job/file
+  const double id = numberParameter(query, "id");
+  if (!(id >= 1.0)) throw std::invalid_argument("id must be a job's number");
+  const std::optional<std::string> bytes = jobs_->file(std::uint64_t(id));
+  if (!bytes) return line(404, "no exported file of job " + parameter(query, "id"));
+  if (stale) return line(409, "the part changed since this export; export it again");
+  return {200,
+          *bytes,
+          status.format == "stl" ? "model/stl" : "model/3mf",
+          {{"Cache-Control", "no-store"},
+           {"Content-Disposition",
+            "attachment; filename=\"" + downloadName(script, status.format) + "\""}}};
+}
 
 ViewReply ViewRoutes::handle(const std::string& method, const std::string& path,
                              const std::multimap<std::string, std::string>& query) {
@@ -80,6 +146,9 @@ ViewReply ViewRoutes::handle(const std::string& method, const std::string& path,
         return line(400, refused);
       return json(stateJson(session_.state(), script));
     }
+    if ((method == "POST" && (path == "/export" || path == "/check")) ||
+        (method == "GET" && (path == "/job" || path == "/job/file")))
+      return job(method, path, query);
     if (method == "POST" && path == "/reload") {
       session_.reload();
       return json(stateJson(session_.state(), script));

@@ -2,6 +2,7 @@
 // ViewSession: the parsing of their parameters, the JSON, the statuses.
 #pragma once
 
+#include "view/view_jobs.h"
 #include "view/view_service.h"
 #include "view/view_session.h"
 
@@ -9,13 +10,19 @@ namespace csgray::detail {
 
 class ViewRoutes final : public ViewService {
  public:
-  explicit ViewRoutes(ViewSession& session) : session_(session) {}
+  // jobs: those of the export and check buttons; none: they are refused.
+  explicit ViewRoutes(ViewSession& session, ViewJobs* jobs = nullptr)
+      : session_(session), jobs_(jobs) {}
   ViewReply handle(const std::string& method, const std::string& path,
                    const std::multimap<std::string, std::string>& query) override;
   void shutdown() override { session_.shutdown(); }
 
  private:
+  ViewReply job(const std::string& method, const std::string& path,
+                const std::multimap<std::string, std::string>& query);
+
   ViewSession& session_;
+  ViewJobs* jobs_;
 };
 
 }  // namespace csgray::detail

@@ -38,11 +38,11 @@ class ViewServer final : public HttpServer {
                     response.set_header("Cache-Control", "no-store");
                     response.set_content(asset.body.data(), asset.body.size(), asset.type.data());
                   });
-    for (const char* path : {"/scene", "/wait", "/frame", "/pick"})
+    for (const char* path : {"/scene", "/wait", "/frame", "/pick", "/job", "/job/file"})
       server_.Get(path, [this](const httplib::Request& request, httplib::Response& response) {
         pass("GET", request, response);
       });
-    for (const char* path : {"/define", "/reload"})
+    for (const char* path : {"/define", "/reload", "/export", "/check"})
       server_.Post(path, [this](const httplib::Request& request, httplib::Response& response) {
         pass("POST", request, response);
       });

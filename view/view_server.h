@@ -15,6 +15,10 @@
 //                                 script's default); 400 with the reason
 //                                 when the annotation refuses it
 //   POST /reload                  runs the script again
+//   POST /export?format=stl|3mf   starts an export, POST /check a check
+//                                 (view_jobs.h); 202, or 409 while one runs
+//   GET  /job                     the job's stage, error, file or report
+//   GET  /job/file?id=N           the exported file, as a download
 #pragma once
 
 #include <memory>

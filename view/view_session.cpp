@@ -146,12 +146,13 @@ std::string ViewSession::frame(const FrameRequest& request) {
   std::lock_guard rendering(renderMutex_);
   if (*cancel) throw RenderCancelled();
   Scene scene = *currentScene();
-  if (request.camera) scene.camera = request.camera;
+  request.applyTo(scene);
   RenderOptions options(request.passWidth(), request.passHeight());
   options.threadPool = &threads_;
   options.samples = request.samples();
   options.adaptive = options.samples > 1;
   options.cancel = cancel.get();
+  options.section = request.section;
   threads_.wake();
   const Image image = Renderer(scene, options).render();
   return encodePng(image.width, image.height,
@@ -163,8 +164,10 @@ PickResult ViewSession::pick(const FrameRequest& request, double x, double y) {
     throw std::invalid_argument("x and y must be within the frame's size");
   std::lock_guard rendering(renderMutex_);
   Scene scene = *currentScene();
-  if (request.camera) scene.camera = request.camera;
-  const Renderer renderer(scene, RenderOptions(request.width, request.height));
+  request.applyTo(scene);
+  RenderOptions options(request.width, request.height);
+  options.section = request.section;
+  const Renderer renderer(scene, options);
   const Camera camera(renderer.camera(), request.width, request.height);
   const Ray ray = camera.ray(x, y);
   PickResult result;
@@ -173,7 +176,7 @@ PickResult ViewSession::pick(const FrameRequest& request, double x, double y) {
   result.hit = true;
   result.point = ray.origin + hit->t * ray.dir;
   if (const Primitive* primitive = hit->boundary.primitive) {
-    result.kind = primitive->kind();
+    result.kind = primitive->material() == sectionMaterial() ? "section" : primitive->kind();
     result.source = primitive->origin().text();
     result.normal = primitive->normal(result.point, int(hit->boundary.face));
     if (hit->boundary.flip) result.normal = -result.normal;

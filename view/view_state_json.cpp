@@ -74,6 +74,8 @@ std::string stateJson(const SessionState& state, const std::string& script) {
                ? "null"
                : "{\"lo\":" + jsonVector(b.lo) + ",\"hi\":" + jsonVector(b.hi) + "}";
     out += ",\"volume\":" + jsonNumber(state.volume);
+    out += ",\"ghosts\":" + std::to_string(state.scene->ghosts.size()) +
+           ",\"highlights\":" + std::to_string(state.scene->highlights.size());
     if (const auto& c = state.scene->camera)
       out += ",\"camera\":{\"eye\":" + jsonVector(c->eye) + ",\"lookAt\":" + jsonVector(c->lookAt) +
              ",\"up\":" + jsonVector(c->up) + ",\"fov\":" + jsonNumber(c->fovDegrees) +
@@ -82,7 +84,7 @@ std::string stateJson(const SessionState& state, const std::string& script) {
     else
       out += ",\"camera\":null";
   } else {
-    out += ",\"bounds\":null,\"volume\":null,\"camera\":null";
+    out += ",\"bounds\":null,\"volume\":null,\"ghosts\":0,\"highlights\":0,\"camera\":null";
   }
   out += ",\"parameters\":[";
   for (std::size_t i = 0; i < state.parameters.size(); ++i)

@@ -2,6 +2,7 @@
 //
 //   {"version": 3, "script": "part.lua", "error": "part.lua:7: ...",
 //    "bounds": {"lo": [x,y,z], "hi": [x,y,z]} or null, "volume": 1234.5,
+//    "ghosts": 1, "highlights": 2 (the solids the script marked so),
 //    "camera": the script's {eye, lookAt, up, fov, ortho, orthoWidth} or null,
 //    "parameters": [{"name", "line", "kind": "number"|"boolean"|"string"|
 //                   "vector", "value", "default", "min", "max", "step",

@@ -372,9 +372,11 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
             ErrorCode::IoError);
 }
 
-// render() and writeImage() make the file the csgray command makes.
+// render() and writeImage() make the file the csgray command makes, with
+// the default options: a bare part (bracket) in the CAD look, antialiased
+// at its edges, as the others in their scenes.
 TEST_F(ApiFiles, ImagesAreTheCommandsPixelForPixel) {
-  for (const char* name : {"spot_light", "textured_box", "glass_and_mirror"}) {
+  for (const char* name : {"spot_light", "textured_box", "glass_and_mirror", "bracket"}) {
     const std::string script = std::string(CSGRAY_SOURCE_DIR "/examples/") + name + ".lua";
     csgray::writeImage(csgray::render(csgray::runScript(script), {80, 60}), path("api.png"));
     const std::string command = std::string(CSGRAY_BINARY) + " render " + script + " -o " +
@@ -399,6 +401,26 @@ TEST(ApiRender, ThePartFillsTheFrameOverTheBackground) {
   EXPECT_GT(image.at(20, 15).x, 0.0f);  // the ball is in the middle
   EXPECT_EQ(image.at(0, 0), (Vec3{0, 0, 0}));
   EXPECT_EQ(errorOf([&] { csgray::render(scene, {0, 30}); }).first, ErrorCode::InvalidArgument);
+}
+
+// The default samples (0) are the command's: a bare part gets 9, adaptive
+// (spent at its edges); a scene of the script's own one ray a pixel.
+TEST(ApiRender, DefaultSamplesAreTheCommands) {
+  const csgray::Scene bare = csgray::runScriptText("return sphere(1)", "part.lua");
+  csgray::RenderOptions nine{40, 30};
+  nine.samples = 9;
+  nine.adaptive = true;
+  csgray::RenderOptions one{40, 30};
+  one.samples = 1;
+  const csgray::Image smooth = csgray::render(bare, {40, 30});
+  EXPECT_TRUE(smooth.rgb == csgray::render(bare, nine).rgb);
+  EXPECT_FALSE(smooth.rgb == csgray::render(bare, one).rgb);
+  const csgray::Scene own = csgray::runScriptText("return scene{objects={sphere(1)}}", "part.lua");
+  EXPECT_TRUE(csgray::render(own, {40, 30}).rgb == csgray::render(own, one).rgb);
+  EXPECT_EQ(errorOf([&] {
+              csgray::render(bare, {40, 30, 0, -1});
+            }).first,
+            ErrorCode::InvalidArgument);
 }
 
 TEST(ApiCheck, ASoundPartPasses) {

@@ -329,3 +329,85 @@ test('a double-click centres the view on the picked point', async () => {
   const distance = Math.hypot(...picked.map((v, i) => v - centre[i]));
   assert.ok(distance < 0.5, `picked ${picked}, now at the middle ${centre}`);
 });
+
+test('a section shows the cut in its colour, and picks it', async () => {
+  let state = await frameState();
+  await page.keyboard.press('f');  // the middle of the canvas on the plate's centre
+  state = await settled({ since: state });
+  await page.keyboard.press('1');  // from the front, along +y
+  state = await settled({ since: state });
+  await page.select('#section-axis', 'y');
+  await page.$eval('#section-flip', (e) => { e.checked = true; });
+  await page.$eval('#section-on', (e) => {
+    e.checked = true;
+    e.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  state = await settled({ since: state });
+  assert.match(await text('section-where'), /^y = 0$/);
+  // The middle of the plate, cut at y = 0: the section's red.
+  const [r, g, b] = await page.evaluate(() => {
+    const c = document.getElementById('frame');
+    return Array.from(c.getContext('2d').getImageData(c.width / 2, c.height / 2, 1, 1).data);
+  });
+  assert.ok(r > g + 60 && r > b + 60, `the middle is red: ${r}, ${g}, ${b}`);
+  const normal = await pickedNormalAtCentre(await text('pick-normal'));
+  assert.equal(normal, '(0, -1, 0)');
+  assert.equal(await text('pick-kind'), 'section');
+  await shoot('section');
+  await page.$eval('#section-on', (e) => {
+    e.checked = false;
+    e.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  await settled({ since: state });
+});
+
+test('check shows the warnings at their points, export offers the file', async () => {
+  // The cut's top and bottom lie in the box's: two coincident faces.
+  let state = await frameState();
+  save('return box{size={20, 20, 10}, center=true} - box{size={6, 6, 10}, center=true}\n');
+  state = await settled({ since: state, version: state.version });
+  await page.keyboard.press('0');
+  state = await settled({ since: state });
+  await page.click('#check');
+  await page.waitForFunction(() => /^check: (ok|FAILED)/.test(document.getElementById('job-line').textContent),
+    { timeout, polling: 100 });
+  assert.match(await text('job-line'), /^check: ok, [1-9]\d* warnings?$/);
+  const markers = await page.$$eval('.marker', (all) => all.map((m) => {
+    const r = m.getBoundingClientRect();
+    return { x: r.x + r.width / 2, y: r.y + r.height / 2, title: m.title };
+  }));
+  assert.ok(markers.length > 0, 'markers on the image');
+  const box = await (await page.$('#frame')).boundingBox();
+  for (const m of markers) {
+    assert.match(m.title, /^coincident faces: /);
+    // On the part, which is framed in the middle of the canvas.
+    assert.ok(Math.abs(m.x - (box.x + box.width / 2)) < box.width / 3, `marker at ${m.x}`);
+    assert.ok(Math.abs(m.y - (box.y + box.height / 2)) < box.height / 3, `marker at ${m.y}`);
+  }
+  // Seen from above, a point on the bottom face is behind the part: faded.
+  await page.waitForFunction(() => document.querySelector('.marker.hidden') !== null,
+    { timeout, polling: 100 });
+  assert.match(await page.$eval('.marker.hidden', (m) => m.title), /, -5\) \(behind the part\)$/);
+  await shoot('check');
+  await page.click('#export-stl');
+  await page.waitForFunction(() => /^part\.stl: \d+ bytes$/.test(document.getElementById('job-line').textContent),
+    { timeout, polling: 100 });
+  assert.equal((await page.$$('.marker')).length, 0, 'the markers went with the check');
+  assert.deepEqual(fs.readdirSync(folder).sort(), ['part.lua'], 'nothing written beside the script');
+});
+
+test('the switches show and hide the script\'s ghosts and highlights', async () => {
+  let state = await frameState();
+  assert.equal(await page.$eval('#modifiers', (e) => e.hidden), true, 'no switches without marks');
+  save('return box{size={20, 20, 10}, center=true} + sphere(8):translate(0, 0, 10):ghost()\n');
+  state = await settled({ since: state, version: state.version });
+  assert.equal(await page.$eval('#modifiers', (e) => e.hidden), false);
+  assert.equal(await page.$eval('#show-ghosts-label', (e) => e.hidden), false);
+  assert.equal(await page.$eval('#show-highlights-label', (e) => e.hidden), true);
+  const shown = await pixels();
+  await page.click('#show-ghosts');
+  state = await settled({ since: state });
+  const hidden = await pixels();
+  assert.ok(changed(shown, hidden) > 0.01 * shown.width * shown.height, 'the ghost is gone');
+  assert.ok(hidden.part < shown.part, `fewer pixels differ from the background: ${hidden.part} < ${shown.part}`);
+});

@@ -1,6 +1,6 @@
 // Edge lines (raytrace/edge_lines.h): the rule between two neighbouring
-// pixels, and lines on a rendered box exactly along its outline and its
-// creases, nowhere else.
+// pixels, and smooth lines on a rendered box along its outline and its
+// creases, nowhere else, centred on the exact edge.
 #include "raytrace/edge_lines.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 
 #include "raytrace/renderer.h"
 #include "script/script.h"
+#include "test_support.h"
 
 namespace csgray::detail {
 namespace {
@@ -72,9 +73,20 @@ TEST(EdgeLines, CreasesAndStepsGoToTheNearerSide) {
             EdgeSide::Second);
 }
 
+// The share of the line in a pixel: 0 for the plain colour, 1 for the
+// line's full colour over it, from the channel that differs most.
+double coverageOf(const dvec3& plain, const dvec3& lined) {
+  const dvec3 full = withEdge(plain) - plain;
+  int i = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(full[k]) > std::abs(full[i])) i = k;
+  return (lined[i] - plain[i]) / full[i];
+}
+
 // A box from a script, rendered with and without lines: a pixel changes
-// exactly when it is on the box and a neighbour is off it, or on another
-// face of it (the normals the renderer gives differ).
+// only beside the box's outline (on the box or off it) or beside a crease,
+// always toward the line's colour by at most the full line; every pixel on
+// the box beside its outline changes.
 TEST(EdgeLines, OnABoxAlongItsOutlineAndCreases) {
   Scene scene = runScript("return box(10)", "part.lua");
   const int w = 160, h = 120;
@@ -84,35 +96,58 @@ TEST(EdgeLines, OnABoxAlongItsOutlineAndCreases) {
   options.edges = true;
   RenderResult lined = Renderer(scene, options).renderAll();
   auto hit = [&](int x, int y) { return !std::isinf(plain.depth.at(x, y).x); };
-  int outline = 0, crease = 0;
+  int outline = 0, crease = 0, partial = 0;
   for (int y = 1; y < h - 1; ++y)
     for (int x = 1; x < w - 1; ++x) {
       const bool changed = plain.color.at(x, y) != lined.color.at(x, y);
-      if (!hit(x, y)) {
-        EXPECT_FALSE(changed) << x << "," << y;
-        continue;
-      }
       bool offNext = false, otherFace = false;
       for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
-        if (!hit(x + dx, y + dy))
+        if (hit(x, y) != hit(x + dx, y + dy))
           offNext = true;
-        else if (plain.normal.at(x, y) != plain.normal.at(x + dx, y + dy))
+        else if (hit(x, y) && plain.normal.at(x, y) != plain.normal.at(x + dx, y + dy))
           otherFace = true;
       }
       if (offNext) {
-        EXPECT_TRUE(changed) << x << "," << y;
+        if (hit(x, y)) EXPECT_TRUE(changed) << x << "," << y;
         outline += changed;
       } else if (!otherFace) {
         EXPECT_FALSE(changed) << x << "," << y;
       } else {
         crease += changed;
       }
-      if (changed)
-        for (int i = 0; i < 3; ++i)
-          EXPECT_EQ(float(lined.color.at(x, y)[i]), float(withEdge(plain.color.at(x, y))[i]));
+      if (!changed) continue;
+      const double c = coverageOf(plain.color.at(x, y), lined.color.at(x, y));
+      EXPECT_GT(c, 0.0) << x << "," << y;
+      EXPECT_LE(c, 1.0 + 1e-9) << x << "," << y;
+      partial += c < 0.97;
     }
   EXPECT_GT(outline, 200);
   EXPECT_GT(crease, 50);
+  EXPECT_GT(partial, 100);  // smooth: most edges cross pixels off their centres
+}
+
+// The right side of a box at x = 4.96, seen from the front on pixels of
+// 0.2 whose centres are at x = 4.9 (pixel 74) and 5.1 (pixel 75): the edge
+// is 0.3 of a pixel from 74's centre, so the line, one pixel wide and
+// centred on it, covers 0.7 of pixel 74 and 0.3 of pixel 75.
+TEST(EdgeLines, AntialiasedAndWhereTheEdgeIs) {
+  Scene scene =
+      runScript("return box{size={10, 10, 10}, center=true}:translate(-0.04, 0, 0)", "part.lua");
+  scene.camera = test::frontOrthographicCamera(20.0);
+  RenderOptions options(100, 100, 2);
+  const Image plain = Renderer(scene, options).render();
+  options.edges = true;
+  const Image lined = Renderer(scene, options).render();
+  const double inside = coverageOf(plain.at(74, 50), lined.at(74, 50));
+  const double outside = coverageOf(plain.at(75, 50), lined.at(75, 50));
+  EXPECT_NEAR(inside, 0.7, 1.0 / 32);
+  EXPECT_NEAR(outside, 0.3, 1.0 / 32);
+  // Between the surface's colour and the line's.
+  EXPECT_LT(lined.at(74, 50).x, plain.at(74, 50).x);
+  EXPECT_GT(lined.at(74, 50).x, withEdge(plain.at(74, 50)).x);
+  // Further in and further out, nothing.
+  EXPECT_EQ(lined.at(72, 50), plain.at(72, 50));
+  EXPECT_EQ(lined.at(77, 50), plain.at(77, 50));
 }
 
 }  // namespace

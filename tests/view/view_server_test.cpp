@@ -12,8 +12,11 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <thread>
 
+#include "check/part_check.h"
+#include "meshio/part_file_bytes.h"
 #include "raytrace/renderer.h"
 #include "view/file_watcher.h"
 #include "view/view_frame.h"
@@ -29,7 +32,22 @@ namespace fs = std::filesystem;
 // view` makes them, and a client of the server.
 class ViewServerTest : public testing::Test {
  protected:
-  void start(const std::string& source) {
+  // The tools of the export and check buttons, as the command line gives them.
+  static PartTools meshTools() {
+    PartTools tools;
+    tools.meshFile = [](const Scene& scene, const std::string& script, const std::string& format,
+                        const std::function<void(const std::string&)>& stage) {
+      return partFileBytes(scene, script, format, 0.01, stage, [](const std::string&) {});
+    };
+    tools.check = [](const Scene& scene, const std::string& script) {
+      CheckOptions options;
+      options.samples = 2000;
+      options.grid = 32;
+      return checkPrintedPart(scene, script, options, [](const std::string&) {});
+    };
+    return tools;
+  }
+  void start(const std::string& source, PartTools tools = meshTools()) {
     folder_ =
         fs::temp_directory_path() / ("csgray_view_test_" + std::to_string(::getpid()) + "_" +
                                      testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -44,7 +62,8 @@ class ViewServerTest : public testing::Test {
         },
         std::chrono::milliseconds(20));
     watcher_->watch(session_->state().files);
-    routes_ = std::make_unique<ViewRoutes>(*session_);
+    jobs_ = std::make_unique<ViewJobs>(std::move(tools));
+    routes_ = std::make_unique<ViewRoutes>(*session_, jobs_.get());
     server_ = makeViewServer(*routes_, "127.0.0.1", 0);
     server_->start();
     client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->port());
@@ -54,6 +73,7 @@ class ViewServerTest : public testing::Test {
     client_.reset();
     server_.reset();
     routes_.reset();
+    jobs_.reset();
     watcher_.reset();
     session_.reset();
     fs::remove_all(folder_);
@@ -80,6 +100,7 @@ class ViewServerTest : public testing::Test {
   std::string script_;
   std::unique_ptr<ViewSession> session_;
   std::unique_ptr<FileWatcher> watcher_;
+  std::unique_ptr<ViewJobs> jobs_;
   std::unique_ptr<ViewRoutes> routes_;
   std::unique_ptr<HttpServer> server_;
   std::unique_ptr<httplib::Client> client_;
@@ -127,6 +148,129 @@ TEST_F(ViewServerTest, PickNamesThePointThePrimitiveAndItsLine) {
   EXPECT_NE(face.find("part.lua:1"), std::string::npos) << face;
   EXPECT_NE(face.find("\"normal\":[0,-1,0]"), std::string::npos) << face;
   EXPECT_EQ(get("/pick?size=101x101&" + kFront + "&ortho=20&x=1&y=1"), "{\"hit\":false}");
+}
+
+TEST_F(ViewServerTest, ASectionCutsThePartInTheFrameAndThePick) {
+  start("return box{size={10, 10, 10}, center=true} - box{size={8, 8, 8}, center=true}\n");
+  const std::string view = "size=101x101&" + kFront + "&ortho=20";
+  const std::string cut = "&section=0,-2,0,0";  // the near half gone
+  // The centre: the front face; cut, the cavity's back wall.
+  EXPECT_NE(get("/pick?" + view + "&x=50.5&y=50.5").find("\"point\":[0,-5,0]"), std::string::npos);
+  const std::string back = get("/pick?" + view + cut + "&x=50.5&y=50.5");
+  EXPECT_NE(back.find("\"point\":[0,4,0]"), std::string::npos) << back;
+  EXPECT_NE(back.find("\"kind\":\"box\""), std::string::npos) << back;
+  // In the wall (x from 4 to 5): the cut face, facing the camera.
+  const std::string wall = get("/pick?" + view + cut + "&x=73.5&y=50.5");
+  EXPECT_NE(wall.find("\"kind\":\"section\""), std::string::npos) << wall;
+  EXPECT_NE(wall.find("\"normal\":[0,-1,0]"), std::string::npos) << wall;
+  EXPECT_NE(get("/frame?" + view), get("/frame?" + view + cut));
+  EXPECT_EQ(get("/frame?section=0,0,0,1", 400), "section's normal must not be zero\n");
+  EXPECT_EQ(get("/frame?section=0,0,1", 400),
+            "section must be 4 numbers: the plane's normal and offset\n");
+}
+
+TEST_F(ViewServerTest, GhostsAndHighlightsCanBeLeftOutOfTheFrame) {
+  start(
+      "local cutter = cylinder{r=2, h=12, center=true}:rotate(90, 0, 0):highlight()\n"
+      "local bolt = sphere(2):translate(0, -10, 0):ghost()\n"
+      "return box{size={10, 10, 10}, center=true} - cutter + bolt\n");
+  const std::string state = get("/scene");
+  EXPECT_NE(state.find("\"ghosts\":1,\"highlights\":1"), std::string::npos) << state;
+  // Through the middle from the front: the ghost's sphere, or without it
+  // the highlighted cutter's hole through the box, seen to its end.
+  const std::string view = "size=101x101&" + kFront + "&ortho=20&x=50.5&y=50.5";
+  EXPECT_NE(get("/pick?" + view).find("\"point\":[0,-12,0]"), std::string::npos);
+  EXPECT_EQ(get("/pick?" + view + "&ghosts=0"), "{\"hit\":false}");
+  const std::string frame = "/frame?size=64x64&" + kFront + "&ortho=20";
+  EXPECT_NE(get(frame), get(frame + "&highlights=0"));
+  EXPECT_NE(get(frame), get(frame + "&ghosts=0"));
+  EXPECT_EQ(get(frame + "&ghosts=0&highlights=0"), get(frame + "&highlights=0&ghosts=0"));
+  EXPECT_EQ(get("/frame?ghosts=2", 400), "ghosts must be 0 or 1\n");
+}
+
+TEST_F(ViewServerTest, ExportsServeTheFileAsADownloadAndWriteNothingBesideTheScript) {
+  start("return box(10)\n");
+  auto response = client_->Post("/export?format=stl");
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 202);
+  EXPECT_NE(response->body.find("\"kind\":\"export\""), std::string::npos) << response->body;
+  jobs_->waitIdle();
+  const std::string job = get("/job");
+  EXPECT_NE(job.find("\"stage\":\"done\""), std::string::npos) << job;
+  EXPECT_NE(job.find("\"name\":\"part.stl\""), std::string::npos) << job;
+  EXPECT_NE(job.find("\"file\":\"/job/file?id=1\""), std::string::npos) << job;
+  response = client_->Get("/job/file?id=1");
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 200);
+  EXPECT_EQ(response->get_header_value("Content-Disposition"), "attachment; filename=\"part.stl\"");
+  // A binary STL of a box: 80 bytes of header, the count, 12 triangles of 50 bytes.
+  ASSERT_EQ(response->body.size(), 84u + 12u * 50u);
+  EXPECT_EQ(std::uint8_t(response->body[80]), 12);
+  EXPECT_EQ(client_->Post("/export?format=3mf")->status, 202);
+  jobs_->waitIdle();
+  response = client_->Get("/job/file?id=2");
+  EXPECT_EQ(response->body.substr(0, 2), "PK");  // a 3MF file is a zip
+  EXPECT_EQ(response->get_header_value("Content-Disposition"), "attachment; filename=\"part.3mf\"");
+  // Not the older job's any more, nor one that never was.
+  EXPECT_EQ(get("/job/file?id=1", 404), "no exported file of job 1\n");
+  EXPECT_EQ(get("/job/file?id=x", 400), "id must be a number\n");
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(folder_))
+    files.push_back(entry.path().filename());
+  EXPECT_EQ(files, std::vector<fs::path>{"part.lua"});
+  response = client_->Post("/export?format=obj");
+  EXPECT_EQ(response->status, 400);
+  EXPECT_EQ(response->body, "format must be stl or 3mf\n");
+  EXPECT_EQ(client_->Post("/export")->body, "format must be given once\n");
+}
+
+TEST_F(ViewServerTest, TheCheckGivesItsReportWithTheWarningsPoints) {
+  // The cut's top and bottom lie in the box's: coincident faces.
+  start("return box(10) - box{size={5, 5, 10}}\n");
+  EXPECT_EQ(client_->Post("/check")->status, 202);
+  jobs_->waitIdle();
+  const std::string job = get("/job");
+  EXPECT_NE(job.find("\"stage\":\"done\""), std::string::npos) << job;
+  EXPECT_NE(job.find("\"report\":{"), std::string::npos) << job;
+  EXPECT_NE(job.find("\"kind\": \"coincident faces\""), std::string::npos) << job;
+  EXPECT_NE(job.find("\"at\": ["), std::string::npos) << job;
+  EXPECT_NE(job.find("\"text\":\""), std::string::npos) << job;
+  EXPECT_EQ(job.find("\"file\""), std::string::npos) << job;
+}
+
+TEST_F(ViewServerTest, OneJobAtATimeAndANewRunMakesItsResultStale) {
+  // A check that waits to be let go.
+  std::promise<void> letGo;
+  std::shared_future<void> go = letGo.get_future().share();
+  PartTools tools = meshTools();
+  tools.check = [go](const Scene&, const std::string&) {
+    go.wait();
+    return CheckReport{};
+  };
+  start("return box(10)\n", tools);
+  EXPECT_EQ(client_->Post("/check")->status, 202);
+  auto busy = client_->Post("/export?format=stl");
+  EXPECT_EQ(busy->status, 409);
+  EXPECT_EQ(busy->body, "a check is running; wait for it to end\n");
+  EXPECT_NE(get("/job").find("\"running\":true"), std::string::npos);
+  const std::uint64_t version = session_->state().version;
+  write("return box(12)\n");
+  waitAfter(version);
+  letGo.set_value();
+  jobs_->waitIdle();
+  const std::string job = get("/job");
+  EXPECT_NE(job.find("\"stale\":true"), std::string::npos) << job;
+  // An export of the new part, then a run: its file is no longer served.
+  EXPECT_EQ(client_->Post("/export?format=stl")->status, 202);
+  jobs_->waitIdle();
+  EXPECT_EQ(client_->Get("/job/file?id=2")->status, 200);
+  client_->Post("/reload");
+  EXPECT_EQ(get("/job/file?id=2", 409), "the part changed since this export; export it again\n");
+  // A broken script: nothing to export.
+  const std::uint64_t good = session_->state().version;
+  write("return box(\n");
+  waitAfter(good);
+  EXPECT_EQ(client_->Post("/check")->body, "the script has an error; fix it first\n");
 }
 
 TEST_F(ViewServerTest, ReloadsWhenTheScriptIsWrittenAndKeepsTheLastGoodSceneOnAnError) {

@@ -98,6 +98,49 @@ function initialView() {
   view.framed = true;
 }
 
+// ---- The section: a plane that cuts the part at render time (the server
+// renders the cut faces in the section colour). Along an axis the kept side
+// is below the plane (above it flipped); along the view, the far side of a
+// plane facing the camera (the near side flipped). The slider spans the
+// part's bounds along the normal.
+const sectionControls = ['section-on', 'section-axis', 'section-flip', 'section-offset'];
+
+function sectionPlane() {
+  if (!$('section-on').checked || !state || !state.bounds) return null;
+  const { lo, hi } = state.bounds;
+  const axis = $('section-axis').value;
+  let normal, from, to;
+  if (axis === 'view') {
+    normal = scale(axes().forward, -1);
+    const corners = [0, 1, 2, 3, 4, 5, 6, 7].map((i) =>
+      dot(normal, [i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]]));
+    from = Math.min(...corners);
+    to = Math.max(...corners);
+  } else {
+    const a = 'xyz'.indexOf(axis);
+    normal = [0, 0, 0];
+    normal[a] = 1;
+    from = lo[a];
+    to = hi[a];
+  }
+  let offset = from + (to - from) * $('section-offset').value / 1000;
+  $('section-where').textContent = (axis === 'view' ? 'depth' : axis) + ' = ' + shown(offset);
+  if ($('section-flip').checked) {
+    normal = scale(normal, -1);
+    offset = -offset;
+  }
+  return [...normal, offset].map((x) => +x.toPrecision(17));
+}
+
+function sectionQuery() {
+  const plane = sectionPlane();
+  if (!plane) $('section-where').textContent = '–';
+  return plane ? '&section=' + plane.join(',') : '';
+}
+
+for (const id of [...sectionControls, 'show-ghosts', 'show-highlights'])
+  $(id).addEventListener('input', () => changed());
+
 // ---- Frames: pass 0, 1 and 2, one request at a time; a move during
 // pass 0 waits for it (it is quick), a move during a later pass aborts it
 // (and the server cancels its render when the new request comes).
@@ -106,10 +149,12 @@ let dirty = false;
 let later = null;  // the timer of a full pass put off during a drag
 
 function frameKey() {
-  return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height;
+  return cameraQuery() + '&size=' + canvas.width + 'x' + canvas.height + sectionQuery() +
+    ($('show-ghosts').checked ? '' : '&ghosts=0') + ($('show-highlights').checked ? '' : '&highlights=0');
 }
 
 function changed() {
+  if (markers.length) placeMarkers();
   $('projection').textContent = view.ortho ? 'orthographic' : 'perspective';
   delete canvas.dataset.settled;
   clearTimeout(later);
@@ -135,7 +180,11 @@ async function request(pass) {
       canvas.dataset.pass = pass;
       canvas.dataset.version = response.headers.get('X-Csgray-Version');
       canvas.dataset.frames = +(canvas.dataset.frames || 0) + 1;
-      if (pass === 2 && !dirty && frameKey() === key) canvas.dataset.settled = '1';
+      placeMarkers();
+      if (pass === 2 && !dirty && frameKey() === key) {
+        canvas.dataset.settled = '1';
+        fadeHiddenMarkers(key);
+      }
     }
   } catch (e) {
     if (e.name !== 'AbortError') console.warn(e);
@@ -374,6 +423,10 @@ function showState(next) {
     $('size').textContent = point(sub(hi, lo));
   }
   $('volume').textContent = state.volume == null ? '–' : shown(state.volume);
+  // The switches of the script's ghosts and highlights, when it has any.
+  $('show-ghosts-label').hidden = !state.ghosts;
+  $('show-highlights-label').hidden = !state.highlights;
+  $('modifiers').hidden = !state.ghosts && !state.highlights;
   $('files').replaceChildren(...state.files.map((f) => {
     const li = document.createElement('li');
     li.textContent = f;
@@ -382,6 +435,8 @@ function showState(next) {
   showParameters(state.parameters);
   if (!view.framed && state.bounds) initialView();
   else if (reloaded) changed();
+  // A new run makes the last job's result stale.
+  if (reloaded && $('job-line').dataset.stage) pollJob();
 }
 
 async function poll() {
@@ -400,6 +455,125 @@ async function poll() {
     }
   }
 }
+
+// ---- Export and check: jobs on the server, one at a time; the page polls
+// the stage, then takes the file as a download or shows the check's
+// warnings as markers at their points (the title gives the text on hover).
+let markers = [];  // [{at, text}]
+let jobTimer = null;
+let downloaded = 0;  // the last export's id already offered
+
+// A model point's pixel on the canvas, as the server's camera maps it
+// (scene/camera.cpp), or null behind the eye.
+function project(p) {
+  const a = axes(), e = cameraEye(), d = sub(p, e);
+  const depth = view.ortho ? 1 : dot(d, a.forward);
+  if (depth <= 0) return null;
+  const pixel = (view.ortho ? screenWidth() : 2 * Math.tan(view.fov * degrees / 2)) / canvas.width;
+  return [canvas.width / 2 + dot(d, a.right) / depth / pixel, canvas.height / 2 - dot(d, a.up) / depth / pixel];
+}
+
+function placeMarkers() {
+  const r = canvas.getBoundingClientRect(), k = r.width / Math.max(1, canvas.width);
+  $('markers').replaceChildren(...markers.flatMap((m, i) => {
+    const at = project(m.at);
+    if (!at || at[0] < 0 || at[1] < 0 || at[0] > canvas.width || at[1] > canvas.height) return [];
+    const div = document.createElement('div');
+    div.className = 'marker';
+    div.style.left = at[0] * k + 'px';
+    div.style.top = at[1] * k + 'px';
+    div.textContent = i + 1;
+    div.title = m.text;
+    return [div];
+  }));
+}
+
+// Once a view is settled, markers whose point lies behind the part (a
+// pick at their pixel meets the part nearer the eye) are faded.
+async function fadeHiddenMarkers(key) {
+  if (!markers.length || !state || !state.bounds) return;
+  const slack = 1e-4 * Math.hypot(...sub(state.bounds.hi, state.bounds.lo));
+  const e = cameraEye();
+  const divs = Array.from($('markers').children);
+  for (const div of divs) {
+    const m = markers[+div.textContent - 1], at = project(m.at);
+    const response = await fetch('/pick?' + key + '&x=' + at[0] + '&y=' + at[1]);
+    if (!response.ok || frameKey() !== key) return;
+    const hit = await response.json();
+    const far = (p) => (view.ortho ? dot(sub(p, e), axes().forward) : Math.hypot(...sub(p, e)));
+    const hidden = hit.hit && far(hit.point) < far(m.at) - slack;
+    div.classList.toggle('hidden', hidden);
+    div.title = m.text + (hidden ? ' (behind the part)' : '');
+  }
+}
+
+function jobLine(text, failed) {
+  $('job-line').textContent = text;
+  $('job-line').classList.toggle('failed', !!failed);
+}
+
+function showJob(job) {
+  $('job-line').dataset.stage = job.stage || '';
+  markers = [];
+  $('job-warnings').replaceChildren();
+  $('job-report').hidden = true;
+  if (!job.id) jobLine('–');
+  else if (job.running) jobLine(job.kind + ': ' + job.stage + ' …');
+  else if (job.error) jobLine(job.kind + ' failed: ' + job.error, true);
+  else if (job.stale) jobLine('the part changed since the ' + job.kind + '; run it again');
+  else if (job.kind === 'export') {
+    jobLine(job.name + ': ' + job.bytes + ' bytes');
+    if (downloaded !== job.id) {
+      downloaded = job.id;
+      const a = document.createElement('a');
+      a.href = job.file;
+      a.download = job.name;
+      a.click();
+    }
+  } else if (job.report) {
+    const r = job.report;
+    const warnings = r.warnings || [];
+    jobLine(r.failure ? 'check failed: ' + r.failure
+      : 'check: ' + (r.ok ? 'ok' : 'FAILED') + ', ' + warnings.length + ' warning' + (warnings.length === 1 ? '' : 's'),
+    !r.ok);
+    markers = warnings.map((w) => ({ at: w.at, text: w.kind + ': ' + w.message }));
+    $('job-warnings').replaceChildren(...markers.map((m, i) => {
+      const li = document.createElement('li');
+      li.textContent = (i + 1) + '. ' + m.text;
+      return li;
+    }));
+    $('job-text').textContent = job.text;
+    $('job-report').hidden = false;
+  }
+  placeMarkers();
+  if (canvas.dataset.settled) fadeHiddenMarkers(frameKey());
+}
+
+async function pollJob() {
+  clearTimeout(jobTimer);
+  try {
+    const response = await fetch('/job');
+    if (!response.ok) throw new Error(await response.text());
+    const job = await response.json();
+    showJob(job);
+    if (job.running) jobTimer = setTimeout(pollJob, 250);
+  } catch (e) {
+    jobLine(e.message.trim(), true);
+  }
+}
+
+async function startJob(path) {
+  const response = await fetch(path, { method: 'POST' });
+  if (!response.ok) {
+    jobLine((await response.text()).trim(), true);
+    return;
+  }
+  pollJob();
+}
+
+$('export-stl').addEventListener('click', () => startJob('/export?format=stl'));
+$('export-3mf').addEventListener('click', () => startJob('/export?format=3mf'));
+$('check').addEventListener('click', () => startJob('/check'));
 
 resize();
 poll();

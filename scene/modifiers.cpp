@@ -1,0 +1,141 @@
+#include "scene/modifiers.h"
+
+#include <utility>
+
+#include "engine/boolean.h"
+
+namespace csgray::detail {
+
+const char* modifierName(Modifier modifier) {
+  switch (modifier) {
+    case Modifier::Highlight:
+      return "highlight";
+    case Modifier::Ghost:
+      return "ghost";
+    case Modifier::Only:
+      return "only";
+    case Modifier::Disable:
+      return "disable";
+  }
+  return "modifier";
+}
+
+MarkedSolid::MarkedSolid(Modifier modifier, SolidPtr marked)
+    : modifier_(modifier), marked_(std::move(marked)) {
+  primitives_ = marked_->primitiveCount();
+  booleans_ = marked_->booleanCount();
+  depth_ = marked_->depth();
+  insideBeyondWindow_ = marked_->insideBeyondWindow();
+  setOrigin(marked_->origin());
+}
+
+const Bounds& MarkedSolid::bounds() const { return inModel() ? marked_->bounds() : empty_; }
+
+void MarkedSolid::spans(const Ray& ray, SpanList& out) const {
+  if (inModel()) return marked_->spans(ray, out);
+  out.clear();
+}
+
+void MarkedSolid::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  if (inModel()) return marked_->spansToFirstBoundary(ray, out);
+  out.clear();
+}
+
+bool MarkedSolid::contains(const dvec3& p) const { return inModel() && marked_->contains(p); }
+
+std::string MarkedSolid::kind() const {
+  return std::string(modifierName(modifier_)) + " " + marked_->kind();
+}
+
+SolidPtr MarkedSolid::mapPrimitives(const PrimitiveMap& f) const {
+  auto mapped = std::make_shared<MarkedSolid>(modifier_, marked_->mapPrimitives(f));
+  mapped->setOrigin(origin());
+  return mapped;
+}
+
+namespace {
+
+// Walks a tree, rebuilding it without marks and collecting what they mark.
+class Resolver {
+ public:
+  // The solid without marks, or null when nothing of it is in the model.
+  SolidPtr resolve(const SolidPtr& solid) {
+    if (auto* marked = dynamic_cast<const MarkedSolid*>(solid.get())) return resolveMarked(*marked);
+    auto* boolean = dynamic_cast<const Boolean*>(solid.get());
+    if (!boolean) return solid;  // a primitive
+    std::vector<SolidPtr> operands;
+    bool changed = false;
+    for (const SolidPtr& operand : boolean->children()) {
+      SolidPtr resolved = resolve(operand);
+      changed = changed || resolved != operand;
+      if (resolved) operands.push_back(std::move(resolved));
+    }
+    if (!changed) return solid;
+    if (operands.empty()) return nullptr;
+    if (operands.size() == 1) return operands.front();
+    auto rebuilt = std::make_shared<Boolean>(boolean->op(), std::move(operands));
+    rebuilt->setOrigin(solid->origin());
+    return rebuilt;
+  }
+
+  ResolvedModifiers result(const std::vector<SolidPtr>& model) && {
+    if (onlies_.empty()) return {model, std::move(ghosts_), std::move(highlights_)};
+    ResolvedModifiers only;
+    for (ResolvedModifiers& o : onlies_) {
+      only.model.insert(only.model.end(), o.model.begin(), o.model.end());
+      only.ghosts.insert(only.ghosts.end(), o.ghosts.begin(), o.ghosts.end());
+      only.highlights.insert(only.highlights.end(), o.highlights.begin(), o.highlights.end());
+    }
+    return only;
+  }
+
+ private:
+  SolidPtr resolveMarked(const MarkedSolid& marked) {
+    switch (marked.modifier()) {
+      case Modifier::Disable:
+        return nullptr;
+      case Modifier::Ghost:
+        // A ghost is shown as the solid it marks would be alone: its own
+        // marks inside are resolved, but they are not the model's.
+        if (SolidPtr shown = modelOf(marked.marked())) ghosts_.push_back(std::move(shown));
+        return nullptr;
+      case Modifier::Highlight: {
+        SolidPtr resolved = resolve(marked.marked());
+        if (resolved) highlights_.push_back(resolved);
+        return resolved;
+      }
+      case Modifier::Only: {
+        // A fresh walk, so that the ghosts and highlights of the only()
+        // solid go with it and those elsewhere are dropped with the rest.
+        Resolver inner;
+        SolidPtr resolved = inner.resolve(marked.marked());
+        std::vector<SolidPtr> model;
+        if (resolved) model.push_back(resolved);
+        onlies_.push_back(std::move(inner).result(model));
+        return resolved;
+      }
+    }
+    return nullptr;
+  }
+
+  std::vector<SolidPtr> ghosts_, highlights_;
+  std::vector<ResolvedModifiers> onlies_;
+};
+
+}  // namespace
+
+ResolvedModifiers resolveModifiers(const std::vector<SolidPtr>& solids) {
+  Resolver resolver;
+  std::vector<SolidPtr> model;
+  for (const SolidPtr& solid : solids)
+    if (SolidPtr resolved = resolver.resolve(solid)) model.push_back(std::move(resolved));
+  return std::move(resolver).result(model);
+}
+
+SolidPtr modelOf(const SolidPtr& solid) {
+  std::vector<SolidPtr> model = resolveModifiers({solid}).model;
+  if (model.empty()) return nullptr;
+  return model.size() == 1 ? model.front() : unionOf(std::move(model));
+}
+
+}  // namespace csgray::detail
