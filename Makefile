@@ -78,7 +78,13 @@ POVRAY := /usr/bin/povray
 $(POVRAY):
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends povray
 
-bench: build $(MANIFOLD) $(POVRAY)
+# OpenSCAD and a virtual display for its preview (the comparison with
+# csgray view): likewise the benchmark's only.
+OPENSCAD := /usr/bin/openscad /usr/bin/xvfb-run
+$(OPENSCAD):
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends openscad xvfb
+
+bench: build $(MANIFOLD) $(POVRAY) $(OPENSCAD)
 	bench/run.sh $(CSGRAY)
 
 # The fuzzers need clang and its sanitizer runtime (Debian: clang,

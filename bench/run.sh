@@ -223,3 +223,35 @@ else
   echo
   echo "(csgray view left out: it needs node)"
 fi
+
+# csgray view against OpenSCAD's preview (installed by `make bench` with
+# xvfb, which gives it a display): plate(8) (bench/view/plate8.scad, the
+# same part) from the same eye and centre at 800x600, with OpenSCAD's view
+# angle (22.5° vertically, -D fov=29.6 horizontally for csgray), whole
+# process each, alternating PAIRS times on two threads; medians. csgray's
+# first frame is the page's first pass (a quarter of the size each way,
+# one ray a pixel), its full frame the last (full size, 4 rays a pixel at
+# edges).
+if command -v openscad >/dev/null && command -v xvfb-run >/dev/null; then
+  echo
+  echo "| plate(8), 800x600 | median (s) |"
+  echo "|---|---:|"
+  : >"$out/a"; : >"$out/b"; : >"$out/c"; : >"$out/d"
+  for ((r = 0; r < pairs; r++)); do
+    # (time_of prints no newline.)
+    echo "$(time_of xvfb-run -a openscad --preview -o "$out/openscad.png" --imgsize 800,600 \
+      --camera=50,-90,110,50,50,0 --projection=p bench/view/plate8.scad)" >>"$out/a"
+    echo "$(time_of "$csgray" render bench/plate.lua -D fov=29.6 -o "$out/first.png" \
+      --size 200x150 --threads 2)" >>"$out/b"
+    echo "$(time_of "$csgray" render bench/plate.lua -D fov=29.6 -o "$out/full.png" \
+      --size 800x600 --samples 4 --adaptive --threads 2)" >>"$out/c"
+    echo "$(time_of xvfb-run -a true)" >>"$out/d"
+  done
+  echo "| OpenSCAD --preview under xvfb-run | $(grep -v failed "$out/a" | median) |"
+  echo "| xvfb-run alone (its share of the above) | $(grep -v failed "$out/d" | median) |"
+  echo "| csgray, first frame (200x150) | $(grep -v failed "$out/b" | median) |"
+  echo "| csgray, full frame (800x600, antialiased) | $(grep -v failed "$out/c" | median) |"
+else
+  echo
+  echo "(view vs OpenSCAD left out: make bench installs openscad and xvfb)"
+fi

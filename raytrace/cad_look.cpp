@@ -108,4 +108,18 @@ std::optional<dvec3> CadLook::groundPoint(const Ray& ray) const {
   return p;
 }
 
+bool CadLook::groundRegion(dvec3& lo, dvec3& hi) const {
+  if (!hasGround_) return false;
+  // groundPoint's test solved for p: along x, a point left of the bounds
+  // is kept while far.x + reach >= lo.x, far.x = (1 − s)·p.x + s·c.x; and
+  // likewise on the other sides and along y.
+  const double s = topShare_, reach = skyRadius_ * s;
+  for (int axis = 0; axis < 2; ++axis) {
+    lo[axis] = (bounds_.lo[axis] - reach - s * skyCentre_[axis]) / (1.0 - s);
+    hi[axis] = (bounds_.hi[axis] + reach - s * skyCentre_[axis]) / (1.0 - s);
+  }
+  lo.z = hi.z = groundZ_;
+  return true;
+}
+
 }  // namespace csgray::detail

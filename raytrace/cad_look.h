@@ -40,6 +40,11 @@ class CadLook {
   // is wholly lit and shows the background.
   std::optional<dvec3> groundPoint(const Ray& ray) const;
 
+  // The rectangle of the ground (x and y, low and high corners) outside
+  // which groundPoint finds nothing; false when there is no ground.
+  bool groundRegion(dvec3& lo, dvec3& hi) const;
+  double groundZ() const { return groundZ_; }
+
   // The sky light that casts the ground shadow: a disc high above the
   // part, sampled at fixed points (Vogel's spiral) so the shadow is smooth
   // and the same in every render. The first kProbes points are spread

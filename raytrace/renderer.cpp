@@ -104,6 +104,11 @@ SurfaceSample surfaceSample(const SurfaceHit& hit, const dvec3& point, const dve
   return sample;
 }
 
+// The ground shadow's grid (raytrace/ground_shadow_grid.h): cells of this
+// many pixels at the camera's target, and at most this many corners (4 MB).
+constexpr double kGroundCellPixels = 2.0;
+constexpr std::size_t kMaxGroundCorners = std::size_t(1) << 20;
+
 // Bisections that place an edge between two pixel centres: to 1/32 of a pixel.
 constexpr int kEdgeBisections = 4;
 
@@ -160,6 +165,15 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
   if (scene.cadLook) {
     cadLook_.emplace(cameraSpec_, double(options.width) / options.height, scene.bounds());
     if (lights_.empty()) lights_ = cadLook_->lights();
+    // The ground shadow's cells: a few pixels wide where the camera looks.
+    dvec3 lo, hi;
+    if (cadLook_->groundRegion(lo, hi)) {
+      auto grid = std::make_shared<GroundShadowGrid>(
+          dvec2(lo), dvec2(hi),
+          kGroundCellPixels * footprint(glm::length(cameraSpec_.lookAt - cameraSpec_.eye)),
+          kMaxGroundCorners);
+      if (grid->made()) groundShadow_ = grid;
+    }
   }
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
   for (const SolidPtr& s : objects_) {
@@ -298,6 +312,23 @@ dvec3 Renderer::missed(const Ray& ray, TraceContext& ctx) const {
 
 double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
   if (ctx.skyHidden) return *ctx.skyHidden;
+  std::optional<double> hidden;
+  if (groundShadow_)
+    hidden = groundShadow_->at(ground, cadLook_->groundZ(),
+                               [&](const dvec3& corner) { return skyHiddenAt(corner, ctx); });
+  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, ctx);
+  return *ctx.skyHidden;
+}
+
+double Renderer::footprint(double t) const {
+  const double width =
+      cameraSpec_.orthographic
+          ? cameraSpec_.orthoWidth
+          : 2.0 * t * std::tan(0.5 * cameraSpec_.fovDegrees * std::numbers::pi / 180.0);
+  return width / options_.width;
+}
+
+double Renderer::skyHiddenAt(const dvec3& ground, TraceContext& ctx) const {
   const dvec3 origin = ground + dvec3(0.0, 0.0, 1e-9 * (scale_ + glm::length(ground)));
   const auto& sky = cadLook_->skyPoints();
   auto hidden = [&](int i) {
@@ -312,8 +343,7 @@ double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
     for (int i = CadLook::kProbes; i < CadLook::kSkyPoints; ++i) sum += hidden(i);
     sum *= double(CadLook::kProbes) / CadLook::kSkyPoints;
   }
-  ctx.skyHidden = sum / CadLook::kProbes;
-  return *ctx.skyHidden;
+  return sum / CadLook::kProbes;
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {
@@ -564,13 +594,6 @@ RenderResult Renderer::renderAll() const {
     // exact edge between it and a neighbour, that falls within it
     // (raytrace/edge_lines.h): 1 − d, for the edge d pixels from its
     // centre, found by bisection along the step between the two centres.
-    const double pixelsPerUnit =
-        cameraSpec_.orthographic
-            ? cameraSpec_.orthoWidth / w
-            : 2.0 * std::tan(0.5 * cameraSpec_.fovDegrees * std::numbers::pi / 180.0) / w;
-    auto footprint = [&](double t) {
-      return cameraSpec_.orthographic ? pixelsPerUnit : t * pixelsPerUnit;
-    };
     auto at = [&](int x, int y) -> const SurfaceSample& { return seen[std::size_t(y) * w + x]; };
     auto sampleAt = [&](double px, double py, dvec3& point) {
       const Ray ray = camera_.ray(px, py);

@@ -15,6 +15,7 @@
 
 #include "engine/bvh.h"
 #include "raytrace/cad_look.h"
+#include "raytrace/ground_shadow_grid.h"
 #include "raytrace/image.h"
 #include "raytrace/render_threads.h"
 #include "raytrace/section_plane.h"
@@ -151,7 +152,12 @@ class Renderer {
   // look the ground's shadow.
   dvec3 missed(const Ray& ray, TraceContext& ctx) const;
   // The share of the CAD look's sky that the scene hides from a ground point.
+  // From the ground shadow's grid where it has the point, else traced.
   double skyHidden(const dvec3& ground, TraceContext& ctx) const;
+  // Traced: the sky points' shadow rays from the ground point.
+  double skyHiddenAt(const dvec3& ground, TraceContext& ctx) const;
+  // The width of a pixel at distance t along a camera ray.
+  double footprint(double t) const;
   // The colour a camera ray sees with the scene's highlighted solids laid
   // over it (OpenSCAD's `#`): drawn on top, whatever is in front.
   dvec3 withHighlights(const Ray& ray, const dvec3& color) const;
@@ -168,7 +174,8 @@ class Renderer {
   CameraSpec cameraSpec_;
   Camera camera_;
   std::vector<Light> lights_;
-  std::optional<CadLook> cadLook_;  // for a bare solid's scene
+  std::optional<CadLook> cadLook_;                        // for a bare solid's scene
+  std::shared_ptr<const GroundShadowGrid> groundShadow_;  // its shadow, where it has a ground
   Media cameraMedia_;
   std::vector<bool> seeThrough_;  // per object: does any of it let light through?
   double scale_;                  // a length for the size of the scene
