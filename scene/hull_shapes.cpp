@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,31 +11,21 @@
 #include "primitives/cgal/point_hull.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/cylinder.h"
-#include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
-#include "primitives/revolution.h"
 #include "primitives/rounded_polytope.h"
 #include "primitives/sphere.h"
-#include "profile/region.h"
-#include "profile/region_evaluation.h"
-#include "profile/shapes.h"
 #include "scene/shapes.h"
+#include "scene/swept_hulls.h"
 
 namespace csgray::detail {
 
 namespace {
 
-constexpr double kHalfPi = std::numbers::pi / 2.0;
 // Hulls with more faces than this are meshes rather than planes: a ray
 // costs O(planes) in a convex polyhedron and O(log faces) in a mesh.
 constexpr std::size_t kMostPlanes = 256;
 // The most points a sum of two meshes may make before its hull.
 constexpr double kMostSumPoints = 4e6;
-
-struct Ball {
-  dvec3 centre{0.0};
-  double radius = 0.0;
-};
 
 std::invalid_argument error(const std::string& function, const std::string& what) {
   return std::invalid_argument(function + ": " + what);
@@ -60,10 +49,6 @@ std::optional<Ball> ballOf(const Primitive& p) {
   std::optional<double> s = uniformScale(p.frame());
   if (!sphere || !s) return std::nullopt;
   return Ball{p.frame().pointToWorld(dvec3(0.0)), sphere->radius() * *s};
-}
-
-SolidPtr sphereAt(const Ball& ball) {
-  return Primitive::create<Sphere>(ball.radius)->transformed(Affine::translation(ball.centre));
 }
 
 // The corners of a polyhedral primitive in world space (a mesh's points);
@@ -149,63 +134,6 @@ SolidPtr polyhedronOf(const Polytope& p, const std::string& function) {
   return Primitive::create<MeshSolid>(p.vertices, faces);
 }
 
-// An edge of a profile, left out when it has no length.
-void addSegment(ProfileLoop& loop, const dvec2& a, const dvec2& b) {
-  if (a != b) loop.edges.push_back(ProfileEdge::segment(a, b));
-}
-
-ProfileEdge circleArc(const dvec2& centre, double r, double angle0, double angle1) {
-  return ProfileEdge::arc(centre, dmat2(r), angle0, angle1);
-}
-
-// Axes u, w, a (right-handed) for a unit direction a: the frame a solid
-// made about the z axis is turned into to stand along a.
-struct AxisFrame {
-  dvec3 u, w, a;
-  explicit AxisFrame(const dvec3& axis) : a(axis) {
-    dvec3 helper = std::abs(axis.x) < 0.9 ? dvec3(1.0, 0.0, 0.0) : dvec3(0.0, 1.0, 0.0);
-    u = glm::normalize(glm::cross(helper, axis));
-    w = glm::cross(axis, u);
-  }
-  // The solid's x, y, z along u, w, a, its origin moved to origin.
-  SolidPtr place(const SolidPtr& solid, const dvec3& origin) const {
-    glm::dmat4 m(glm::dvec4(u, 0.0), glm::dvec4(w, 0.0), glm::dvec4(a, 0.0),
-                 glm::dvec4(origin, 1.0));
-    return solid->transformed(Affine::fromMatrix(m));
-  }
-};
-
-// A turned profile (counter-clockwise in (ρ, z)) placed with its axis from
-// origin along the unit direction axis.
-SolidPtr turned(ProfileLoop loop, const dvec3& origin, const dvec3& axis) {
-  Profile profile;
-  profile.loops.push_back(std::move(loop));
-  SolidPtr solid = Primitive::create<Revolution>(Region::leaf(std::move(profile)), 360.0);
-  return AxisFrame(axis).place(solid, origin);
-}
-
-// A disc of the plane across an axis.
-struct Disc {
-  dvec2 centre;
-  double radius;
-};
-
-// The hull of discs in the plane across frame.a (coordinates along u and
-// w), extruded along a from `from` to `to`: exact, as the 2D hull keeps
-// the discs' arcs.
-SolidPtr extrudedDiscHull(const std::vector<Disc>& discs, const AxisFrame& frame, double from,
-                          double to) {
-  std::vector<RegionPtr> regions;
-  double size = 0.0;
-  for (const Disc& d : discs) {
-    regions.push_back(circleRegion(d.radius, std::nullopt)->transformed({dmat2(1.0), d.centre}));
-    size = std::max(size, glm::length(d.centre) + d.radius);
-  }
-  RegionPtr outline = Region::leaf(hull(regions, 1e-9 * size));
-  SolidPtr solid = Primitive::create<LinearExtrusion>(outline, to - from, false, 0.0, dvec2(1.0));
-  return frame.place(solid, from * frame.a);
-}
-
 // A cylinder (not a cone) under a frame that keeps its shape.
 struct Rod {
   dvec3 base, axis;  // axis: unit, from the base to the top
@@ -260,54 +188,12 @@ SolidPtr prismPlusRod(const Polytope& p, const Rod& rod) {
   return extrudedDiscHull(discs, frame, lo + start, hi + start + rod.length);
 }
 
-// The hull of two balls: both, and the cone frustum between them that
-// touches each along a circle. In the half-plane (ρ, z) with a's centre at
-// the origin and b's at (0, d), the common tangent n·p = c with unit
-// normal n = (cos β, sin β) has n·a + r_a = n·b + r_b, so d sin β =
-// r_a − r_b. Equal radii make a capsule.
-SolidPtr twoBallHull(const Ball& a, const Ball& b) {
-  dvec3 axis = b.centre - a.centre;
-  double d = glm::length(axis);
-  if (d + b.radius <= a.radius) return sphereAt(a);
-  if (d + a.radius <= b.radius) return sphereAt(b);
-  double beta = std::asin((a.radius - b.radius) / d);
-  ProfileEdge low = circleArc({0.0, 0.0}, a.radius, -kHalfPi, beta);
-  ProfileEdge high = circleArc({0.0, d}, b.radius, beta, kHalfPi);
-  low.from = {0.0, -a.radius};  // on the axis exactly
-  high.to = {0.0, d + b.radius};
-  ProfileLoop loop;
-  loop.edges.push_back(low);
-  addSegment(loop, low.to, high.from);
-  loop.edges.push_back(high);
-  addSegment(loop, high.to, low.from);
-  return turned(std::move(loop), a.centre, axis / d);
-}
-
 // The points within r of the polytope, by its dimension: a ball, a
 // capsule, a rounded plate or solid.
 SolidPtr rounded(const Polytope& p, double r, const std::string& kind) {
   if (p.dimension == 0) return sphereAt({p.vertices[0], r});
   if (p.dimension == 1) return twoBallHull({p.vertices[0], r}, {p.vertices[1], r});
   return Primitive::create<RoundedPolytope>(p, r, kind);
-}
-
-// The rounded cylinder in (ρ, z): radius R, height H from z = 0, rims
-// rounded with radius f, turned about z.
-SolidPtr roundedCylinder(double R, double H, double f) {
-  ProfileEdge low = circleArc({R - f, f}, f, -kHalfPi, 0.0);
-  ProfileEdge high = circleArc({R - f, H - f}, f, 0.0, kHalfPi);
-  low.from = {R - f, 0.0};
-  low.to = {R, f};
-  high.from = {R, H - f};
-  high.to = {R - f, H};
-  ProfileLoop loop;
-  addSegment(loop, {0.0, 0.0}, low.from);
-  loop.edges.push_back(low);
-  addSegment(loop, low.to, high.from);
-  loop.edges.push_back(high);
-  addSegment(loop, high.to, {0.0, H});
-  addSegment(loop, {0.0, H}, {0.0, 0.0});
-  return turned(std::move(loop), dvec3(0.0), {0.0, 0.0, 1.0});
 }
 
 // The points of a convex primitive within kHullTolerance·size of it: its
