@@ -155,6 +155,28 @@ TEST(Minkowski, CylinderAndBallIsARoundedCylinder) {
   EXPECT_TRUE(test::checksOut(*sum));
 }
 
+// A box a × b × h₁ plus an upright cylinder of radius r and height h₂ is
+// the rectangle grown by r (ab + 2r(a + b) + πr²) over h₁ + h₂; the hull of
+// two upright cylinders d apart, the stadium πr² + 2rd over their height.
+TEST(Minkowski, PrismAndCylinderAreExtruded) {
+  CylinderParams p;
+  p.r = 1.0, p.h = 2.0;
+  SolidPtr rod = cylinderShape("cylinder", p);
+  SolidPtr plate = minkowskiShape({cuboid({4, 3, 1}), rod});
+  EXPECT_EQ(plate->kind(), "linear_extrude");
+  expectVolume(*plate, (12.0 + 2.0 * 7.0 + kPi) * 3.0, 1e-4);
+  EXPECT_NEAR(plate->bounds().lo.x, -1.0, 1e-9);
+  EXPECT_NEAR(plate->bounds().hi.z, 3.0, 1e-9);
+  SolidPtr slot = hullShape({rod, rod->transformed(Affine::translation({3, 4, 0}))});
+  EXPECT_EQ(slot->kind(), "linear_extrude");
+  expectVolume(*slot, (kPi + 2.0 * 5.0) * 2.0, 1e-4);
+  EXPECT_TRUE(test::checksOut(*slot));
+  // Cylinders of different lengths have no such hull: their meshes'.
+  p.h = 3.0;
+  SolidPtr longer = cylinderShape("cylinder", p)->transformed(Affine::translation({3, 4, 0}));
+  EXPECT_EQ(hullShape({rod, longer})->kind(), "hull");
+}
+
 TEST(RoundedShapes, RoundedBoxIsTheSumOfItsCore) {
   SolidPtr rounded = roundedBoxShape(dvec3(4, 3, 2), 0.5, true);
   EXPECT_EQ(rounded->kind(), "rounded_box");
