@@ -10,10 +10,13 @@
 // region; one that moves or tilts the plane, or a material, places it in
 // space as that flat surface, which no sweep takes any more.
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "profile/region_evaluation.h"
@@ -546,6 +549,38 @@ int hullOf(lua_State* L) {
   return 1;
 }
 
+// The disc a region is when it is one whole circle: its centre and radius.
+std::optional<std::pair<dvec2, double>> discOf(const Region& region) {
+  if (region.op() != Region::Op::Leaf || region.profile().loops.size() != 1) return std::nullopt;
+  const std::vector<ProfileEdge>& edges = region.profile().loops[0].edges;
+  if (edges.size() != 1) return std::nullopt;
+  const ProfileEdge& e = edges[0];
+  if (e.kind != ProfileEdge::Kind::Arc || !e.circular() ||
+      std::abs(e.angle1 - e.angle0) < 2.0 * std::numbers::pi)
+    return std::nullopt;
+  return std::make_pair(e.center, glm::length(e.axes[0]));
+}
+
+// minkowski(a, b, ...) of regions, when the first operand is one, else the
+// solids' sum: a region plus a circle is its rounded offset by the radius,
+// moved by the circle's centre (OpenSCAD's minkowski() {square(); circle();}).
+int minkowskiOf(lua_State* L) {
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
+  std::vector<RegionPtr> regions = regionOperands(L, "minkowski");
+  RegionPtr sum = regions[0];
+  for (std::size_t i = 1; i < regions.size(); ++i) {
+    RegionPtr shape = sum, disc = regions[i];
+    if (!discOf(*disc)) std::swap(shape, disc);
+    std::optional<std::pair<dvec2, double>> circle = discOf(*disc);
+    if (!circle)
+      throw std::invalid_argument("minkowski: of regions, one of each pair must be a circle");
+    Profile grown = offsetRounded(*shape, circle->second, ellipseTolerance(*shape));
+    sum = Region::leaf(std::move(grown))->transformed({dmat2(1.0), circle->first});
+  }
+  pushRegionAs(L, sum, "region");
+  return 1;
+}
+
 int areaMethod(lua_State* L) {
   const RegionPtr& region = receiver(L, "area");
   checkArgumentCount(L, "area", 0, 2);
@@ -646,6 +681,7 @@ void registerRegionApi(lua_State* L) {
   registerOverSolids(L, "difference", guarded<booleanOf<Region::Op::Difference>>);
   registerOverSolids(L, "intersection", guarded<booleanOf<Region::Op::Intersection>>);
   registerOverSolids(L, "hull", guarded<hullOf>);
+  registerOverSolids(L, "minkowski", guarded<minkowskiOf>);
 }
 
 }  // namespace csgray::detail

@@ -259,6 +259,21 @@ TEST(HullScript, RegionsAndSolidsShareTheName) {
   EXPECT_EQ(solidOf("return rounded_cylinder{r=2, h=3, fillet=0.5}")->kind(), "rotate_extrude");
 }
 
+// A square of side s plus a disc of radius r: s² + 4sr + πr² (its sides
+// moved out, a quarter disc at each corner), placed by the disc's centre.
+TEST(HullScript, RegionPlusCircleIsItsRoundedOffset) {
+  Scene scene = runScript(
+      "local m = minkowski(square(2), circle(0.5):translate(1, 0))\n"
+      "assert(math.abs(m:area() - (4 + 4 + math.pi * 0.25)) < 1e-9, m:area())\n"
+      "local lo, hi = m:bounds()\n"
+      "assert(lo[1] == 0.5 and hi[1] == 3.5, lo[1])\n"
+      "return linear_extrude(m, {height=1})",
+      "part.lua");
+  EXPECT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scriptError("return minkowski(square(2), square(1))"),
+            "part.lua:1: minkowski: of regions, one of each pair must be a circle");
+}
+
 TEST(HullScript, ErrorsNameTheLine) {
   EXPECT_EQ(scriptError("local a = box(2)\nreturn minkowski(a - sphere(1), sphere(1))"),
             "part.lua:2: minkowski: takes shapes and unions of them, not a difference");
