@@ -206,6 +206,7 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   SpanList operand, spare;
   SpanList* result = &out;
   SpanList* other = &spare;
+  double reach = 0.0;
   while (!result->empty()) {
     // The result starts where the first operand's spans, less the holes
     // cut so far, start: the answer, unless a hole covers that point.
@@ -217,10 +218,16 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
     if (start > ray.tMax) break;  // no boundary within the window
     // The holes that meet the start, or lie within the distance at which
     // boundaries are one point (span_list.h); the spans they give are
-    // theirs beyond that, so the cut is exact as far as it reaches.
+    // theirs beyond that, so the cut is exact as far as it reaches. A
+    // sweep ends its spans just past the window (profile_sweep.h), so a
+    // hole may move the start only that far: the window doubles each time
+    // the start moves, which crosses a sweep in a few steps rather than
+    // creeping through it (a box less an extruded circle rendered 500×
+    // slower without it).
+    reach = std::max(2.0 * kSameT * std::abs(start), 2.0 * reach);
     Ray point = ray;
     point.tMin = start;
-    point.tMax = std::min(ray.tMax, start + 2.0 * kSameT * std::abs(start));
+    point.tMax = std::min(ray.tMax, start + reach);
     forEachHole(point, [&](const Solid& hole) {
       hole.spans(point, operand);
       if (operand.empty()) return true;

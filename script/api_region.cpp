@@ -10,10 +10,13 @@
 // region; one that moves or tilts the plane, or a material, places it in
 // space as that flat surface, which no sweep takes any more.
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "profile/region_evaluation.h"
@@ -291,16 +294,20 @@ const char* opName(Region::Op op) {
                                           : "difference";
 }
 
+// Calls the solids' function that a function of regions replaced (its
+// closure's upvalue) with the same arguments.
+int solidsFunction(lua_State* L) {
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, 1);
+  return 1;
+}
+
 // union(...), difference(...), intersection(...): of regions when the
-// first operand is one, else the solids' function (the closure's upvalue).
+// first operand is one, else the solids' function.
 template <Region::Op op>
 int booleanOf(lua_State* L) {
-  if (!firstOperandIsRegion(L)) {
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_insert(L, 1);
-    lua_call(L, lua_gettop(L) - 1, 1);
-    return 1;
-  }
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
   pushRegionAs(L, Region::boolean(op, regionOperands(L, opName(op))), "region");
   return 1;
 }
@@ -531,12 +538,46 @@ int offsetMethod(lua_State* L) {
   return 1;
 }
 
-// hull(a, b, ...) or hull{a, b, ...}: the convex hull of regions.
+// hull(a, b, ...) or hull{a, b, ...}: the convex hull of regions when the
+// first operand is one, else the solids' hull (the closure's upvalue).
 int hullOf(lua_State* L) {
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
   const std::vector<RegionPtr> regions = regionOperands(L, "hull");
   double tolerance = 1e300;
   for (const RegionPtr& r : regions) tolerance = std::min(tolerance, ellipseTolerance(*r));
   pushRegionAs(L, Region::leaf(hull(regions, tolerance)), "region");
+  return 1;
+}
+
+// The disc a region is when it is one whole circle: its centre and radius.
+std::optional<std::pair<dvec2, double>> discOf(const Region& region) {
+  if (region.op() != Region::Op::Leaf || region.profile().loops.size() != 1) return std::nullopt;
+  const std::vector<ProfileEdge>& edges = region.profile().loops[0].edges;
+  if (edges.size() != 1) return std::nullopt;
+  const ProfileEdge& e = edges[0];
+  if (e.kind != ProfileEdge::Kind::Arc || !e.circular() ||
+      std::abs(e.angle1 - e.angle0) < 2.0 * std::numbers::pi)
+    return std::nullopt;
+  return std::make_pair(e.center, glm::length(e.axes[0]));
+}
+
+// minkowski(a, b, ...) of regions, when the first operand is one, else the
+// solids' sum: a region plus a circle is its rounded offset by the radius,
+// moved by the circle's centre (OpenSCAD's minkowski() {square(); circle();}).
+int minkowskiOf(lua_State* L) {
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
+  std::vector<RegionPtr> regions = regionOperands(L, "minkowski");
+  RegionPtr sum = regions[0];
+  for (std::size_t i = 1; i < regions.size(); ++i) {
+    RegionPtr shape = sum, disc = regions[i];
+    if (!discOf(*disc)) std::swap(shape, disc);
+    std::optional<std::pair<dvec2, double>> circle = discOf(*disc);
+    if (!circle)
+      throw std::invalid_argument("minkowski: of regions, one of each pair must be a circle");
+    Profile grown = offsetRounded(*shape, circle->second, ellipseTolerance(*shape));
+    sum = Region::leaf(std::move(grown))->transformed({dmat2(1.0), circle->first});
+  }
+  pushRegionAs(L, sum, "region");
   return 1;
 }
 
@@ -631,18 +672,16 @@ void registerRegionApi(lua_State* L) {
   lua_pop(L, 1);
 
   static const luaL_Reg globals[] = {
-      {"square", guarded<rectangle<true>>},
-      {"rectangle", guarded<rectangle<false>>},
-      {"circle", guarded<circle>},
-      {"ellipse", guarded<ellipse>},
-      {"polygon", guarded<polygon>},
-      {"regular_polygon", guarded<regularPolygon>},
-      {"hull", guarded<hullOf>},
+      {"square", guarded<rectangle<true>>}, {"rectangle", guarded<rectangle<false>>},
+      {"circle", guarded<circle>},          {"ellipse", guarded<ellipse>},
+      {"polygon", guarded<polygon>},        {"regular_polygon", guarded<regularPolygon>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
   registerOverSolids(L, "union", guarded<booleanOf<Region::Op::Union>>);
   registerOverSolids(L, "difference", guarded<booleanOf<Region::Op::Difference>>);
   registerOverSolids(L, "intersection", guarded<booleanOf<Region::Op::Intersection>>);
+  registerOverSolids(L, "hull", guarded<hullOf>);
+  registerOverSolids(L, "minkowski", guarded<minkowskiOf>);
 }
 
 }  // namespace csgray::detail

@@ -395,6 +395,10 @@ fi
 printf 'return torus{R=2, r=2}\n' > "$work/horn.lua"
 expect_failure "export of a horn torus" "$work/horn.stl" export "$work/horn.lua" -o "$work/horn.stl"
 expect_in_stderr "export of a horn torus" "horn torus"
+# A sum that is not supported: one line naming the script's line, no file.
+printf 'local ring = torus{R=3, r=1}\nreturn minkowski(ring, sphere(1))\n' > "$work/minkowski.lua"
+expect_failure "export of an unsupported minkowski" "$work/minkowski.stl" export "$work/minkowski.lua" -o "$work/minkowski.stl"
+expect_in_stderr "export of an unsupported minkowski" "minkowski.lua:2: minkowski: the torus is not convex; its sum is not supported"
 expect_exit 2 "export with a zero tolerance" "$work/zero.stl" export "$work/part.lua" -o "$work/zero.stl" --tolerance 0
 expect_exit 2 "export with a NaN tolerance" "$work/nan.stl" export "$work/part.lua" -o "$work/nan.stl" --tolerance nan
 printf 'return sphere(1):translate(1e6, 0, 0)\n' > "$work/far.lua"
