@@ -17,7 +17,7 @@ trap 'rm -rf "$out"' EXIT
 
 # Wall time in milliseconds from the shell's clock (time(1) gives
 # hundredths of a second, a tenth of plate(8) on two threads).
-elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.3f", b - a}'; }
+elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.3f\n", b - a}'; }
 
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u +%Y-%m-%d); csgray $("$csgray" --version)"
 echo
