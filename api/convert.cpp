@@ -21,6 +21,7 @@ void copyShared(const From& from, To& to) {
   to.transparency = from.transparency;
   to.ior = from.ior;
   to.fresnel = from.fresnel;
+  to.gloss = from.gloss;
 }
 
 // The kinds of light, public and internal: one table for both directions.
@@ -50,6 +51,7 @@ MaterialPtr toDetail(const csgray::Material& m) {
   made->color = toDetail(m.color);
   if (m.texture) made->texture = Access::of(*m.texture);
   made->filter = toDetail(m.filter);
+  made->emission = toDetail(m.emission);
   copyShared(m, *made);
   checkMaterial(*made);
   return made;
@@ -60,6 +62,7 @@ csgray::Material toPublic(const Material& m) {
   made.color = toPublic(m.color);
   if (m.texture) made.texture = Access::texture(m.texture);
   made.filter = toPublic(m.filter);
+  made.emission = toPublic(m.emission);
   copyShared(m, made);
   return made;
 }

@@ -82,6 +82,24 @@ Scene& Scene::setMaxDepth(int depth) {
   return *this;
 }
 
+Scene& Scene::setIndirectLight(int samples, int bounces) {
+  guarded([&] {
+    const detail::IndirectLight indirect{samples, bounces};
+    detail::checkIndirectLight(indirect);
+    impl_->scene.indirect = indirect;
+  });
+  return *this;
+}
+
+Scene& Scene::setAmbientOcclusion(int samples, double distance) {
+  guarded([&] {
+    const detail::AmbientOcclusion occlusion{samples, distance};
+    detail::checkAmbientOcclusion(occlusion);
+    impl_->scene.ambientOcclusion = occlusion;
+  });
+  return *this;
+}
+
 Scene& Scene::setMinWeight(double weight) {
   guarded([&] {
     detail::checkMinWeight(weight);
@@ -118,6 +136,14 @@ Vec3 Scene::background() const { return detail::toPublic(impl_->scene.background
 int Scene::maxDepth() const { return impl_->scene.limits.maxDepth; }
 
 double Scene::minWeight() const { return impl_->scene.limits.minWeight; }
+
+int Scene::indirectSamples() const { return impl_->scene.indirect.samples; }
+
+int Scene::indirectBounces() const { return impl_->scene.indirect.bounces; }
+
+int Scene::ambientOcclusionSamples() const { return impl_->scene.ambientOcclusion.samples; }
+
+double Scene::ambientOcclusionDistance() const { return impl_->scene.ambientOcclusion.distance; }
 
 Bounds Scene::bounds() const { return detail::toPublic(impl_->scene.bounds()); }
 

@@ -12,6 +12,7 @@
 #include "raytrace/edge_lines.h"
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
+#include "raytrace/scattering.h"
 
 namespace csgray::detail {
 
@@ -23,6 +24,8 @@ struct TraceContext {
   // ground: it changes slowly, so the pixel's other rays take it too
   // instead of tracing up to 24 shadow rays each.
   std::optional<double> skyHidden;
+  // Diffuse bounces on the path so far (indirect light).
+  int bounces = 0;
 };
 
 namespace {
@@ -275,7 +278,13 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   // I = Koh·O + Σ Fᵢ·(Kod·O·cos α + r·cos^f β) over the light that shadow
   // rays let through: Lambert's diffuse term and Phong's highlight (Phong,
   // "Illumination for Computer Generated Pictures", 1975; docs/theory.md).
-  dvec3 color = m.ambient * sp.color;
+  // The ambient term stands in for the light from other surfaces: left
+  // out when indirect light computes that, dimmed where ambient occlusion
+  // finds the point hidden.
+  dvec3 color(0.0);
+  if (scene_.indirect.samples == 0 && m.ambient > 0.0)
+    color =
+        m.ambient * sp.color * (scene_.ambientOcclusion.samples > 0 ? unoccluded(sp, ctx) : 1.0);
   for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {
       double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers
@@ -301,6 +310,54 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
     }
   }
   return color;
+}
+
+// Diffuse inter-reflection by path tracing (Kajiya, "The rendering
+// equation", SIGGRAPH 1986; docs/theory.md, "Indirect light"): the light a
+// Lambertian surface gets from other surfaces is the mean of what rays
+// scattered with density cos θ / π see, the albedo applied by the caller.
+// What those rays see is shaded as any surface is, so each bounce adds the
+// lights' direct part at the point it reaches (next-event estimation) and
+// its emission. The camera's surfaces send `samples` rays, each later
+// bounce one; past `bounces` bounces a path goes on with probability q
+// (its share of the light from here, at most 0.9) and what it brings is
+// divided by q (Russian roulette: Arvo and Kirk, "Particle transport and
+// image synthesis", SIGGRAPH 1990), so the estimate stays unbiased; 64
+// bounces end any path.
+dvec3 Renderer::indirect(const ShadingPoint& sp, const Media& media, int depth, double weight,
+                         TraceContext& ctx) const {
+  constexpr int kMostBounces = 64;
+  if (ctx.bounces >= kMostBounces) return dvec3(0.0);
+  // Each ray's own roulette: one decision for all of a surface's rays
+  // would be as unbiased, but far noisier.
+  const double keep = ctx.bounces >= scene_.indirect.bounces
+                          ? std::min(0.9, largest(sp.material->diffuse * sp.color))
+                          : 1.0;
+  const int rays = ctx.bounces == 0 ? scene_.indirect.samples : 1;
+  const dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  dvec3 sum(0.0);
+  ++ctx.bounces;
+  for (int i = 0; i < rays; ++i) {
+    if (keep < 1.0 && !(ctx.rng.next() < keep)) continue;
+    const double u = ctx.rng.next(), v = ctx.rng.next();
+    sum += trace(Ray(origin, cosineDirection(sp.normal, u, v)), depth + 1, weight, media, ctx);
+  }
+  --ctx.bounces;
+  return sum / (double(rays) * keep);
+}
+
+double Renderer::unoccluded(const ShadingPoint& sp, TraceContext& ctx) const {
+  const int rays = scene_.ambientOcclusion.samples;
+  const double reach =
+      scene_.ambientOcclusion.distance > 0.0 ? scene_.ambientOcclusion.distance : 0.1 * scale_;
+  const dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  int open = 0;
+  for (int i = 0; i < rays; ++i) {
+    const double u = ctx.rng.next(), v = ctx.rng.next();
+    ++ctx.counts.shadow;
+    open += !firstHit(Ray(origin, cosineDirection(sp.normal, u, v), 0.0, reach));
+  }
+  return double(open) / rays;
 }
 
 dvec3 Renderer::missed(const Ray& ray, TraceContext& ctx) const {
@@ -396,7 +453,13 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   double kt = leaving ? 1.0 : m.transparency;
   dvec3 tint = leaving ? dvec3(1.0) : m.filter;
   // (A surface that passes all light shows none of its own: no shadow rays.)
-  dvec3 color = leaving || kt >= 1.0 ? dvec3(0.0) : (1.0 - kt) * direct(sp, ray.dir, ctx);
+  dvec3 color(0.0);
+  if (!leaving && kt < 1.0) {
+    color = direct(sp, ray.dir, ctx) + m.emission;
+    if (scene_.indirect.samples > 0 && m.diffuse > 0.0)
+      color += m.diffuse * sp.color * indirect(sp, media, depth, weight, ctx);
+    color *= 1.0 - kt;
+  }
 
   std::optional<dvec3> through = ray.dir;
   if (kt > 0.0 && n1 != n2) {
@@ -424,13 +487,19 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   if (mirror && onward && raysLeft < 2) (kr >= kTinted ? onward : mirror) = false;
   if (raysLeft < 1) mirror = onward = false;
   const std::uint64_t tracedBefore = ctx.counts.secondary;
+  // A glossy surface sends each ray into a lobe about the ideal direction.
+  auto blurred = [&](const dvec3& ideal, const dvec3& side) {
+    if (m.gloss <= 0.0) return ideal;
+    const double u = ctx.rng.next(), v = ctx.rng.next();
+    return glossyDirection(ideal, side, m.gloss, u, v);
+  };
   if (mirror) {
-    Ray mirrored(sp.point + offset * sp.normal, reflect(ray.dir, sp.normal));
+    Ray mirrored(sp.point + offset * sp.normal, blurred(reflect(ray.dir, sp.normal), sp.normal));
     color += kr * trace(mirrored, depth + 1, weight * kr, media, ctx, raysLeft - 1 - int(onward));
   }
   if (onward) {
     const int left = raysLeft - int(ctx.counts.secondary - tracedBefore);
-    Ray onwardRay(sp.point - offset * sp.normal, *through);
+    Ray onwardRay(sp.point - offset * sp.normal, blurred(*through, -sp.normal));
     color += kt * tint * trace(onwardRay, depth + 1, weight * kTinted, beyond, ctx, left - 1);
   }
   return color;

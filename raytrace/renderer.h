@@ -147,6 +147,13 @@ class Renderer {
   dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, TraceContext& ctx,
               int raysLeft = kRaysPerCameraRay - 1) const;
   dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
+  // The light that reaches a point from other surfaces (the scene's
+  // indirect light): the mean of what diffusely scattered rays see.
+  dvec3 indirect(const ShadingPoint& sp, const Media& media, int depth, double weight,
+                 TraceContext& ctx) const;
+  // The share of diffusely scattered rays from a point that meet nothing
+  // within the ambient occlusion's distance.
+  double unoccluded(const ShadingPoint& sp, TraceContext& ctx) const;
   dvec3 pixel(int x, int y, int samples, TraceContext& ctx) const;
   // What a ray that meets nothing sees: the background, and in the CAD
   // look the ground's shadow.

@@ -21,6 +21,8 @@ void checkMaterial(const Material& m) {
     throw std::invalid_argument("material: filter components must be in [0, 1]");
   if (!(m.ior >= 1.0 && m.ior <= 10.0))
     throw std::invalid_argument("material: ior must be from 1 to 10");
+  checkUnit(f, "gloss", m.gloss);
+  checkColor(f, "emission", m.emission);
 }
 
 SolidPtr solidWithMaterial(const SolidPtr& solid, const MaterialPtr& material) {

@@ -25,6 +25,13 @@ struct Material {
   dvec3 filter{1.0, 1.0, 1.0};
   double ior = 1.0;      // index of refraction; 1 passes rays straight through
   bool fresnel = false;  // weigh reflection and refraction by the Fresnel equations
+  // Blur of the mirrored and refracted rays, a roughness in [0, 1]: 0 is a
+  // perfect mirror, more spreads each ray over a wider lobe
+  // (raytrace/scattering.h).
+  double gloss = 0.0;
+  // Light the surface gives off (linear RGB, >= 0): added to what it
+  // shows, and what indirect light carries to other surfaces.
+  dvec3 emission{0.0};
 
   // The colour at a point in texture space with the normal there.
   dvec3 colorAt(const dvec3& texturePoint, const dvec3& textureNormal) const {

@@ -78,6 +78,16 @@ void ObjectTally::add(std::size_t count, const std::string& what) {
 
 void checkBackground(const dvec3& color) { checkColor("scene", "background", color); }
 
+void checkIndirectLight(const IndirectLight& indirect) {
+  checkWhole("scene: indirect", "samples", indirect.samples, 0, 4096);
+  checkWhole("scene: indirect", "bounces", indirect.bounces, 0, 64);
+}
+
+void checkAmbientOcclusion(const AmbientOcclusion& occlusion) {
+  checkWhole("scene: ambient_occlusion", "samples", occlusion.samples, 0, 4096);
+  checkNonNegative("scene: ambient_occlusion", "distance", occlusion.distance);
+}
+
 int checkedMaxDepth(double depth) { return checkWhole("scene", "max_depth", depth, 0, 64); }
 
 void checkMinWeight(double weight) { checkUnit("scene", "min_weight", weight); }

@@ -34,6 +34,23 @@ struct TraceLimits {
   double minWeight = 1.0 / 512.0;
 };
 
+// Diffuse inter-reflection, by path tracing (docs/theory.md, "Indirect
+// light"): off while samples is 0. At a surface that the camera sees,
+// `samples` rays scatter diffusely; each later bounce sends one, and past
+// `bounces` of them Russian roulette decides whether a path goes on.
+struct IndirectLight {
+  int samples = 0;
+  int bounces = 2;
+};
+
+// Ambient occlusion: the ambient term of each point dimmed by the share of
+// `samples` diffusely scattered rays that meet something within
+// `distance` (0: a tenth of the scene's size). Off while samples is 0.
+struct AmbientOcclusion {
+  int samples = 0;
+  double distance = 0.0;
+};
+
 struct Scene {
   std::vector<SolidPtr> objects;
   std::vector<SurfacePtr> surfaces;  // open surfaces: planes, discs, triangles, ...
@@ -53,6 +70,8 @@ struct Scene {
   bool cadLook = false;
   // Draw edge lines (raytrace/edge_lines.h): scene{edges=true}.
   bool edges = false;
+  IndirectLight indirect;
+  AmbientOcclusion ambientOcclusion;
 
   // The union of the objects', the ghosts' and the bounded surfaces' bounds.
   Bounds bounds() const;
@@ -86,9 +105,11 @@ class ObjectTally {
 };
 
 // Each throws std::invalid_argument with the script's message.
-void checkBackground(const dvec3& color);  // components >= 0
-int checkedMaxDepth(double depth);         // a whole number from 0 to 64
-void checkMinWeight(double weight);        // in [0, 1]
-void checkHasObjects(const Scene& scene);  // a solid or a surface
+void checkBackground(const dvec3& color);                // components >= 0
+void checkIndirectLight(const IndirectLight& indirect);  // samples 0 to 4096, bounces 0 to 64
+void checkAmbientOcclusion(const AmbientOcclusion& occlusion);  // samples 0 to 4096, distance >= 0
+int checkedMaxDepth(double depth);                              // a whole number from 0 to 64
+void checkMinWeight(double weight);                             // in [0, 1]
+void checkHasObjects(const Scene& scene);                       // a solid or a surface
 
 }  // namespace csgray::detail

@@ -29,6 +29,8 @@ MaterialPtr materialArg(lua_State* L, int index) {
   m->filter = args.color("filter").value_or(m->filter);
   m->ior = args.number("ior").value_or(m->ior);
   m->fresnel = args.boolean("fresnel").value_or(false);
+  m->gloss = args.number("gloss").value_or(m->gloss);
+  m->emission = args.color("emission").value_or(m->emission);
   checkMaterial(*m);
   args.finish();
   return m;

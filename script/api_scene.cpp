@@ -7,6 +7,7 @@
 #include "scene/camera.h"
 #include "scene/color_names.h"
 #include "scene/region_surface.h"
+#include "scene/value_checks.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
@@ -93,6 +94,37 @@ int scene(lua_State* L) {
   s.limits.minWeight = args.number("min_weight").value_or(s.limits.minWeight);
   checkMinWeight(s.limits.minWeight);
   s.edges = args.boolean("edges").value_or(false);
+  // indirect={samples=, bounces=} and ambient_occlusion={samples=,
+  // distance=}; true for the defaults.
+  auto lighting = [&](const char* key, const std::string& function, auto&& read) {
+    if (!args.push(key)) return;
+    if (lua_type(L, -1) == LUA_TBOOLEAN) {
+      if (lua_toboolean(L, -1)) {
+        lua_newtable(L);
+        LuaArgs defaults(L, -1, function);
+        read(defaults);
+        lua_pop(L, 1);
+      }
+    } else {
+      LuaArgs inner(L, -1, function);
+      read(inner);
+      inner.finish();
+    }
+    lua_pop(L, 1);
+  };
+  lighting("indirect", "scene: indirect", [&](LuaArgs& a) {
+    s.indirect.samples =
+        checkWhole("scene: indirect", "samples", a.number("samples").value_or(16), 1, 4096);
+    s.indirect.bounces =
+        checkWhole("scene: indirect", "bounces", a.number("bounces").value_or(2), 0, 64);
+  });
+  lighting("ambient_occlusion", "scene: ambient_occlusion", [&](LuaArgs& a) {
+    s.ambientOcclusion.samples = checkWhole("scene: ambient_occlusion", "samples",
+                                            a.number("samples").value_or(16), 1, 4096);
+    s.ambientOcclusion.distance = a.number("distance").value_or(0.0);
+  });
+  checkIndirectLight(s.indirect);
+  checkAmbientOcclusion(s.ambientOcclusion);
   args.finish();
   checkHasObjects(s);
   pushValue(L, std::move(s), kBytesPerValue + pending.settle());

@@ -80,6 +80,8 @@ struct Material {
   Vec3 filter{1.0, 1.0, 1.0};      // components in [0, 1]: tint of the light passing
   double ior = 1.0;                // 1 to 10: index of refraction
   bool fresnel = false;            // weigh reflection and refraction by Fresnel's equations
+  double gloss = 0.0;              // [0, 1]: blur of the mirrored and refracted rays
+  Vec3 emission{0.0, 0.0, 0.0};    // components >= 0: light the surface gives off
 };
 
 }  // namespace csgray

@@ -132,6 +132,14 @@ class CSGRAY_API Scene {
   // and none whose share of a pixel is below minWeight (0 to 1).
   Scene& setMaxDepth(int depth);
   Scene& setMinWeight(double weight);
+  // Diffuse inter-reflection by path tracing: `samples` rays (1 to 4096)
+  // scatter from each surface the camera sees, `bounces` (0 to 64) bounces
+  // before Russian roulette; samples 0 turns it off (docs/script.md, Scenes).
+  Scene& setIndirectLight(int samples, int bounces = 2);
+  // Ambient occlusion: the ambient term dimmed by the share of `samples`
+  // rays that meet something within `distance` (0: a tenth of the scene's
+  // size); samples 0 turns it off.
+  Scene& setAmbientOcclusion(int samples, double distance = 0.0);
 
   std::vector<Solid> objects() const;
   std::vector<Surface> surfaces() const;
@@ -142,6 +150,10 @@ class CSGRAY_API Scene {
   Vec3 background() const;
   int maxDepth() const;
   double minWeight() const;
+  int indirectSamples() const;
+  int indirectBounces() const;
+  int ambientOcclusionSamples() const;
+  double ambientOcclusionDistance() const;
   // Of the objects and the bounded surfaces.
   Bounds bounds() const;
   // What would be printed: the objects, their union when there are several.

@@ -133,6 +133,7 @@ end
 -- the origin's corner, and each cube carries two cubes tilted as the
 -- squares of the plane tree are, in a plane that turns a quarter turn
 -- about the vertical at each level, so that the tree branches in space.
+-- Each cube sinks a hundredth of its side into the one below it.
 function pythagoras_tree_3d(args)
   local name = "pythagoras_tree_3d"
   local args, level, size = compoundArguments(name, args, 5, 10, 10)
@@ -144,7 +145,11 @@ function pythagoras_tree_3d(args)
   local function tree(depth)
     local cube = box{size = {1, 1, 1}}
     if depth == level then return cube end
-    local below = tree(depth + 1):translate(-0.5, -0.5, 0):rotate(0, 0, 90):translate(0.5, 0.5, 0)
+    -- Each child sinks a hundredth of its side into its parent, so that
+    -- the two overlap rather than touch at a hair's breadth (their faces
+    -- in one plane, as the tilts leave them, only up to rounding), which
+    -- is what an export can join.
+    local below = tree(depth + 1):translate(-0.5, -0.5, -0.01):rotate(0, 0, 90):translate(0.5, 0.5, 0)
     -- Left: scaled by cos, its x axis turned up by angle, on the top's
     -- left edge; right: scaled by sin, turned down by 90° − angle, on the
     -- apex. Both centred on the top in y.

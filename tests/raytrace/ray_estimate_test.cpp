@@ -113,6 +113,23 @@ TEST(RayEstimate, BoundsTheRaysTraced) {
   EXPECT_LE(traced, estimateRays(scene, options).total());
 }
 
+// With indirect light, the paths' rays (a bound of their mean length: the
+// sure bounces and ten for the roulette) keep the estimate above what is
+// traced, and ambient occlusion's rays count as shadow rays.
+TEST(RayEstimate, IndirectLightAndOcclusionStayWithinTheEstimate) {
+  Scene scene;
+  scene.objects.push_back(Primitive::create<Sphere>(2.0));
+  scene.surfaces.push_back(Surface::plane(dvec3(0, 0, -2), dvec3(0, 0, 1)));
+  scene.indirect = IndirectLight{8, 2};
+  scene.ambientOcclusion = AmbientOcclusion{4, 1.0};
+  RenderOptions options(24, 18);
+  options.samples = 1;
+  const RayCounts rays = Renderer(scene, options).renderAll().rays;
+  const double traced = double(rays.primary + rays.shadow + rays.secondary);
+  EXPECT_GT(rays.secondary, 24u * 18u);
+  EXPECT_LE(traced, estimateRays(scene, options).total());
+}
+
 // The default limit of csgray render (cli/render_command.cpp, 1e11 rays)
 // leaves every example a wide margin: at 1024x768 with 4 samples a pixel,
 // the most the docs use, each is under a tenth of it.
