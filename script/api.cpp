@@ -389,6 +389,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   // and after the surfaces: square and rectangle are regions.
   registerRegionApi(L);
   registerSweepApi(L);
+  registerCsgApi(L);
 }
 
 }  // namespace csgray::detail
