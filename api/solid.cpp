@@ -13,6 +13,7 @@
 #include "meshio/mesh_import.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/quadric.h"
+#include "scene/hull_shapes.h"
 #include "scene/quadric_shapes.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
@@ -169,6 +170,22 @@ Solid Solid::fromMeshFile(const std::string& path, bool repair, std::string* rep
       throw std::invalid_argument("mesh: " + std::string(e.what()));
     }
   });
+}
+
+Solid Solid::hull(const std::vector<Solid>& solids) {
+  return guarded([&] { return wrap(detail::hullShape(internals(solids))); });
+}
+
+Solid Solid::minkowski(const std::vector<Solid>& solids) {
+  return guarded([&] { return wrap(detail::minkowskiShape(internals(solids))); });
+}
+
+Solid Solid::roundedBox(const Vec3& size, double r, bool center) {
+  return guarded([&] { return wrap(detail::roundedBoxShape(toDetail(size), r, center)); });
+}
+
+Solid Solid::roundedCylinder(double r, double h, double fillet, bool center) {
+  return guarded([&] { return wrap(detail::roundedCylinderShape(r, h, fillet, center)); });
 }
 
 Solid Solid::unionOf(const std::vector<Solid>& solids) {

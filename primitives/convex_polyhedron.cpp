@@ -211,12 +211,16 @@ std::string planeName(const std::string& kind, std::size_t index) {
 
 }  // namespace
 
-ConvexPolyhedron::ConvexPolyhedron(const std::vector<Plane>& planes, std::string kind)
-    : kind_(std::move(kind)) {
+namespace {
+
+// The planes with unit normals, checked: see the constructor's comment.
+std::shared_ptr<std::vector<Plane>> unitPlanes(const std::vector<Plane>& planes,
+                                               const std::string& kind_) {
   if (planes.empty()) throw std::invalid_argument(kind_ + ": needs at least one plane");
-  if (planes.size() > kMaxPlanes) {
-    throw std::invalid_argument(kind_ + ": at most " + std::to_string(kMaxPlanes) +
-                                " planes (got " + std::to_string(planes.size()) + ")");
+  if (planes.size() > ConvexPolyhedron::kMaxPlanes) {
+    throw std::invalid_argument(kind_ + ": at most " +
+                                std::to_string(ConvexPolyhedron::kMaxPlanes) + " planes (got " +
+                                std::to_string(planes.size()) + ")");
   }
   auto unit = std::make_shared<std::vector<Plane>>();
   unit->reserve(planes.size());
@@ -231,6 +235,14 @@ ConvexPolyhedron::ConvexPolyhedron(const std::vector<Plane>& planes, std::string
     // analysis relative to lengths.
     unit->push_back({q.normal / len, q.offset / len});
   }
+  return unit;
+}
+
+}  // namespace
+
+ConvexPolyhedron::ConvexPolyhedron(const std::vector<Plane>& planes, std::string kind)
+    : kind_(std::move(kind)) {
+  auto unit = unitPlanes(planes, kind_);
   Analysis a = unit->size() <= kExactPlanes ? analyse(*unit) : analyseMany(*unit);
   if (a.empty) {
     throw std::invalid_argument(kind_ +
@@ -239,6 +251,14 @@ ConvexPolyhedron::ConvexPolyhedron(const std::vector<Plane>& planes, std::string
   box_ = a.box;
   planes_ = std::move(unit);
   vertices_ = std::make_shared<const std::vector<dvec3>>(std::move(a.vertices));
+}
+
+ConvexPolyhedron::ConvexPolyhedron(const std::vector<Plane>& planes, std::vector<dvec3> vertices,
+                                   std::string kind)
+    : planes_(unitPlanes(planes, kind)), kind_(std::move(kind)) {
+  if (vertices.empty()) throw std::invalid_argument(kind_ + ": needs its vertices");
+  for (const dvec3& v : vertices) box_.include(v);
+  vertices_ = std::make_shared<const std::vector<dvec3>>(std::move(vertices));
 }
 
 void ConvexPolyhedron::objectSpans(const Ray& ray, SpanList& out) const {

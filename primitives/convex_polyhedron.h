@@ -38,6 +38,9 @@ class ConvexPolyhedron : public PrimitiveShape<ConvexPolyhedron> {
   // intersection throws std::invalid_argument naming kind (the script
   // function: "convex", "tetrahedron", ...) and the plane.
   explicit ConvexPolyhedron(const std::vector<Plane>& planes, std::string kind = "convex");
+  // A bounded polyhedron whose vertices are known (a hull's): its box is
+  // theirs and vertices() returns them, whatever the count of planes.
+  ConvexPolyhedron(const std::vector<Plane>& planes, std::vector<dvec3> vertices, std::string kind);
 
   std::string kind() const override { return kind_; }
   // The planes with unit normals, in the order given.

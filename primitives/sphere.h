@@ -10,6 +10,7 @@ class Sphere : public PrimitiveShape<Sphere> {
  public:
   explicit Sphere(double radius);
   std::string kind() const override { return "sphere"; }
+  double radius() const { return radius_; }
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;

@@ -161,10 +161,9 @@ int quadric(lua_State* L) {
 
 // ---- Booleans ---------------------------------------------------------------
 
-// Operands as f(a, b, c) or f{a, b, c}; an operand may also be a list of
-// solids, as in difference(a, holes) (the form that boolean.cpp's message
-// about deep trees recommends).
-std::vector<SolidPtr> operandArgs(lua_State* L, const std::string& function) {
+}  // namespace
+
+std::vector<SolidPtr> solidOperands(lua_State* L, const std::string& function) {
   std::vector<SolidPtr> operands;
   // The value at index: a solid, or a list of solids (one level).
   auto take = [&](int index, const std::string& what) {
@@ -198,9 +197,11 @@ std::vector<SolidPtr> operandArgs(lua_State* L, const std::string& function) {
   return operands;  // booleanShape refuses an empty list
 }
 
+namespace {
+
 template <Boolean::Op op>
 int booleanOf(lua_State* L) {
-  pushSolid(L, booleanShape(op, operandArgs(L, booleanName(op))));
+  pushSolid(L, booleanShape(op, solidOperands(L, booleanName(op))));
   return 1;
 }
 
@@ -385,6 +386,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerConvexApi(L);
   registerMeshApi(L);
   registerCheckApi(L);
+  registerHullApi(L);
   // After the solids' booleans, which union() and its kin call for solids,
   // and after the surfaces: square and rectangle are regions.
   registerRegionApi(L);

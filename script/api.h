@@ -52,6 +52,17 @@ void pushRegion(lua_State* L, RegionPtr region);
 // argument's position.
 RegionPtr regionArg(lua_State* L, int index, const char* function);
 
+// The solids a boolean-like function is given: f(a, b, c) or f{a, b, c},
+// an operand also a list of solids, as in difference(a, holes) (the form
+// that boolean.cpp's message about deep trees recommends). Lua errors name
+// the function and the operand.
+std::vector<SolidPtr> solidOperands(lua_State* L, const std::string& function);
+
+// Hulls and Minkowski sums of solids, rounded boxes and cylinders
+// (api_hull.cpp). Before registerRegionApi, whose hull() hands solids to
+// this one.
+void registerHullApi(lua_State* L);
+
 // The material{...} table at index (api_material.cpp), checked.
 MaterialPtr materialArg(lua_State* L, int index);
 // s:material{...} on a solid.

@@ -292,16 +292,20 @@ const char* opName(Region::Op op) {
                                           : "difference";
 }
 
+// Calls the solids' function that a function of regions replaced (its
+// closure's upvalue) with the same arguments.
+int solidsFunction(lua_State* L) {
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, 1);
+  return 1;
+}
+
 // union(...), difference(...), intersection(...): of regions when the
-// first operand is one, else the solids' function (the closure's upvalue).
+// first operand is one, else the solids' function.
 template <Region::Op op>
 int booleanOf(lua_State* L) {
-  if (!firstOperandIsRegion(L)) {
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_insert(L, 1);
-    lua_call(L, lua_gettop(L) - 1, 1);
-    return 1;
-  }
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
   pushRegionAs(L, Region::boolean(op, regionOperands(L, opName(op))), "region");
   return 1;
 }
@@ -546,8 +550,10 @@ int offsetMethod(lua_State* L) {
   return 1;
 }
 
-// hull(a, b, ...) or hull{a, b, ...}: the convex hull of regions.
+// hull(a, b, ...) or hull{a, b, ...}: the convex hull of regions when the
+// first operand is one, else the solids' hull (the closure's upvalue).
 int hullOf(lua_State* L) {
+  if (!firstOperandIsRegion(L)) return solidsFunction(L);
   const std::vector<RegionPtr> regions = regionOperands(L, "hull");
   double tolerance = 1e300;
   for (const RegionPtr& r : regions) tolerance = std::min(tolerance, ellipseTolerance(*r));
@@ -642,18 +648,15 @@ void registerRegionApi(lua_State* L) {
   lua_pop(L, 1);
 
   static const luaL_Reg globals[] = {
-      {"square", guarded<rectangle<true>>},
-      {"rectangle", guarded<rectangle<false>>},
-      {"circle", guarded<circle>},
-      {"ellipse", guarded<ellipse>},
-      {"polygon", guarded<polygon>},
-      {"regular_polygon", guarded<regularPolygon>},
-      {"hull", guarded<hullOf>},
+      {"square", guarded<rectangle<true>>}, {"rectangle", guarded<rectangle<false>>},
+      {"circle", guarded<circle>},          {"ellipse", guarded<ellipse>},
+      {"polygon", guarded<polygon>},        {"regular_polygon", guarded<regularPolygon>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
   registerOverSolids(L, "union", guarded<booleanOf<Region::Op::Union>>);
   registerOverSolids(L, "difference", guarded<booleanOf<Region::Op::Difference>>);
   registerOverSolids(L, "intersection", guarded<booleanOf<Region::Op::Intersection>>);
+  registerOverSolids(L, "hull", guarded<hullOf>);
 }
 
 }  // namespace csgray::detail

@@ -46,7 +46,7 @@ check_dependency() {
     [[ $file =~ $allowed ]] || fail "$file includes $name, which belongs in ${allowed//[\\^$]/}"
   done < <(grep -rlE "^#include [<\"]($pattern)" "${layers[@]}" include --include='*.h' --include='*.cpp')
 }
-check_dependency 'CGAL/' '^(export|profile)/cgal/' CGAL
+check_dependency 'CGAL/' '^(export|profile|primitives)/cgal/' CGAL
 check_dependency 'OpenMesh/|lib3mf' '^meshio/' 'OpenMesh or lib3MF'
 check_dependency 'OpenImageIO/' '^io/image_formats_module\.cpp$' OpenImageIO
 check_dependency 'lua\.|lauxlib|lualib' '^script/' Lua

@@ -85,6 +85,16 @@ class CSGRAY_API Solid {
   static Solid fromMeshFile(const std::string& path, bool repair = false,
                             std::string* repairReport = nullptr);
 
+  // ---- Hull and Minkowski (docs/script.md, "Hull and Minkowski") -------------
+  // The convex hull of shapes and unions of them.
+  static Solid hull(const std::vector<Solid>& solids);
+  // The Minkowski sum, pair by pair from the first.
+  static Solid minkowski(const std::vector<Solid>& solids);
+  // A box of outer size whose edges and corners are rounded with radius r.
+  static Solid roundedBox(const Vec3& size, double r, bool center = false);
+  // A cylinder along +z whose rims are rounded with radius fillet.
+  static Solid roundedCylinder(double r, double h, double fillet, bool center = false);
+
   // ---- Booleans --------------------------------------------------------------
   // Of at least one solid; a difference is the first minus all others.
   static Solid unionOf(const std::vector<Solid>& solids);

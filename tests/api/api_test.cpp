@@ -71,6 +71,21 @@ TEST(ApiSolid, VolumesOfShapesAreAnalytic) {
   expectVolume(Solid::ellipticCylinder(1, 1).clip(csgray::Bounds{{-2, -2, 0}, {2, 2, 5}}), 5 * kPi);
 }
 
+// Steiner's formula for a box plus a ball; Pappus's for the rounded
+// cylinder (docs/script.md, "Hull and Minkowski").
+TEST(ApiSolid, HullAndMinkowskiAreAnalytic) {
+  const double r = 0.5, a = 3, b = 2, c = 1;
+  const double rounded = a * b * c + 2 * r * (a * b + b * c + c * a) + kPi * r * r * (a + b + c) +
+                         4.0 / 3.0 * kPi * r * r * r;
+  expectVolume(Solid::minkowski({Solid::box({a, b, c}), Solid::sphere(r)}), rounded);
+  expectVolume(Solid::roundedBox({a + 2 * r, b + 2 * r, c + 2 * r}, r), rounded);
+  expectVolume(Solid::hull({Solid::box(1), Solid::box(1).translate({2, 0, 0})}), 3.0, 1e-9);
+  const double R = 2, f = 0.5, h = 4, inner = R - f;
+  expectVolume(Solid::roundedCylinder(R, h, f),
+               kPi * inner * inner * h + kPi * (R * R - inner * inner) * (h - 2 * f) +
+                   kPi * kPi * f * f * (inner + 4 * f / (3 * kPi)));
+}
+
 TEST(ApiSolid, VolumesOfBooleansAreAnalytic) {
   const Solid a = Solid::sphere(1), b = Solid::sphere(1).translate({1, 0, 0});
   // Two unit balls one radius apart share a lens of π(4r + d)(2r − d)²/12.

@@ -263,7 +263,7 @@ TEST(ScriptRegion, MistakesAreOneLineAtTheScriptsLine) {
       {"local a = square(1):contains(1)", "contains: takes x, y or {x, y} (got 1 argument)"},
       {"local a = square(1) - square(1)\nlocal lo = (a * square(1):translate(5, 5)):bounds()",
        "bounds: the region is empty"},
-      {"return hull()", "hull: needs at least one region"},
+      {"return hull()", "hull: needs at least one solid or region"},
       {"local r = square(1)\nlocal a = r.area(box(1))",
        "area: the receiver (call it as r:area(...)) must be a region, not a solid: 2D regions and "
        "solids do not mix (extrude the region first)"},
