@@ -14,6 +14,7 @@
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
 #include "scene/color_names.h"
+#include "scene/hull_shapes.h"
 #include "scene/material.h"
 #include "scene/modifiers.h"
 #include "scene/resize.h"
@@ -226,7 +227,7 @@ class Importer {
     if (n == "resize") return resize(node);
     if (n == "hull") return hullOf(node);
     if (n == "import") return importFile(node);
-    if (n == "minkowski") throw NodeError("minkowski is not supported yet");
+    if (n == "minkowski") return minkowskiOf(node);
     if (n == "text") throw NodeError("text is not supported yet");
     if (n == "projection")
       throw NodeError("projection is not supported: csgray cannot make it exactly");
@@ -502,16 +503,34 @@ class Importer {
   Shape hullOf(const CsgNode& node) {
     std::vector<Shape> shapes = children(node);
     if (shapes.empty()) return {};
+    if (std::vector<SolidPtr> solids = solidsOf(shapes); !solids.empty())
+      return {hullShape(solids), nullptr};
     std::vector<RegionPtr> regions;
-    for (const Shape& s : shapes) {
-      if (s.solid) throw NodeError("the hull of solids is not supported yet (of 2D shapes it is)");
-      regions.push_back(s.region);
-    }
+    for (const Shape& s : shapes) regions.push_back(s.region);
     double tol = 1e300;
     for (const RegionPtr& r : regions) tol = std::min(tol, tolerance(*r));
     Profile result = hull(regions, tol);
     if (result.loops.empty()) return {};
     return {nullptr, Region::leaf(std::move(result))};
+  }
+
+  // The solids of children that are all solids; none when they are all
+  // regions; an error when they are both.
+  static std::vector<SolidPtr> solidsOf(const std::vector<Shape>& shapes) {
+    std::vector<SolidPtr> solids;
+    for (const Shape& s : shapes)
+      if (s.solid) solids.push_back(s.solid);
+    if (!solids.empty() && solids.size() != shapes.size())
+      throw NodeError("mixes 2D and 3D children; extrude the 2D ones first");
+    return solids;
+  }
+
+  Shape minkowskiOf(const CsgNode& node) {
+    std::vector<Shape> shapes = children(node);
+    if (shapes.empty()) return {};
+    std::vector<SolidPtr> solids = solidsOf(shapes);
+    if (solids.empty()) throw NodeError("the Minkowski sum of 2D shapes is not supported yet");
+    return {solids.size() == 1 ? solids.front() : minkowskiShape(solids), nullptr};
   }
 
   Shape importFile(const CsgNode& node) {

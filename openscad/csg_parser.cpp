@@ -89,7 +89,8 @@ class Parser {
     node.name = name();
     if (node.name.empty() || node.name[0] == '$' ||
         std::isdigit(static_cast<unsigned char>(node.name[0])))
-      fail("expected the name of a node, found " + here());
+      fail("expected the name of a node, found " +
+           (node.name.empty() ? here() : "'" + node.name + "'"));
     expect('(', "after " + node.name);
     arguments(node);
     if (take('{')) {

@@ -35,7 +35,6 @@ std::string openscadNameHint(const std::string& name) {
        "import_csg{file=\"part.csg\"}"},
       {"surface", "OpenSCAD's surface() (height maps) is not supported in scripts"},
       {"projection", "projection() is not supported yet"},
-      {"minkowski", "minkowski() is not supported yet"},
       {"children", "a module is a Lua function here; pass the parts it works on as arguments"},
       {"len", "the length of a list is #list here"},
       {"str", "strings are joined with .. here (tostring(x) for a number)"},
