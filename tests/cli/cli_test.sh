@@ -781,8 +781,8 @@ printf 'group() {\n  cube(size = [1, 1, 1]);\n  frobnicate(r = 2);\n}\n' > "$wor
 printf 'group() {\n  cube(size = [1, 1, 1]\n' > "$work/broken.csg"
 if "$csgray" render "$work/part.csg" -o "$work/csg.png" --size 64x48 >/dev/null 2>"$work/stderr" &&
   [ -s "$work/csg.png" ]; then pass; else fail "render a .csg file"; cat "$work/stderr"; fi
-if "$csgray" export "$work/part.csg" -o "$work/csg.stl" --facets openscad >/dev/null 2>"$work/stderr" &&
-  grep -q "volume 974.019" "$work/stderr"; then pass; else fail "export a .csg file"; cat "$work/stderr"; fi
+if "$csgray" export "$work/part.csg" -o "$work/csg.stl" --facets openscad >"$work/stdout" 2>"$work/stderr" &&
+  grep -q "volume 974.019" "$work/stdout"; then pass; else fail "export a .csg file"; cat "$work/stderr"; fi
 if "$csgray" check "$work/part.csg" >/dev/null 2>"$work/stderr"; then pass; else fail "check a .csg file"; cat "$work/stderr"; fi
 expect_exit 1 "an unknown .csg node" "$work/unknown.png" render "$work/unknown.csg" -o "$work/unknown.png"
 expect_in_stderr "an unknown .csg node" "unknown.csg:3: frobnicate: unknown node"
