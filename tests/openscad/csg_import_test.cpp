@@ -343,6 +343,7 @@ const Example kExamples[] = {
     {"Old_example016", Example::Solid, 1e-4},
     {"Old_example019", Example::Solid, 0.015},
     {"Old_example023", Example::Solid, 1e-4},
+    {"Parametric_candleStand", Example::Solid, 0.01},
     {"Advanced_module_recursion", Example::Region},
     {"Functions_list_comprehensions", Example::Region},
     {"Advanced_GEB", Example::Refused, 0, "Advanced_GEB.csg:7: text: text is not supported yet"},
@@ -365,6 +366,7 @@ const Example kExamples[] = {
     {"Old_example013", Example::Refused, 0, "013.csg:3: import: example013.dxf: 2D files"},
     {"Old_example015", Example::Refused, 0, "015.csg:27: import: example009.dxf: 2D files"},
     {"Old_example021", Example::Refused, 0, "021.csg:4: projection: projection is not"},
+    {"Parametric_sign", Example::Refused, 0, "sign.csg:11: text: text is not"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Examples, OpenScadExample, ::testing::ValuesIn(kExamples),
