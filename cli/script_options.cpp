@@ -46,7 +46,8 @@ std::string seconds(double value) {
 CLI::App* addScriptCommand(CLI::App& app, const std::string& name, const std::string& description,
                            ScriptArguments& arguments) {
   CLI::App* command = app.add_subcommand(name, description);
-  command->add_option("script", arguments.script, "Lua part script")->required();
+  command->add_option("script", arguments.script, "Lua part script, or an OpenSCAD .csg file")
+      ->required();
   return command;
 }
 
@@ -60,6 +61,12 @@ void addScriptOptions(CLI::App& command, ScriptArguments& arguments) {
       .add_option("--allow-path", arguments.allowedFolders,
                   "A folder outside the script's that its files (meshes, images) may come from")
       ->check(CLI::ExistingDirectory);
+  command
+      .add_option("--facets", arguments.facets,
+                  "An OpenSCAD .csg file's circles, spheres and cylinders: exact, or the "
+                  "polygons OpenSCAD makes from $fn, $fa, $fs (openscad)")
+      ->check(CLI::IsMember({"exact", "openscad"}))
+      ->capture_default_str();
   command
       .add_option("--timeout", arguments.runTimeout,
                   "Seconds the whole command may run, script included (0: no limit)")
@@ -82,6 +89,7 @@ PartScript::PartScript(const ScriptArguments& arguments, std::string command)
     return meshTools().checkPart(solid, options);
   };
   options_.allowedFolders = arguments.allowedFolders;
+  options_.openscadFacets = arguments.facets == "openscad";
   options_.warn = printWarning;
 }
 

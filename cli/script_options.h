@@ -22,7 +22,8 @@ struct ScriptArguments {
   std::vector<std::string> defines;  // name=value
   double timeout = 60.0;             // seconds; 0: no limit
   std::vector<std::string> allowedFolders;
-  double runTimeout = 0.0;  // --timeout: seconds for the whole command; 0: no limit
+  double runTimeout = 0.0;       // --timeout: seconds for the whole command; 0: no limit
+  std::string facets = "exact";  // --facets: a .csg file's curves, exact or OpenSCAD's polygons
 };
 
 // Declares a command of app that runs a part script, with the script as

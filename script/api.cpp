@@ -11,6 +11,7 @@
 #include "engine/boolean.h"
 #include "primitives/quadric.h"
 #include "scene/modifiers.h"
+#include "scene/resize.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
 #include "script/lua_args.h"
@@ -233,6 +234,16 @@ int mirror(lua_State* L) {
   return 1;
 }
 
+// resize(x, y, z) or resize{x, y, z, auto=}: OpenSCAD's resize, scaled
+// about the origin so that the solid's bounds() get these sizes.
+int resize(lua_State* L) {
+  const SolidPtr& solid = methodReceiver(L, "resize");
+  const ResizeArgs args = resizeArgs(L, 3);
+  pushSolid(L, solid->transformed(
+                   Affine::scaling(resizeFactors(solid->bounds(), args.size, args.autoAxes))));
+  return 1;
+}
+
 // rotate(x, y, z) or rotate{x, y, z}: degrees about x, then y, then z
 // (OpenSCAD's rotate([x, y, z])); rotate{angle=a, axis={...}}: a degrees
 // about the axis.
@@ -335,6 +346,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   static const luaL_Reg methods[] = {{"material", guarded<solidMaterial>},
                                      {"bounds", guarded<bounds>},
                                      {"contains", guarded<contains>},
+                                     {"resize", guarded<resize>},
                                      {"highlight", guarded<markSolid<Modifier::Highlight>>},
                                      {"ghost", guarded<markSolid<Modifier::Ghost>>},
                                      {"disable", guarded<markSolid<Modifier::Disable>>},
@@ -379,6 +391,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   // and after the surfaces: square and rectangle are regions.
   registerRegionApi(L);
   registerSweepApi(L);
+  registerCsgApi(L);
 }
 
 }  // namespace csgray::detail

@@ -41,6 +41,11 @@ void registerCheckApi(lua_State* L);
 // "csgray.region"; and the sweeps that turn a region into a solid
 // (api_sweep.cpp): linear_extrude and rotate_extrude.
 void registerRegionApi(lua_State* L);
+// OpenSCAD's .csg files (api_csg.cpp): import_csg{file=} in a script, and
+// the scene of a .csg file opened as the part (runScriptFile). Throws
+// ScriptError "file:line: what".
+void registerCsgApi(lua_State* L);
+Scene csgFileScene(const std::string& path, const ScriptOptions& options);
 void registerSweepApi(lua_State* L);
 void pushRegion(lua_State* L, RegionPtr region);
 // The region at index, or a Lua error that names the function and the

@@ -22,6 +22,7 @@
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
 #include "scene/region_surface.h"
+#include "scene/resize.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
@@ -449,6 +450,20 @@ int scale(lua_State* L) {
   return pushMapped(L, "scale", map);
 }
 
+// resize(x, y) or resize{x, y, auto=}: OpenSCAD's resize, scaled about
+// the origin so that the region's bounds() get these sizes.
+int resize(lua_State* L) {
+  const RegionPtr& region = receiver(L, "resize");
+  const ResizeArgs args = resizeArgs(L, 2);
+  const ProfileBounds& b = region->bounds();
+  Bounds box;
+  if (!b.empty()) box = Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)};
+  const dvec3 factors = resizeFactors(box, args.size, args.autoAxes, 2);
+  Affine2 map;
+  map.linear = dmat2(factors.x, 0.0, 0.0, factors.y);
+  return pushMapped(L, "resize", map);
+}
+
 // mirror(x, y): the reflection in the line through the origin with that
 // normal, as OpenSCAD's mirror([x, y]) of a 2D shape.
 int mirror(lua_State* L) {
@@ -649,17 +664,13 @@ RegionPtr regionArg(lua_State* L, int index, const char* function) {
 
 void registerRegionApi(lua_State* L) {
   newMetatable<RegionPtr>(L);
-  static const luaL_Reg methods[] = {{"translate", guarded<translate>},
-                                     {"rotate", guarded<rotate>},
-                                     {"scale", guarded<scale>},
-                                     {"mirror", guarded<mirror>},
-                                     {"transform", guarded<transform>},
-                                     {"material", guarded<material>},
-                                     {"offset", guarded<offsetMethod>},
-                                     {"area", guarded<areaMethod>},
-                                     {"bounds", guarded<bounds>},
-                                     {"contains", guarded<contains>},
-                                     {nullptr, nullptr}};
+  static const luaL_Reg methods[] = {
+      {"translate", guarded<translate>}, {"rotate", guarded<rotate>},
+      {"scale", guarded<scale>},         {"resize", guarded<resize>},
+      {"mirror", guarded<mirror>},       {"transform", guarded<transform>},
+      {"material", guarded<material>},   {"offset", guarded<offsetMethod>},
+      {"area", guarded<areaMethod>},     {"bounds", guarded<bounds>},
+      {"contains", guarded<contains>},   {nullptr, nullptr}};
   luaL_newlib(L, methods);
   lua_setfield(L, -2, "__index");
   static const luaL_Reg operators[] = {

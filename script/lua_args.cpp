@@ -105,6 +105,50 @@ void checkArgumentCount(lua_State* L, const std::string& function, int count, in
       " (got " + std::to_string(given) + ")");
 }
 
+ResizeArgs resizeArgs(lua_State* L, int dims) {
+  const std::string forms =
+      dims == 3 ? "x, y, z or {x, y, z, auto=...}" : "x, y or {x, y, auto=...}";
+  ResizeArgs r;
+  const int given = lua_gettop(L) - 1;
+  if (given == dims) {
+    for (int i = 0; i < dims; ++i) r.size[i] = toNumber(L, 2 + i, "resize: size");
+    return r;
+  }
+  if (given != 1 || lua_type(L, 2) != LUA_TTABLE)
+    throw std::invalid_argument("resize: takes " + forms);
+  if (lua_rawlen(L, 2) != lua_Unsigned(dims))
+    throw std::invalid_argument("resize: takes " + forms + " (" + std::to_string(dims) + " sizes)");
+  for (int i = 0; i < dims; ++i) {
+    lua_rawgeti(L, 2, i + 1);
+    r.size[i] = toNumber(L, -1, "resize: size[" + std::to_string(i + 1) + "]");
+    lua_pop(L, 1);
+  }
+  // The sizes are the list part; auto is the one named parameter.
+  lua_getfield(L, 2, "auto");
+  if (lua_type(L, -1) == LUA_TBOOLEAN) {
+    r.autoAxes.fill(lua_toboolean(L, -1));
+  } else if (lua_type(L, -1) == LUA_TTABLE && lua_rawlen(L, -1) == lua_Unsigned(dims)) {
+    for (int i = 0; i < dims; ++i) {
+      lua_rawgeti(L, -1, i + 1);
+      if (lua_type(L, -1) != LUA_TBOOLEAN)
+        throw std::invalid_argument("resize: auto must be true, false or a list of them");
+      r.autoAxes[i] = lua_toboolean(L, -1);
+      lua_pop(L, 1);
+    }
+  } else if (!lua_isnil(L, -1)) {
+    throw std::invalid_argument("resize: auto must be true, false or a list of them");
+  }
+  lua_pop(L, 1);
+  lua_pushnil(L);
+  while (lua_next(L, 2)) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) != "auto")
+      throw std::invalid_argument("resize: unknown parameter '" + shortened(lua_tostring(L, -1)) +
+                                  "' (it takes auto=)");
+  }
+  return r;
+}
+
 // Does the table at index have a string key (a named parameter)?
 bool hasStringKey(lua_State* L, int index) {
   lua_pushnil(L);

@@ -3,6 +3,7 @@
 // Unknown parameter names are errors: a typo must not be silently ignored.
 #pragma once
 
+#include <array>
 #include <lua.hpp>
 #include <optional>
 #include <set>
@@ -46,6 +47,16 @@ std::string shortened(const std::string& text, std::size_t length = kShownLength
 // (2 for a method, whose receiver is 1): "sphere: takes 1 argument (got
 // 2)". An extra argument is a mistake, never something to ignore.
 void checkArgumentCount(lua_State* L, const std::string& function, int count, int first = 1);
+
+// The arguments of s:resize: the new sizes (dims of them; 0 keeps an
+// axis) and which axes `auto` scales with the others, from f(x, y[, z]) or
+// f{x, y[, z], auto=true or {bx, by[, bz]}} at index 2 on. The method is
+// "resize" in messages.
+struct ResizeArgs {
+  dvec3 size{0.0};
+  std::array<bool, 3> autoAxes{false, false, false};
+};
+ResizeArgs resizeArgs(lua_State* L, int dims);
 
 // Does the table at index have a key that is a string (a named parameter)?
 bool hasStringKey(lua_State* L, int index);

@@ -1,6 +1,7 @@
 #include "script/sandbox.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "scene/value_checks.h"
 #include "script/lua_args.h"
+#include "script/openscad_habits.h"
 #include "script/standard_library.h"
 
 namespace csgray::detail {
@@ -70,12 +72,7 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
   std::string nearest;
   std::size_t best = 3;
   if (kind == "global") {
-    if (name == "cube") return "; OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here";
-    for (const char* transform : {"translate", "rotate", "scale", "mirror", "multmatrix"})
-      if (name == transform)
-        return "; transforms are methods of a solid here: s:" +
-               std::string(name == "multmatrix" ? "transform" : name) + "(...)";
-    if (name == "color") return "; a colour is a material here: s:material{color={r, g, b}}";
+    if (std::string hint = openscadNameHint(name); !hint.empty()) return hint;
     lua_pushglobaltable(L);
     nearestFunction(L, name, nearest, best);
     lua_pop(L, 1);
@@ -92,14 +89,31 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
     }
     lua_pop(L, 1);  // the global table
   } else if (kind == "method") {
+    // The types that have a method of that very name ("csgray.solid"):
+    // the receiver is of another type.
+    std::vector<std::string> owners;
     lua_pushnil(L);
     while (lua_next(L, LUA_REGISTRYINDEX) != 0) {
       if (lua_type(L, -2) == LUA_TSTRING && lua_istable(L, -1)) {
         lua_pushliteral(L, "__index");
-        if (lua_rawget(L, -2) == LUA_TTABLE) nearestFunction(L, name, nearest, best);
+        if (lua_rawget(L, -2) == LUA_TTABLE) {
+          nearestFunction(L, name, nearest, best);
+          lua_pushlstring(L, name.data(), name.size());
+          if (lua_rawget(L, -2) == LUA_TFUNCTION) owners.push_back(lua_tostring(L, -4));
+          lua_pop(L, 1);
+        }
         lua_pop(L, 1);  // __index
       }
       lua_pop(L, 1);  // the registry's value
+    }
+    if (!owners.empty()) {
+      std::sort(owners.begin(), owners.end());
+      std::string list;
+      for (std::string owner : owners) {
+        if (owner.starts_with("csgray.")) owner.erase(0, 7);
+        list += (list.empty() ? "" : ", ") + owner;
+      }
+      return "; " + name + " is a method of another kind of value (" + list + "), not of this one";
     }
   }
   return nearest.empty() ? "" : "; did you mean " + nearest + "?";
@@ -118,6 +132,19 @@ std::string withShortNames(std::string message) {
     }
   }
   return message;
+}
+
+// The line "chunk:12: ..." names, or 0.
+int errorLine(const std::string& message, const std::string& chunkName) {
+  const std::string prefix = chunkName + ":";
+  if (!message.starts_with(prefix)) return 0;
+  int line = 0;
+  for (std::size_t i = prefix.size();
+       i < message.size() && std::isdigit(static_cast<unsigned char>(message[i])) &&
+       line < 100'000'000;
+       ++i)
+    line = line * 10 + (message[i] - '0');
+  return line;
 }
 
 // The number of frames on the stack: the highest level lua_getstack finds.
@@ -461,6 +488,7 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   int base = handler;
   chunkName_ = std::make_shared<const std::string>(chunkName);
   int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
+  const bool syntaxError = status == LUA_ERRSYNTAX;
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, handler);
   // A script that reached a limit has failed, also when no error reached
   // here: Lua retries a refused allocation after a full collection, and the
@@ -474,7 +502,14 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
     message = lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
                   ? lua_tostring(L_, -1)
                   : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
-    message = withShortNames(message) + unknownCallHint(L_, message);
+    std::string hint = unknownCallHint(L_, message);
+    // Else what an OpenSCAD user may have meant on the line of the error.
+    if (hint.empty() || hint.starts_with("; did you mean"))
+      if (std::string habit =
+              openscadLineHint(lineOf(source, errorLine(message, chunkName)), syntaxError);
+          !habit.empty())
+        hint = habit;
+    message = withShortNames(message) + hint;
   }
   lua_settop(L_, base);
   // Every message names the script, also those Lua gives without a

@@ -123,6 +123,14 @@ std::string readScriptText(const std::string& path) {
 }  // namespace
 
 Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".csg") {
+    ScriptOptions withFolder = options;
+    withFolder.folder = std::filesystem::path(path).parent_path().string();
+    if (withFolder.folder.empty()) withFolder.folder = ".";
+    return csgFileScene(path, withFolder);
+  }
   const std::string text = readScriptText(path);
   ScriptOptions withFolder = options;
   withFolder.folder = std::filesystem::path(path).parent_path().string();

@@ -46,6 +46,10 @@ struct ScriptOptions {
   // Checks a solid's export against it for check(solid, options)
   // (checkPart of check/part_check.h fits); without it, check() is an error.
   std::function<CheckReport(const Solid& solid, const CheckOptions& options)> checkSolid;
+  // OpenSCAD's .csg files (a path ending in .csg, import_csg{}): make
+  // circles, spheres and cylinders the polygons OpenSCAD makes from $fn,
+  // $fa and $fs (--facets openscad) rather than exact.
+  bool openscadFacets = false;
   // Receives what the script should be told but does not stop it, such as
   // what mesh{repair=true} repaired; without it these are dropped.
   std::function<void(const std::string& message)> warn;
@@ -64,7 +68,8 @@ class DefineError : public ScriptError {
   using ScriptError::ScriptError;
 };
 
-// Runs the script file at path. Throws ScriptError.
+// Runs the script file at path; a path ending in .csg (any case) is an
+// OpenSCAD .csg file, imported (openscad/csg_import.h). Throws ScriptError.
 Scene runScriptFile(const std::string& path, const ScriptOptions& options = {});
 // Runs source text; chunkName is used in messages in place of a file name.
 Scene runScript(const std::string& source, const std::string& chunkName,

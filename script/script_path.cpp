@@ -10,8 +10,13 @@
 namespace csgray::detail {
 
 std::string scriptFile(lua_State* L, const std::string& function, const std::string& name) {
-  namespace fs = std::filesystem;
   const ScriptOptions& options = scriptOptionsOf(L);
+  return allowedFile(function, name, options.folder, options);
+}
+
+std::string allowedFile(const std::string& function, const std::string& name,
+                        const std::string& relativeTo, const ScriptOptions& options) {
+  namespace fs = std::filesystem;
   if (name.empty()) throw std::invalid_argument(function + ": file is empty");
   // The file system would stop at a NUL byte: "a.png\0/../../x" would open
   // a.png, and messages would be cut short there.
@@ -19,7 +24,7 @@ std::string scriptFile(lua_State* L, const std::string& function, const std::str
     throw std::invalid_argument(function + ": file name contains a NUL byte");
   try {
     fs::path folder = fs::weakly_canonical(fs::absolute(options.folder));
-    fs::path file = fs::weakly_canonical(folder / fs::path(name));
+    fs::path file = fs::weakly_canonical(fs::absolute(relativeTo) / fs::path(name));
     auto inside = [&file](const fs::path& dir) {
       auto [end, _] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
       return end == dir.end();

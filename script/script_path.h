@@ -5,11 +5,19 @@
 #include <lua.hpp>
 #include <string>
 
+#include "script/script.h"
+
 namespace csgray::detail {
 
 // A file named by the script for `function` (e.g. "mesh"): relative to the
 // script's folder, and not outside it or the --allow-path folders; throws
 // std::invalid_argument otherwise.
 std::string scriptFile(lua_State* L, const std::string& function, const std::string& name);
+
+// The same rule without a script running: name relative to the folder
+// `relativeTo`, which must lead into options.folder or one of
+// options.allowedFolders (a file named in a .csg file).
+std::string allowedFile(const std::string& function, const std::string& name,
+                        const std::string& relativeTo, const ScriptOptions& options);
 
 }  // namespace csgray::detail

@@ -9,7 +9,7 @@ set -u
 cd "$1" || exit 2
 
 # Bottom to top.
-layers=(engine tessellation profile primitives scene raytrace io export meshio check script view api cli)
+layers=(engine tessellation profile primitives scene raytrace io openscad export meshio check script view api cli)
 rank() {
   local i
   for i in "${!layers[@]}"; do [[ ${layers[$i]} == "$1" ]] && echo "$i" && return; done

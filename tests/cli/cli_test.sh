@@ -787,5 +787,22 @@ expect_in_stderr "a collinear polygon" \
 if "$csgray" render "$work/plate2d.lua" -o "$work/plate.png" --size 64x48 >/dev/null 2>"$work/stderr" &&
   [ -s "$work/plate.png" ]; then pass; else fail "render a region"; cat "$work/stderr"; fi
 
+
+# OpenSCAD's .csg files open as parts, exact or with OpenSCAD's facets;
+# a bad one is one line naming the file and line, and writes nothing.
+printf 'difference() {\n  cube(size = [10, 10, 10]);\n  cylinder($fn = 6, h = 30, r1 = 2, r2 = 2, center = true);\n}\n' > "$work/part.csg"
+printf 'group() {\n  cube(size = [1, 1, 1]);\n  frobnicate(r = 2);\n}\n' > "$work/unknown.csg"
+printf 'group() {\n  cube(size = [1, 1, 1]\n' > "$work/broken.csg"
+if "$csgray" render "$work/part.csg" -o "$work/csg.png" --size 64x48 >/dev/null 2>"$work/stderr" &&
+  [ -s "$work/csg.png" ]; then pass; else fail "render a .csg file"; cat "$work/stderr"; fi
+if "$csgray" export "$work/part.csg" -o "$work/csg.stl" --facets openscad >"$work/stdout" 2>"$work/stderr" &&
+  grep -q "volume 974.019" "$work/stdout"; then pass; else fail "export a .csg file"; cat "$work/stderr"; fi
+if "$csgray" check "$work/part.csg" >/dev/null 2>"$work/stderr"; then pass; else fail "check a .csg file"; cat "$work/stderr"; fi
+expect_exit 1 "an unknown .csg node" "$work/unknown.png" render "$work/unknown.csg" -o "$work/unknown.png"
+expect_in_stderr "an unknown .csg node" "unknown.csg:3: frobnicate: unknown node"
+expect_exit 1 "a broken .csg file" "$work/broken.stl" export "$work/broken.csg" -o "$work/broken.stl"
+expect_in_stderr "a broken .csg file" "broken.csg:3: expected ',' or ')' between the arguments of cube, found the end of the file"
+expect_failure "a bad --facets" "" export "$work/part.csg" -o "$work/facets.stl" --facets round
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

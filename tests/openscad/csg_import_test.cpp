@@ -1,0 +1,376 @@
+// OpenSCAD's .csg files (docs/openscad.md): the parser reads the format and
+// says where it is broken; each node makes the solid or region OpenSCAD
+// means, exact or with OpenSCAD's own polygons; and OpenSCAD's bundled
+// examples (tests/data/openscad/) import, render and export with OpenSCAD's
+// volumes.
+#include "openscad/csg_import.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "engine/boolean.h"
+#include "export/cgal/mesh_boolean.h"
+#include "profile/region_evaluation.h"
+#include "raytrace/renderer.h"
+#include "script/script.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+using std::numbers::pi;
+
+std::string parseError(const std::string& text) {
+  try {
+    parseCsg(text, "part.csg");
+  } catch (const CsgError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(CsgParser, ReadsNodesArgumentsAndModifiers) {
+  const std::vector<CsgNode> nodes = parseCsg(
+      "group() {\n"
+      "  // a comment\n"
+      "  %cube(size = [1, 2.5e1, -3], center = true);\n"
+      "  multmatrix([[1, 0], [0, 1]]) { #sphere($fn = 0, r = 5); }\n"
+      "  import(file = \"a \\\"b\\\".stl\", layer = undef);\n"
+      "}\n",
+      "part.csg");
+  ASSERT_EQ(nodes.size(), 1u);
+  const CsgNode& group = nodes[0];
+  EXPECT_EQ(group.name, "group");
+  ASSERT_EQ(group.children.size(), 3u);
+  const CsgNode& cube = group.children[0];
+  EXPECT_EQ(cube.modifier, '%');
+  EXPECT_EQ(cube.line, 3);
+  const CsgValue& size = cube.named.at("size");
+  ASSERT_EQ(size.items.size(), 3u);
+  EXPECT_EQ(size.items[1].number, 25.0);
+  EXPECT_EQ(size.items[2].number, -3.0);
+  EXPECT_TRUE(cube.named.at("center").boolean);
+  const CsgNode& matrix = group.children[1];
+  EXPECT_EQ(matrix.positional.size(), 1u);
+  EXPECT_EQ(matrix.children.at(0).modifier, '#');
+  EXPECT_EQ(matrix.children.at(0).named.at("$fn").number, 0.0);
+  const CsgNode& import = group.children[2];
+  EXPECT_EQ(import.named.at("file").text, "a \"b\".stl");
+  EXPECT_EQ(import.named.at("layer").kind, CsgValue::Kind::Undef);
+  EXPECT_EQ(import.line, 5);
+}
+
+TEST(CsgParser, BadInputIsOneLineWithTheLine) {
+  EXPECT_EQ(parseError("group() {\n  cube(size = [1, 1, 1]\n}\n"),
+            "part.csg:3: expected ',' or ')' between the arguments of cube, found '}'");
+  EXPECT_EQ(parseError("group() {\n  cube();\n"), "part.csg:3: the { of group is not closed");
+  EXPECT_EQ(parseError("cube(size = 1x);"),
+            "part.csg:1: expected ',' or ')' between the arguments of cube, found 'x'");
+  EXPECT_EQ(parseError("\n\ncube(size = @);"), "part.csg:3: expected a value, found '@'");
+  EXPECT_EQ(parseError("text(text = \"hi);"), "part.csg:1: a string is not closed");
+  EXPECT_EQ(parseError("cube(r = 1, r = 2);"), "part.csg:1: cube: r is given twice");
+  EXPECT_EQ(parseError("12(r = 1);"), "part.csg:1: expected the name of a node, found '12'");
+  EXPECT_EQ(parseError("cube()"),
+            "part.csg:1: expected ';' or '{' after cube(...), found the end of the file");
+  EXPECT_EQ(parseError(std::string(2000, '[')),
+            "part.csg:1: expected the name of a node, found '['");
+  EXPECT_EQ(parseError("cube(size = " + std::string(2000, '[') + ");"),
+            "part.csg:1: vectors nested deeper than 1000");
+}
+
+CsgModel importText(const std::string& text, CsgFacets facets = CsgFacets::Exact) {
+  CsgImportOptions options;
+  options.facets = facets;
+  return importCsg(text, "part.csg", options);
+}
+
+std::string importError(const std::string& text) {
+  try {
+    importText(text);
+  } catch (const CsgError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+double exportedVolume(const SolidPtr& solid) { return meshOfSolid(*solid, 1e-4).mesh.volume(); }
+
+SolidPtr onlySolid(const std::string& text, CsgFacets facets = CsgFacets::Exact) {
+  CsgModel model = importText(text, facets);
+  EXPECT_EQ(model.solids.size(), 1u) << text;
+  return model.solids.at(0);
+}
+
+TEST(CsgImport, PrimitivesAreExactByDefault) {
+  const char* sphere = "sphere($fn = 0, $fa = 12, $fs = 2, r = 5);";
+  EXPECT_NEAR(exportedVolume(onlySolid(sphere)), 4.0 / 3.0 * pi * 125.0, 0.05);
+  EXPECT_TRUE(onlySolid(sphere)->contains({0.0, 0.0, 4.999}));
+  const char* cone = "cylinder($fn = 0, $fa = 12, $fs = 2, h = 6, r1 = 3, r2 = 0, center = true);";
+  EXPECT_NEAR(exportedVolume(onlySolid(cone)), pi * 9.0 * 6.0 / 3.0, 0.02);
+  EXPECT_TRUE(onlySolid(cone)->contains({2.99, 0.0, -2.999}));
+  const Bounds box = onlySolid("cube(size = [1, 2, 3], center = true);")->bounds();
+  test::expectVecNear(box.lo, {-0.5, -1, -1.5}, 1e-12);
+}
+
+TEST(CsgImport, OpenScadFacetsAreOpenScadsPolygons) {
+  // OpenSCAD's circle of r = 10 with the default $fa = 12, $fs = 2 has
+  // min(360/12, 2π·10/2) = 30 sides: a 30-gon's area.
+  EXPECT_EQ(openscadFragments(10.0, 0.0, 12.0, 2.0), 30);
+  EXPECT_EQ(openscadFragments(1.0, 0.0, 12.0, 2.0), 5);
+  EXPECT_EQ(openscadFragments(1.0, 2.0, 12.0, 2.0), 3);
+  EXPECT_EQ(openscadFragments(1.0, 64.0, 12.0, 2.0), 64);
+  const SolidPtr cylinder =
+      onlySolid("cylinder($fn = 0, $fa = 12, $fs = 2, h = 2, r1 = 10, r2 = 10, center = false);",
+                CsgFacets::OpenScad);
+  EXPECT_NEAR(exportedVolume(cylinder), 2.0 * 15.0 * 100.0 * std::sin(2.0 * pi / 30.0), 1e-9);
+  // A corner at (r, 0), as OpenSCAD puts it.
+  EXPECT_TRUE(cylinder->contains({9.999, 0.0, 1.0}));
+  EXPECT_FALSE(cylinder->contains({0.0, 9.99, 1.0}));
+  // OpenSCAD's sphere of $fn = 8: 4 rings of octagons at latitudes
+  // 22.5°·(2i + 1), a polyhedron whose volume is its frusta's.
+  const SolidPtr sphere = onlySolid("sphere($fn = 8, r = 1);", CsgFacets::OpenScad);
+  double volume = 0.0;
+  auto octagon = [](double r) { return 4.0 * r * r * std::sin(pi / 4.0); };
+  for (int i = 0; i < 3; ++i) {
+    const double a = pi * (i + 0.5) / 4.0, b = pi * (i + 1.5) / 4.0;
+    const double ra = std::sin(a), rb = std::sin(b), h = std::cos(a) - std::cos(b);
+    // A frustum of similar octagons: h/3 (A1 + A2 + √(A1·A2)).
+    volume += h / 3.0 * (octagon(ra) + octagon(rb) + std::sqrt(octagon(ra) * octagon(rb)));
+  }
+  EXPECT_NEAR(exportedVolume(sphere), volume, 1e-9);
+}
+
+TEST(CsgImport, ALowFnIsAShapeEitherWay) {
+  // cylinder($fn = 6): a hexagonal prism, exact as such.
+  for (CsgFacets facets : {CsgFacets::Exact, CsgFacets::OpenScad}) {
+    const SolidPtr hex =
+        onlySolid("cylinder($fn = 6, h = 1, r1 = 2, r2 = 2, center = false);", facets);
+    EXPECT_NEAR(exportedVolume(hex), 1.5 * std::sqrt(3.0) * 4.0, 1e-9);
+    CsgModel model = importText("circle($fn = 6, r = 2);", facets);
+    ASSERT_EQ(model.regions.size(), 1u);
+    EXPECT_NEAR(area(evaluate(*model.regions[0], 1e-9)), 1.5 * std::sqrt(3.0) * 4.0, 1e-9);
+  }
+  // A $fn above kShapeFacets is a quality setting: exact.
+  EXPECT_NEAR(exportedVolume(onlySolid("cylinder($fn = 13, h = 1, r1 = 1, r2 = 1);")), pi, 1e-3);
+}
+
+TEST(CsgImport, BooleansTransformsAndSweeps) {
+  const SolidPtr part = onlySolid(
+      "difference() {\n"
+      "  cube(size = [10, 10, 10]);\n"
+      "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {\n"
+      "    cylinder($fn = 4, h = 12, r1 = 2, r2 = 2);\n"
+      "  }\n"
+      "  group();\n"
+      "}\n");
+  // A square hole of diagonal 4: area 8.
+  EXPECT_NEAR(exportedVolume(part), 1000.0 - 80.0, 1e-9);
+  const SolidPtr extruded = onlySolid(
+      "linear_extrude(height = 4, center = true, convexity = 1, scale = [0, 0]) {\n"
+      "  offset(delta = 1, chamfer = false) { square(size = [2, 2], center = true); }\n"
+      "}\n");
+  EXPECT_NEAR(exportedVolume(extruded), 16.0 * 4.0 / 3.0, 1e-9);  // a pyramid
+  const SolidPtr ring = onlySolid(
+      "rotate_extrude(angle = 360, convexity = 2) {\n"
+      "  multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+      "    square(size = [1, 1], center = true);\n"
+      "  }\n"
+      "}\n");
+  EXPECT_NEAR(exportedVolume(ring), 2.0 * pi * 3.0, 1e-3);  // Pappus
+  const SolidPtr resized = onlySolid(
+      "resize(newsize = [4, 0, 0], auto = [false, true, false]) { cube(size = [2, 2, 2]); }");
+  test::expectVecNear(resized->bounds().hi, {4, 4, 2}, 1e-12);
+  const SolidPtr hulled = onlySolid(
+      "hull() { cube(size = [1, 1, 1]); multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], "
+      "[0, 0, 1, 0], [0, 0, 0, 1]]) { cube(size = [1, 1, 1]); } }");
+  EXPECT_NEAR(exportedVolume(hulled), 4.0, 1e-9);
+}
+
+TEST(CsgImport, ColourAndModifiers) {
+  const std::string text =
+      "difference() {\n"
+      "  color([1, 0, 0, 0.5]) { cube(size = [10, 10, 10]); }\n"
+      "  %sphere(r = 3);\n"
+      "  #cylinder(h = 30, r1 = 1, r2 = 1, center = true);\n"
+      "  *cube(size = [20, 20, 20]);\n"
+      "}\n";
+  std::ofstream(testing::TempDir() + "/modifiers.csg") << text;
+  const Scene scene = runScriptFile(testing::TempDir() + "/modifiers.csg");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.ghosts.size(), 1u);
+  EXPECT_EQ(scene.highlights.size(), 1u);
+  // The ghost cuts nothing, the highlighted cylinder cuts its hole (a
+  // quarter of it is in the cube).
+  EXPECT_NEAR(exportedVolume(scene.objects[0]), 1000.0 - 2.5 * pi, 0.01);
+  EXPECT_TRUE(scene.objects[0]->contains({1.0, 1.0, 1.0}));
+}
+
+TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
+  EXPECT_EQ(importError("group() {\n  frobnicate(r = 1);\n}"),
+            "part.csg:2: frobnicate: unknown node");
+  EXPECT_EQ(importError("text(text = \"hi\", size = 10);"),
+            "part.csg:1: text: text is not supported yet");
+  EXPECT_EQ(importError("\nprojection(cut = false) { cube(size = 1); }"),
+            "part.csg:2: projection: projection is not supported: csgray cannot make it exactly");
+  EXPECT_EQ(importError("surface(file = \"x.dat\");"),
+            "part.csg:1: surface: surface (height maps) is not supported yet");
+  EXPECT_EQ(importError("import(file = \"x.dxf\");"),
+            "part.csg:1: import: x.dxf: 2D files (DXF, SVG) cannot be imported yet");
+  EXPECT_EQ(importError("union() { cube(size = 1); square(size = 1); }"),
+            "part.csg:1: union: mixes 2D and 3D children; extrude the 2D ones first");
+  EXPECT_EQ(importError("cube(size = \"big\");"),
+            "part.csg:1: cube: size must be a vector of numbers");
+  EXPECT_EQ(
+      importError("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = [[0, 1, 2]]);")
+          .substr(0, 25),
+      "part.csg:1: polyhedron: p");
+  EXPECT_EQ(importError("sphere($fa = 0, r = 1);"), "part.csg:1: sphere: $fa and $fs must be > 0");
+  EXPECT_EQ(
+      importError("multmatrix([[1, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0]]) { square(size = 1); }"),
+      "part.csg:1: multmatrix: moves a 2D shape out of the plane z = 0; extrude it first");
+}
+
+// ---- OpenSCAD's examples -------------------------------------------------------
+
+const std::string kData = CSGRAY_SOURCE_DIR "/tests/data/openscad/";
+
+std::map<std::string, double> referenceVolumes() {
+  std::map<std::string, double> volumes;
+  std::ifstream in(kData + "volumes.txt");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string name;
+    double volume;
+    fields >> name >> volume;
+    volumes[name] = volume;
+  }
+  return volumes;
+}
+
+Scene exampleScene(const std::string& name, bool openscadFacets) {
+  ScriptOptions options = test::exampleOptions();
+  options.openscadFacets = openscadFacets;
+  return runScriptFile(kData + name + ".csg", options);
+}
+
+// What each example makes here: a solid (imported, rendered and exported,
+// its volume held against OpenSCAD's), a 2D region (imported and
+// rendered), or an error (what is missing, named at its line).
+struct Example {
+  const char* name;
+  enum { Solid, Region, Refused } kind;
+  // Solid: the largest relative difference of the exact import's volume
+  // from OpenSCAD's, which OpenSCAD's polygons explain (its circles are
+  // inside the true ones: its volumes are smaller). Refused: the error.
+  double exactSlack = 0.0;
+  const char* error = "";
+};
+
+class OpenScadExample : public ::testing::TestWithParam<Example> {};
+
+TEST_P(OpenScadExample, ImportsRendersAndExports) {
+  const Example& example = GetParam();
+  if (example.kind == Example::Refused) {
+    std::string error;
+    try {
+      exampleScene(example.name, false);
+    } catch (const ScriptError& e) {
+      error = e.what();
+    }
+    EXPECT_NE(error.find(example.error), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    return;
+  }
+  const Scene facets = exampleScene(example.name, true);
+  RenderResult image = [&] {
+    RenderOptions options(64, 48, 0);
+    options.depthAov = true;
+    return Renderer(facets, options).renderAll();
+  }();
+  int hit = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) hit += std::isfinite(image.depth.at(x, y).x);
+  EXPECT_GT(hit, 10);  // the part is seen (some are long and thin)
+  if (example.kind == Example::Region) {
+    EXPECT_TRUE(facets.objects.empty());
+    EXPECT_FALSE(facets.surfaces.empty());
+    return;
+  }
+  const double reference = referenceVolumes().at(example.name);
+  ASSERT_FALSE(facets.objects.empty());
+  const PartMesh withFacets = meshOfSolid(*unionOf(facets.objects), 0.01);
+  EXPECT_FALSE(withFacets.mesh.empty());
+  EXPECT_NEAR(withFacets.mesh.volume(), reference, 1e-3 * reference) << "with OpenSCAD's facets";
+  const Scene exact = exampleScene(example.name, false);
+  const double exactVolume = meshOfSolid(*unionOf(exact.objects), 0.01).mesh.volume();
+  EXPECT_NEAR(exactVolume, reference, example.exactSlack * reference) << "exact";
+}
+
+std::string exampleTestName(const ::testing::TestParamInfo<Example>& info) {
+  std::string name = info.param.name;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+// The exact import's volume is larger than OpenSCAD's where the model
+// adds round parts, smaller where it subtracts them (Old_example004 cuts a
+// ball out of a cube), by up to what OpenSCAD's coarse default polygons
+// leave out: a 5-gon for Functions_functions' unit balls.
+const Example kExamples[] = {
+    {"Advanced_animation", Example::Solid, 0.02},
+    {"Advanced_assert", Example::Solid, 1e-3},
+    {"Advanced_offset", Example::Solid, 1e-3},
+    {"Basics_CSG-modules", Example::Solid, 2e-3},
+    {"Basics_CSG", Example::Solid, 0.01},
+    {"Basics_logo", Example::Solid, 5e-3},
+    {"Functions_functions", Example::Solid, 0.2},
+    {"Old_example001", Example::Solid, 0.03},
+    {"Old_example002", Example::Solid, 0.01},
+    {"Old_example003", Example::Solid, 1e-4},
+    {"Old_example004", Example::Solid, 0.07},
+    {"Old_example005", Example::Solid, 0.01},
+    {"Old_example006", Example::Solid, 2e-3},
+    {"Old_example011", Example::Solid, 1e-4},
+    {"Old_example012", Example::Solid, 0.02},
+    {"Old_example014", Example::Solid, 1e-4},
+    {"Old_example016", Example::Solid, 1e-4},
+    {"Old_example019", Example::Solid, 0.015},
+    {"Old_example023", Example::Solid, 1e-4},
+    {"Parametric_candleStand", Example::Solid, 0.01},
+    {"Advanced_module_recursion", Example::Region},
+    {"Functions_list_comprehensions", Example::Region},
+    {"Advanced_GEB", Example::Refused, 0, "Advanced_GEB.csg:7: text: text is not supported yet"},
+    {"Advanced_children", Example::Refused, 0, "Advanced_children.csg:187: text: text is not"},
+    {"Advanced_children_indexed", Example::Refused, 0, "indexed.csg:6: text: text is not"},
+    {"Advanced_surface_image", Example::Refused, 0, "image.csg:4: projection: projection is not"},
+    {"Basics_LetterBlock", Example::Refused, 0, "LetterBlock.csg:8: text: text is not"},
+    {"Basics_logo_and_text", Example::Refused, 0, "and_text.csg:25: text: text is not"},
+    {"Basics_projection", Example::Refused, 0, "projection.csg:7: projection: projection is not"},
+    {"Basics_rotate_extrude", Example::Refused, 0, "rotate_extrude.csg:11: text: text is not"},
+    {"Basics_text_on_cube", Example::Refused, 0, "on_cube.csg:10: text: text is not"},
+    {"Functions_echo", Example::Refused, 0, "Functions_echo.csg: the file makes nothing to show"},
+    {"Functions_polygon_areas", Example::Refused, 0, "areas.csg:3: text: text is not"},
+    {"Functions_recursion", Example::Refused, 0, "recursion.csg:2: text: text is not"},
+    {"Old_example007", Example::Refused, 0,
+     "007.csg:5: import: example007.dxf: 2D files (DXF, SVG)"},
+    {"Old_example008", Example::Refused, 0, "008.csg:5: import: example008.dxf: 2D files"},
+    {"Old_example009", Example::Refused, 0, "009.csg:2: import: example009.dxf: 2D files"},
+    {"Old_example010", Example::Refused, 0, "010.csg:2: surface: surface (height maps) is not"},
+    {"Old_example013", Example::Refused, 0, "013.csg:3: import: example013.dxf: 2D files"},
+    {"Old_example015", Example::Refused, 0, "015.csg:27: import: example009.dxf: 2D files"},
+    {"Old_example021", Example::Refused, 0, "021.csg:4: projection: projection is not"},
+    {"Parametric_sign", Example::Refused, 0, "sign.csg:11: text: text is not"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Examples, OpenScadExample, ::testing::ValuesIn(kExamples),
+                         exampleTestName);
+
+}  // namespace
+}  // namespace csgray::detail

@@ -1,0 +1,133 @@
+// What OpenSCAD users bring along: each habit that Lua refuses gets a
+// one-line error at the script's line naming the csgray way (docs/script.md,
+// "Coming from OpenSCAD"), and resize() sizes a part as OpenSCAD's does.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "script/script.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+void expectHint(const std::string& source, const std::string& expected) {
+  const std::string e = test::scriptError(source);
+  EXPECT_NE(e.find(expected), std::string::npos) << source << "\n  gave: " << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+}
+
+TEST(OpenScadHabits, EachHabitNamesTheCsgrayWay) {
+  expectHint("local a = 1\n$fn = 50\nreturn sphere(1)",
+             "part.lua:2: unexpected symbol near '$'; there is no $fn, $fa or $fs here");
+  expectHint("return sphere(1, $fa=5)", "there is no $fn, $fa or $fs here");
+  expectHint("return box([1, 2, 3])",
+             "part.lua:1: unexpected symbol near '['; vectors are Lua tables in braces here: "
+             "{1, 2, 3}");
+  expectHint("difference() { box(1); sphere(1); }",
+             "part.lua:1: difference: needs at least one solid; booleans take their operands as "
+             "arguments here: difference(a, b, c) or a - b - c");
+  expectHint("union() {\n box(1);\n}", "part.lua:1: union: needs at least one solid; booleans");
+  expectHint("module peg(h) { cylinder{r=1, h=h} }",
+             "part.lua:1: syntax error near 'peg'; a module is a Lua function here: local "
+             "function name(args) ... return solid end");
+  expectHint("function twice(x) = 2 * x;",
+             "part.lua:1: unexpected symbol near '='; a function is written local function f(x) "
+             "return ... end here");
+  expectHint("for (i = [0:10]) box(i);",
+             "part.lua:1: <name> expected near '('; a loop is for i "
+             "= 0, 10 do ... end here");
+  expectHint("return text(\"hi\")",
+             "part.lua:1: attempt to call a nil value (global 'text'); text is not supported yet");
+  expectHint("return linear_extrude(height=5)",
+             "part.lua:1: ')' expected near '='; sweeps take the region and named parameters in "
+             "braces here: linear_extrude{region, height=5}");
+  expectHint("echo(\"width\", 3)",
+             "part.lua:1: attempt to call a nil value (global 'echo'); OpenSCAD's echo is "
+             "print(...) here");
+  expectHint("include <MCAD/boxes.scad>\nreturn box(1)",
+             "part.lua:1: syntax error near '<'; there is no include or use: a script is one file");
+  expectHint("use <lib.scad>", "there is no include or use");
+  expectHint("translate([1, 2, 3]) box(1)",
+             "part.lua:1: unexpected symbol near '['; transforms are methods of a solid here: "
+             "s:translate(x, y, z)");
+  expectHint("return cube(10)", "OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here");
+  // Lua reads this as sphere{r=1} % box(1), a remainder.
+  expectHint("return sphere{r=1}\n%box(1)",
+             "part.lua:2: attempt to perform arithmetic on a solid value; modifiers are methods "
+             "here: # is s:highlight(), % s:ghost()");
+  expectHint("local a = box(1)\n!box(2)", "part.lua:2: unexpected symbol near '!'; modifiers are");
+  expectHint("return sphere(r=2)", "named parameters go in braces here: f{name=value}");
+  expectHint("if 1 != 2 then end", "not equal is ~= in Lua");
+  expectHint("return sphere(abs(-1))", "OpenSCAD's abs is math.abs(...) here");
+  expectHint("return sphere(sin(30) + 1)", "OpenSCAD's sin is math.sin(...) here (radians)");
+}
+
+TEST(OpenScadHabits, LuaOfItsOwnGetsNoOpenScadHint) {
+  // Indexing is Lua: a runtime error on a line with t[1] is not about vectors.
+  const std::string e = test::scriptError("local t = {1}\nreturn t[1] + nil");
+  EXPECT_EQ(e, "part.lua:2: attempt to perform arithmetic on a nil value") << e;
+  // A near miss of an API name still gets the nearest name.
+  EXPECT_NE(test::scriptError("return sphre(1)").find("did you mean sphere?"), std::string::npos);
+  // A method of another kind of value says so, instead of suggesting itself.
+  EXPECT_NE(test::scriptError("return circle(1):ghost()")
+                .find("ghost is a method of another kind of value (solid, surface), not of this "
+                      "one"),
+            std::string::npos);
+}
+
+Bounds boundsOf(const std::string& source) {
+  Scene scene = runScript(source, "part.lua");
+  return scene.objects.at(0)->bounds();
+}
+
+TEST(Resize, SizesTheBoundsAndKeepsZeroAxes) {
+  Bounds b = boundsOf("return box{size={2, 4, 8}}:resize(10, 0, 2)");
+  test::expectVecNear(b.lo, {0, 0, 0}, 1e-12);
+  test::expectVecNear(b.hi, {10, 4, 2}, 1e-12);
+  // Scaled about the origin, as OpenSCAD's resize is.
+  b = boundsOf("return sphere(1):translate(1, 0, 0):resize{4, 2, 2}");
+  test::expectVecNear(b.lo, {0, -1, -1}, 1e-12);
+  test::expectVecNear(b.hi, {4, 1, 1}, 1e-12);
+}
+
+TEST(Resize, AutoScalesTheZeroAxesWithTheOthers) {
+  Bounds b = boundsOf("return box{size={2, 4, 8}}:resize{10, 0, 0, auto=true}");
+  test::expectVecNear(b.hi, {10, 20, 40}, 1e-12);
+  b = boundsOf("return box{size={2, 4, 8}}:resize{10, 0, 0, auto={false, true, false}}");
+  test::expectVecNear(b.hi, {10, 20, 8}, 1e-12);
+  // Two sizes given: the zero axis takes the larger factor.
+  b = boundsOf("return box{size={2, 4, 8}}:resize{4, 12, 0, auto=true}");
+  test::expectVecNear(b.hi, {4, 12, 24}, 1e-12);
+}
+
+TEST(Resize, RegionsToo) {
+  Scene scene = runScript(
+      "local r = circle(1):resize{6, 0, auto=true}\n"
+      "assert(math.abs(r:area() - math.pi * 9) < 1e-6, r:area())\n"
+      "return linear_extrude{circle(1):resize(6, 2), height=1}",
+      "part.lua");
+  const Bounds b = scene.objects.at(0)->bounds();
+  test::expectVecNear(b.lo, {-3, -1, 0}, 1e-12);
+  test::expectVecNear(b.hi, {3, 1, 1}, 1e-12);
+}
+
+TEST(Resize, BadSizesAreErrors) {
+  auto expectError = [](const std::string& source, const std::string& expected) {
+    const std::string e = test::scriptError(source);
+    EXPECT_NE(e.find(expected), std::string::npos) << source << "\n  gave: " << e;
+  };
+  expectError("return box(1):resize(-1, 0, 0)",
+              "part.lua:1: resize: the size along x must be a finite number >= 0");
+  expectError("return box(1):resize(1, 0)",
+              "part.lua:1: resize: takes x, y, z or {x, y, z, auto=...}");
+  expectError("return box(1):resize{1, 0, 0, aut=true}", "resize: unknown parameter 'aut'");
+  expectError("return box(1):resize{1, 0, 0, auto=1}",
+              "resize: auto must be true, false or a list");
+  expectError("return half_space{normal={0, 0, 1}}:resize(1, 1, 0)",
+              "resize: the shape is unbounded along x");
+  expectError("return square(1):resize(1, 2, 3)", "resize: takes x, y or {x, y, auto=...}");
+}
+
+}  // namespace
+}  // namespace csgray::detail
