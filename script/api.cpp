@@ -356,6 +356,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   // and after the surfaces: square and rectangle are regions.
   registerRegionApi(L);
   registerSweepApi(L);
+  registerTextApi(L);
 }
 
 }  // namespace csgray::detail

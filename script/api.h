@@ -42,7 +42,10 @@ void registerCheckApi(lua_State* L);
 // (api_sweep.cpp): linear_extrude and rotate_extrude.
 void registerRegionApi(lua_State* L);
 void registerSweepApi(lua_State* L);
-void pushRegion(lua_State* L, RegionPtr region);
+// text{...} (api_text.cpp): a string's outlines as a region.
+void registerTextApi(lua_State* L);
+// kind: what the region was made as, for messages ("region", "text").
+void pushRegion(lua_State* L, RegionPtr region, const std::string& kind = "region");
 // The region at index, or a Lua error that names the function and the
 // argument's position.
 RegionPtr regionArg(lua_State* L, int index, const char* function);
