@@ -206,6 +206,11 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   SpanList operand, spare;
   SpanList* result = &out;
   SpanList* other = &spare;
+  // How far past the start the holes are asked, doubled each round: a hole
+  // whose spans end where its own window was cut (a sweep's may, solid.h)
+  // leaves the next start there, still inside it, and is then crossed in a
+  // few rounds rather than one cut at a time.
+  double reach = 0.0;
   while (!result->empty()) {
     // The result starts where the first operand's spans, less the holes
     // cut so far, start: the answer, unless a hole covers that point.
@@ -215,12 +220,14 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
       return;
     }
     if (start > ray.tMax) break;  // no boundary within the window
-    // The holes that meet the start, or lie within the distance at which
-    // boundaries are one point (span_list.h); the spans they give are
-    // theirs beyond that, so the cut is exact as far as it reaches.
+    // The holes that meet the start, or lie within `reach` of it (at first
+    // the distance at which boundaries are one point, span_list.h); the
+    // spans they give are theirs beyond that, so the cut is exact as far
+    // as it reaches.
     Ray point = ray;
     point.tMin = start;
-    point.tMax = std::min(ray.tMax, start + 2.0 * kSameT * std::abs(start));
+    reach = std::max(2.0 * reach, 2.0 * kSameT * std::abs(start));
+    point.tMax = std::min(ray.tMax, start + reach);
     forEachHole(point, [&](const Solid& hole) {
       hole.spans(point, operand);
       if (operand.empty()) return true;
