@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "profile/bezier.h"
 
 namespace csgray::detail {
 
@@ -148,6 +149,10 @@ std::string svgOutline(const Profile& evaluated) {
     for (const ProfileEdge& e : loop.edges) {
       if (e.kind == ProfileEdge::Kind::Segment) {
         d += " L " + svgPoint(e.to);
+      } else if (e.kind == ProfileEdge::Kind::Quadratic) {
+        d += " Q " + svgPoint(e.control1) + " " + svgPoint(e.to);
+      } else if (e.kind == ProfileEdge::Kind::Cubic) {
+        d += " C " + svgPoint(e.control1) + " " + svgPoint(e.control2) + " " + svgPoint(e.to);
       } else if (wholeTurn(e)) {
         // An arc command cannot close a whole ellipse on itself: two halves.
         const double middle = e.angle0 + (e.angle1 > e.angle0 ? kPi : -kPi);
@@ -179,7 +184,9 @@ std::string dxfOutline(const Profile& evaluated, double tolerance) {
   group(out, 0, "ENDSEC");
   group(out, 0, "SECTION");
   group(out, 2, "ENTITIES");
-  for (const ProfileLoop& loop : evaluated.loops)
+  // R12 has no curves but lines and circular arcs: Bézier curves as
+  // polygons.
+  for (const ProfileLoop& loop : bezierEdgesFlattened(evaluated, tolerance).loops)
     for (const ProfileEdge& e : loop.edges) {
       if (e.kind == ProfileEdge::Kind::Segment)
         dxfLine(out, e.from, e.to);

@@ -50,6 +50,7 @@ struct ScaledPath {
   }
 
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
+    if (e.bezier) return curveRoots(e, t0, t1, out);
     SweepPolynomial p;
     if (uniform) {
       // The products of linear polynomials written out.
@@ -81,6 +82,37 @@ struct ScaledPath {
     double s[4];
     const int count = sweepPolynomialRoots(p, n.toS(t0), n.toS(t1), s);
     for (int i = 0; i < count; ++i) out[i] = n.toT(s[i]);
+    return count;
+  }
+
+  // A Bézier curve (only on a uniform path: SweptRegion makes others
+  // polygons). The straight image of the ray is the line A·u.x + B·u.y + C
+  // = 0, from eliminating the ray's parameter r between u.x·σ(r) = x(r)
+  // and u.y·σ(r) = y(r) (each linear in r); along the curve B(q) that is a
+  // polynomial of the curve's degree in q, whose roots are where the side
+  // (the curve's ruled surface) is met. Each root's point gives r back from
+  // the better conditioned of the two equations.
+  int curveRoots(const SweepEdge& e, double t0, double t1, double* out) const {
+    if (!uniform) return 0;
+    const double A = sx.c[1] * y.c[0] - sx.c[0] * y.c[1];
+    const double B = x.c[1] * sx.c[0] - x.c[0] * sx.c[1];
+    const double C = x.c[0] * y.c[1] - x.c[1] * y.c[0];
+    SweepPolynomial p;
+    p.n = e.curve.degree;
+    for (int k = 0; k <= p.n; ++k) p.c[k] = A * e.curve.c[k].x + B * e.curve.c[k].y;
+    p.c[0] += C;
+    constexpr double kSlack = 1e-9;  // SweptRegion's kEdgeSlack: an end met through both its edges
+    double q[4];
+    const int found = sweepPolynomialRoots(p, -kSlack, 1.0 + kSlack, q);
+    const double r0 = n.toS(t0), r1 = n.toS(t1);
+    int count = 0;
+    for (int i = 0; i < found; ++i) {
+      const dvec2 u = e.curve.at(q[i]);
+      const double kx = x.c[1] - u.x * sx.c[1], ky = y.c[1] - u.y * sx.c[1];
+      const double r = std::abs(kx) >= std::abs(ky) ? (u.x * sx.c[0] - x.c[0]) / kx
+                                                    : (u.y * sx.c[0] - y.c[0]) / ky;
+      if (r >= r0 && r <= r1) out[count++] = n.toT(r);
+    }
     return count;
   }
 };
@@ -213,7 +245,9 @@ LinearExtrusion::LinearExtrusion(RegionPtr region, double height, bool center, d
       throw std::invalid_argument(msg.str());
     }
   }
-  swept_ = std::make_shared<SweptRegion>(std::move(region), "linear_extrude");
+  // Straight paths (no twist, a uniform scale) meet Bézier curves exactly.
+  const bool straight = twistDegrees == 0.0 && scale.x == scale.y;
+  swept_ = std::make_shared<SweptRegion>(std::move(region), "linear_extrude", straight);
 }
 
 dvec2 LinearExtrusion::profilePoint(const dvec3& p) const {

@@ -46,8 +46,22 @@ ProfileBounds edgeBox(const ProfileEdge& e) {
   return one.bounds();
 }
 
+// The region with its Bézier curves replaced by polygons within tolerance.
+RegionPtr curvesFlattened(const RegionPtr& region, double tolerance) {
+  if (region->op() != Region::Op::Leaf) {
+    std::vector<RegionPtr> operands;
+    for (const RegionPtr& r : region->operands()) operands.push_back(curvesFlattened(r, tolerance));
+    return Region::boolean(region->op(), std::move(operands));
+  }
+  for (const ProfileLoop& loop : region->profile().loops)
+    for (const ProfileEdge& e : loop.edges)
+      if (e.bezier()) return Region::leaf(bezierEdgesFlattened(region->profile(), tolerance));
+  return region;
+}
+
 // The edge's middle point.
 dvec2 middleOf(const SweepEdge& e) {
+  if (e.bezier) return bezierPoint(e.source, 0.5);
   if (!e.arc) return 0.5 * (e.from + e.to);
   const double theta = 0.5 * (e.lo + e.hi);
   return e.center + glm::inverse(e.toUnit) * dvec2(std::cos(theta), std::sin(theta));
@@ -64,13 +78,27 @@ std::vector<SweepCrossing>& crossingBuffer() {
 
 // ---- SweepEdge -----------------------------------------------------------------
 
+dvec2 SweepEdge::curveNormal(const dvec2& u) const {
+  const double s = nearestBezierParameter(curve, u);
+  dvec2 tangent = curve.slope(s);
+  // At a cusp (or an end whose control point sits on it) the tangent
+  // vanishes: the chord of a short stretch about s has its direction.
+  if (!(glm::length(tangent) > 1e-12 * size))
+    tangent =
+        bezierPoint(source, std::min(1.0, s + 1e-6)) - bezierPoint(source, std::max(0.0, s - 1e-6));
+  const double length = glm::length(tangent);
+  return length > 0.0 ? dvec2(tangent.y, -tangent.x) / length : dvec2(0.0);
+}
+
 double SweepEdge::implicit(const dvec2& u) const {
+  if (bezier) return glm::dot(curveNormal(u), u - curve.at(nearestBezierParameter(curve, u)));
   if (!arc) return glm::dot(normal, u) - offset;
   const dvec2 w = toUnit * (u - center);
   return glm::dot(w, w) - 1.0;
 }
 
 dvec2 SweepEdge::outwardGradient(const dvec2& u) const {
+  if (bezier) return outward * curveNormal(u);
   if (!arc) return outward * normal;
   return outward * (glm::transpose(toUnit) * (toUnit * (u - center)));
 }
@@ -96,7 +124,8 @@ double SweepEdge::arcDistance(const dvec2& u) const {
 
 // ---- SweptRegion ------------------------------------------------------------------
 
-SweptRegion::SweptRegion(RegionPtr region, const char* kind) : region_(std::move(region)) {
+SweptRegion::SweptRegion(RegionPtr region, const char* kind, bool exactCurves)
+    : region_(std::move(region)) {
   if (!region_) throw std::invalid_argument(std::string(kind) + ": needs a region");
   const ProfileBounds& b = region_->bounds();
   if (b.empty())
@@ -107,12 +136,15 @@ SweptRegion::SweptRegion(RegionPtr region, const char* kind) : region_(std::move
   size_ = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, std::abs(b.lo.x), std::abs(b.hi.x),
                     std::abs(b.lo.y), std::abs(b.hi.y), 1e-300});
   pad_ = 1e-9 * size_;
+  if (!exactCurves) region_ = curvesFlattened(region_, kCurveTolerance * size_);
   std::uint32_t nextLeaf = 0;
   addTree(*region_, nextLeaf);
   // The orientation of each edge: which side of it is the leaf's inside.
   for (SweepEdge& e : edges_) {
     const dvec2 m = middleOf(e);
-    dvec2 g = e.arc ? glm::transpose(e.toUnit) * (e.toUnit * (m - e.center)) : e.normal;
+    dvec2 g = e.arc      ? glm::transpose(e.toUnit) * (e.toUnit * (m - e.center))
+              : e.bezier ? e.curveNormal(m)
+                         : e.normal;
     const double length = glm::length(g);
     if (!(length > 0.0)) continue;
     g /= length;
@@ -142,7 +174,13 @@ std::uint32_t SweptRegion::addTree(const Region& region, std::uint32_t& nextLeaf
       e.from = pe.from;
       e.to = pe.to;
       e.box = edgeBox(pe);
-      if (pe.kind == ProfileEdge::Kind::Segment) {
+      if (pe.bezier()) {
+        e.size = glm::length(e.box.hi - e.box.lo);
+        if (!(e.size > 0.0)) continue;  // a point
+        e.curve = bezierPolynomial(pe);
+        e.bezier = e.curve.degree;
+        e.source = pe;
+      } else if (pe.kind == ProfileEdge::Kind::Segment) {
         const dvec2 d = pe.to - pe.from;
         const double length = glm::length(d);
         if (!(length > 0.0)) continue;  // a point: crosses nothing
@@ -236,6 +274,10 @@ bool SweptRegion::leafContains(std::uint32_t index, const dvec2& u) const {
   };
   forEachEdgeNear(leaf, meets, [&](std::uint32_t i) {
     const SweepEdge& e = edges_[i];
+    if (e.bezier) {
+      if (bezierCrossesRight(u, e.source)) inside = !inside;
+      return;
+    }
     if (segmentCrosses(u, e.from, e.to)) inside = !inside;
     if (e.arc && inArcCap(u, e)) inside = !inside;
   });

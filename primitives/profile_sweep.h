@@ -24,6 +24,7 @@
 #include "engine/primitive.h"
 #include "engine/solvers/quartic.h"
 #include "engine/span_list.h"
+#include "profile/bezier.h"
 #include "profile/region.h"
 
 namespace csgray::detail {
@@ -52,11 +53,17 @@ struct SweepEdge {
   dvec2 center{0.0};
   dmat2 toUnit{1.0};
   double lo = 0.0, hi = 0.0;
-  double size = 0.0;     // largest semi-axis (arcs), length (segments)
+  // Bézier curves: the degree (0 for segments and arcs), the curve in the
+  // power basis, and the edge it came from.
+  int bezier = 0;
+  BezierPolynomial curve;
+  ProfileEdge source;
+  double size = 0.0;     // largest semi-axis (arcs), length (segments), the box's diagonal (curves)
   double outward = 1.0;  // +1 when the gradient of the implicit function points out of the leaf
   ProfileBounds box;
 
-  // The implicit function: n·u − offset, or |toUnit(u − center)|² − 1.
+  // The implicit function: n·u − offset, or |toUnit(u − center)|² − 1, or
+  // for a curve the distance to its nearest point, signed by the side.
   double implicit(const dvec2& u) const;
   // Its gradient, turned to point out of the leaf.
   dvec2 outwardGradient(const dvec2& u) const;
@@ -65,6 +72,11 @@ struct SweepEdge {
   // within slack of an end.
   bool holds(const dvec2& u, double slack, bool& clean) const {
     if (arc) return arcHolds(u, slack, clean);
+    if (bezier) {
+      const double s = nearestBezierParameter(curve, u);
+      clean = s > slack && s < 1.0 - slack;
+      return true;  // the paths find a curve's roots for s in [-slack, 1 + slack] only
+    }
     const dvec2 d = to - from;
     const double s = ((u.x - from.x) * d.x + (u.y - from.y) * d.y) / (d.x * d.x + d.y * d.y);
     clean = s > slack && s < 1.0 - slack;
@@ -73,8 +85,12 @@ struct SweepEdge {
   // How far u is from the edge's line or ellipse, roughly (exact for
   // segments and circles).
   double distance(const dvec2& u) const {
+    if (bezier) return glm::length(curve.at(nearestBezierParameter(curve, u)) - u);
     return arc ? arcDistance(u) : std::abs(normal.x * u.x + normal.y * u.y - offset);
   }
+  // A curve's normal at its point nearest u: its tangent turned a quarter
+  // clockwise (a segment's `normal` likewise), of unit length.
+  dvec2 curveNormal(const dvec2& u) const;
 
  private:
   bool arcHolds(const dvec2& u, double slack, bool& clean) const;
@@ -108,8 +124,12 @@ class SweptRegion {
   static constexpr double kAcceptDistance = 1e-7;
 
   // Throws std::invalid_argument (naming `kind`) for an empty region or one
-  // with non-finite coordinates.
-  SweptRegion(RegionPtr region, const char* kind);
+  // with non-finite coordinates. Without exactCurves (the paths that are
+  // not straight lines: a twist, a non-uniform scale, a revolution) Bézier
+  // curves are replaced by polygons within kCurveTolerance of the region's
+  // size; straight paths meet them in closed form.
+  SweptRegion(RegionPtr region, const char* kind, bool exactCurves = true);
+  static constexpr double kCurveTolerance = 1e-6;
 
   const RegionPtr& region() const { return region_; }
   const ProfileBounds& bounds() const { return region_->bounds(); }

@@ -162,7 +162,8 @@ Revolution::Revolution(RegionPtr region, double angleDegrees)
     msg << "rotate_extrude: angle must be in (0, 360] degrees (got " << angleDegrees << ")";
     throw std::invalid_argument(msg.str());
   }
-  swept_ = std::make_shared<SweptRegion>(std::move(region), "rotate_extrude");
+  swept_ = std::make_shared<SweptRegion>(std::move(region), "rotate_extrude",
+                                         /*exactCurves=*/false);
   const ProfileBounds& b = swept_->bounds();
   if (b.lo.x < -1e-12 * swept_->size()) {
     std::ostringstream msg;

@@ -7,6 +7,8 @@
 #include <glm/matrix.hpp>
 #include <numbers>
 
+#include "profile/bezier.h"
+
 namespace csgray::detail {
 
 namespace {
@@ -68,6 +70,26 @@ ProfileEdge ProfileEdge::arc(const dvec2& center, const dmat2& axes, double angl
   return e;
 }
 
+ProfileEdge ProfileEdge::quadratic(const dvec2& a, const dvec2& control, const dvec2& b) {
+  ProfileEdge e;
+  e.kind = Kind::Quadratic;
+  e.from = a;
+  e.control1 = control;
+  e.to = b;
+  return e;
+}
+
+ProfileEdge ProfileEdge::cubic(const dvec2& a, const dvec2& control1, const dvec2& control2,
+                               const dvec2& b) {
+  ProfileEdge e;
+  e.kind = Kind::Cubic;
+  e.from = a;
+  e.control1 = control1;
+  e.control2 = control2;
+  e.to = b;
+  return e;
+}
+
 dvec2 ProfileEdge::arcPoint(double theta) const {
   return center + axes * dvec2(std::cos(theta), std::sin(theta));
 }
@@ -86,6 +108,10 @@ ProfileEdge ProfileEdge::transformed(const Affine2& map) const {
     e.center = map.apply(center);
     e.axes = map.linear * axes;
   }
+  // An affine map of a Bézier curve is the curve of the mapped control
+  // points.
+  e.control1 = map.apply(control1);
+  e.control2 = map.apply(control2);
   return e;
 }
 
@@ -105,6 +131,10 @@ bool Profile::contains(const dvec2& p) const {
     for (const ProfileEdge& e : loop.edges) {
       // An arc crosses as often as its chord, plus once more when p lies
       // between the two (even-odd: only the parity matters).
+      if (e.bezier()) {
+        if (bezierCrossesRight(p, e)) inside = !inside;
+        continue;
+      }
       if (segmentCrosses(p, e.from, e.to)) inside = !inside;
       if (e.kind == ProfileEdge::Kind::Arc && inArcCap(p, e)) inside = !inside;
     }
@@ -117,6 +147,7 @@ ProfileBounds Profile::bounds() const {
     for (const ProfileEdge& e : loop.edges) {
       b.include(e.from);
       b.include(e.to);
+      if (e.bezier()) includeBezier(b, e);
       if (e.kind != ProfileEdge::Kind::Arc) continue;
       // x(θ) = cx + a·cos θ + c·sin θ is extreme where tan θ = c / a, and
       // likewise y; those extremes that lie on the arc widen the box.

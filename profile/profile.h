@@ -1,8 +1,8 @@
 // A profile: a region of the plane bounded by closed loops of straight
-// segments and elliptic arcs, filled by the even-odd rule (a point is inside
-// when a ray from it crosses the loops an odd number of times), as
-// OpenSCAD's polygon() with paths is. Circles are arcs, not polygons: the
-// sweeps of a profile (extrusions, revolutions) are exact.
+// segments, elliptic arcs and Bézier curves (the outlines of letters), filled by the even-odd rule
+// (a point is inside when a ray from it crosses the loops an odd number of times), as OpenSCAD's
+// polygon() with paths is. Circles are arcs, not polygons: the sweeps of a profile (extrusions,
+// revolutions) are exact.
 #pragma once
 
 #include <cstdint>
@@ -31,17 +31,25 @@ struct Affine2 {
 // (angle1 < angle0 runs the other way round): a circle of radius r has
 // axes r·I (or r times a rotation), an ellipse or a circle under a
 // non-uniform scale has any invertible axes. `from` and `to` are the
-// arc's ends, kept so that loops join exactly.
+// arc's ends, kept so that loops join exactly. A quadratic Bézier curve
+// runs from `from` to `to` pulled towards control1; a cubic one towards
+// control1, then control2 (profile/bezier.h: its points, bounds and
+// crossings).
 struct ProfileEdge {
-  enum class Kind : std::uint8_t { Segment, Arc };
+  enum class Kind : std::uint8_t { Segment, Arc, Quadratic, Cubic };
   Kind kind = Kind::Segment;
   dvec2 from{0.0}, to{0.0};
   dvec2 center{0.0};
   dmat2 axes{1.0};
   double angle0 = 0.0, angle1 = 0.0;
+  dvec2 control1{0.0}, control2{0.0};
 
   static ProfileEdge segment(const dvec2& a, const dvec2& b);
   static ProfileEdge arc(const dvec2& center, const dmat2& axes, double angle0, double angle1);
+  static ProfileEdge quadratic(const dvec2& a, const dvec2& control, const dvec2& b);
+  static ProfileEdge cubic(const dvec2& a, const dvec2& control1, const dvec2& control2,
+                           const dvec2& b);
+  bool bezier() const { return kind == Kind::Quadratic || kind == Kind::Cubic; }
 
   // The point at θ on an arc's ellipse.
   dvec2 arcPoint(double theta) const;

@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 #include <numbers>
 
+#include "profile/bezier.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -26,12 +27,15 @@ double largestStretch(const dmat2& m) {
 double area(const Profile& evaluated) {
   // Green's theorem: the area is ½∮(x dy − y dx). Along a segment that is
   // ½ from × to; along an arc p(θ) = c + A·(cos θ, sin θ) the integrand is
-  // c × p'(θ) + det A, which integrates to c × (to − from) + det A·Δθ.
+  // c × p'(θ) + det A, which integrates to c × (to − from) + det A·Δθ;
+  // along a Bézier curve it is a polynomial (bezierAreaTerm).
   double sum = 0.0;
   for (const ProfileLoop& loop : evaluated.loops)
     for (const ProfileEdge& e : loop.edges) {
       if (e.kind == ProfileEdge::Kind::Segment)
         sum += cross(e.from, e.to);
+      else if (e.bezier())
+        sum += bezierAreaTerm(e);
       else
         sum += cross(e.center, e.to - e.from) + glm::determinant(e.axes) * (e.angle1 - e.angle0);
     }
@@ -47,6 +51,10 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
     std::vector<dvec2>& points = polygons.emplace_back();
     for (const ProfileEdge& e : loop.edges) {
       points.push_back(e.from);
+      if (e.bezier()) {
+        const int steps = bezierSteps(e, tolerance);
+        for (int k = 1; k < steps; ++k) points.push_back(bezierPoint(e, double(k) / steps));
+      }
       if (e.kind != ProfileEdge::Kind::Arc) continue;
       double turn = e.angle1 - e.angle0;
       if (std::abs(turn) > kTwoPi) turn = std::copysign(kTwoPi, turn);

@@ -5,11 +5,11 @@
 // tessellation of sweeps start from. Booleans of segments and circular arcs
 // are exact (CGAL's general polygon sets with circle-segment traits); an
 // arc of an ellipse that is not a circle is first replaced by a polygon
-// within `ellipseTolerance`. Its arcs are circles (axes r·I), angle1 >
-// angle0 for counterclockwise ones; each edge's `from` is the previous
-// one's `to` exactly. Every function here throws std::invalid_argument for
-// a coordinate, distance or tolerance that is not a finite number (and a
-// tolerance that is not positive), with a message that says which.
+// within `ellipseTolerance`, and so is a Bézier curve (booleans, offsets
+// and hulls of letters are within that tolerance, not exact). Its arcs are circles (axes r·I),
+// angle1 > angle0 for counterclockwise ones; each edge's `from` is the previous one's `to` exactly.
+// Every function here throws std::invalid_argument for a coordinate, distance or tolerance that is
+// not a finite number (and a tolerance that is not positive), with a message that says which.
 #pragma once
 
 #include <span>
@@ -21,7 +21,9 @@ namespace csgray::detail {
 
 Profile evaluate(const Region& region, double ellipseTolerance);
 
-// Signed area of an evaluated profile: positive for counterclockwise loops.
+// Signed area of an evaluated profile (or of any profile whose loops
+// neither cross nor nest: a glyph's): positive for counterclockwise loops,
+// exact for every kind of edge.
 double area(const Profile& evaluated);
 
 // Each loop as a polygon within `tolerance` of the exact edges (the sagitta

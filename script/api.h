@@ -47,7 +47,10 @@ void registerRegionApi(lua_State* L);
 void registerCsgApi(lua_State* L);
 Scene csgFileScene(const std::string& path, const ScriptOptions& options);
 void registerSweepApi(lua_State* L);
-void pushRegion(lua_State* L, RegionPtr region);
+// text{...} (api_text.cpp): a string's outlines as a region.
+void registerTextApi(lua_State* L);
+// kind: what the region was made as, for messages ("region", "text").
+void pushRegion(lua_State* L, RegionPtr region, const std::string& kind = "region");
 // The region at index, or a Lua error that names the function and the
 // argument's position.
 RegionPtr regionArg(lua_State* L, int index, const char* function);

@@ -656,7 +656,9 @@ void registerOverSolids(lua_State* L, const char* name, lua_CFunction f) {
 
 }  // namespace
 
-void pushRegion(lua_State* L, RegionPtr region) { pushRegionAs(L, std::move(region), "region"); }
+void pushRegion(lua_State* L, RegionPtr region, const std::string& kind) {
+  pushRegionAs(L, std::move(region), kind);
+}
 
 RegionPtr regionArg(lua_State* L, int index, const char* function) {
   return regionAt(L, index, std::string(function) + ": argument " + std::to_string(index));

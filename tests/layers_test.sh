@@ -50,6 +50,7 @@ check_dependency 'CGAL/' '^(export|profile|primitives)/cgal/' CGAL
 check_dependency 'OpenMesh/|lib3mf' '^meshio/' 'OpenMesh or lib3MF'
 check_dependency 'OpenImageIO/' '^io/image_formats_module\.cpp$' OpenImageIO
 check_dependency 'lua\.|lauxlib|lualib' '^script/' Lua
+check_dependency 'ft2build|hb[.-]|fontconfig/' '^profile/glyph_outlines\.cpp$' 'FreeType, HarfBuzz or fontconfig'
 check_dependency 'httplib' '^view/view_server\.cpp$' cpp-httplib
 
 # The public headers: each other and the standard library, nothing else.

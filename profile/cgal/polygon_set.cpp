@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "profile/bezier.h"
 #include "profile/region_evaluation.h"
 #include "tessellation/tessellation.h"
 
@@ -49,6 +50,10 @@ void requireFinite(const dvec2& p, const char* what) {
 void requireFinite(const ProfileEdge& e) {
   requireFinite(e.from, "point");
   requireFinite(e.to, "point");
+  if (e.bezier()) {
+    requireFinite(e.control1, "control point");
+    requireFinite(e.control2, "control point");
+  }
   if (e.kind != ProfileEdge::Kind::Arc) return;
   requireFinite(e.center, "arc centre");
   requireFinite(e.axes[0], "arc radius");
@@ -233,8 +238,11 @@ PlaneKernel::Point_2 exactPoint(const dvec2& p) {
   return {PlaneKernel::FT(p.x), PlaneKernel::FT(p.y)};
 }
 
-std::vector<std::vector<CircleSegment>> exactLoops(const Profile& profile,
-                                                   double ellipseTolerance) {
+std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double ellipseTolerance) {
+  // Bézier curves are not circle segments: polygons within the tolerance.
+  for (const ProfileLoop& loop : curved.loops)
+    for (const ProfileEdge& e : loop.edges) requireFinite(e);
+  const Profile profile = bezierEdgesFlattened(curved, ellipseTolerance);
   std::vector<std::vector<CircleSegment>> loops;
   for (const ProfileLoop& loop : profile.loops) {
     std::vector<CircleSegment> curves;

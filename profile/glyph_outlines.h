@@ -1,0 +1,45 @@
+// Text as a region: a string shaped by HarfBuzz (kerning, ligatures, the
+// order and joining of scripts) in a font fontconfig finds by name, each
+// glyph's outline read by FreeType as it is drawn in the font: segments and
+// quadratic (TrueType) or cubic (OpenType CFF) Bézier curves, kept exact
+// (docs/script.md, "Text"). The only place FreeType, HarfBuzz and
+// fontconfig are used.
+#pragma once
+
+#include <string>
+
+#include "profile/region.h"
+
+namespace csgray::detail {
+
+struct TextLayout {
+  enum class HAlign { Left, Center, Right };
+  enum class VAlign { Baseline, Bottom, Center, Top };
+  enum class Direction { LeftToRight, RightToLeft, TopToBottom, BottomToTop };
+
+  std::string text;  // UTF-8
+  // The font's ascent (the height above the baseline it declares for its
+  // tallest letters), in the region's units.
+  double size = 10.0;
+  std::string font = "DejaVu Sans";  // a fontconfig name: "family:style=Bold"
+  HAlign halign = HAlign::Left;
+  VAlign valign = VAlign::Baseline;
+  double spacing = 1.0;  // a factor on the advances from glyph to glyph
+  Direction direction = Direction::LeftToRight;
+  std::string language, script;  // BCP 47 and ISO 15924 tags; empty: guessed from the text
+};
+
+// The text's outlines: one even-odd leaf per group of glyph contours that
+// do not overlap (each outer contour with the holes inside it), united, so
+// that overlapping strokes fill as the font's non-zero rule says.
+// Throws std::invalid_argument, with a message that starts "text: ", for an
+// empty string, a size that is not a positive finite number, a spacing that
+// is not finite or not positive, a font fontconfig does not have (it would
+// fall back to another silently), a font name that names a file, or a
+// string with no outline (only spaces).
+RegionPtr textRegion(const TextLayout& layout);
+
+// The file of the font fontconfig gives for the name, or the error above.
+std::string fontFile(const std::string& name);
+
+}  // namespace csgray::detail
