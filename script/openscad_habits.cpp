@@ -29,7 +29,6 @@ std::string openscadNameHint(const std::string& name) {
       {"multmatrix", "transforms are methods of a solid here: s:transform(...)"},
       {"color", "a colour is a material here: s:material{color={r, g, b}}"},
       {"echo", "OpenSCAD's echo is print(...) here (it writes to standard error)"},
-      {"text", "text is not supported yet"},
       {"import",
        "meshes are read with mesh{file=\"part.stl\"}, OpenSCAD's .csg files with "
        "import_csg{file=\"part.csg\"}"},
@@ -113,7 +112,6 @@ std::string openscadLineHint(const std::string& sourceLine, bool syntaxError) {
     add(R"(\b(linear_extrude|rotate_extrude)\s*\(\s*\w+\s*=[^=])",
         "sweeps take the region and named parameters in braces here: "
         "linear_extrude{region, height=5}, rotate_extrude{region, angle=360}");
-    add(R"(\btext\s*\()", "text is not supported yet", true);
     add(R"(\b\w+\s*\(\s*\w+\s*=[^=])",
         "named parameters go in braces here: f{name=value} (as sphere{r=2})");
     add(R"(\[\s*[-+.\d\w])", "vectors are Lua tables in braces here: {1, 2, 3}");

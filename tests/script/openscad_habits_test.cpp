@@ -37,8 +37,6 @@ TEST(OpenScadHabits, EachHabitNamesTheCsgrayWay) {
   expectHint("for (i = [0:10]) box(i);",
              "part.lua:1: <name> expected near '('; a loop is for i "
              "= 0, 10 do ... end here");
-  expectHint("return text(\"hi\")",
-             "part.lua:1: attempt to call a nil value (global 'text'); text is not supported yet");
   expectHint("return linear_extrude(height=5)",
              "part.lua:1: ')' expected near '='; sweeps take the region and named parameters in "
              "braces here: linear_extrude{region, height=5}");
