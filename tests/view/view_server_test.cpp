@@ -74,7 +74,14 @@ class ViewServerTest : public testing::Test {
     server_.reset();
     routes_.reset();
     jobs_.reset();
-    watcher_.reset();
+    // The watcher's thread may be running its callback, which calls
+    // watcher_->watch: destroy the watcher (its destructor joins that
+    // thread) while watcher_ still points at it, not through reset(),
+    // which clears the pointer first.
+    if (watcher_) {
+      watcher_.get_deleter()(watcher_.get());
+      (void)watcher_.release();
+    }
     session_.reset();
     fs::remove_all(folder_);
   }
