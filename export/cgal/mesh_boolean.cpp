@@ -689,13 +689,10 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
     return CGAL::compare_xyz(exact.point(a), exact.point(b)) == CGAL::SMALLER;
   });
-  RoundedMesh rounded;
-  rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
+  // The vertices in that order: vertex[v] is where exact's v goes.
   std::vector<RoundedMesh::Vertex_index> vertex(points.size());
-  for (auto v : byPlace) {
-    const dvec3& q = points[v];
-    vertex[v] = rounded.add_vertex({q.x, q.y, q.z});
-  }
+  for (std::size_t i = 0; i < byPlace.size(); ++i)
+    vertex[byPlace[i]] = RoundedMesh::Vertex_index(std::uint32_t(i));
   // A mirror turns the faces inside out on the way back.
   const bool flip = !frame.identity && glm::determinant(frame.worldFromEval) < 0.0;
   struct Face {
@@ -717,20 +714,36 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
     faces.push_back(face);
   }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& a, const Face& b) { return a.corners < b.corners; });
-  auto tags = tagsOf(rounded);
+  // The mesh with the faces added in an order; none when an add fails.
+  // Adding faces one by one can fail in some orders where the finished
+  // mesh is fine (a vertex whose fans meet only once all are there), so
+  // the sorted order, when it fails, gives way to the corefinement's,
+  // which always succeeded before.
   auto exactTags = tagsOf(exact);
-  for (const Face& face : faces) {
-    const auto& t = face.corners;
-    RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
-    if (g == RoundedMesh::null_face())
-      throw std::runtime_error(
-          "the result is not a 2-manifold once rounded to the file's precision (faces meet at "
-          "a hair's breadth)");
-    tags[g] = exactTags[face.from];
-  }
-  return rounded;
+  auto build = [&](const std::vector<Face>& order) -> std::optional<RoundedMesh> {
+    RoundedMesh rounded;
+    rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
+    for (auto v : byPlace) {
+      const dvec3& q = points[v];
+      rounded.add_vertex({q.x, q.y, q.z});
+    }
+    auto tags = tagsOf(rounded);
+    for (const Face& face : order) {
+      const auto& t = face.corners;
+      RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
+      if (g == RoundedMesh::null_face()) return std::nullopt;
+      tags[g] = exactTags[face.from];
+    }
+    return rounded;
+  };
+  std::vector<Face> sorted = faces;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const Face& a, const Face& b) { return a.corners < b.corners; });
+  if (auto rounded = build(sorted)) return std::move(*rounded);
+  if (auto rounded = build(faces)) return std::move(*rounded);
+  throw std::runtime_error(
+      "the result is not a 2-manifold once rounded to the file's precision (faces meet at "
+      "a hair's breadth)");
 }
 
 // The rounded mesh as a PartMesh.
