@@ -24,7 +24,8 @@ dvec3 sectionColor();
 const MaterialPtr& sectionMaterial();
 
 // The scene with each solid cut by the plane (its ghosts and highlights
-// too); open surfaces are kept as they are. Throws std::invalid_argument for a zero or non-finite normal.
+// too); open surfaces are kept as they are. Throws std::invalid_argument for a zero or non-finite
+// normal.
 Scene sectioned(const Scene& scene, const SectionPlane& plane);
 
 }  // namespace csgray::detail
