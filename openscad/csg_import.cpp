@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "engine/degrees.h"
 #include "io/input_file.h"
 #include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
@@ -310,8 +311,8 @@ class Importer {
     const int rings = (n + 1) / 2;
     std::vector<dvec2> out;  // (radius, z), top down
     for (int i = 0; i < rings; ++i) {
-      const double phi = std::numbers::pi * (i + 0.5) / rings;
-      out.push_back({r * std::sin(phi), r * std::cos(phi)});
+      const dvec2 polar = unitCircleDegrees(180.0 * (i + 0.5) / rings);
+      out.push_back({r * polar.y, r * polar.x});
     }
     return out;
   }
@@ -329,8 +330,8 @@ class Importer {
         continue;
       }
       for (int j = 0; j < n; ++j) {
-        const double a = 2.0 * std::numbers::pi * j / n;
-        points.push_back({ring.x * std::cos(a), ring.x * std::sin(a), ring.y});
+        const dvec2 corner = ring.x * unitCircleDegrees(360.0 * j / n);
+        points.push_back({corner.x, corner.y, ring.y});
       }
     }
     auto at = [&](std::size_t ring, int j) -> std::int64_t {

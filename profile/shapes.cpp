@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/degrees.h"
+
 namespace csgray::detail {
 
 namespace {
@@ -164,8 +166,7 @@ RegionPtr regularPolygonRegion(double n, std::optional<double> r, std::optional<
   }
   std::vector<dvec2> corners(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / n;
-    corners[i] = radius * dvec2(std::cos(a), std::sin(a));
+    corners[i] = radius * unitCircleDegrees(360.0 * static_cast<double>(i) / n);
   }
   Profile p;
   p.loops.push_back(loopThrough(corners));

@@ -37,6 +37,14 @@ constexpr double kContactOffset = 0.01;
 // the primitive whose face caused it (a groove's flush top, 9 tolerances
 // below the crossing of a fillet's faces that it made).
 constexpr double kBlameReach = 10.0;
+// How far, in tolerances, the repairs after rounding may move the surface,
+// and how many rounds of sliver removal they try. A twentieth: where four
+// faces of turned boxes almost meet at a point (OpenSCAD writes rotation
+// matrices with 6 digits), the corners there lie 1.2e-4 apart, past a
+// hundredth of the default tolerance, and rounding folds the faces
+// between them.
+constexpr double kRepairReach = 0.05;
+constexpr int kSliverRounds = 3;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
@@ -815,15 +823,21 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   if (defect.kind == MeshDefect::Kind::SelfIntersecting ||
       defect.kind == MeshDefect::Kind::Degenerate) {
     // Rounding can also fold a sliver over its neighbour where faces meet
-    // at a hair's breadth (coplanar faces of a rotated union): the slivers
-    // go first, then what still crosses, each change within a hundredth of
-    // the tolerance, or the crossing stays and the export fails.
+    // at a hair's breadth (coplanar faces of a rotated union; four faces
+    // of turned boxes through one point): the slivers go first, in rounds,
+    // since a flip can leave a new sliver beside it (OpenSCAD's rounded
+    // box of polygons: 138 crossings, then 18, then none), then what still
+    // crosses; each change within kRepairReach of the tolerance, or the
+    // crossing stays and the export fails.
     ++counts.repairs;
-    removeSlivers(rounded, 0.01 * tolerance);
-    part = partFrom(rounded);
-    defect = meshDefect(part.mesh);
+    const double reach = kRepairReach * tolerance;
+    for (int round = 0; round < kSliverRounds && !defect.valid(); ++round) {
+      removeSlivers(rounded, reach);
+      part = partFrom(rounded);
+      defect = meshDefect(part.mesh);
+    }
     if (!defect.valid()) {
-      removeCrossings(rounded, 0.01 * tolerance);
+      removeCrossings(rounded, reach);
       part = partFrom(rounded);
       defect = meshDefect(part.mesh);
     }
