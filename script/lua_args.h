@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <glm/vec2.hpp>
 #include <lua.hpp>
 #include <optional>
 #include <set>
@@ -12,6 +13,8 @@
 #include "engine/ray.h"
 
 namespace csgray::detail {
+
+using glm::dvec2;
 
 class LuaArgs {
  public:
@@ -63,6 +66,7 @@ bool hasStringKey(lua_State* L, int index);
 
 // Values at a stack index, with errors that name what was expected.
 double toNumber(lua_State* L, int index, const std::string& what);
+dvec2 toVec2(lua_State* L, int index, const std::string& what);  // {x, y}
 dvec3 toVec3(lua_State* L, int index, const std::string& what);
 // A colour as linear RGB: a string is a CSS name or a hex code, in sRGB
 // (scene/color_names.h); anything else is a linear {r, g, b} (toVec3).
