@@ -369,6 +369,16 @@ ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
   if (region.op() == Region::Op::Leaf)
     return evenOddSet(exactLoops(region.profile(), ellipseTolerance));
   const std::vector<RegionPtr>& operands = region.operands();
+  if (region.op() == Region::Op::Union && operands.size() > 2) {
+    // One aggregated join (CGAL's divide and conquer) rather than one join
+    // per operand, each of which would sweep all that came before it again.
+    std::vector<ArcPolygonWithHoles> pieces;
+    for (const RegionPtr& operand : operands)
+      polygonSetOf(*operand, ellipseTolerance).polygons_with_holes(std::back_inserter(pieces));
+    ArcPolygonSet set;
+    if (!pieces.empty()) set.join(pieces.begin(), pieces.end());
+    return set;
+  }
   ArcPolygonSet set = polygonSetOf(*operands.front(), ellipseTolerance);
   for (std::size_t i = 1; i < operands.size(); ++i) {
     const ArcPolygonSet other = polygonSetOf(*operands[i], ellipseTolerance);

@@ -72,6 +72,14 @@ TEST(SolidProjection, AFaceOnThePlaneIsInTheCut) {
   const SolidPtr stacked = booleanShape(
       Boolean::Op::Union, {standing, standing->transformed(Affine::translation({0.5, 0.0, -3.0}))});
   EXPECT_NEAR(projectedArea(stacked, true), 3.0, 1e-12);
+  // A cube less its upper half: the cut face on the plane is the section,
+  // though the cutter's bottom face is on the plane too.
+  const SolidPtr half = booleanShape(
+      Boolean::Op::Difference,
+      {boxShape(dvec3(2.0), true),
+       boxShape(dvec3(4.0, 4.0, 2.0), true)->transformed(Affine::translation({0.0, 0.0, 1.0}))});
+  EXPECT_NEAR(projectedArea(half, true), 4.0, 1e-12);
+  EXPECT_NEAR(projectedArea(half, false), 4.0, 1e-12);
 }
 
 TEST(SolidProjection, ACutThroughCornersAndASolidThatOnlyTouches) {
