@@ -50,7 +50,7 @@ Sections sections(const Solid& solid, const Bounds& outer, double tolerance) {
             Region::leaf(meshSection(mesh, PlaneShift::Up)), touchesPlane(mesh)};
   }
   const auto* node = dynamic_cast<const Boolean*>(&solid);
-  if (!node) throw std::logic_error("projection: unknown solid " + solid.kind());
+  if (!node) throw std::logic_error("a solid of an unknown kind: " + solid.kind());
   std::vector<RegionPtr> down, up;
   bool touches = false;
   for (const SolidPtr& operand : node->children()) {
@@ -63,17 +63,20 @@ Sections sections(const Solid& solid, const Bounds& outer, double tolerance) {
           Region::boolean(regionOp(node->op()), std::move(up)), touches};
 }
 
-// The shadow as a tree of regions: unions stay unions; anything else is
-// meshed whole.
+// The shadow as a tree of regions: unions stay unions, a primitive is
+// cast from its own mesh, and a difference or an intersection is meshed
+// whole by the exporter's booleans.
 RegionPtr shadow(const SolidPtr& solid, const Solid& model) {
+  if (const auto* primitive = dynamic_cast<const Primitive*>(solid.get()))
+    return Region::leaf(
+        meshShadow(primitive->tessellate(projectionTolerance(model), model.bounds())));
   const auto* node = dynamic_cast<const Boolean*>(solid.get());
   if (node && node->op() == Boolean::Op::Union) {
     std::vector<RegionPtr> operands;
     for (const SolidPtr& operand : node->children()) operands.push_back(shadow(operand, model));
     return Region::boolean(Region::Op::Union, std::move(operands));
   }
-  const double tolerance = node ? shadowBooleanTolerance(model) : projectionTolerance(model);
-  return Region::leaf(meshShadow(meshOfSolid(*solid, tolerance).mesh));
+  return Region::leaf(meshShadow(meshOfSolid(*solid, shadowBooleanTolerance(model)).mesh));
 }
 
 }  // namespace
