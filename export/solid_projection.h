@@ -24,7 +24,8 @@ namespace csgray::detail {
 // exact one as an export of a solid.
 double projectionTolerance(const Solid& solid);
 // The tolerance of the exporter's booleans for a shadow, ten times that:
-// a boolean mesh costs about the square of the fineness.
+// their triangles, and their time, grow as 1 / tolerance (Old_example021's
+// ball less three cones: 1.4 s at 10⁻², 6.6 s at 10⁻³ on a busy machine).
 double shadowBooleanTolerance(const Solid& solid);
 
 // The section (cut) or shadow of the solid's model (ghosts and disabled
