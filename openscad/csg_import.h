@@ -34,6 +34,11 @@ struct CsgImportOptions {
   // Reads a triangle mesh (STL, OFF, OBJ, PLY) as a solid's; throws
   // std::invalid_argument. Without it, import() of a mesh is an error.
   std::function<TriangleMesh(const std::string& path)> loadMesh;
+  // The section by z = 0 (cut) or the shadow on it of a solid, for
+  // projection(); throws std::exception with a one-line message. Without
+  // it, projection() is an error. (solidProjection of
+  // export/solid_projection.h fits.)
+  std::function<Profile(const SolidPtr& solid, bool cut)> project;
 };
 
 // What a file holds: solids (3D) and regions (2D) at the top level, each

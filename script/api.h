@@ -47,6 +47,9 @@ void registerRegionApi(lua_State* L);
 void registerCsgApi(lua_State* L);
 Scene csgFileScene(const std::string& path, const ScriptOptions& options);
 void registerSweepApi(lua_State* L);
+// projection(solid, {cut=}) (api_projection.cpp): a solid's section by
+// z = 0 or its shadow on it, as a region (ScriptOptions::projectSolid).
+void registerProjectionApi(lua_State* L);
 // text{...} (api_text.cpp): a string's outlines as a region.
 void registerTextApi(lua_State* L);
 // kind: what the region was made as, for messages ("region", "text").
