@@ -19,7 +19,7 @@ PACKAGES := build-essential cmake pkg-config \
             libcgal-dev libopenmesh-dev libglm-dev libopenimageio-dev \
             liblua5.4-dev libcli11-dev libgtest-dev libtbb-dev lib3mf-dev libzip-dev zlib1g-dev time \
             libcpp-httplib-dev chromium \
-            libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-dejavu-core
+            libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-dejavu-core fonts-liberation
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 

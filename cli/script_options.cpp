@@ -63,8 +63,8 @@ void addScriptOptions(CLI::App& command, ScriptArguments& arguments) {
       ->check(CLI::ExistingDirectory);
   command
       .add_option("--facets", arguments.facets,
-                  "An OpenSCAD .csg file's circles, spheres and cylinders: exact, or the "
-                  "polygons OpenSCAD makes from $fn, $fa, $fs (openscad)")
+                  "An OpenSCAD .csg file's circles, spheres, cylinders and letters: exact, or "
+                  "the polygons OpenSCAD makes from $fn, $fa, $fs (openscad)")
       ->check(CLI::IsMember({"exact", "openscad"}))
       ->capture_default_str();
   command

@@ -12,6 +12,7 @@
 #include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
 #include "primitives/revolution.h"
+#include "profile/glyph_outlines.h"
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
 #include "scene/color_names.h"
@@ -102,6 +103,14 @@ class Importer {
     return v->number;
   }
 
+  std::string string(const CsgNode& node, const char* key, const std::string& fallback,
+                     int position = -1) const {
+    const CsgValue* v = find(node, key, position);
+    if (!given(v)) return fallback;
+    if (v->kind != CsgValue::Kind::String) throw NodeError(std::string(key) + " must be a string");
+    return v->text;
+  }
+
   bool boolean(const CsgNode& node, const char* key, bool fallback) const {
     const CsgValue* v = find(node, key);
     if (!given(v)) return fallback;
@@ -151,13 +160,22 @@ class Importer {
     return out;
   }
 
+  // The node's $fn, $fa and $fs.
+  struct Resolution {
+    double fn, fa, fs;
+  };
+  Resolution resolution(const CsgNode& node) const {
+    const Resolution r{number(node, "$fn", 0.0), number(node, "$fa", 12.0),
+                       number(node, "$fs", 2.0)};
+    if (!(r.fa > 0.0) || !(r.fs > 0.0)) throw NodeError("$fa and $fs must be > 0");
+    return r;
+  }
+
   // Does the node ask for a polygon of n sides rather than a circle?
   int polygonSides(const CsgNode& node, double r) const {
-    const double fn = number(node, "$fn", 0.0), fa = number(node, "$fa", 12.0),
-                 fs = number(node, "$fs", 2.0);
-    if (!(fa > 0.0) || !(fs > 0.0)) throw NodeError("$fa and $fs must be > 0");
-    if (options_.facets == CsgFacets::OpenScad) return openscadFragments(r, fn, fa, fs);
-    if (fn >= 1.0 && fn <= kShapeFacets) return std::max(int(fn), 3);
+    const Resolution res = resolution(node);
+    if (options_.facets == CsgFacets::OpenScad) return openscadFragments(r, res.fn, res.fa, res.fs);
+    if (res.fn >= 1.0 && res.fn <= kShapeFacets) return std::max(int(res.fn), 3);
     return 0;  // exact
   }
 
@@ -229,10 +247,61 @@ class Importer {
     if (n == "hull") return hullOf(node);
     if (n == "import") return importFile(node);
     if (n == "minkowski") return minkowskiOf(node);
-    if (n == "text") throw NodeError("text is not supported yet");
+    if (n == "text") return text(node);
     if (n == "projection") return projection(node);
     if (n == "surface") throw NodeError("surface (height maps) is not supported yet");
     throw NodeError("unknown node");
+  }
+
+  // OpenSCAD's text(), sized and laid out as OpenSCAD does
+  // (TextLayout::Metrics::OpenScad): the font's curves, or with OpenSCAD's
+  // facets the chords OpenSCAD draws them with.
+  Shape text(const CsgNode& node) {
+    TextLayout layout;
+    layout.metrics = TextLayout::Metrics::OpenScad;
+    layout.blankMakesNothing = true;  // OpenSCAD makes nothing of "" or "  "
+    layout.text = string(node, "text", "", 0);
+    layout.size = number(node, "size", 10.0, 1);
+    layout.spacing = number(node, "spacing", 1.0);
+    // OpenSCAD's FontCache::DEFAULT_FONT, for an empty name.
+    layout.font = string(node, "font", "", 2);
+    if (layout.font.find_first_not_of(" \t") == std::string::npos)
+      layout.font = "Liberation Sans:style=Regular";
+    // OpenSCAD takes a value it does not know for left and baseline.
+    const std::string h = string(node, "halign", "left"), v = string(node, "valign", "baseline");
+    using H = TextLayout::HAlign;
+    using V = TextLayout::VAlign;
+    layout.halign = h == "right" ? H::Right : h == "center" ? H::Center : H::Left;
+    layout.valign = v == "top"      ? V::Top
+                    : v == "center" ? V::Center
+                    : v == "bottom" ? V::Bottom
+                                    : V::Baseline;
+    using D = TextLayout::Direction;
+    const std::string d = string(node, "direction", "ltr");
+    layout.direction = d == "rtl"   ? D::RightToLeft
+                       : d == "ttb" ? D::TopToBottom
+                       : d == "btt" ? D::BottomToTop
+                                    : D::LeftToRight;
+    layout.language = string(node, "language", "en");
+    layout.script = string(node, "script", "");
+    if (options_.facets == CsgFacets::OpenScad) {
+      // OpenSCAD's text.cc: "a fraction of the number of full circle
+      // segments", the fragments of a circle of radius size over 8, plus 1.
+      const Resolution res = resolution(node);
+      layout.curveSegments =
+          std::max(openscadFragments(layout.size, res.fn, res.fa, res.fs) / 8 + 1, 2);
+    }
+    RegionPtr region;
+    try {
+      region = textRegion(layout);
+    } catch (const std::invalid_argument& e) {
+      // Its message names the node ("text: ..."); so does ours.
+      std::string message = e.what();
+      if (message.starts_with("text: ")) message.erase(0, 6);
+      throw NodeError(message);
+    }
+    if (!region) return {};
+    return {nullptr, region};
   }
 
   Shape multmatrix(const CsgNode& node) {
@@ -453,12 +522,6 @@ class Importer {
     return {solid, nullptr};
   }
 
-  static double tolerance(const Region& region) {
-    const ProfileBounds& b = region.bounds();
-    const double size = b.empty() ? 0.0 : std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-    return size > 0.0 ? 1e-7 * size : 1e-7;
-  }
-
   Shape offset(const CsgNode& node) {
     RegionPtr region = regionOfChildren(node);
     if (!region) return {};
@@ -467,10 +530,11 @@ class Importer {
     Profile result;
     if (given(r) && r->kind == CsgValue::Kind::Number) {
       if (r->number == 0.0) return {nullptr, region};
-      result = offsetRounded(*region, r->number, tolerance(*region));
+      result = offsetRounded(*region, r->number, evaluationTolerance(*region));
     } else {
       if (delta == 0.0) return {nullptr, region};
-      result = offsetDelta(*region, delta, boolean(node, "chamfer", false), tolerance(*region));
+      result = offsetDelta(*region, delta, boolean(node, "chamfer", false),
+                           evaluationTolerance(*region));
     }
     if (result.loops.empty()) return {};
     return {nullptr, Region::leaf(std::move(result))};
@@ -520,7 +584,7 @@ class Importer {
     std::vector<RegionPtr> regions;
     for (const Shape& s : shapes) regions.push_back(s.region);
     double tol = 1e300;
-    for (const RegionPtr& r : regions) tol = std::min(tol, tolerance(*r));
+    for (const RegionPtr& r : regions) tol = std::min(tol, evaluationTolerance(*r));
     Profile result = hull(regions, tol);
     if (result.loops.empty()) return {};
     return {nullptr, Region::leaf(std::move(result))};

@@ -45,6 +45,21 @@ bool hasValue(FcPattern* pattern, const char* property, const FcChar8* wanted) {
   return false;
 }
 
+// Is the match's family one the name stands for: the name's own, or one
+// the configuration binds to it strongly, as a font's own configuration
+// does (DejaVu Sans for "Bitstream Vera Sans", Liberation Sans for
+// "Arial")? The families fontconfig adds as a last resort are bound weakly.
+bool boundFamily(FcPattern* substituted, FcPattern* match) {
+  FcValue value;
+  FcValueBinding binding;
+  for (int i = 0;
+       FcPatternGetWithBinding(substituted, FC_FAMILY, i, &value, &binding) == FcResultMatch; ++i)
+    if (binding != FcValueBindingWeak && value.type == FcTypeString &&
+        hasValue(match, FC_FAMILY, value.u.s))
+      return true;
+  return false;
+}
+
 struct PatternDeleter {
   void operator()(FcPattern* p) const { FcPatternDestroy(p); }
 };
@@ -79,8 +94,7 @@ FontFile findFont(const std::string& name) {
   FcResult result = FcResultNoMatch;
   Pattern match(FcFontMatch(nullptr, pattern.get(), &result));
   if (!match) fail("no font found for " + quoted(name));
-  if (!genericFamily(wantedFamily) &&
-      !hasValue(match.get(), FC_FAMILY, reinterpret_cast<const FcChar8*>(wantedFamily.c_str())))
+  if (!genericFamily(wantedFamily) && !boundFamily(pattern.get(), match.get()))
     fail("font " + quoted(wantedFamily) + " not found (fc-list lists the installed fonts)");
   if (styled &&
       !hasValue(match.get(), FC_STYLE, reinterpret_cast<const FcChar8*>(wantedStyle.c_str())))
@@ -100,11 +114,22 @@ struct OutlineBuilder {
   std::vector<ProfileLoop> contours;
   dvec2 pen{0.0};
 
-  dvec2 point(const FT_Vector* v) const { return origin + dvec2(double(v->x), double(v->y)); }
+  double units = 1.0;  // font units per unit of FreeType's coordinates
+  dvec2 point(const FT_Vector* v) const {
+    return origin + units * dvec2(double(v->x), double(v->y));
+  }
+  int curveSegments = 0;  // TextLayout::curveSegments
+
   void add(const ProfileEdge& e) {
     if (contours.empty()) contours.emplace_back();
     contours.back().edges.push_back(e);
     pen = e.to;
+  }
+  void addCurve(const ProfileEdge& e) {
+    if (curveSegments == 0) return add(e);
+    for (int k = 1; k <= curveSegments; ++k)
+      add(ProfileEdge::segment(
+          pen, k == curveSegments ? e.to : bezierPoint(e, double(k) / curveSegments)));
   }
 
   static OutlineBuilder& of(void* user) { return *static_cast<OutlineBuilder*>(user); }
@@ -122,12 +147,12 @@ struct OutlineBuilder {
   }
   static int conicTo(const FT_Vector* control, const FT_Vector* to, void* user) {
     OutlineBuilder& b = of(user);
-    b.add(ProfileEdge::quadratic(b.pen, b.point(control), b.point(to)));
+    b.addCurve(ProfileEdge::quadratic(b.pen, b.point(control), b.point(to)));
     return 0;
   }
   static int cubicTo(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
     OutlineBuilder& b = of(user);
-    b.add(ProfileEdge::cubic(b.pen, b.point(c1), b.point(c2), b.point(to)));
+    b.addCurve(ProfileEdge::cubic(b.pen, b.point(c1), b.point(c2), b.point(to)));
     return 0;
   }
 };
@@ -205,12 +230,91 @@ hb_direction_t hbDirection(TextLayout::Direction d) {
   return HB_DIRECTION_LTR;
 }
 
+// The move that puts x = 0 at the left, the middle or the right of
+// [left, right].
+double alignedOffset(TextLayout::HAlign halign, double left, double right) {
+  switch (halign) {
+    case TextLayout::HAlign::Left:
+      return -left;
+    case TextLayout::HAlign::Center:
+      return -0.5 * (left + right);
+    case TextLayout::HAlign::Right:
+      return -right;
+  }
+  return 0.0;
+}
+
+// The move that puts y = 0 at the baseline (where it is), or at the
+// bottom, the middle or the top of [bottom, top].
+double alignedOffset(TextLayout::VAlign valign, double bottom, double top) {
+  switch (valign) {
+    case TextLayout::VAlign::Baseline:
+      return 0.0;
+    case TextLayout::VAlign::Bottom:
+      return -bottom;
+    case TextLayout::VAlign::Center:
+      return -0.5 * (bottom + top);
+    case TextLayout::VAlign::Top:
+      return -top;
+  }
+  return 0.0;
+}
+
+// OpenSCAD 2021.01's FreetypeRenderer (src/FreetypeRenderer.cc) asks
+// FreeType for a character size of 10^5/64 points at 100 dpi and divides
+// the outlines' 26.6 coordinates by 10^5 before multiplying them by size:
+// an em is size·100/72 long. It divides HarfBuzz's positions, and the
+// glyph boxes it aligns by, by 1.024·10^5 instead ("only 2.4%
+// difference", its comment says), so letters stand 1/1.024 as far apart
+// as the font says and the alignment is short by as much.
+constexpr double kOpenScadCharSize = 1e5;  // 26.6 points, at 100 dpi
+constexpr double kOpenScadEmPerSize = 100.0 / 72.0;
+constexpr double kOpenScadAdvanceFactor = 1.0 / 1.024;
+constexpr double kOpenScadPixelsPerEm = kOpenScadCharSize / 64.0 * 100.0 / 72.0;
+
+// What OpenSCAD aligns text by: for horizontal text the advance (width)
+// and the highest top and lowest bottom of the glyphs' control boxes,
+// the baseline included (ascend, descend); for vertical text the widest
+// box and the advance. Its boxes are FreeType's grid-fitted control boxes
+// (all the outline's points, rounded out to whole pixels at its size).
+struct OpenScadBoxes {
+  double ascend = 0.0, descend = 0.0, widest = 0.0;  // font units
+
+  // units: font units per unit of the outline's coordinates.
+  void add(FT_Outline& outline, int unitsPerEm, double units) {
+    FT_BBox box;
+    FT_Outline_Get_CBox(&outline, &box);
+    const double pixel = unitsPerEm / kOpenScadPixelsPerEm;
+    auto down = [&](FT_Pos v) {
+      return std::floor(v * units / pixel) * pixel * kOpenScadAdvanceFactor;
+    };
+    auto up = [&](FT_Pos v) {
+      return std::ceil(v * units / pixel) * pixel * kOpenScadAdvanceFactor;
+    };
+    ascend = std::max(ascend, up(box.yMax));
+    descend = std::max(descend, -down(box.yMin));
+    widest = std::max(widest, up(box.xMax) - down(box.xMin));
+  }
+
+  // The move that puts the text where OpenSCAD's halign and valign do;
+  // pen: where the next glyph would go.
+  dvec2 shift(const TextLayout& layout, bool horizontal, const dvec2& pen) const {
+    if (horizontal)
+      return {alignedOffset(layout.halign, 0.0, pen.x),
+              alignedOffset(layout.valign, -descend, ascend)};
+    return {alignedOffset(layout.halign, 0.0, widest), alignedOffset(layout.valign, 0.0, pen.y)};
+  }
+};
+
 }  // namespace
 
 std::string fontFile(const std::string& name) { return findFont(name).path; }
 
 RegionPtr textRegion(const TextLayout& layout) {
-  if (layout.text.empty()) fail("the string is empty");
+  if (layout.text.empty()) {
+    if (layout.blankMakesNothing) return nullptr;
+    fail("the string is empty");
+  }
   if (!std::isfinite(layout.size) || !(layout.size > 0.0)) {
     std::ostringstream msg;
     msg << "size must be a positive number (got " << layout.size << ")";
@@ -222,6 +326,7 @@ RegionPtr textRegion(const TextLayout& layout) {
     fail(msg.str());
   }
   const FontFile font = findFont(layout.font);
+  const bool openscad = layout.metrics == TextLayout::Metrics::OpenScad;
 
   FT_Library library = nullptr;
   if (FT_Init_FreeType(&library)) fail("FreeType could not be started");
@@ -258,11 +363,12 @@ RegionPtr textRegion(const TextLayout& layout) {
     dvec2 origin;
   };
   std::vector<Placed> placed;
+  const double advanceFactor = openscad ? kOpenScadAdvanceFactor : 1.0;
   dvec2 pen(0.0);
   for (unsigned i = 0; i < count; ++i) {
     const hb_glyph_position_t& p = positions[i];
-    placed.push_back({infos[i].codepoint, pen + dvec2(p.x_offset, p.y_offset)});
-    pen += layout.spacing * dvec2(p.x_advance, p.y_advance);
+    placed.push_back({infos[i].codepoint, pen + advanceFactor * dvec2(p.x_offset, p.y_offset)});
+    pen += advanceFactor * layout.spacing * dvec2(p.x_advance, p.y_advance);
   }
   hb_buffer_destroy(buffer);
   hb_font_destroy(hbFont);
@@ -270,18 +376,32 @@ RegionPtr textRegion(const TextLayout& layout) {
   hb_blob_destroy(blob);
 
   OutlineBuilder builder;
+  builder.curveSegments = std::max(layout.curveSegments, 0);
   FT_Outline_Funcs funcs{};
   funcs.move_to = OutlineBuilder::moveTo;
   funcs.line_to = OutlineBuilder::lineTo;
   funcs.conic_to = OutlineBuilder::conicTo;
   funcs.cubic_to = OutlineBuilder::cubicTo;
+  OpenScadBoxes boxes;
+  FT_Int32 load = FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP;
+  if (openscad) {
+    // OpenSCAD's glyphs are FreeType's at its size, hinted: at 2170
+    // pixels to the em the font's instructions move points by fractions
+    // of a pixel, which is still 3.5·10⁻⁴ of the area of an "O" in
+    // Liberation Sans. Their coordinates are then 26.6 pixels.
+    if (FT_Set_Char_Size(face, 0, FT_F26Dot6(kOpenScadCharSize), 100, 100))
+      fail("cannot size the font " + quoted(layout.font));
+    load = FT_LOAD_DEFAULT;
+    builder.units = unitsPerEm / (64.0 * kOpenScadPixelsPerEm);
+  }
   for (const Placed& g : placed) {
-    if (FT_Load_Glyph(face, g.glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
+    if (FT_Load_Glyph(face, g.glyph, load))
       fail("cannot read a glyph of the font " + quoted(layout.font));
     if (face->glyph->format != FT_GLYPH_FORMAT_OUTLINE)
       fail("the font " + quoted(layout.font) + " has no outlines");
     builder.origin = g.origin;
     FT_Outline_Decompose(&face->glyph->outline, &funcs, &builder);
+    if (openscad) boxes.add(face->glyph->outline, unitsPerEm, builder.units);
   }
   std::vector<ProfileLoop> contours;
   for (ProfileLoop& c : builder.contours) {
@@ -292,43 +412,29 @@ RegionPtr textRegion(const TextLayout& layout) {
       c.edges.push_back(ProfileEdge::segment(c.edges.back().to, c.edges.front().from));
     contours.push_back(std::move(c));
   }
-  if (contours.empty()) fail(quoted(layout.text) + " has no outline (only spaces)");
+  if (contours.empty()) {
+    if (layout.blankMakesNothing) return nullptr;
+    fail(quoted(layout.text) + " has no outline (only spaces)");
+  }
 
   // From font units to the size, then aligned.
-  const double scale = layout.size / ascent;
-  Profile all;
-  for (const ProfileLoop& c : contours) all.loops.push_back(c);
-  const ProfileBounds ink = all.bounds();
+  const double scale =
+      openscad ? layout.size * kOpenScadEmPerSize / unitsPerEm : layout.size / ascent;
   const bool horizontal = layout.direction == TextLayout::Direction::LeftToRight ||
                           layout.direction == TextLayout::Direction::RightToLeft;
   dvec2 shift(0.0);
-  // Horizontal text is aligned along its line by the pen's advance (where
-  // the next letter would go), as a typesetter does; the rest by the ink.
-  const double left = horizontal ? std::min(0.0, pen.x) : ink.lo.x;
-  const double right = horizontal ? std::max(0.0, pen.x) : ink.hi.x;
-  switch (layout.halign) {
-    case TextLayout::HAlign::Left:
-      shift.x = -left;
-      break;
-    case TextLayout::HAlign::Center:
-      shift.x = -0.5 * (left + right);
-      break;
-    case TextLayout::HAlign::Right:
-      shift.x = -right;
-      break;
-  }
-  switch (layout.valign) {
-    case TextLayout::VAlign::Baseline:
-      break;
-    case TextLayout::VAlign::Bottom:
-      shift.y = -ink.lo.y;
-      break;
-    case TextLayout::VAlign::Center:
-      shift.y = -0.5 * (ink.lo.y + ink.hi.y);
-      break;
-    case TextLayout::VAlign::Top:
-      shift.y = -ink.hi.y;
-      break;
+  if (openscad) {
+    shift = boxes.shift(layout, horizontal, pen);
+  } else {
+    Profile all;
+    for (const ProfileLoop& c : contours) all.loops.push_back(c);
+    const ProfileBounds ink = all.bounds();
+    // Horizontal text is aligned along its line by the pen's advance (where
+    // the next letter would go), as a typesetter does; the rest by the ink.
+    const double left = horizontal ? std::min(0.0, pen.x) : ink.lo.x;
+    const double right = horizontal ? std::max(0.0, pen.x) : ink.hi.x;
+    shift = {alignedOffset(layout.halign, left, right),
+             alignedOffset(layout.valign, ink.lo.y, ink.hi.y)};
   }
   const Affine2 place{dmat2(scale), scale * shift};
   std::vector<RegionPtr> leaves;

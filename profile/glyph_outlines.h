@@ -27,6 +27,19 @@ struct TextLayout {
   double spacing = 1.0;  // a factor on the advances from glyph to glyph
   Direction direction = Direction::LeftToRight;
   std::string language, script;  // BCP 47 and ISO 15924 tags; empty: guessed from the text
+
+  // How size and alignment are read: csgray's text{} (size is the font's
+  // ascent; vertical alignment by the ink), or OpenSCAD 2021.01's text()
+  // as its .csg files mean it (an em of size/0.72, the glyphs hinted at
+  // OpenSCAD's size, its advances and alignment: glyph_outlines.cpp).
+  enum class Metrics { Ascent, OpenScad };
+  Metrics metrics = Metrics::Ascent;
+  // 0: the font's curves, exact; n > 0: each curve drawn as n chords at
+  // equal steps of its parameter, as OpenSCAD draws text.
+  int curveSegments = 0;
+  // A string with no outline (empty, or only spaces): an error, or no
+  // region at all (nullptr), as OpenSCAD's text() makes nothing.
+  bool blankMakesNothing = false;
 };
 
 // The text's outlines: one even-odd leaf per group of glyph contours that
@@ -36,7 +49,7 @@ struct TextLayout {
 // empty string, a size that is not a positive finite number, a spacing that
 // is not finite or not positive, a font fontconfig does not have (it would
 // fall back to another silently), a font name that names a file, or a
-// string with no outline (only spaces).
+// string with no outline (only spaces) unless blankMakesNothing.
 RegionPtr textRegion(const TextLayout& layout);
 
 // The file of the font fontconfig gives for the name, or the error above.

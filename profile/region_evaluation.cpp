@@ -2,6 +2,7 @@
 // polygons of evaluated profiles. evaluate() and the offsets are in cgal/.
 #include "profile/region_evaluation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -40,6 +41,18 @@ double area(const Profile& evaluated) {
         sum += cross(e.center, e.to - e.from) + glm::determinant(e.axes) * (e.angle1 - e.angle0);
     }
   return 0.5 * sum;
+}
+
+double evaluationTolerance(const Region& region) {
+  bool curves = false;
+  region.forEachLeaf([&](const Profile& leaf) {
+    for (const ProfileLoop& loop : leaf.loops)
+      for (const ProfileEdge& e : loop.edges) curves = curves || e.bezier();
+  });
+  const double fraction = curves ? 1e-5 : 1e-7;
+  const ProfileBounds& b = region.bounds();
+  const double size = b.empty() ? 0.0 : std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+  return size > 0.0 ? fraction * size : fraction;
 }
 
 std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance) {

@@ -90,15 +90,6 @@ const RegionPtr& receiver(lua_State* L, const char* method) {
   return regionAt(L, 1, std::string(method) + ": the receiver (call it as r:" + method + "(...))");
 }
 
-// The tolerance within which evaluate() replaces elliptic arcs (not
-// circles) by polygons: a ten-millionth of the region's size.
-double ellipseTolerance(const Region& region) {
-  const ProfileBounds& b = region.bounds();
-  if (b.empty()) return 1e-7;
-  const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-  return size > 0.0 ? 1e-7 * size : 1e-7;
-}
-
 // ---- Shapes -------------------------------------------------------------------
 
 // A shape's table of named parameters, or a bare main value (circle(5),
@@ -532,7 +523,7 @@ int offsetMethod(lua_State* L) {
     throw std::invalid_argument("offset: needs r= (rounded) or delta= (with chamfer=true or not)");
   if (r && chamfer)
     throw std::invalid_argument("offset: chamfer goes with delta=, not with r= (which rounds)");
-  const double tolerance = ellipseTolerance(*region);
+  const double tolerance = evaluationTolerance(*region);
   Profile result = r ? offsetRounded(*region, *r, tolerance)
                      : offsetDelta(*region, *delta, chamfer.value_or(false), tolerance);
   pushRegionAs(L, Region::leaf(std::move(result)), "region");
@@ -545,7 +536,7 @@ int hullOf(lua_State* L) {
   if (!firstOperandIsRegion(L)) return solidsFunction(L);
   const std::vector<RegionPtr> regions = regionOperands(L, "hull");
   double tolerance = 1e300;
-  for (const RegionPtr& r : regions) tolerance = std::min(tolerance, ellipseTolerance(*r));
+  for (const RegionPtr& r : regions) tolerance = std::min(tolerance, evaluationTolerance(*r));
   pushRegionAs(L, Region::leaf(hull(regions, tolerance)), "region");
   return 1;
 }
@@ -575,7 +566,7 @@ int minkowskiOf(lua_State* L) {
     std::optional<std::pair<dvec2, double>> circle = discOf(*disc);
     if (!circle)
       throw std::invalid_argument("minkowski: of regions, one of each pair must be a circle");
-    Profile grown = offsetRounded(*shape, circle->second, ellipseTolerance(*shape));
+    Profile grown = offsetRounded(*shape, circle->second, evaluationTolerance(*shape));
     sum = Region::leaf(std::move(grown))->transformed({dmat2(1.0), circle->first});
   }
   pushRegionAs(L, sum, "region");
@@ -585,7 +576,7 @@ int minkowskiOf(lua_State* L) {
 int areaMethod(lua_State* L) {
   const RegionPtr& region = receiver(L, "area");
   checkArgumentCount(L, "area", 0, 2);
-  lua_pushnumber(L, area(evaluate(*region, ellipseTolerance(*region))));
+  lua_pushnumber(L, area(evaluate(*region, evaluationTolerance(*region))));
   return 1;
 }
 

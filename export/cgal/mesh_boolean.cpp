@@ -71,14 +71,18 @@ struct EvaluationFrame {
     if (!primitive) return;
     const glm::dmat3 linear(primitive->frame().worldFromObject());
     // Only a rotation or a mirror (orthonormal columns), so that the
-    // tolerance means the same in both frames.
+    // tolerance means the same in both frames: to 10⁻⁵, since OpenSCAD's
+    // .csg files print rotations with six digits (its logo turned so took
+    // 44 s to export in the identity frame, 3 s in this one). The inverse,
+    // not the transpose, takes that primitive's own frame back to the
+    // identity.
     const glm::dmat3 gram = glm::transpose(linear) * linear;
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r)
-        if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-12) return;
+        if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-5) return;
     if (linear == glm::dmat3(1.0)) return;
     worldFromEval = linear;
-    evalFromWorld = glm::transpose(linear);
+    evalFromWorld = glm::inverse(linear);
     identity = false;
   }
 

@@ -177,6 +177,11 @@ TEST(Text, BadInputIsRefused) {
   layout.font = "No Such Font";
   EXPECT_EQ(errorOf(layout),
             "text: font \"No Such Font\" not found (fc-list lists the installed fonts)");
+  // A family the configuration only offers as a last resort is not the
+  // name's: "Helvetica" is not DejaVu Sans (nor Liberation Sans, which
+  // fontconfig offers for it among the metric-compatible fonts it lacks).
+  layout.font = "Helvetica";
+  EXPECT_NE(errorOf(layout).find("font \"Helvetica\" not found"), std::string::npos);
   layout.font = "DejaVu Sans:style=Wobbly";
   EXPECT_EQ(errorOf(layout), "text: font \"DejaVu Sans\" has no style \"Wobbly\"");
   layout.font = ":file=/etc/passwd";
@@ -184,6 +189,18 @@ TEST(Text, BadInputIsRefused) {
   layout.font = "DejaVu Sans";
   layout.text = "   ";
   EXPECT_EQ(errorOf(layout), "text: \"   \" has no outline (only spaces)");
+}
+
+// A name the font's own configuration binds to it (fonts-dejavu-core's
+// 57-dejavu-sans.conf: "Bitstream Vera Sans", the font DejaVu grew from)
+// is that font.
+TEST(Text, AFontsConfiguredAliasIsTheFont) {
+  TextLayout layout;
+  layout.text = "Vera";
+  layout.font = "Bitstream Vera Sans";
+  const double alias = area(evaluate(*textRegion(layout), 1e-3));
+  layout.font = "DejaVu Sans";
+  EXPECT_EQ(alias, area(evaluate(*textRegion(layout), 1e-3)));
 }
 
 std::string scriptError(const std::string& source) { return test::scriptError(source); }
