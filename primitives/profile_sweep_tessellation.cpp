@@ -246,4 +246,43 @@ void triangulateLoops(
   }
 }
 
+void addSweepFaces(TriangleMesh& mesh, const SweepLoops& loops, const SweepLevels& levels,
+                   bool closed, bool reversed,
+                   const std::function<bool(int, std::size_t, std::size_t)>& otherDiagonal) {
+  auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (a == b || b == c || c == a) return;
+    mesh.triangles.push_back(reversed ? TriangleMesh::Triangle{a, c, b}
+                                      : TriangleMesh::Triangle{a, b, c});
+  };
+  const int count = int(levels.size());
+  const int sides = closed ? count : count - 1;
+  // The quad a b c d (a = (i, k), b = (i + 1, k), c = (i + 1, k + 1),
+  // d = (i, k + 1)) runs counter-clockwise seen from outside.
+  for (int k = 0; k < sides; ++k) {
+    const int next = (k + 1) % count;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::size_t n = loops[l].size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        const std::uint32_t a = levels[k][l][i], b = levels[k][l][j];
+        const std::uint32_t c = levels[next][l][j], d = levels[next][l][i];
+        if (otherDiagonal && otherDiagonal(k, l, i)) {
+          add(a, b, d);
+          add(b, c, d);
+        } else {
+          add(a, b, c);
+          add(a, c, d);
+        }
+      }
+    }
+  }
+  if (closed) return;
+  // The ends: counter-clockwise seen from the last level's side there,
+  // reversed at the first.
+  triangulateLoops(loops, levels.front(),
+                   [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { add(a, c, b); });
+  triangulateLoops(loops, levels.back(),
+                   [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { add(a, b, c); });
+}
+
 }  // namespace csgray::detail
