@@ -450,8 +450,9 @@ class Importer {
       return {exact, nullptr};
     if (const double slices = number(node, "slices", 0.0); slices >= 1.0)
       e.slices = int(std::min(slices, 1e9));
-    return {openscadLinearExtrusion(polygonsOf(*region, "linear_extrude"), e, resolution(node)),
-            nullptr};
+    const SweepLoops loops = polygonsOf(*region, "linear_extrude");
+    if (loops.empty()) return {};
+    return {openscadLinearExtrusion(loops, e, resolution(node)), nullptr};
   }
 
   Shape rotateExtrude(const CsgNode& node) {
@@ -468,8 +469,9 @@ class Importer {
     double start = number(node, "start", 0.0);
     if (options_.facets == CsgFacets::OpenScad) {
       if (!given(find(node, "start")) && std::abs(angle) == 360.0) start = 180.0;
-      solid = openscadRevolution(polygonsOf(*region, "rotate_extrude"), std::abs(angle), 0.0,
-                                 resolution(node));
+      const SweepLoops loops = polygonsOf(*region, "rotate_extrude");
+      if (loops.empty()) return {};
+      solid = openscadRevolution(loops, std::abs(angle), resolution(node));
     }
     if (angle < 0.0) solid = solid->transformed(Affine::mirror(dvec3(0.0, 1.0, 0.0)));
     if (start != 0.0) solid = solid->transformed(rotationDegrees(start, dvec3(0.0, 0.0, 1.0)));
@@ -478,10 +480,15 @@ class Importer {
 
   // The region as the polygons OpenSCAD sweeps: evaluated, what arcs are
   // left (rounded offsets) within 10⁻⁵ of its size, points within 10⁻¹²
-  // of the axis on it.
+  // of the axis on it; none for a region without area.
   static SweepLoops polygonsOf(const Region& region, const char* kind) {
     const double tol = 100.0 * tolerance(region);
-    SweepLoops loops = sweepLoops(region, tol, kind);
+    SweepLoops loops;
+    try {
+      loops = sweepLoops(region, tol, kind);
+    } catch (const std::invalid_argument&) {
+      return {};  // OpenSCAD makes nothing of it
+    }
     for (auto& loop : loops)
       for (dvec2& u : loop)
         if (std::abs(u.x) <= 1e-7 * tol) u.x = 0.0;

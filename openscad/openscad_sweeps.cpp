@@ -69,9 +69,10 @@ int diagonalSlices(double delta2, double height, const OpenScadResolution& res) 
   return std::max(int(std::ceil(std::sqrt(delta2 + height * height) / res.fs)), 1);
 }
 
-void requireBudget(const char* kind, double triangles) {
+// The importer names the node in front of the message.
+void requireBudget(double triangles) {
   if (triangles > double(kMaxTessellationTriangles))
-    throw std::invalid_argument(std::string(kind) + ": OpenSCAD's polygons would take " +
+    throw std::invalid_argument("OpenSCAD's polygons would take " +
                                 std::to_string(std::llround(triangles)) + " triangles, more than " +
                                 std::to_string(kMaxTessellationTriangles));
 }
@@ -126,7 +127,7 @@ SolidPtr openscadLinearExtrusion(const SweepLoops& loops, const OpenScadLinearEx
         "a scale of 0 on one axis flattens the top to a segment, which OpenSCAD's polygons "
         "cannot close");
   const int slices = openscadExtrudeSlices(loops, e, res);
-  requireBudget("linear_extrude", 2.0 * double(pointCount(loops)) * (slices + 1));
+  requireBudget(2.0 * double(pointCount(loops)) * (slices + 1));
   const double z0 = e.center ? -0.5 * e.height : 0.0;
 
   TriangleMesh mesh;
@@ -175,30 +176,16 @@ int openscadRevolutionSteps(double reach, double angleDegrees, const OpenScadRes
   return int(std::max(fragments * std::abs(angleDegrees) / 360.0, 1.0));
 }
 
-SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees, double startDegrees,
+SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees,
                             const OpenScadResolution& res) {
   double reach = 0.0;
   for (const auto& loop : loops)
     for (const dvec2& u : loop) reach = std::max(reach, u.x);
   const int steps = openscadRevolutionSteps(reach, angleDegrees, res);
-  const bool fullTurn = angleDegrees >= 360.0;
-  const int rings = fullTurn ? steps : steps + 1;
-  requireBudget("rotate_extrude", 2.0 * double(pointCount(loops)) * (steps + 1));
-
-  TriangleMesh mesh;
-  SweepLevels levels(rings, SweepLevels::value_type(loops.size()));
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (const dvec2& u : loops[l]) {
-      // A point on the axis is one vertex for every step.
-      if (u.x == 0.0) mesh.points.emplace_back(0.0, 0.0, u.y);
-      for (int k = 0; k < rings; ++k) {
-        const double theta = (startDegrees + angleDegrees * k / steps) * kRadiansPerDegree;
-        if (u.x != 0.0) mesh.points.emplace_back(u.x * std::cos(theta), u.x * std::sin(theta), u.y);
-        levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
-      }
-    }
-  addSweepFaces(mesh, loops, levels, fullTurn, true);
-  return meshShape(mesh, "rotate_extrude");
+  requireBudget(2.0 * double(pointCount(loops)) * (steps + 1));
+  return meshShape(
+      revolvedLoops(loops, angleDegrees * kRadiansPerDegree, steps, angleDegrees >= 360.0),
+      "rotate_extrude");
 }
 
 }  // namespace csgray::detail

@@ -56,12 +56,12 @@ int openscadRevolutionSteps(double reach, double angleDegrees,
                             const OpenScadResolution& resolution);
 
 // The loops (in the (x, z) half plane x >= 0) turned about the z axis from
-// startDegrees counter-clockwise over angleDegrees (in (0, 360]) in
+// +x counter-clockwise over angleDegrees (in (0, 360]) in
 // openscadRevolutionSteps steps: a ring of the loops' points at each step,
 // quads between them, the loops themselves as flat faces at both ends of
 // a partial turn. A point on the axis is one vertex. Throws
 // std::invalid_argument past the triangle budget.
-SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees, double startDegrees,
+SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees,
                             const OpenScadResolution& resolution);
 
 }  // namespace csgray::detail

@@ -285,4 +285,22 @@ void addSweepFaces(TriangleMesh& mesh, const SweepLoops& loops, const SweepLevel
                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { add(a, b, c); });
 }
 
+TriangleMesh revolvedLoops(const SweepLoops& loops, double angleRadians, int steps, bool fullTurn) {
+  const int rings = fullTurn ? steps : steps + 1;
+  TriangleMesh mesh;
+  SweepLevels levels(rings, SweepLevels::value_type(loops.size()));
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const dvec2& u : loops[l]) {
+      // A point on the axis is one vertex for every step.
+      if (u.x == 0.0) mesh.points.emplace_back(0.0, 0.0, u.y);
+      for (int k = 0; k < rings; ++k) {
+        const double theta = angleRadians * k / steps;
+        if (u.x != 0.0) mesh.points.emplace_back(u.x * std::cos(theta), u.x * std::sin(theta), u.y);
+        levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
+      }
+    }
+  addSweepFaces(mesh, loops, levels, fullTurn, true);
+  return mesh;
+}
+
 }  // namespace csgray::detail

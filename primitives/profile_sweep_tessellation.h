@@ -50,6 +50,14 @@ void addSweepFaces(TriangleMesh& mesh, const SweepLoops& loops, const SweepLevel
                    bool closed, bool reversed,
                    const std::function<bool(int, std::size_t, std::size_t)>& otherDiagonal = {});
 
+// The loops (in the (ρ, z) half plane, points on the axis at ρ = 0
+// exactly) turned about the z axis from +x counter-clockwise by
+// angleRadians in `steps` equal steps: a ring of their points at each
+// step (one vertex for a point on the axis), quads between, and unless
+// fullTurn (the last step back at the first) the loops as flat faces at
+// both ends.
+TriangleMesh revolvedLoops(const SweepLoops& loops, double angleRadians, int steps, bool fullTurn);
+
 // Twice the signed area of a polygon (positive counter-clockwise).
 double signedArea2(const std::vector<dvec2>& loop);
 

@@ -41,22 +41,7 @@ TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
   const int steps = arcSegments(reach, angle_, half, least);
   requireTriangleBudget(kind(), 2.0 * double(points) * (steps + 1), tolerance);
-  const int rings = fullTurn_ ? steps : steps + 1;
-
-  TriangleMesh mesh;
-  SweepLevels levels(rings, SweepLevels::value_type(loops.size()));
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (const dvec2& u : loops[l]) {
-      // A point on the axis is one vertex for every step.
-      if (u.x == 0.0) mesh.points.emplace_back(0.0, 0.0, u.y);
-      for (int k = 0; k < rings; ++k) {
-        const double theta = angle_ * k / steps;
-        if (u.x != 0.0) mesh.points.emplace_back(u.x * std::cos(theta), u.x * std::sin(theta), u.y);
-        levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
-      }
-    }
-  addSweepFaces(mesh, loops, levels, fullTurn_, true);
-  return mesh;
+  return revolvedLoops(loops, angle_, steps, fullTurn_);
 }
 
 }  // namespace csgray::detail

@@ -257,6 +257,24 @@ TEST(CsgImport, OpenScadFacetsSliceSweepsAsOpenScadDoes) {
   const Bounds b = wedge->bounds();
   test::expectVecNear(b.lo, {-3.0, -6.0 * std::sin(pi * 2.0 / 3.0), 0.0}, 1e-9);
   test::expectVecNear(b.hi, {6.0, 0.0, 8.0}, 1e-9);
+  // A profile without area makes nothing, as in OpenSCAD.
+  for (const char* sweep : {"linear_extrude(height = 1, twist = 10)", "rotate_extrude()"})
+    EXPECT_TRUE(
+        importText(std::string(sweep) +
+                       " { difference() { square(size = [1, 1]); square(size = [1, 1]); } }",
+                   CsgFacets::OpenScad)
+            .solids.empty())
+        << sweep;
+  // Past the triangle budget: one line, before any memory is taken.
+  try {
+    importText("linear_extrude(height = 1, twist = 10, slices = 100000000) { square(size = 1); }",
+               CsgFacets::OpenScad);
+    ADD_FAILURE() << "no error";
+  } catch (const CsgError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "part.csg:1: linear_extrude: OpenSCAD's polygons would take 800000008 triangles, "
+              "more than 20000000");
+  }
   // The exact import starts a partial turn on +x too.
   const SolidPtr quarter =
       onlySolid("rotate_extrude(angle = 90) { polygon(points = [[0, 0], [6, 0], [0, 8]]); }");
