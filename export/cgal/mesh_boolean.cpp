@@ -63,14 +63,17 @@ struct EvaluationFrame {
     if (!primitive) return;
     const glm::dmat3 linear(primitive->frame().worldFromObject());
     // Only a rotation or a mirror (orthonormal columns), so that the
-    // tolerance means the same in both frames.
+    // tolerance means the same in both frames; within 10⁻⁵, as OpenSCAD's
+    // .csg files write rotations to 6 digits (the tolerance then means
+    // the same to 10⁻⁵). The exact inverse takes the primitives turned by
+    // the same matrix back to their own axes.
     const glm::dmat3 gram = glm::transpose(linear) * linear;
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r)
-        if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-12) return;
+        if (std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)) > 1e-5) return;
     if (linear == glm::dmat3(1.0)) return;
     worldFromEval = linear;
-    evalFromWorld = glm::transpose(linear);
+    evalFromWorld = glm::inverse(linear);
     identity = false;
   }
 

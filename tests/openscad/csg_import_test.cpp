@@ -16,6 +16,7 @@
 #include "check/exact_volume.h"
 #include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
+#include "export/cgal/mesh_validity.h"
 #include "profile/region_evaluation.h"
 #include "raytrace/renderer.h"
 #include "script/script.h"
@@ -280,6 +281,50 @@ TEST(CsgImport, OpenScadFacetsSliceSweepsAsOpenScadDoes) {
       onlySolid("rotate_extrude(angle = 90) { polygon(points = [[0, 0], [6, 0], [0, 8]]); }");
   EXPECT_TRUE(quarter->contains({2.0, 2.0, 1.0}));
   EXPECT_FALSE(quarter->contains({-2.0, -2.0, 1.0}));
+}
+
+// OpenSCAD writes a turn to 6 digits, so its matrix is orthonormal only
+// to 10⁻⁶: the export still evaluates the turned part in its own axes,
+// where the faces that are flush stay flush. A cube less two levels of
+// Menger bars (3 of 100/3 and 24 of 100/9, each sharing faces with others)
+// turned has the volume of the unturned one times the matrix's
+// determinant, and a valid mesh.
+TEST(CsgImport, ASixDigitTurnKeepsFlushFacesFlush) {
+  std::string bars;
+  auto bar = [&](int axis, double side, double a, double b) {
+    dvec3 size(side), at(0.0);
+    size[axis] = 110.0;
+    at[(axis + 1) % 3] = a;
+    at[(axis + 2) % 3] = b;
+    std::ostringstream text;
+    text << "multmatrix([[1, 0, 0, " << at.x << "], [0, 1, 0, " << at.y << "], [0, 0, 1, " << at.z
+         << "], [0, 0, 0, 1]]) { cube(size = [" << size.x << ", " << size.y << ", " << size.z
+         << "], center = true); }\n";
+    bars += text.str();
+  };
+  const double third = 33.3333, ninth = 11.1111;
+  for (int axis = 0; axis < 3; ++axis) {
+    bar(axis, third, 0.0, 0.0);
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        if (i || j) bar(axis, ninth, i * third, j * third);
+  }
+  const std::string sponge =
+      "difference() { cube(size = [100, 100, 100], center = true); union() {\n" + bars + "} }\n";
+  const double turn[3][3] = {
+      {0.816497, 0.408248, 0.408248}, {0, 0.707107, -0.707107}, {-0.57735, 0.57735, 0.57735}};
+  std::ostringstream turned;
+  turned << "multmatrix([";
+  for (int r = 0; r < 3; ++r)
+    turned << "[" << turn[r][0] << ", " << turn[r][1] << ", " << turn[r][2] << ", 0], ";
+  turned << "[0, 0, 0, 1]]) { " << sponge << "}";
+  const double det = glm::determinant(
+      glm::transpose(glm::dmat3(turn[0][0], turn[0][1], turn[0][2], turn[1][0], turn[1][1],
+                                turn[1][2], turn[2][0], turn[2][1], turn[2][2])));
+  const PartMesh flat = meshOfSolid(*onlySolid(sponge, CsgFacets::OpenScad), 0.01);
+  const PartMesh part = meshOfSolid(*onlySolid(turned.str(), CsgFacets::OpenScad), 0.01);
+  EXPECT_NEAR(part.mesh.volume(), det * flat.mesh.volume(), 1e-9 * flat.mesh.volume());
+  EXPECT_TRUE(meshDefect(part.mesh).valid()) << meshDefect(part.mesh).text;
 }
 
 TEST(CsgImport, ColourAndModifiers) {
