@@ -9,6 +9,7 @@
 #include "engine/boolean.h"
 #include "engine/degrees.h"
 #include "io/input_file.h"
+#include "openscad/openscad_sweeps.h"
 #include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
 #include "primitives/revolution.h"
@@ -160,20 +161,17 @@ class Importer {
     return out;
   }
 
-  // The node's $fn, $fa and $fs.
-  struct Resolution {
-    double fn, fa, fs;
-  };
-  Resolution resolution(const CsgNode& node) const {
-    const Resolution r{number(node, "$fn", 0.0), number(node, "$fa", 12.0),
-                       number(node, "$fs", 2.0)};
+  // OpenSCAD's $fn, $fa and $fs of the node.
+  OpenScadResolution resolution(const CsgNode& node) const {
+    OpenScadResolution r{number(node, "$fn", 0.0), number(node, "$fa", 12.0),
+                         number(node, "$fs", 2.0)};
     if (!(r.fa > 0.0) || !(r.fs > 0.0)) throw NodeError("$fa and $fs must be > 0");
     return r;
   }
 
   // Does the node ask for a polygon of n sides rather than a circle?
   int polygonSides(const CsgNode& node, double r) const {
-    const Resolution res = resolution(node);
+    const OpenScadResolution res = resolution(node);
     if (options_.facets == CsgFacets::OpenScad) return openscadFragments(r, res.fn, res.fa, res.fs);
     if (res.fn >= 1.0 && res.fn <= kShapeFacets) return std::max(int(res.fn), 3);
     return 0;  // exact
@@ -285,9 +283,9 @@ class Importer {
     layout.language = string(node, "language", "en");
     layout.script = string(node, "script", "");
     if (options_.facets == CsgFacets::OpenScad) {
-      // OpenSCAD's text.cc: "a fraction of the number of full circle
-      // segments", the fragments of a circle of radius size over 8, plus 1.
-      const Resolution res = resolution(node);
+      // As OpenSCAD 2021.01 draws a glyph's curves: per curve, the sides
+      // of a circle of radius `size` over 8, plus 1, chords (at least 2).
+      const OpenScadResolution res = resolution(node);
       layout.curveSegments =
           std::max(openscadFragments(layout.size, res.fn, res.fa, res.fs) / 8 + 1, 2);
     }
@@ -496,12 +494,25 @@ class Importer {
   Shape linearExtrude(const CsgNode& node) {
     RegionPtr region = regionOfChildren(node);
     if (!region) return {};
-    const double height = number(node, "height", 100.0, 0);
-    if (!(height > 0.0)) return {};
-    const dvec3 scale = numberOrVector(node, "scale", 2, dvec3(1.0));
-    return {Primitive::create<LinearExtrusion>(region, height, boolean(node, "center", false),
-                                               number(node, "twist", 0.0), dvec2(scale)),
-            nullptr};
+    OpenScadLinearExtrude e;
+    e.height = number(node, "height", 100.0, 0);
+    if (!(e.height > 0.0)) return {};
+    e.center = boolean(node, "center", false);
+    e.twistDegrees = number(node, "twist", 0.0);
+    e.scale = dvec2(numberOrVector(node, "scale", 2, dvec3(1.0)));
+    SolidPtr exact =
+        Primitive::create<LinearExtrusion>(region, e.height, e.center, e.twistDegrees, e.scale);
+    // Without a twist and with one scale OpenSCAD's sides are the exact
+    // ones (flat); a scale of 0 on one axis only has no closed polygons.
+    const bool flatSides = e.twistDegrees == 0.0 && e.scale.x == e.scale.y;
+    if (options_.facets != CsgFacets::OpenScad || flatSides ||
+        (e.scale.x == 0.0) != (e.scale.y == 0.0))
+      return {exact, nullptr};
+    if (const double slices = number(node, "slices", 0.0); slices >= 1.0)
+      e.slices = int(std::min(slices, 1e9));
+    const SweepLoops loops = polygonsOf(*region, "linear_extrude");
+    if (loops.empty()) return {};
+    return {openscadLinearExtrusion(loops, e, resolution(node)), nullptr};
   }
 
   Shape rotateExtrude(const CsgNode& node) {
@@ -512,14 +523,38 @@ class Importer {
     angle = std::clamp(angle, -360.0, 360.0);
     if (angle == 0.0) return {};
     SolidPtr solid = Primitive::create<Revolution>(region, std::abs(angle));
-    if (angle < 0.0) solid = solid->transformed(Affine::mirror(dvec3(0.0, 1.0, 0.0)));
-    // Where the sweep starts: OpenSCAD's start=, or 180° when angle is
-    // given without it (as OpenSCAD 2019.05 and later do).
+    // Where the sweep starts: OpenSCAD's start= (written by releases after
+    // 2021.01), else +x; OpenSCAD 2021.01 starts a whole turn's polygons
+    // on −x.
     double start = number(node, "start", 0.0);
-    if (!given(find(node, "start")) && given(find(node, "angle")) && std::abs(angle) < 360.0)
-      start = 180.0;
+    if (options_.facets == CsgFacets::OpenScad) {
+      if (!given(find(node, "start")) && std::abs(angle) == 360.0) start = 180.0;
+      const SweepLoops loops = polygonsOf(*region, "rotate_extrude");
+      if (loops.empty()) return {};
+      solid = openscadRevolution(loops, std::abs(angle), resolution(node));
+    }
+    if (angle < 0.0) solid = solid->transformed(Affine::mirror(dvec3(0.0, 1.0, 0.0)));
     if (start != 0.0) solid = solid->transformed(rotationDegrees(start, dvec3(0.0, 0.0, 1.0)));
     return {solid, nullptr};
+  }
+
+  // The region as the polygons OpenSCAD sweeps: evaluated, what arcs are
+  // left (rounded offsets) within a hundred times the region's evaluation
+  // tolerance (10⁻⁵ of its size; letters' curves are OpenSCAD's chords
+  // already), points within 10⁻⁷ of that of the axis on it; none for a
+  // region without area.
+  static SweepLoops polygonsOf(const Region& region, const char* kind) {
+    const double tol = 100.0 * evaluationTolerance(region);
+    SweepLoops loops;
+    try {
+      loops = sweepLoops(region, tol, kind);
+    } catch (const std::invalid_argument&) {
+      return {};  // OpenSCAD makes nothing of it
+    }
+    for (auto& loop : loops)
+      for (dvec2& u : loop)
+        if (std::abs(u.x) <= 1e-7 * tol) u.x = 0.0;
+    return loops;
   }
 
   Shape offset(const CsgNode& node) {

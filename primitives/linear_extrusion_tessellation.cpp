@@ -102,52 +102,28 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
   requireTriangleBudget(kind(), 2.0 * double(points) * slices + 2.0 * double(points), tolerance);
 
   TriangleMesh mesh;
-  const int rings = apex ? slices : slices + 1;  // the apex is one point, not a ring
-  // ids[k][loop][i]: loop point i at slice k.
-  std::vector<std::vector<std::vector<std::uint32_t>>> ids(rings);
-  for (int k = 0; k < rings; ++k) {
+  SweepLevels levels(slices + 1);
+  for (int k = 0; k <= slices; ++k) {
     const double zeta = double(k) / slices;
     const dvec2 sigma(1.0 + (scale_.x - 1.0) * zeta, 1.0 + (scale_.y - 1.0) * zeta);
     const double angle = -twist_ * zeta, c = std::cos(angle), s = std::sin(angle);
     const double z = k == slices ? z0_ + height_ : z0_ + height_ * zeta;
-    ids[k].resize(loops.size());
+    // The apex is one point, not a ring.
+    const bool top = apex && k == slices;
+    if (top) mesh.points.emplace_back(0.0, 0.0, z);
+    levels[k].resize(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l)
       for (const dvec2& u : loops[l]) {
-        ids[k][l].push_back(std::uint32_t(mesh.points.size()));
+        if (top) {
+          levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
+          continue;
+        }
+        levels[k][l].push_back(std::uint32_t(mesh.points.size()));
         const dvec2 turned(c * u.x - s * u.y, s * u.x + c * u.y);
         mesh.points.emplace_back(sigma.x * turned.x, sigma.y * turned.y, z);
       }
   }
-  std::uint32_t top = 0;
-  if (apex) {
-    top = std::uint32_t(mesh.points.size());
-    mesh.points.emplace_back(0.0, 0.0, z0_ + height_);
-  }
-  // The sides: outer loops run counter-clockwise, so a quad a b c d (a → b
-  // along the loop at slice k, d above a) faces out; holes likewise.
-  for (int k = 0; k < slices; ++k)
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-      const std::size_t n = loops[l].size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t a = ids[k][l][i], b = ids[k][l][(i + 1) % n];
-        if (apex && k + 1 == slices) {
-          mesh.triangles.push_back({a, b, top});
-          continue;
-        }
-        const std::uint32_t c = ids[k + 1][l][(i + 1) % n], d = ids[k + 1][l][i];
-        mesh.triangles.push_back({a, b, c});
-        mesh.triangles.push_back({a, c, d});
-      }
-    }
-  // The caps: counter-clockwise seen from above at the top, reversed at
-  // the bottom.
-  triangulateLoops(loops, ids[0], [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    mesh.triangles.push_back({a, c, b});
-  });
-  if (!apex)
-    triangulateLoops(loops, ids[slices], [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-      mesh.triangles.push_back({a, b, c});
-    });
+  addSweepFaces(mesh, loops, levels, false, false);
   return mesh;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 
+#include "engine/degrees.h"
 #include "profile/region_evaluation.h"
 
 namespace csgray::detail {
@@ -244,6 +245,65 @@ void triangulateLoops(
     for (std::size_t h : mine) bridge(polygon, corners(h));
     earClip(polygon, triangle);
   }
+}
+
+void addSweepFaces(TriangleMesh& mesh, const SweepLoops& loops, const SweepLevels& levels,
+                   bool closed, bool reversed,
+                   const std::function<bool(int, std::size_t, std::size_t)>& otherDiagonal) {
+  auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (a == b || b == c || c == a) return;
+    mesh.triangles.push_back(reversed ? TriangleMesh::Triangle{a, c, b}
+                                      : TriangleMesh::Triangle{a, b, c});
+  };
+  const int count = int(levels.size());
+  const int sides = closed ? count : count - 1;
+  // The quad a b c d (a = (i, k), b = (i + 1, k), c = (i + 1, k + 1),
+  // d = (i, k + 1)) runs counter-clockwise seen from outside.
+  for (int k = 0; k < sides; ++k) {
+    const int next = (k + 1) % count;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::size_t n = loops[l].size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        const std::uint32_t a = levels[k][l][i], b = levels[k][l][j];
+        const std::uint32_t c = levels[next][l][j], d = levels[next][l][i];
+        if (otherDiagonal && otherDiagonal(k, l, i)) {
+          add(a, b, d);
+          add(b, c, d);
+        } else {
+          add(a, b, c);
+          add(a, c, d);
+        }
+      }
+    }
+  }
+  if (closed) return;
+  // The ends: counter-clockwise seen from the last level's side there,
+  // reversed at the first.
+  triangulateLoops(loops, levels.front(),
+                   [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { add(a, c, b); });
+  triangulateLoops(loops, levels.back(),
+                   [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { add(a, b, c); });
+}
+
+TriangleMesh revolvedLoops(const SweepLoops& loops, double angleDegrees, int steps, bool fullTurn) {
+  const int rings = fullTurn ? steps : steps + 1;
+  TriangleMesh mesh;
+  SweepLevels levels(rings, SweepLevels::value_type(loops.size()));
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const dvec2& u : loops[l]) {
+      // A point on the axis is one vertex for every step.
+      if (u.x == 0.0) mesh.points.emplace_back(0.0, 0.0, u.y);
+      for (int k = 0; k < rings; ++k) {
+        // Exact at multiples of 90°: a half turn's end face lies in the
+        // plane y = 0, flush with a face there.
+        const dvec2 at = u.x * unitCircleDegrees(angleDegrees * k / steps);
+        if (u.x != 0.0) mesh.points.emplace_back(at.x, at.y, u.y);
+        levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
+      }
+    }
+  addSweepFaces(mesh, loops, levels, fullTurn, true);
+  return mesh;
 }
 
 }  // namespace csgray::detail

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "profile/region.h"
+#include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
 
@@ -29,6 +30,33 @@ SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind);
 void triangulateLoops(
     const SweepLoops& loops, const std::vector<std::vector<std::uint32_t>>& ids,
     const std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>& triangle);
+
+// levels[k][l][i]: the mesh point of loop l's point i at level k of a sweep
+// (the same point at several levels where they meet: a point on a
+// revolution's axis, an extrusion's apex).
+using SweepLevels = std::vector<std::vector<std::vector<std::uint32_t>>>;
+
+// Adds to the mesh (whose points the levels index) the faces of the loops
+// swept through the levels. Sides: the quad of loop l's edge i → i + 1
+// between levels k and k + 1 (and between the last level and the first
+// when `closed`) is cut along its diagonal from (i, k) to (i + 1, k + 1),
+// or along the other where otherDiagonal(k, l, i) says; triangles with a
+// repeated corner are left out. Ends, unless closed: the loops'
+// triangulation at the first and the last level. Faces point out for
+// loops as sweepLoops makes them swept along their plane's normal (an
+// extrusion upwards); `reversed` for the other sense (a revolution of
+// loops in the (ρ, z) plane).
+void addSweepFaces(TriangleMesh& mesh, const SweepLoops& loops, const SweepLevels& levels,
+                   bool closed, bool reversed,
+                   const std::function<bool(int, std::size_t, std::size_t)>& otherDiagonal = {});
+
+// The loops (in the (ρ, z) half plane, points on the axis at ρ = 0
+// exactly) turned about the z axis from +x counter-clockwise by
+// angleDegrees in `steps` equal steps: a ring of their points at each
+// step (one vertex for a point on the axis), quads between, and unless
+// fullTurn (the last step back at the first) the loops as flat faces at
+// both ends.
+TriangleMesh revolvedLoops(const SweepLoops& loops, double angleDegrees, int steps, bool fullTurn);
 
 // Twice the signed area of a polygon (positive counter-clockwise).
 double signedArea2(const std::vector<dvec2>& loop);

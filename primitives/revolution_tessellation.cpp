@@ -41,61 +41,7 @@ TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
   const int steps = arcSegments(reach, angle_, half, least);
   requireTriangleBudget(kind(), 2.0 * double(points) * (steps + 1), tolerance);
-  const int rings = fullTurn_ ? steps : steps + 1;
-
-  TriangleMesh mesh;
-  // ids[loop][i][k]: loop point i at step k (one id for all k on the axis).
-  std::vector<std::vector<std::vector<std::uint32_t>>> ids(loops.size());
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (const dvec2& u : loops[l]) {
-      std::vector<std::uint32_t>& at = ids[l].emplace_back();
-      if (u.x == 0.0) {
-        at.assign(rings, std::uint32_t(mesh.points.size()));
-        mesh.points.emplace_back(0.0, 0.0, u.y);
-        continue;
-      }
-      for (int k = 0; k < rings; ++k) {
-        const double theta = angle_ * k / steps;
-        at.push_back(std::uint32_t(mesh.points.size()));
-        mesh.points.emplace_back(u.x * std::cos(theta), u.x * std::sin(theta), u.y);
-      }
-    }
-  // Sides: the quad a b c d between loop points i, i + 1 and steps k, k + 1
-  // (a = (i, k), b = (i, k + 1), c = (i + 1, k + 1), d = (i + 1, k)) faces
-  // out when the solid lies left of the loop; on the axis it is a triangle,
-  // and an edge along the axis sweeps nothing.
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    const std::size_t n = loops[l].size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n;
-      if (loops[l][i].x == 0.0 && loops[l][j].x == 0.0) continue;
-      for (int k = 0; k < steps; ++k) {
-        const int next = fullTurn_ ? (k + 1) % steps : k + 1;
-        const std::uint32_t a = ids[l][i][k], b = ids[l][i][next];
-        const std::uint32_t c = ids[l][j][next], d = ids[l][j][k];
-        if (a != b) mesh.triangles.push_back({a, b, c});
-        if (c != d) mesh.triangles.push_back({a, c, d});
-      }
-    }
-  }
-  if (!fullTurn_) {
-    // The flat faces: at angle 0 the outward normal is −y, which a loop
-    // counter-clockwise in (ρ, z) has; at the end angle it is reversed.
-    for (int end = 0; end < 2; ++end) {
-      const int k = end == 0 ? 0 : steps;
-      std::vector<std::vector<std::uint32_t>> at(loops.size());
-      for (std::size_t l = 0; l < loops.size(); ++l)
-        for (const auto& point : ids[l]) at[l].push_back(point[k]);
-      triangulateLoops(loops, at, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        if (end == 0) {
-          mesh.triangles.push_back({a, b, c});
-        } else {
-          mesh.triangles.push_back({a, c, b});
-        }
-      });
-    }
-  }
-  return mesh;
+  return revolvedLoops(loops, angleDegrees_, steps, fullTurn_);
 }
 
 }  // namespace csgray::detail

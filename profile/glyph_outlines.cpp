@@ -264,9 +264,9 @@ double alignedOffset(TextLayout::VAlign valign, double bottom, double top) {
 // FreeType for a character size of 10^5/64 points at 100 dpi and divides
 // the outlines' 26.6 coordinates by 10^5 before multiplying them by size:
 // an em is size·100/72 long. It divides HarfBuzz's positions, and the
-// glyph boxes it aligns by, by 1.024·10^5 instead ("only 2.4%
-// difference", its comment says), so letters stand 1/1.024 as far apart
-// as the font says and the alignment is short by as much.
+// glyph boxes it aligns by, by 1.024·10^5 instead, so letters stand
+// 1/1.024 as far apart as the font says and the alignment is short by as
+// much.
 constexpr double kOpenScadCharSize = 1e5;  // 26.6 points, at 100 dpi
 constexpr double kOpenScadEmPerSize = 100.0 / 72.0;
 constexpr double kOpenScadAdvanceFactor = 1.0 / 1.024;
