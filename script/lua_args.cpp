@@ -188,6 +188,19 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
   return v;
 }
 
+dvec2 toVec2(lua_State* L, int index, const std::string& what) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2)
+    throw std::invalid_argument(what + " must be {x, y}");
+  dvec2 v;
+  for (int k = 0; k < 2; ++k) {
+    lua_rawgeti(L, index, k + 1);
+    v[k] = toNumber(L, -1, what + "[" + std::to_string(k + 1) + "]");
+    lua_pop(L, 1);
+  }
+  return v;
+}
+
 dvec3 toColor(lua_State* L, int index, const std::string& what) {
   const int type = lua_type(L, index);
   if (type == LUA_TNUMBER || (type == LUA_TTABLE && lua_rawlen(L, index) == 3))
