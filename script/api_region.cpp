@@ -116,20 +116,6 @@ LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
   return LuaArgs(L, 1, function);
 }
 
-// The list {x, y} at index.
-dvec2 toVec2(lua_State* L, int index, const std::string& what) {
-  index = lua_absindex(L, index);
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2)
-    throw std::invalid_argument(what + " must be {x, y}");
-  dvec2 v;
-  for (int k = 0; k < 2; ++k) {
-    lua_rawgeti(L, index, k + 1);
-    v[k] = toNumber(L, -1, what + "[" + std::to_string(k + 1) + "]");
-    lua_pop(L, 1);
-  }
-  return v;
-}
-
 // square{size=s or {w, h}, center=} and rectangle{size={w, h}, center=}.
 template <bool isSquare>
 int rectangle(lua_State* L) {
