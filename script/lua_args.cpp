@@ -171,6 +171,19 @@ double toNumber(lua_State* L, int index, const std::string& what) {
   return v;
 }
 
+namespace {
+
+// The first n numbers of the list at (absolute) index, into out.
+void readNumbers(lua_State* L, int index, const std::string& what, int n, double* out) {
+  for (int i = 0; i < n; ++i) {
+    lua_rawgeti(L, index, i + 1);
+    out[i] = toNumber(L, -1, what + "[" + std::to_string(i + 1) + "]");
+    lua_pop(L, 1);
+  }
+}
+
+}  // namespace
+
 dvec3 toVec3(lua_State* L, int index, const std::string& what) {
   index = lua_absindex(L, index);
   if (lua_type(L, index) == LUA_TNUMBER) {
@@ -180,11 +193,7 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
   if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3)
     throw std::invalid_argument(what + " must be a list of three numbers {x, y, z}");
   dvec3 v;
-  for (int i = 0; i < 3; ++i) {
-    lua_rawgeti(L, index, i + 1);
-    v[i] = toNumber(L, -1, what + "[" + std::to_string(i + 1) + "]");
-    lua_pop(L, 1);
-  }
+  readNumbers(L, index, what, 3, &v.x);
   return v;
 }
 
@@ -193,11 +202,7 @@ dvec2 toVec2(lua_State* L, int index, const std::string& what) {
   if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2)
     throw std::invalid_argument(what + " must be {x, y}");
   dvec2 v;
-  for (int k = 0; k < 2; ++k) {
-    lua_rawgeti(L, index, k + 1);
-    v[k] = toNumber(L, -1, what + "[" + std::to_string(k + 1) + "]");
-    lua_pop(L, 1);
-  }
+  readNumbers(L, index, what, 2, &v.x);
   return v;
 }
 
