@@ -5,6 +5,7 @@
 #include "api/access.h"
 #include "api/errors.h"
 #include "check/part_check.h"
+#include "export/solid_projection.h"
 #include "io/image_file.h"
 #include "meshio/mesh_import.h"
 #include "script/script.h"
@@ -22,6 +23,7 @@ detail::ScriptOptions optionsOf(const ScriptOptions& o) {
   made.loadImage = detail::readTextureImage;
   made.loadMesh = detail::importMesh;
   made.checkSolid = detail::checkPart;
+  made.projectSolid = detail::solidProjection;
   made.warn = o.onWarning;
   return made;
 }

@@ -11,6 +11,7 @@
 
 #include "cli/check_scene.h"
 #include "cli/export_scene.h"
+#include "profile/profile.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
@@ -23,6 +24,8 @@ struct MeshTools {
   int (*checkScene)(const Scene& scene, const CheckCommandOptions& options);
   TriangleMesh (*importMesh)(const std::string& path, bool repair, std::string& repairReport);
   CheckReport (*checkPart)(const Solid& solid, const CheckOptions& options);
+  // As declared in export/solid_projection.h.
+  Profile (*solidProjection)(const SolidPtr& solid, bool cut);
   // As declared in meshio/part_file_bytes.h and check/part_check.h (the
   // page of csgray view).
   std::string (*partFileBytes)(const Scene& scene, const std::string& script,

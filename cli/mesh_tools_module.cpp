@@ -4,13 +4,14 @@
 #include "cli/check_scene.h"
 #include "cli/export_scene.h"
 #include "cli/mesh_tools.h"
+#include "export/solid_projection.h"
 #include "meshio/mesh_import.h"
 #include "meshio/part_file_bytes.h"
 
 extern "C" __attribute__((visibility("default"))) const csgray::detail::MeshTools*
 csgray_mesh_tools() {
   using namespace csgray::detail;
-  static const MeshTools tools{checkExportOutput, exportScene,   checkScene,      importMesh,
-                               checkPart,         partFileBytes, checkPrintedPart};
+  static const MeshTools tools{checkExportOutput, exportScene,     checkScene,    importMesh,
+                               checkPart,         solidProjection, partFileBytes, checkPrintedPart};
   return &tools;
 }

@@ -88,6 +88,9 @@ PartScript::PartScript(const ScriptArguments& arguments, std::string command)
   options_.checkSolid = [](const Solid& solid, const CheckOptions& options) {
     return meshTools().checkPart(solid, options);
   };
+  options_.projectSolid = [](const SolidPtr& solid, bool cut) {
+    return meshTools().solidProjection(solid, cut);
+  };
   options_.allowedFolders = arguments.allowedFolders;
   options_.openscadFacets = arguments.facets == "openscad";
   options_.warn = printWarning;

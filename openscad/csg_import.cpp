@@ -232,8 +232,7 @@ class Importer {
     if (n == "import") return importFile(node);
     if (n == "minkowski") return minkowskiOf(node);
     if (n == "text") throw NodeError("text is not supported yet");
-    if (n == "projection")
-      throw NodeError("projection is not supported: csgray cannot make it exactly");
+    if (n == "projection") return projection(node);
     if (n == "surface") return surface(node);
     throw NodeError("unknown node");
   }
@@ -477,6 +476,18 @@ class Importer {
     }
     if (result.loops.empty()) return {};
     return {nullptr, Region::leaf(std::move(result))};
+  }
+
+  // The section by z = 0 or the shadow of the children's union: a region
+  // taken from their mesh (export/solid_projection.h).
+  Shape projection(const CsgNode& node) {
+    Shape s = booleanOf(node, Boolean::Op::Union);
+    if (s.empty()) return {};
+    if (s.region) throw NodeError("takes solids, not 2D shapes");
+    if (!options_.project) throw NodeError("this program cannot project solids");
+    Profile flat = options_.project(s.solid, boolean(node, "cut", false));
+    if (flat.loops.empty()) return {};
+    return {nullptr, Region::leaf(std::move(flat))};
   }
 
   Shape resize(const CsgNode& node) {

@@ -38,6 +38,11 @@ struct CsgImportOptions {
   // Reads an image (surface(file="x.png")); throws std::runtime_error.
   // Without it, surface() of an image is an error.
   std::function<TextureImage(const std::string& path)> loadImage;
+  // The section by z = 0 (cut) or the shadow on it of a solid, for
+  // projection(); throws std::exception with a one-line message. Without
+  // it, projection() is an error. (solidProjection of
+  // export/solid_projection.h fits.)
+  std::function<Profile(const SolidPtr& solid, bool cut)> project;
 };
 
 // What a file holds: solids (3D) and regions (2D) at the top level, each

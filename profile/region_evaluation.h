@@ -12,6 +12,7 @@
 // not a finite number (and a tolerance that is not positive), with a message that says which.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -20,6 +21,14 @@
 namespace csgray::detail {
 
 Profile evaluate(const Region& region, double ellipseTolerance);
+
+// The points about which directed segments wind a non-zero number of times
+// (the non-zero rule), as an evaluated profile. The segments must make
+// closed chains (every point left as often as it is reached); they may
+// cross, touch and overlap, and segments of no length are left out. Exact:
+// the arrangement of the segments, each edge counting the segments along
+// it by their direction.
+Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments);
 
 // Signed area of an evaluated profile (or of any profile whose loops
 // neither cross nor nest: a glyph's): positive for counterclockwise loops,

@@ -228,6 +228,43 @@ class NoiseTexture final : public Texture {
   double strength_;
 };
 
+class FractalTexture final : public Texture {
+ public:
+  FractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
+                 int iterations, double cx, double cy)
+      : kind_(kind), a_(a), b_(b), inside_(inside), iterations_(iterations), cx_(cx), cy_(cy) {}
+
+ protected:
+  dvec3 pattern(const dvec3& p, const dvec3&) const override {
+    double zx = p.x, zy = p.y, cx = cx_, cy = cy_;
+    if (kind_ == FractalKind::Mandelbrot) cx = p.x, cy = p.y, zx = 0.0, zy = 0.0;
+    // A point whose orbit leaves radius 2 escapes to infinity; iterating
+    // on to radius 2⁸ makes the smooth count below nearly independent of
+    // where the orbit crossed radius 2.
+    constexpr double kBailout = 256.0;
+    for (int n = 0; n < iterations_; ++n) {
+      const double xx = zx * zx, yy = zy * zy;
+      if (xx + yy > kBailout * kBailout) {
+        // The smooth (renormalised) escape count n + 1 − log₂ log₂ |z|
+        // (Vepstas, "Renormalizing the Mandelbrot Escape", 1997), as a
+        // fraction of the iterations; its square root spreads the many
+        // points that escape early over more of the blend.
+        const double smooth = n + 1.0 - std::log2(std::log2(std::sqrt(xx + yy)));
+        return mix(a_, b_, std::sqrt(std::clamp(smooth / iterations_, 0.0, 1.0)));
+      }
+      zy = 2.0 * zx * zy + cy;
+      zx = xx - yy + cx;
+    }
+    return inside_;
+  }
+
+ private:
+  FractalKind kind_;
+  dvec3 a_, b_, inside_;
+  int iterations_;
+  double cx_, cy_;
+};
+
 }  // namespace
 
 double perlinNoise(const dvec3& p) {
@@ -283,6 +320,16 @@ TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octa
   if (!(strength >= 0.0) || !std::isfinite(strength))
     throw std::invalid_argument("noise strength must be a finite number >= 0");
   return std::make_shared<NoiseTexture>(kind, a, b, octaves, strength);
+}
+
+TexturePtr fractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
+                          int iterations, double cx, double cy) {
+  if (iterations < 1 || iterations > 10000)
+    throw std::invalid_argument("fractal iterations must be between 1 and 10000, not " +
+                                std::to_string(iterations));
+  if (!std::isfinite(cx) || !std::isfinite(cy))
+    throw std::invalid_argument("a Julia set's c must be finite");
+  return std::make_shared<FractalTexture>(kind, a, b, inside, iterations, cx, cy);
 }
 
 // ---- Textures as users give them ------------------------------------------
@@ -342,6 +389,19 @@ TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping m
                        const TexturePlacement& placement) {
   const Affine frame = placementOf("image_texture", placement);
   return placed(imageTexture(std::move(image), mapping), frame);
+}
+
+TexturePtr placedFractal(FractalKind kind, const std::optional<ColorPair>& colors,
+                         const std::optional<dvec3>& inside, double iterations, double cx,
+                         double cy, const TexturePlacement& placement) {
+  const char* name = kind == FractalKind::Mandelbrot ? "mandelbrot" : "julia";
+  const ColorPair c = colors.value_or(ColorPair(dvec3(0.05, 0.1, 0.4), dvec3(1.0, 0.85, 0.3)));
+  checkColors(name, c);
+  const dvec3 in = inside.value_or(dvec3(0.0));
+  checkColor(name, "inside", in);
+  const int count = checkWhole(name, "iterations", iterations, 1, 10000);
+  const Affine frame = placementOf(name, placement);
+  return placed(fractalTexture(kind, c.first, c.second, in, count, cx, cy), frame);
 }
 
 const char* noiseName(NoiseKind kind) {

@@ -68,6 +68,15 @@ enum class NoiseKind {
 TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves = 6,
                         double strength = 4.0);
 
+// Escape-time fractals in the xy plane of the pattern's frame: each point
+// c = x + iy (Mandelbrot) or start z = x + iy (Julia, with the given c)
+// iterates z ← z² + c. Points that stay within radius 2 for `iterations`
+// steps take `inside`; the others blend a (escaped at once) to b (escaped
+// late) by their smooth escape count.
+enum class FractalKind { Mandelbrot, Julia };
+TexturePtr fractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
+                          int iterations, double cx = 0.0, double cy = 0.0);
+
 // ---- Textures as users give them ------------------------------------------
 
 // Where a pattern sits in texture space: scaled, then rotated (degrees about
@@ -88,6 +97,10 @@ TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, d
                        double strength, const TexturePlacement& placement);
 TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,
                        const TexturePlacement& placement);
+// The script's mandelbrot{} and julia{}: c is Julia's constant.
+TexturePtr placedFractal(FractalKind kind, const std::optional<ColorPair>& colors,
+                         const std::optional<dvec3>& inside, double iterations, double cx,
+                         double cy, const TexturePlacement& placement);
 // The script function of a noise: "perlin", "turbulence", "marble", "wood".
 const char* noiseName(NoiseKind kind);
 

@@ -386,6 +386,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerConvexApi(L);
   registerMeshApi(L);
   registerCheckApi(L);
+  registerProjectionApi(L);
   registerHullApi(L);
   // After the solids' booleans, which union() and its kin call for solids,
   // and after the surfaces: square and rectangle are regions.

@@ -50,6 +50,9 @@ void registerSweepApi(lua_State* L);
 // import_dxf{file=} and height_map{file=} (api_import.cpp): a DXF drawing
 // as a region, OpenSCAD's surface() as a solid.
 void registerImportApi(lua_State* L);
+// projection(solid, {cut=}) (api_projection.cpp): a solid's section by
+// z = 0 or its shadow on it, as a region (ScriptOptions::projectSolid).
+void registerProjectionApi(lua_State* L);
 // text{...} (api_text.cpp): a string's outlines as a region.
 void registerTextApi(lua_State* L);
 // kind: what the region was made as, for messages ("region", "text").

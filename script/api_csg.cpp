@@ -32,6 +32,7 @@ CsgImportOptions csgOptions(const std::string& path, const ScriptOptions& option
       return options.loadMesh(file, false, report);
     };
   csg.loadImage = options.loadImage;
+  csg.project = options.projectSolid;
   return csg;
 }
 

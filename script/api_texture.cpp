@@ -1,5 +1,6 @@
 // Textures in the script (docs/script.md, Textures): checker{}, the noises
-// perlin{}, turbulence{}, marble{} and wood{}, and image_texture{}.
+// perlin{}, turbulence{}, marble{} and wood{}, the fractals mandelbrot{} and
+// julia{}, and image_texture{}.
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -64,6 +65,31 @@ int noise(lua_State* L) {
   return 1;
 }
 
+// mandelbrot{colors=, inside=, iterations=} and julia{c={x, y}, ...}.
+template <FractalKind kind>
+int fractal(lua_State* L) {
+  const char* name = kind == FractalKind::Mandelbrot ? "mandelbrot" : "julia";
+  checkArgumentCount(L, name, 1);
+  LuaArgs args(L, 1, name);
+  std::optional<ColorPair> colors = colorsArg(L, args);
+  std::optional<dvec3> inside = args.color("inside");
+  double iterations = args.number("iterations").value_or(100.0);
+  dvec2 c(0.0);
+  if (kind == FractalKind::Julia) {
+    // The default: Douady's rabbit, a Julia set of three-lobed islands.
+    c = dvec2(-0.123, 0.745);
+    if (args.push("c")) {
+      c = toVec2(L, -1, "julia: c");
+      lua_pop(L, 1);
+    }
+  }
+  TexturePtr texture =
+      placedFractal(kind, colors, inside, iterations, c.x, c.y, placementArgs(args));
+  args.finish();
+  pushShared<TexturePtr>(L, std::move(texture));
+  return 1;
+}
+
 int imageTexture(lua_State* L) {
   checkArgumentCount(L, "image_texture", 1);
   LuaArgs args(L, 1, "image_texture");
@@ -109,6 +135,8 @@ void registerTextureApi(lua_State* L) {
       {"turbulence", guarded<noise<NoiseKind::Turbulence>>},
       {"marble", guarded<noise<NoiseKind::Marble>>},
       {"wood", guarded<noise<NoiseKind::Wood>>},
+      {"mandelbrot", guarded<fractal<FractalKind::Mandelbrot>>},
+      {"julia", guarded<fractal<FractalKind::Julia>>},
   };
   for (const luaL_Reg& g : globals) lua_register(L, g.name, g.func);
 }

@@ -173,36 +173,31 @@ double toNumber(lua_State* L, int index, const std::string& what) {
 
 namespace {
 
-// The first n numbers of the list at (absolute) index, into out.
-void readNumbers(lua_State* L, int index, const std::string& what, int n, double* out) {
-  for (int i = 0; i < n; ++i) {
-    lua_rawgeti(L, index, i + 1);
-    out[i] = toNumber(L, -1, what + "[" + std::to_string(i + 1) + "]");
+// The list of n numbers at index (a table, its length checked) into out.
+void readList(lua_State* L, int index, int n, double* out, const std::string& what,
+              const char* shape) {
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != lua_Unsigned(n))
+    throw std::invalid_argument(what + " must be " + shape);
+  for (int k = 0; k < n; ++k) {
+    lua_rawgeti(L, index, k + 1);
+    out[k] = toNumber(L, -1, what + "[" + std::to_string(k + 1) + "]");
     lua_pop(L, 1);
   }
 }
 
 }  // namespace
 
-dvec3 toVec3(lua_State* L, int index, const std::string& what) {
-  index = lua_absindex(L, index);
-  if (lua_type(L, index) == LUA_TNUMBER) {
-    double v = toNumber(L, index, what);
-    return dvec3(v);
-  }
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3)
-    throw std::invalid_argument(what + " must be a list of three numbers {x, y, z}");
-  dvec3 v;
-  readNumbers(L, index, what, 3, &v.x);
+dvec2 toVec2(lua_State* L, int index, const std::string& what) {
+  dvec2 v;
+  readList(L, lua_absindex(L, index), 2, &v.x, what, "{x, y}");
   return v;
 }
 
-dvec2 toVec2(lua_State* L, int index, const std::string& what) {
+dvec3 toVec3(lua_State* L, int index, const std::string& what) {
   index = lua_absindex(L, index);
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2)
-    throw std::invalid_argument(what + " must be {x, y}");
-  dvec2 v;
-  readNumbers(L, index, what, 2, &v.x);
+  if (lua_type(L, index) == LUA_TNUMBER) return dvec3(toNumber(L, index, what));
+  dvec3 v;
+  readList(L, index, 3, &v.x, what, "a list of three numbers {x, y, z}");
   return v;
 }
 

@@ -4,15 +4,17 @@
 #pragma once
 
 #include <array>
+#include <glm/vec2.hpp>
 #include <lua.hpp>
 #include <optional>
 #include <set>
 #include <string>
 
 #include "engine/ray.h"
-#include "profile/profile.h"
 
 namespace csgray::detail {
+
+using glm::dvec2;
 
 class LuaArgs {
  public:
@@ -64,9 +66,8 @@ bool hasStringKey(lua_State* L, int index);
 
 // Values at a stack index, with errors that name what was expected.
 double toNumber(lua_State* L, int index, const std::string& what);
+dvec2 toVec2(lua_State* L, int index, const std::string& what);  // {x, y}
 dvec3 toVec3(lua_State* L, int index, const std::string& what);
-// The list {x, y} at index.
-dvec2 toVec2(lua_State* L, int index, const std::string& what);
 // A colour as linear RGB: a string is a CSS name or a hex code, in sRGB
 // (scene/color_names.h); anything else is a linear {r, g, b} (toVec3).
 dvec3 toColor(lua_State* L, int index, const std::string& what);

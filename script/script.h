@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "check/check_report.h"
+#include "profile/profile.h"
 #include "scene/scene.h"
 #include "script/parameters.h"
 #include "tessellation/triangle_mesh.h"
@@ -46,6 +47,10 @@ struct ScriptOptions {
   // Checks a solid's export against it for check(solid, options)
   // (checkPart of check/part_check.h fits); without it, check() is an error.
   std::function<CheckReport(const Solid& solid, const CheckOptions& options)> checkSolid;
+  // The section by z = 0 (cut) or the shadow on it of a solid, for
+  // projection() in scripts and in .csg files (solidProjection of
+  // export/solid_projection.h fits); without it, projection() is an error.
+  std::function<Profile(const SolidPtr& solid, bool cut)> projectSolid;
   // OpenSCAD's .csg files (a path ending in .csg, import_csg{}): make
   // circles, spheres and cylinders the polygons OpenSCAD makes from $fn,
   // $fa and $fs (--facets openscad) rather than exact.

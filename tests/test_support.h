@@ -17,6 +17,7 @@
 #include "check/part_check.h"
 #include "engine/primitive.h"
 #include "engine/solid.h"
+#include "export/solid_projection.h"
 #include "io/image_file.h"
 #include "meshio/mesh_import.h"
 #include "script/script.h"
@@ -38,6 +39,7 @@ inline ScriptOptions exampleOptions() {
   options.loadImage = readTextureImage;
   options.loadMesh = importMesh;
   options.checkSolid = checkPart;
+  options.projectSolid = solidProjection;
   return options;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -25,15 +26,20 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 using ArcTraits = CGAL::Arr_circle_segment_traits_2<PlaneKernel>;
 using ArcCurve = ArcTraits::X_monotone_curve_2;  // x-monotone
 
-// The even-odd rule needs to know how many input curves run along each
-// edge of the arrangement: overlapping pieces add their counts.
+// The fill rules need to know which way, and how many, input curves run
+// along each edge of the arrangement: each x-monotone piece counts +1 when
+// it runs left to right (CGAL's xy order), -1 the other way, and
+// overlapping pieces add their counts.
 struct AddCounts {
   int operator()(int a, int b) const { return a + b; }
 };
 using CountedTraits = CGAL::Arr_curve_data_traits_2<ArcTraits, int, AddCounts>;
-// A face's data: its parity, -1 before it is known.
+// A face's data: its winding number, kUnknownWinding before it is known.
 using CountedArrangement =
     CGAL::Arrangement_2<CountedTraits, CGAL::Arr_face_extended_dcel<CountedTraits, int>>;
+constexpr int kUnknownWinding = std::numeric_limits<int>::min();
+
+enum class FillRule { EvenOdd, NonZero };
 
 void requireFinite(double v, const char* what) {
   if (std::isfinite(v)) return;
@@ -232,6 +238,62 @@ void dropSlivers(Profile& profile) {
   profile = std::move(kept);
 }
 
+// The set of the points about which the curves (closed chains: each point
+// is left as often as it is reached) wind an odd number of times, or a
+// non-zero number. The winding number is flooded from the unbounded face
+// (0): crossing an edge from its left to its right takes away the count of
+// the curves that run along it.
+ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule) {
+  const ArcTraits traits;
+  std::vector<CountedTraits::X_monotone_curve_2> pieces;
+  std::vector<boost::variant<ArcTraits::Point_2, ArcCurve>> split;
+  for (const CircleSegment& c : curves) {
+    split.clear();
+    traits.make_x_monotone_2_object()(c, std::back_inserter(split));
+    for (const auto& item : split)
+      if (const ArcCurve* piece = boost::get<ArcCurve>(&item))
+        pieces.emplace_back(*piece, piece->is_directed_right() ? 1 : -1);
+  }
+  CountedArrangement arrangement;
+  CGAL::insert(arrangement, pieces.begin(), pieces.end());
+
+  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
+    f->set_data(kUnknownWinding);
+  std::vector<CountedArrangement::Face_handle> stack{arrangement.unbounded_face()};
+  stack.back()->set_data(0);
+  std::vector<ArcPolygonWithHoles> inside;
+  const auto flood = [&](CountedArrangement::Face_handle f,
+                         CountedArrangement::Ccb_halfedge_circulator first) {
+    auto h = first;
+    do {
+      // f is on h's left; the curves that run h's way have it on theirs.
+      const auto g = h->twin()->face();
+      if (g->data() != kUnknownWinding) continue;
+      const int along = h->curve().data();
+      g->set_data(f->data() - (h->direction() == CGAL::ARR_LEFT_TO_RIGHT ? along : -along));
+      stack.push_back(g);
+    } while (++h != first);
+  };
+  while (!stack.empty()) {
+    const auto f = stack.back();
+    stack.pop_back();
+    if (!f->is_unbounded()) flood(f, f->outer_ccb());
+    for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) flood(f, *i);
+    const int winding = f->data();
+    const bool filled = rule == FillRule::EvenOdd ? (winding & 1) != 0 : winding != 0;
+    if (f->is_unbounded() || !filled) continue;
+    std::vector<ArcPolygon> holes;
+    for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) {
+      ArcPolygon hole = polygonOf(*i);
+      if (hole.size() > 0) holes.push_back(std::move(hole));
+    }
+    inside.emplace_back(polygonOf(f->outer_ccb()), holes.begin(), holes.end());
+  }
+  ArcPolygonSet set;
+  if (!inside.empty()) set.join(inside.begin(), inside.end());
+  return set;
+}
+
 }  // namespace
 
 PlaneKernel::Point_2 exactPoint(const dvec2& p) {
@@ -298,51 +360,25 @@ std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double
 }
 
 ArcPolygonSet evenOddSet(const std::vector<std::vector<CircleSegment>>& loops) {
-  CountedArrangement arrangement;
-  std::vector<CountedTraits::Curve_2> curves;
-  for (const auto& loop : loops)
-    for (const CircleSegment& c : loop) curves.emplace_back(c, 1);
-  CGAL::insert(arrangement, curves.begin(), curves.end());
-
-  // Flood the faces from the unbounded one: crossing an edge that an odd
-  // number of curves run along flips the parity.
-  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) f->set_data(-1);
-  std::vector<CountedArrangement::Face_handle> stack{arrangement.unbounded_face()};
-  stack.back()->set_data(0);
-  std::vector<ArcPolygonWithHoles> inside;
-  const auto flood = [&](CountedArrangement::Face_handle f,
-                         CountedArrangement::Ccb_halfedge_circulator first) {
-    auto h = first;
-    do {
-      const auto g = h->twin()->face();
-      if (g->data() < 0) {
-        g->set_data(f->data() ^ (h->curve().data() & 1));
-        stack.push_back(g);
-      }
-    } while (++h != first);
-  };
-  while (!stack.empty()) {
-    const auto f = stack.back();
-    stack.pop_back();
-    if (!f->is_unbounded()) flood(f, f->outer_ccb());
-    for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) flood(f, *i);
-    if (f->is_unbounded() || f->data() != 1) continue;
-    std::vector<ArcPolygon> holes;
-    for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) {
-      ArcPolygon hole = polygonOf(*i);
-      if (hole.size() > 0) holes.push_back(std::move(hole));
-    }
-    inside.emplace_back(polygonOf(f->outer_ccb()), holes.begin(), holes.end());
-  }
-  ArcPolygonSet set;
-  if (!inside.empty()) set.join(inside.begin(), inside.end());
-  return set;
+  std::vector<CircleSegment> curves;
+  for (const auto& loop : loops) curves.insert(curves.end(), loop.begin(), loop.end());
+  return filledSet(curves, FillRule::EvenOdd);
 }
 
 ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
   if (region.op() == Region::Op::Leaf)
     return evenOddSet(exactLoops(region.profile(), ellipseTolerance));
   const std::vector<RegionPtr>& operands = region.operands();
+  if (region.op() == Region::Op::Union && operands.size() > 2) {
+    // One aggregated join (CGAL's divide and conquer) rather than one join
+    // per operand, each of which would sweep all that came before it again.
+    std::vector<ArcPolygonWithHoles> pieces;
+    for (const RegionPtr& operand : operands)
+      polygonSetOf(*operand, ellipseTolerance).polygons_with_holes(std::back_inserter(pieces));
+    ArcPolygonSet set;
+    if (!pieces.empty()) set.join(pieces.begin(), pieces.end());
+    return set;
+  }
   ArcPolygonSet set = polygonSetOf(*operands.front(), ellipseTolerance);
   for (std::size_t i = 1; i < operands.size(); ++i) {
     const ArcPolygonSet other = polygonSetOf(*operands[i], ellipseTolerance);
@@ -379,6 +415,17 @@ Profile profileOf(const ArcPolygonSet& set) {
 Profile evaluate(const Region& region, double ellipseTolerance) {
   requireTolerance("a region's ellipses", ellipseTolerance);
   return profileOf(polygonSetOf(region, ellipseTolerance));
+}
+
+Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
+  std::vector<CircleSegment> curves;
+  curves.reserve(segments.size());
+  for (const auto& [from, to] : segments) {
+    requireFinite(from, "point");
+    requireFinite(to, "point");
+    if (from != to) curves.emplace_back(exactPoint(from), exactPoint(to));
+  }
+  return profileOf(filledSet(curves, FillRule::NonZero));
 }
 
 }  // namespace csgray::detail

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -95,6 +96,36 @@ TEST(Region, ATinyArcHasATinyCap) {
       EXPECT_TRUE(p.contains(q)) << h << ": " << q.x << ", " << q.y;
     EXPECT_FALSE(p.contains({0.5, 1.0001})) << h;
   }
+}
+
+// The non-zero rule over directed segments: loops that wind the same way
+// unite, a loop inside one that winds the other way is a hole, and a
+// segment run both ways cancels.
+TEST(Region, NonZeroFillCountsDirections) {
+  using Segments = std::vector<std::array<dvec2, 2>>;
+  const auto square = [](double x0, double y0, double side, bool counterclockwise) {
+    std::array<dvec2, 4> c = {dvec2(x0, y0), dvec2(x0 + side, y0), dvec2(x0 + side, y0 + side),
+                              dvec2(x0, y0 + side)};
+    if (!counterclockwise) std::reverse(c.begin(), c.end());
+    Segments out;
+    for (int i = 0; i < 4; ++i) out.push_back({c[i], c[(i + 1) % 4]});
+    return out;
+  };
+  const auto joined = [](Segments a, const Segments& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  // Overlapping, both counterclockwise: 4 + 4 - 1, where even-odd would
+  // leave the overlap out.
+  EXPECT_NEAR(area(nonZeroFill(joined(square(0, 0, 2, true), square(1, 1, 2, true)))), 7.0, 1e-12);
+  // Nested, the inner one clockwise: a hole.
+  EXPECT_NEAR(area(nonZeroFill(joined(square(0, 0, 4, true), square(1, 1, 2, false)))), 12.0,
+              1e-12);
+  // Two squares side by side, their shared side run both ways: one loop.
+  const Profile pair = nonZeroFill(joined(square(0, 0, 1, true), square(1, 0, 1, true)));
+  EXPECT_EQ(pair.loops.size(), 1u);
+  EXPECT_NEAR(area(pair), 2.0, 1e-12);
+  EXPECT_TRUE(nonZeroFill(Segments{}).loops.empty());
 }
 
 TEST(Region, ASquareIsOneCounterclockwiseLoop) {

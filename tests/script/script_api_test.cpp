@@ -237,7 +237,8 @@ TEST(ScriptTexture, EveryTextureGivesAMaterialWithATexture) {
   for (const char* expression :
        {"checker{}", "checker{size=2, colors={{1, 0, 0}, {0, 0, 1}}}", "perlin{}",
         "perlin{scale=3}", "turbulence{}", "marble{strength=2}", "wood{octaves=16}",
-        "checker{scale=3, rotate={10, 20, 30}, translate={1, 2, 3}}"}) {
+        "checker{scale=3, rotate={10, 20, 30}, translate={1, 2, 3}}", "mandelbrot{}",
+        "julia{c={-0.8, 0.156}, iterations=300}"}) {
     TexturePtr t = textureOf(expression);
     EXPECT_NE(t, nullptr) << expression;
   }
@@ -281,6 +282,38 @@ TEST(ScriptTexture, PatternsFollowTheirDefinitions) {
   for (const dvec3& q : samplePoints())
     if (std::abs(t1->colorAt(q, n).x - t8->colorAt(q, n).x) > 1e-6) ++differ;
   EXPECT_GT(differ, 20);
+}
+
+// The escape-time fractals: the Julia set of c = 0 is the unit disc; the
+// Mandelbrot set holds the period-2 bulb around -1 and is symmetric about
+// the real axis; far points escape at once and take colour a.
+TEST(ScriptTexture, FractalsFollowTheirSets) {
+  const dvec3 n(0, 0, 1), inside(0.0, 1.0, 0.0), a(1.0, 0.0, 0.0);
+  TexturePtr disc = textureOf("julia{c={0, 0}, colors={{1, 0, 0}, {0, 0, 1}}, inside={0, 1, 0}}");
+  TexturePtr set = textureOf("mandelbrot{colors={{1, 0, 0}, {0, 0, 1}}, inside={0, 1, 0}}");
+  ASSERT_TRUE(disc && set);
+  for (double r : {0.0, 0.5, 0.99})
+    for (double angle : {0.0, 1.0, 2.5, 4.0})
+      EXPECT_EQ(disc->colorAt({r * std::cos(angle), r * std::sin(angle), 0.3}, n), inside)
+          << r << " " << angle;
+  for (double r : {1.01, 1.5, 3.0})
+    EXPECT_NE(disc->colorAt({r * std::cos(1.0), r * std::sin(1.0), 0.0}, n), inside) << r;
+  for (dvec3 c : {dvec3(-1.0, 0.0, 0.0), dvec3(-1.1, 0.1, 0.0), dvec3(0.0, 0.0, 0.0),
+                  dvec3(-0.1, 0.6, 0.0), dvec3(0.25, 0.0, 0.0) - dvec3(0.01, 0.0, 0.0)})
+    EXPECT_EQ(set->colorAt(c, n), inside) << c.x << " " << c.y;
+  for (dvec3 c : {dvec3(0.3, 0.0, 0.0), dvec3(-2.1, 0.0, 0.0), dvec3(0.0, 1.1, 0.0)})
+    EXPECT_NE(set->colorAt(c, n), inside) << c.x << " " << c.y;
+  EXPECT_EQ(set->colorAt({50.0, 40.0, 0.0}, n), a);
+  // Escaping later blends further towards b.
+  EXPECT_LT(set->colorAt({0.3, 0.0, 0.0}, n).x, set->colorAt({0.6, 0.0, 0.0}, n).x);
+  for (const dvec3& q : samplePoints()) {
+    const dvec3 p(q.x * 0.5 - 0.5, q.y * 0.5, q.z);
+    EXPECT_EQ(set->colorAt(p, n), set->colorAt({p.x, -p.y, p.z}, n));
+  }
+  expectError("return mandelbrot{iterations=0}",
+              "part.lua:1: mandelbrot: iterations must be a whole number from 1 to 10000");
+  expectError("return julia{c={1}}", "part.lua:1: julia: c must be {x, y}");
+  expectError("return julia{z=1}", "part.lua:1: julia:");
 }
 
 // scale, rotate and translate move the pattern, in that order: the placed
