@@ -3,7 +3,8 @@
 // four triangles about its middle point (at the mean of its corners'
 // heights), and the solid is closed by walls down to a flat base one unit
 // below the lowest height, or at z = 0 if that is lower: OpenSCAD 2021.01's
-// surface.cc builds the same faces, so the volumes agree.
+// surface.cc builds the same solid (its base one polygon, ours triangles
+// under the cells), so the volumes agree.
 #pragma once
 
 #include <cstddef>
