@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <stdexcept>
 
 #include "io/file_kind.h"
 
@@ -66,5 +67,18 @@ bool InputFile::readUpTo(std::string& bytes, std::size_t limit) {
 }
 
 std::string inputFileProblem(const std::string& path) { return InputFile(path).problem(); }
+
+std::string readInputFile(const std::string& path, const std::string& name, std::size_t maxBytes) {
+  InputFile file(path);
+  if (!file.problem().empty())
+    throw std::invalid_argument(name + ": cannot open: " + file.problem());
+  std::string bytes;
+  if (!file.readUpTo(bytes, maxBytes + 1))
+    throw std::invalid_argument(name + ": cannot read: " + file.problem());
+  if (bytes.size() > maxBytes)
+    throw std::invalid_argument(name + ": the file is larger than " +
+                                std::to_string(maxBytes >> 20) + " MiB");
+  return bytes;
+}
 
 }  // namespace csgray::detail

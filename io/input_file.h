@@ -36,4 +36,10 @@ class InputFile {
 // Why path cannot be read as an input that must be a regular file, or "".
 std::string inputFileProblem(const std::string& path);
 
+// The whole of the regular file at path, at most maxBytes of it. Throws
+// std::invalid_argument "name: cannot open: why", "name: cannot read: why"
+// or "name: the file is larger than N MiB", name being how the user named
+// the file.
+std::string readInputFile(const std::string& path, const std::string& name, std::size_t maxBytes);
+
 }  // namespace csgray::detail

@@ -8,11 +8,13 @@
 
 #include "engine/boolean.h"
 #include "engine/degrees.h"
+#include "io/height_map_file.h"
 #include "io/input_file.h"
 #include "openscad/openscad_sweeps.h"
 #include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
 #include "primitives/revolution.h"
+#include "profile/dxf_reader.h"
 #include "profile/glyph_outlines.h"
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
@@ -247,7 +249,7 @@ class Importer {
     if (n == "minkowski") return minkowskiOf(node);
     if (n == "text") return text(node);
     if (n == "projection") return projection(node);
-    if (n == "surface") throw NodeError("surface (height maps) is not supported yet");
+    if (n == "surface") return surface(node);
     throw NodeError("unknown node");
   }
 
@@ -650,28 +652,59 @@ class Importer {
     std::string ext = std::filesystem::path(f->text).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".dxf" || ext == ".svg")
-      throw NodeError(f->text + ": 2D files (DXF, SVG) cannot be imported yet");
+    if (ext == ".dxf") return {nullptr, importDxf(node, f->text)};
+    if (ext == ".svg") throw NodeError(f->text + ": SVG files cannot be imported yet");
     if (ext != ".stl" && ext != ".off" && ext != ".obj" && ext != ".ply")
-      throw NodeError(f->text + ": not a mesh file csgray reads (STL, OFF, OBJ, PLY)");
-    if (!options_.resolveFile || !options_.loadMesh)
-      throw NodeError("this program cannot read mesh files");
-    std::string path;
-    try {
-      path = options_.resolveFile(f->text);
-    } catch (const std::invalid_argument& e) {
-      // The resolver's message names the node ("import: ..."); so does ours.
-      std::string message = e.what();
-      if (message.starts_with("import: ")) message.erase(0, 8);
-      throw NodeError(message);
-    }
-    SolidPtr solid = meshShape(options_.loadMesh(path), f->text);
+      throw NodeError(f->text + ": not a file csgray reads (STL, OFF, OBJ, PLY, DXF)");
+    if (!options_.loadMesh) throw NodeError("this program cannot read mesh files");
+    SolidPtr solid = meshShape(options_.loadMesh(resolved(f->text)), f->text);
     const double scale = number(node, "scale", 1.0);
     if (scale != 1.0) {
       if (!(scale > 0.0) || !std::isfinite(scale)) throw NodeError("scale must be > 0");
       solid = solid->transformed(Affine::scaling(dvec3(scale)));
     }
     return {solid, nullptr};
+  }
+
+  // The path of a file a node names, by the options' rule.
+  std::string resolved(const std::string& name) const {
+    if (!options_.resolveFile) throw NodeError("this program cannot read files");
+    try {
+      return options_.resolveFile(name);
+    } catch (const std::invalid_argument& e) {
+      // The resolver's message names the node ("import: ..."); so does ours.
+      std::string message = e.what();
+      if (message.starts_with("import: ")) message.erase(0, 8);
+      throw NodeError(message);
+    }
+  }
+
+  // import(file="x.dxf", layer=, origin=, scale=): its arcs exact, or
+  // OpenSCAD's polygons of them from the node's $fn, $fa and $fs.
+  RegionPtr importDxf(const CsgNode& node, const std::string& name) {
+    DxfOptions dxf;
+    if (const CsgValue* layer = find(node, "layer"); given(layer)) {
+      if (layer->kind != CsgValue::Kind::String) throw NodeError("layer must be a string");
+      dxf.layer = layer->text;
+    }
+    dxf.origin = dvec2(numberOrVector(node, "origin", 2, dvec3(0.0)));
+    dxf.scale = number(node, "scale", 1.0);
+    polygonSides(node, 1.0);  // checks $fa and $fs
+    dxf.fragments = [this, &node](double r) { return polygonSides(node, r); };
+    return readDxf(readInputFile(resolved(name), name, kMaxFileBytes), name, dxf);
+  }
+
+  // surface(file=, center=, invert=): a height map (scene/height_map.h).
+  Shape surface(const CsgNode& node) {
+    const CsgValue* f = find(node, "file", 0);
+    if (!given(f) || f->kind != CsgValue::Kind::String) throw NodeError("needs file=\"...\"");
+    const HeightMap map = readHeightMap(resolved(f->text), f->text, boolean(node, "invert", false),
+                                        options_.loadImage);
+    try {
+      return {heightMapSolid(map, boolean(node, "center", false)), nullptr};
+    } catch (const std::invalid_argument& e) {
+      throw NodeError(f->text + ": " + e.what());
+    }
   }
 
   const std::string& file_;

@@ -12,6 +12,7 @@
 #include "engine/solid.h"
 #include "openscad/csg_parser.h"
 #include "profile/region.h"
+#include "scene/texture.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
@@ -34,6 +35,9 @@ struct CsgImportOptions {
   // Reads a triangle mesh (STL, OFF, OBJ, PLY) as a solid's; throws
   // std::invalid_argument. Without it, import() of a mesh is an error.
   std::function<TriangleMesh(const std::string& path)> loadMesh;
+  // Reads an image (surface(file="x.png")); throws std::runtime_error.
+  // Without it, surface() of an image is an error.
+  std::function<TextureImage(const std::string& path)> loadImage;
   // The section by z = 0 (cut) or the shadow on it of a solid, for
   // projection(); throws std::exception with a one-line message. Without
   // it, projection() is an error. (solidProjection of

@@ -393,6 +393,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
   registerRegionApi(L);
   registerSweepApi(L);
   registerCsgApi(L);
+  registerImportApi(L);
   registerTextApi(L);
 }
 

@@ -31,6 +31,7 @@ CsgImportOptions csgOptions(const std::string& path, const ScriptOptions& option
       std::string report;
       return options.loadMesh(file, false, report);
     };
+  csg.loadImage = options.loadImage;
   csg.project = options.projectSolid;
   return csg;
 }

@@ -30,9 +30,9 @@ std::string openscadNameHint(const std::string& name) {
       {"color", "a colour is a material here: s:material{color={r, g, b}}"},
       {"echo", "OpenSCAD's echo is print(...) here (it writes to standard error)"},
       {"import",
-       "meshes are read with mesh{file=\"part.stl\"}, OpenSCAD's .csg files with "
-       "import_csg{file=\"part.csg\"}"},
-      {"surface", "OpenSCAD's surface() (height maps) is not supported in scripts"},
+       "meshes are read with mesh{file=\"part.stl\"}, DXF drawings with "
+       "import_dxf{file=\"part.dxf\"}, OpenSCAD's .csg files with import_csg{file=\"part.csg\"}"},
+      {"surface", "OpenSCAD's surface() is height_map{file=\"terrain.dat\"} here"},
       {"projection", "projection() is not supported yet"},
       {"children", "a module is a Lua function here; pass the parts it works on as arguments"},
       {"len", "the length of a list is #list here"},

@@ -803,6 +803,21 @@ expect_in_stderr "an unknown .csg node" "unknown.csg:3: frobnicate: unknown node
 expect_exit 1 "a broken .csg file" "$work/broken.stl" export "$work/broken.csg" -o "$work/broken.stl"
 expect_in_stderr "a broken .csg file" "broken.csg:3: expected ',' or ')' between the arguments of cube, found the end of the file"
 expect_failure "a bad --facets" "" export "$work/part.csg" -o "$work/facets.stl" --facets round
+# Files a .csg node reads: a DXF drawing cut short, a height map with a
+# word among its numbers; the error names the .csg line and the file's.
+printf 'linear_extrude(height = 2) {\n  import(file = "cut.dxf", layer = "");\n}\n' > "$work/dxf.csg"
+printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n40\n5\n' > "$work/cut.dxf"
+expect_exit 1 "a DXF file cut short" "$work/dxf.stl" export "$work/dxf.csg" -o "$work/dxf.stl"
+expect_in_stderr "a DXF file cut short" "dxf.csg:2: import: cut.dxf:8: the file ends inside the ENTITIES section"
+printf 'surface(file = "words.dat", center = true);\n' > "$work/surface.csg"
+printf '1 2\n3 four\n' > "$work/words.dat"
+expect_exit 1 "a height map with a word" "$work/surface.stl" export "$work/surface.csg" -o "$work/surface.stl"
+expect_in_stderr "a height map with a word" "surface.csg:1: surface: words.dat:2: 'four' is not a number"
+# The whole file: a circle of r = 5 as OpenSCAD's 16-gon (2π·5/$fs = 15.7
+# sides, rounded up), 2 high: 2 · 8 · 25 · sin(22.5°).
+printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n40\n5\n0\nENDSEC\n0\nEOF\n' > "$work/cut.dxf"
+if "$csgray" export "$work/dxf.csg" -o "$work/dxf.stl" --facets openscad >"$work/stdout" 2>"$work/stderr" &&
+  grep -q "volume 153.073" "$work/stdout"; then pass; else fail "export a .csg file's DXF"; cat "$work/stdout" "$work/stderr"; fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -18,6 +18,7 @@
 #include "export/cgal/mesh_boolean.h"
 #include "export/solid_projection.h"
 #include "export/cgal/mesh_validity.h"
+#include "io/image_file.h"
 #include "profile/region_evaluation.h"
 #include "raytrace/renderer.h"
 #include "script/script.h"
@@ -411,9 +412,9 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(importError("\nprojection(cut = false) { cube(size = 1); }"),
             "part.csg:2: projection: this program cannot project solids");
   EXPECT_EQ(importError("surface(file = \"x.dat\");"),
-            "part.csg:1: surface: surface (height maps) is not supported yet");
-  EXPECT_EQ(importError("import(file = \"x.dxf\");"),
-            "part.csg:1: import: x.dxf: 2D files (DXF, SVG) cannot be imported yet");
+            "part.csg:1: surface: this program cannot read files");
+  EXPECT_EQ(importError("import(file = \"x.svg\");"),
+            "part.csg:1: import: x.svg: SVG files cannot be imported yet");
   EXPECT_EQ(importError("union() { cube(size = 1); square(size = 1); }"),
             "part.csg:1: union: mixes 2D and 3D children; extrude the 2D ones first");
   EXPECT_EQ(importError("cube(size = \"big\");"),
@@ -471,6 +472,42 @@ std::map<std::string, double> referenceVolumes() {
     volumes[name] = volume;
   }
   return volumes;
+}
+
+// The nodes that read files: surface() of a PNG and import() of a DXF
+// drawing, against OpenSCAD 2021.01's exports of `surface(file =
+// "surface_image.png", center = true);` and of `linear_extrude(height = 1)
+// import(file = "example009.dxf", layer = "body", scale = 2);`.
+TEST(CsgImport, SurfaceAndDxfNodes) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  options.loadImage = readTextureImage;
+  const CsgModel png = importCsg(
+      "surface(file = \"surface_image.png\", center = true, invert = false);", "part.csg", options);
+  ASSERT_EQ(png.solids.size(), 1u);
+  EXPECT_NEAR(exportedVolume(png.solids[0]), 87367.557376, 1e-5 * 87367.557376);
+  const std::string body =
+      "import(file = \"example009.dxf\", layer = \"body\", origin = [0, 0], scale = 2, $fn = 0, "
+      "$fa = 12, $fs = 2);";
+  options.facets = CsgFacets::OpenScad;
+  const CsgModel facets = importCsg(body, "part.csg", options);
+  ASSERT_EQ(facets.regions.size(), 1u);
+  // OpenSCAD moves each point onto the first it met within 0.001 (its
+  // GRID_COARSE), and its STL has 6 significant digits.
+  EXPECT_NEAR(area(evaluate(*facets.regions[0], 1e-9)), 1230.880866, 1e-4 * 1230.880866);
+  options.facets = CsgFacets::Exact;
+  const CsgModel exact = importCsg(body, "part.csg", options);
+  // The exact arcs: the round holes are larger than OpenSCAD's polygons.
+  EXPECT_NEAR(area(evaluate(*exact.regions[0], 1e-9)), 1230.880866, 0.01 * 1230.880866);
+  try {
+    importCsg("group() {\n  import(file = \"example009.dxf\", layer = \"none\");\n}", "part.csg",
+              options);
+    ADD_FAILURE() << "no error";
+  } catch (const CsgError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "part.csg:2: import: example009.dxf: layer \"none\" draws no closed outline (its "
+              "layers: body, dim, fan_side, fan_side_center, fan_top, plate)");
+  }
 }
 
 Scene exampleScene(const std::string& name, bool openscadFacets) {
@@ -561,6 +598,7 @@ const Example kExamples[] = {
     {"Advanced_children", Example::Solid, 0.02},
     {"Advanced_children_indexed", Example::Solid, 0.06},
     {"Advanced_offset", Example::Solid, 1e-3},
+    {"Advanced_surface_image", Example::Solid, 1e-3},
     {"Basics_CSG-modules", Example::Solid, 2e-3},
     {"Basics_CSG", Example::Solid, 0.01},
     {"Basics_LetterBlock", Example::Solid, 1e-4},
@@ -576,8 +614,18 @@ const Example kExamples[] = {
     {"Old_example004", Example::Solid, 0.07},
     {"Old_example005", Example::Solid, 0.01},
     {"Old_example006", Example::Solid, 2e-3},
+    // OpenSCAD turns 007's rotate_extrude in 30 steps (its volume is 0.8 %
+    // smaller than the exact one), and cuts 009's twisted linear_extrude
+    // into flat slices and turns its rotate_extrude in steps (5 % larger).
+    // Their DXF drawings are imported as OpenSCAD imports them:
+    // SurfaceAndDxfNodes holds an area to 10⁻⁴.
+    {"Old_example007", Example::Solid, 0.01},
+    {"Old_example008", Example::Solid, 1e-4},
+    {"Old_example009", Example::Solid, 0.055},
+    {"Old_example010", Example::Solid, 1e-4},
     {"Old_example011", Example::Solid, 1e-4},
     {"Old_example012", Example::Solid, 0.02},
+    {"Old_example013", Example::Solid, 1e-4},
     {"Old_example014", Example::Solid, 1e-4},
     {"Old_example016", Example::Solid, 1e-4},
     {"Old_example017", Example::Solid, 0.01},
@@ -596,15 +644,8 @@ const Example kExamples[] = {
     {"Functions_list_comprehensions", Example::Region},
     {"Functions_polygon_areas", Example::Region},
     {"Functions_recursion", Example::Region},
-    {"Advanced_surface_image", Example::Refused, 0, "image.csg:6: surface: surface (height maps)"},
+    {"Old_example015", Example::Region},
     {"Functions_echo", Example::Refused, 0, "Functions_echo.csg: the file makes nothing to show"},
-    {"Old_example007", Example::Refused, 0,
-     "007.csg:5: import: example007.dxf: 2D files (DXF, SVG)"},
-    {"Old_example008", Example::Refused, 0, "008.csg:5: import: example008.dxf: 2D files"},
-    {"Old_example009", Example::Refused, 0, "009.csg:2: import: example009.dxf: 2D files"},
-    {"Old_example010", Example::Refused, 0, "010.csg:2: surface: surface (height maps) is not"},
-    {"Old_example013", Example::Refused, 0, "013.csg:3: import: example013.dxf: 2D files"},
-    {"Old_example015", Example::Refused, 0, "015.csg:27: import: example009.dxf: 2D files"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Examples, OpenScadExample, ::testing::ValuesIn(kExamples),

@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
+#include "primitives/mesh_solid.h"
 #include "scene/region_surface.h"
 #include "script/script.h"
 #include "test_support.h"
@@ -323,6 +326,53 @@ TEST(ScriptRegion, OffsetsAndHullsAreAnalytic) {
   // The hull of two circles of radius r at distance d: πr² + 2rd.
   expectArea("hull(circle(1), circle(1):translate(5, 0))", pi + 10);
   expectArea("hull{square(1), square(1):translate(3, 3)}", 7);
+}
+
+// import_dxf{} and height_map{} read files beside the script, by its
+// rules, and name the file and its line when it is wrong.
+TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
+  const std::string folder = testing::TempDir() + "/drawings_and_heights";
+  std::filesystem::create_directories(folder);
+  // A closed 10 × 10 polyline on layer "plate".
+  std::ofstream(folder + "/square.dxf")
+      << "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nplate\n70\n1\n10\n0\n20\n0\n10\n10\n20\n0\n"
+         "10\n10\n20\n10\n10\n0\n20\n10\n0\nENDSEC\n0\nEOF\n";
+  std::ofstream(folder + "/bad.dxf") << "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nx\n";
+  std::ofstream(folder + "/hill.dat") << "# heights\n1 2\n3 4\n";
+  auto run = [&](const std::string& source) {
+    std::ofstream(folder + "/part.lua") << source;
+    return runScriptFile(folder + "/part.lua", test::exampleOptions());
+  };
+  auto error = [&](const std::string& source) -> std::string {
+    try {
+      run(source);
+    } catch (const ScriptError& e) {
+      const std::string message = e.what();
+      return message.substr(message.find("part.lua"));
+    }
+    return "(no error)";
+  };
+  run("local r = import_dxf{file='square.dxf', layer='plate', origin={5, 5}, scale=2}\n"
+      "assert(math.abs(r:area() - 400) < 1e-9)\n"
+      "local lo, hi = r:bounds()\n"
+      "assert(lo[1] == -10 and hi[2] == 10)\n"
+      "return r");
+  // One cell of mean height 2.5 on a base at z = 0.
+  const Scene hill = run("return height_map{file='hill.dat', center=true}");
+  ASSERT_EQ(hill.objects.size(), 1u);
+  auto mesh = std::dynamic_pointer_cast<const MeshSolid>(hill.objects[0]);
+  ASSERT_TRUE(mesh);
+  EXPECT_NEAR(mesh->volume(), 2.5, 1e-12);
+  EXPECT_EQ(error("return import_dxf{file='bad.dxf'}"),
+            "part.lua:1: import_dxf: bad.dxf:8: expected a number for group code 10, found 'x'");
+  EXPECT_EQ(error("return import_dxf{file='square.dxf', layer='holes'}"),
+            "part.lua:1: import_dxf: square.dxf: layer \"holes\" draws no closed outline (its "
+            "layers: plate)");
+  EXPECT_EQ(error("return height_map{file='square.dxf'}"),
+            "part.lua:1: height_map: square.dxf:2: 'SECTION' is not a number");
+  const std::string outside = error("return height_map{file='../hill.dat'}");
+  EXPECT_TRUE(outside.starts_with("part.lua:1: height_map: ")) << outside;
+  EXPECT_EQ(outside.find('\n'), std::string::npos) << outside;
 }
 
 }  // namespace

@@ -1,0 +1,89 @@
+// Shapes read from files other than meshes: import_dxf{file=} (a DXF
+// drawing's outlines as a region, OpenSCAD's import() of a .dxf) and
+// height_map{file=} (OpenSCAD's surface(): a text file of heights or a PNG
+// image as a solid). Files follow the script's rule (script_path.h).
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "io/height_map_file.h"
+#include "io/input_file.h"
+#include "profile/dxf_reader.h"
+#include "script/api.h"
+#include "script/lua_args.h"
+#include "script/lua_values.h"
+#include "script/sandbox.h"
+#include "script/script_path.h"
+
+namespace csgray::detail {
+
+namespace {
+
+constexpr std::size_t kMaxDrawingBytes = std::size_t{64} << 20;
+
+// import_dxf{file="plate.dxf", layer="", origin={0, 0}, scale=1}.
+int importDxf(lua_State* L) {
+  checkArgumentCount(L, "import_dxf", 1);
+  LuaArgs args(L, 1, "import_dxf");
+  std::optional<std::string> file = args.string("file");
+  DxfOptions dxf;
+  dxf.layer = args.string("layer").value_or("");
+  if (args.push("origin")) {
+    dxf.origin = toVec2(L, -1, "import_dxf: origin");
+    lua_pop(L, 1);
+  }
+  dxf.scale = args.number("scale").value_or(1.0);
+  args.finish();
+  if (!file) throw std::invalid_argument("import_dxf: needs file=\"part.dxf\"");
+  const std::string path = scriptFile(L, "import_dxf", *file);
+  RegionPtr region;
+  try {
+    region = readDxf(readInputFile(path, *file, kMaxDrawingBytes), *file, dxf);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("import_dxf: " + std::string(e.what()));
+  }
+  Sandbox::of(L).charge(L, region->profile().loops.size() * sizeof(ProfileLoop));
+  region->forEachLeaf([&](const Profile& p) {
+    for (const ProfileLoop& loop : p.loops)
+      Sandbox::of(L).charge(L, loop.edges.size() * sizeof(ProfileEdge));
+  });
+  pushRegion(L, region);
+  return 1;
+}
+
+// height_map{file="terrain.dat" or "terrain.png", center=false, invert=false}.
+int heightMap(lua_State* L) {
+  checkArgumentCount(L, "height_map", 1);
+  LuaArgs args(L, 1, "height_map");
+  std::optional<std::string> file = args.string("file");
+  const bool center = args.boolean("center").value_or(false);
+  const bool invert = args.boolean("invert").value_or(false);
+  args.finish();
+  if (!file)
+    throw std::invalid_argument("height_map: needs file=\"terrain.dat\" (numbers) or a PNG image");
+  const ScriptOptions& options = scriptOptionsOf(L);
+  const std::string path = scriptFile(L, "height_map", *file);
+  std::shared_ptr<MeshSolid> solid;
+  try {
+    const HeightMap map = readHeightMap(path, *file, invert, options.loadImage);
+    try {
+      solid = heightMapSolid(map, center);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(*file + ": " + e.what());
+    }
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("height_map: " + std::string(e.what()));
+  }
+  Sandbox::of(L).charge(L, solid->memoryBytes());
+  pushSolid(L, solid);
+  return 1;
+}
+
+}  // namespace
+
+void registerImportApi(lua_State* L) {
+  lua_register(L, "import_dxf", guarded<importDxf>);
+  lua_register(L, "height_map", guarded<heightMap>);
+}
+
+}  // namespace csgray::detail
