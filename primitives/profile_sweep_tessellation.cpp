@@ -88,6 +88,20 @@ void bridge(std::vector<Corner>& polygon, const std::vector<Corner>& hole) {
       }
     }
   }
+  // A corner an earlier bridge doubled is in the polygon twice: the bridge
+  // must leave the copy whose wedge of the inside it enters, or the joined
+  // polygon overlaps itself.
+  const dvec2 P = polygon[visible].p, d = M - P;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (polygon[i].p != P) continue;
+    const dvec2 &before = polygon[(i + n - 1) % n].p, &after = polygon[(i + 1) % n].p;
+    const bool leftOfIn = cross(P - before, d) > 0.0, leftOfOut = cross(after - P, d) > 0.0;
+    const bool convex = orient(before, P, after) > 0.0;
+    if (convex ? leftOfIn && leftOfOut : leftOfIn || leftOfOut) {
+      visible = i;
+      break;
+    }
+  }
   std::vector<Corner> joined;
   joined.reserve(n + hole.size() + 2);
   for (std::size_t i = 0; i <= visible; ++i) joined.push_back(polygon[i]);

@@ -171,6 +171,26 @@ TEST(LinearExtrusion, MeshesAreValidSolids) {
                   test::polygonArea(star));
 }
 
+// Holes are joined to the outline by bridges, each from a hole's
+// rightmost point to a corner it sees; a later hole's bridge may meet an
+// earlier bridge and end at its corner, which the polygon then holds
+// twice. A plate with holes on rows and columns (bridges along the rows,
+// through the holes' corners on them, and crossing earlier bridges) caps
+// into a valid mesh.
+TEST(LinearExtrusion, HolesWhoseBridgesMeetStayValid) {
+  const double area = 60.0 * 40.0;
+  std::vector<ProfileLoop> three = {test::rectangleLoop({0, 0}, {60, 40})};
+  for (dvec2 c : {dvec2(10, 10), dvec2(50, 10), dvec2(30, 30)})
+    three.push_back(test::circleLoop(c, 3.0));
+  const double hole = kPi * 9.0;
+  expectValidMesh(*extrude(test::regionOf(three), 5.0), 0.01, (area - 3.0 * hole) * 5.0);
+  std::vector<ProfileLoop> grid = {test::rectangleLoop({0, 0}, {60, 40})};
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j)
+      grid.push_back(test::circleLoop({8.0 + 11.0 * i, 8.0 + 12.0 * j}, 3.0));
+  expectValidMesh(*extrude(test::regionOf(grid), 5.0), 0.01, (area - 15.0 * hole) * 5.0);
+}
+
 // A cap is cut into triangles near their neighbours, not fanned out from a
 // few corners: the export's booleans and its validity check test pairs of
 // triangles whose boxes overlap, and slivers across the whole cap overlap
