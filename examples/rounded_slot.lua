@@ -23,7 +23,13 @@ end
 -- A capsule handle on top: the hull of two equal spheres, exact.
 local handle = hull(sphere(3):translate(x / 2 - 12, y / 2, t), sphere(3):translate(x / 2 + 12, y / 2, t))
 
-local part = difference(plate + handle, {slot(x / 2, y * 0.2), slot(x / 2, y * 0.8)})
+-- A label pad with cut corners: the 2D Minkowski sum of a rectangle and
+-- an octagon (convex, one a polygon: the hull of octagons at the
+-- rectangle's corners), extruded.
+local pad = linear_extrude{minkowski(square{size={12, 8}}, regular_polygon{n=8, r=2}), height=1.5}
+  :translate(5, y / 2 - 4, t)
+
+local part = difference(plate + handle + pad, {slot(x / 2, y * 0.2), slot(x / 2, y * 0.8)})
 return scene{
   objects = {part:material{color={0.7, 0.72, 0.75}, specular=0.6, shininess=60}},
   camera  = camera{eye={x * 1.2, -y * 1.6, 70}, look_at={x / 2, y / 2, 0}, fov=40},

@@ -642,8 +642,17 @@ class Importer {
     std::vector<Shape> shapes = children(node);
     if (shapes.empty()) return {};
     std::vector<SolidPtr> solids = solidsOf(shapes);
-    if (solids.empty()) throw NodeError("the Minkowski sum of 2D shapes is not supported yet");
-    return {solids.size() == 1 ? solids.front() : minkowskiShape(solids), nullptr};
+    if (!solids.empty())
+      return {solids.size() == 1 ? solids.front() : minkowskiShape(solids), nullptr};
+    RegionPtr sum = shapes.front().region;
+    for (std::size_t i = 1; i < shapes.size(); ++i) {
+      const double tol =
+          std::min(evaluationTolerance(*sum), evaluationTolerance(*shapes[i].region));
+      Profile result = minkowskiSum(sum, shapes[i].region, tol);
+      if (result.loops.empty()) return {};
+      sum = Region::leaf(std::move(result));
+    }
+    return {nullptr, sum};
   }
 
   Shape importFile(const CsgNode& node) {

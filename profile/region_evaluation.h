@@ -63,5 +63,10 @@ Profile offsetDelta(const Region& region, double delta, bool chamfer, double ell
 // The convex hull of the regions: segments and arcs of their circles (an
 // empty profile for no regions, or for a hull without area).
 Profile hull(std::span<const RegionPtr> regions, double ellipseTolerance);
+// The Minkowski sum a ⊕ b (every sum of a point of a and one of b), exact
+// where one is a circle (the other's rounded offset, moved by the
+// centre) or both are convex and one is a polygon (the hull of copies of
+// the other at its corners); anything else is refused.
+Profile minkowskiSum(const RegionPtr& a, const RegionPtr& b, double ellipseTolerance);
 
 }  // namespace csgray::detail

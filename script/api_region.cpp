@@ -541,33 +541,21 @@ int hullOf(lua_State* L) {
   return 1;
 }
 
-// The disc a region is when it is one whole circle: its centre and radius.
-std::optional<std::pair<dvec2, double>> discOf(const Region& region) {
-  if (region.op() != Region::Op::Leaf || region.profile().loops.size() != 1) return std::nullopt;
-  const std::vector<ProfileEdge>& edges = region.profile().loops[0].edges;
-  if (edges.size() != 1) return std::nullopt;
-  const ProfileEdge& e = edges[0];
-  if (e.kind != ProfileEdge::Kind::Arc || !e.circular() ||
-      std::abs(e.angle1 - e.angle0) < 2.0 * std::numbers::pi)
-    return std::nullopt;
-  return std::make_pair(e.center, glm::length(e.axes[0]));
-}
-
 // minkowski(a, b, ...) of regions, when the first operand is one, else the
-// solids' sum: a region plus a circle is its rounded offset by the radius,
-// moved by the circle's centre (OpenSCAD's minkowski() {square(); circle();}).
+// solids' sum, pair by pair from the first (region_evaluation.h: a region
+// plus a circle is its rounded offset, OpenSCAD's minkowski() {square();
+// circle();}; two convex regions, one a polygon, the hull of copies).
 int minkowskiOf(lua_State* L) {
   if (!firstOperandIsRegion(L)) return solidsFunction(L);
   std::vector<RegionPtr> regions = regionOperands(L, "minkowski");
   RegionPtr sum = regions[0];
   for (std::size_t i = 1; i < regions.size(); ++i) {
-    RegionPtr shape = sum, disc = regions[i];
-    if (!discOf(*disc)) std::swap(shape, disc);
-    std::optional<std::pair<dvec2, double>> circle = discOf(*disc);
-    if (!circle)
-      throw std::invalid_argument("minkowski: of regions, one of each pair must be a circle");
-    Profile grown = offsetRounded(*shape, circle->second, evaluationTolerance(*shape));
-    sum = Region::leaf(std::move(grown))->transformed({dmat2(1.0), circle->first});
+    const double tolerance = std::min(evaluationTolerance(*sum), evaluationTolerance(*regions[i]));
+    try {
+      sum = Region::leaf(minkowskiSum(sum, regions[i], tolerance));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("minkowski: ") + e.what());
+    }
   }
   pushRegionAs(L, sum, "region");
   return 1;

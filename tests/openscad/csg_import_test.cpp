@@ -16,8 +16,8 @@
 #include "check/exact_volume.h"
 #include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
-#include "export/solid_projection.h"
 #include "export/cgal/mesh_validity.h"
+#include "export/solid_projection.h"
 #include "io/image_file.h"
 #include "profile/region_evaluation.h"
 #include "raytrace/renderer.h"
@@ -207,6 +207,34 @@ std::string helloText(const char* cut, const char* options) {
   return std::string("intersection() {\n  ") + cut +
          "\n  text(text = \"Hello\", size = 10, spacing = 1.2, font = \"\", " + options +
          ", $fn = 16, $fa = 12, $fs = 2);\n}\n";
+}
+
+// A 2D minkowski: a square and a circle is the rounded square, s² + 4sr +
+// πr² exactly, or with OpenSCAD's polygons the square grown by the n-gon
+// (s² + 2s·(its widths) + its area); a pair neither convex nor with a
+// circle is one line naming the file's line.
+TEST(CsgImport, MinkowskiOfShapes) {
+  constexpr double kPi = std::numbers::pi;
+  const std::string rounded =
+      "minkowski() {\n square(size = [10, 10]);\n circle(r = 2, $fn = 0, $fa = 12, $fs = 2);\n}";
+  EXPECT_NEAR(regionArea(rounded, CsgFacets::Exact), 100.0 + 80.0 + 4.0 * kPi, 1e-6);
+  // $fs = 2 at r = 2: 7 sides (ceil(2π)), a corner on +x.
+  const int n = 7;
+  double width = 0.0, height = 0.0, polygon = 0.0;
+  double lo = 1e9, hi = -1e9, bottom = 1e9, top = -1e9;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * kPi * k / n;
+    lo = std::min(lo, 2.0 * std::cos(a)), hi = std::max(hi, 2.0 * std::cos(a));
+    bottom = std::min(bottom, 2.0 * std::sin(a)), top = std::max(top, 2.0 * std::sin(a));
+  }
+  width = hi - lo, height = top - bottom;
+  polygon = 0.5 * n * 4.0 * std::sin(2.0 * kPi / n);
+  EXPECT_NEAR(regionArea(rounded, CsgFacets::OpenScad), 100.0 + 10.0 * (width + height) + polygon,
+              1e-9);
+  EXPECT_EQ(importError("minkowski() {\n difference() { square(size = [2, 2]); square(size = [1, "
+                        "1]); }\n square(size = [1, 1]);\n}"),
+            "part.csg:1: minkowski: of two regions, one must be a circle, or both convex and one a "
+            "polygon");
 }
 
 // OpenSCAD's text: its size (an em of size/0.72), its layout (advances and
@@ -568,8 +596,7 @@ TEST_P(OpenScadExample, ImportsRendersAndExports) {
   ASSERT_FALSE(facets.objects.empty());
   const PartMesh withFacets = meshOfSolid(*unionOf(facets.objects), 0.01);
   EXPECT_FALSE(withFacets.mesh.empty());
-  EXPECT_NEAR(withFacets.mesh.volume(), reference, 1e-3 * reference)
-      << "with OpenSCAD's facets";
+  EXPECT_NEAR(withFacets.mesh.volume(), reference, 1e-3 * reference) << "with OpenSCAD's facets";
   const Scene exact = exampleScene(example.name, false);
   const SolidPtr exactPart = unionOf(exact.objects);
   const double exactPartVolume = example.exactRays > 0

@@ -270,8 +270,21 @@ TEST(HullScript, RegionPlusCircleIsItsRoundedOffset) {
       "return linear_extrude(m, {height=1})",
       "part.lua");
   EXPECT_EQ(scene.objects.size(), 1u);
-  EXPECT_EQ(scriptError("return minkowski(square(2), square(1))"),
-            "part.lua:1: minkowski: of regions, one of each pair must be a circle");
+  // Two convex regions, one a polygon: the hull of copies of one at the
+  // other's corners (a square of 2 and one of 1 make one of 3; a square
+  // of 2 and a disc of 0.5 the rounded square).
+  runScript(
+      "local s = minkowski(square(2), square(1):translate(-0.5, -0.5))\n"
+      "assert(math.abs(s:area() - 9) < 1e-9, s:area())\n"
+      "local r = minkowski(regular_polygon{n=6, r=1}, square(2))\n"
+      "assert(math.abs(r:area() - (1.5 * math.sqrt(3) + 4 + 2 * (2 + math.sqrt(3)))) < 1e-9,\n"
+      "       r:area())\n"
+      "return linear_extrude(s, {height=1})",
+      "part.lua");
+  EXPECT_EQ(scriptError("local L = square(2) - square(1):translate(1, 1)\n"
+                        "return minkowski(L, square(1))"),
+            "part.lua:2: minkowski: of two regions, one must be a circle, or both convex and one "
+            "a polygon");
 }
 
 TEST(HullScript, ErrorsNameTheLine) {
