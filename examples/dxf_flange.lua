@@ -1,6 +1,6 @@
 -- dxf_flange.lua: a flange plate from a DXF drawing. The drawing's layer
 -- "outline" is the plate (a polyline whose corners are arcs: bulges), its
--- layer "holes" two bolt holes (circles) and a slot (two arcs and two
+-- layer "holes" four bolt holes (circles) and a slot (two arcs and two
 -- lines, joined end to end). Arcs stay exact arcs, so the holes are true
 -- cylinders in the render and in the export.
 --   csgray render examples/dxf_flange.lua -o flange.png
