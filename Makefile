@@ -73,11 +73,13 @@ $(MANIFOLD): bench/manifold/package.json
 	cd bench/manifold && npm install --no-audit --no-fund --loglevel=error
 	@touch $@
 
-# POV-Ray 3.7, the anchor of the render rows: installed by the benchmark
-# only, never by run or test.
-POVRAY := /usr/bin/povray
+# POV-Ray 3.7, the anchor of the render rows, and OpenImageIO's idiff, which
+# compares their images: installed by the benchmark only, never by run or
+# test.
+POVRAY := /usr/bin/povray /usr/bin/idiff
 $(POVRAY):
-	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends povray
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends povray \
+	  openimageio-tools
 
 # OpenSCAD and a virtual display for its preview (the comparison with
 # csgray view): likewise the benchmark's only.
