@@ -184,9 +184,8 @@ SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees,
     for (const dvec2& u : loop) reach = std::max(reach, u.x);
   const int steps = openscadRevolutionSteps(reach, angleDegrees, res);
   requireBudget(2.0 * double(pointCount(loops)) * (steps + 1));
-  return meshShape(
-      revolvedLoops(loops, angleDegrees, steps, angleDegrees >= 360.0),
-      "rotate_extrude");
+  return meshShape(revolvedLoops(loops, angleDegrees, steps, angleDegrees >= 360.0),
+                   "rotate_extrude");
 }
 
 }  // namespace csgray::detail

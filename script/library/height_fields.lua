@@ -57,9 +57,13 @@ end
 
 -- The closed solid under a height field: the top surface (triangles over
 -- points {x, y, z}, counter-clockwise seen from above), vertical walls
--- down from its boundary and a flat base at height `base`, below every
--- point. Returns the solid, or nil and why not.
-local function solidUnder(name, points, triangles, base)
+-- down from its boundary and a flat base at height `base`, which must lie
+-- below `lowest`, the lowest point (of the `what`: "graph"). Returns the
+-- solid, or refuses with why not.
+local function solidUnder(name, what, points, triangles, base, lowest)
+  if not (base < lowest) then
+    refuse(name, "base must lie below the lowest point of the " .. what .. " (" .. lowest .. ")")
+  end
   -- The boundary: directed edges of the top that no triangle runs back
   -- along; seen from above they go round counter-clockwise.
   local count = #points
@@ -97,7 +101,7 @@ local function solidUnder(name, points, triangles, base)
     hi = {math.max(hi[1], p[1]), math.max(hi[2], p[2])}
     v = after[v]
   until v == first or v == nil
-  if v == nil then return nil, "the surface's boundary is not one loop" end
+  if v == nil then refuse(name, "the surface's boundary is not one loop") end
   all[#all + 1] = {(lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2, base}
   local middle = #all - 1
   v = first
@@ -110,7 +114,9 @@ local function solidUnder(name, points, triangles, base)
     faces[#faces + 1] = {middle, below[w], below[v]}
     v = w
   until v == first
-  return solidOf(name, all, faces)
+  local solid, why = solidOf(name, all, faces)
+  if not solid then refuse(name, why) end
+  return solid
 end
 
 -- graph{f=function(x, y) return z end, x={x0, x1}, y={y0, y1},
@@ -248,12 +254,7 @@ function graph(args)
     end
   end
   local base = args.base or lowest - 0.05 * math.max(x1 - x0, y1 - y0)
-  if not (base < lowest) then
-    refuse(name, "base must lie below the lowest point of the graph (" .. lowest .. ")")
-  end
-  local solid, why = solidUnder(name, used, top, base)
-  if not solid then refuse(name, why) end
-  return solid
+  return solidUnder(name, "graph", used, top, base, lowest)
 end
 
 -- parametric{f=function(u, v) return {x, y, z} end, u={u0, u1}, v={v0, v1},
@@ -435,11 +436,6 @@ function fractal_mountain(args)
     end
   end
   local base = args.base or lowest - 0.05 * size
-  if not (base < lowest) then
-    refuse(name, "base must lie below the lowest point of the mountain (" .. lowest .. ")")
-  end
-  local solid, why = solidUnder(name, points, triangles, base)
-  if not solid then refuse(name, why) end
-  return solid
+  return solidUnder(name, "mountain", points, triangles, base, lowest)
 end
 

@@ -130,6 +130,15 @@ TEST(ScriptLibrary, ErrorsNameTheScriptsLine) {
   EXPECT_EQ(
       scriptError("return sierpinski_tetrahedron{level=-1}"),
       "part.lua:1: sierpinski_tetrahedron: level must be a whole number from 0 to 8 (got -1)");
+  // A base at or above the lowest point leaves no solid under it.
+  EXPECT_EQ(
+      scriptError("local g = graph{f=function(x, y) return x end, x={0, 1}, y={0, 1}, base=0}"),
+      "part.lua:1: graph: base must lie below the lowest point of the graph (0.0)");
+  EXPECT_EQ(scriptError("\nreturn fractal_mountain{size=10, levels=2, base=1e9}")
+                .rfind("part.lua:2: fractal_mountain: base must lie below the lowest point of the "
+                       "mountain (",
+                       0),
+            0u);
   // An error in the script's own function keeps its own line.
   EXPECT_EQ(scriptError("return graph{f=function(x, y)\n  return nil + x\nend, x={0, 1}, y={0, 1}}")
                 .rfind("part.lua:2: ", 0),
