@@ -30,6 +30,11 @@ constexpr int kPolishSteps = 4;
 // solver several more steps with two square roots each.
 constexpr double kBracket = 1e-8;
 
+// Newton steps on a convex piece before a near-double root is left to the
+// isolation of the quartic's roots: Newton halves the distance to a double
+// root per step, so 60 steps reach kBracket from across the chord.
+constexpr int kConvexSteps = 60;
+
 // Signed distance from p to the surface along the meridian: the distance
 // from the core circle minus r. Its sign is the torus's inside test, it has
 // the same zeros as the quartic, and its slope along a unit direction is at
@@ -45,6 +50,201 @@ MeridianDistance meridianDistance(const dvec3& p, const dvec3& u, double R, doub
   double d = std::sqrt(w * w + p.z * p.z);
   double slope = (w * (p.x * u.x + p.y * u.y) / rho + p.z * u.z) / d;
   return {d - r, slope};
+}
+
+// The line in the conditioned frame of objectSpans: b + s·u with u a unit
+// vector, b the point nearest the centre, lengths in units of R + r; the
+// torus's radii in those units; the stretch [lo, hi] where it may meet the
+// torus, whose ends are outside it.
+struct ConditionedLine {
+  dvec3 b, u;
+  double R, r, lo, hi;
+};
+
+// A boundary at s, within the piece [lo, hi] of the line that holds no other.
+struct Root {
+  double s, lo, hi;
+};
+
+// The tube's own factor of the quartic along the line,
+//   g(s) = |p|² + R² − r² − 2R·ρ = (ρ − R)² + z² − r²,   ρ = √(x² + y²),
+// negative inside the torus and positive outside, with its slope. With
+// |p|² = s² + 2e·s + c and ρ² = a·(s − sAxis)² + D/a, where sAxis is where
+// the line passes nearest the axis and D = a·(x² + y²) − (b·u in xy)² =
+// (b × u)z² (Lagrange's identity: no cancellation), its second derivative
+// is 2 − 2R·D/ρ³ (ρ'' = D/ρ³ for the distance from a line to a point
+// moving along another line).
+struct TubeFactor {
+  double e, k, a, D, sAxis, R;
+
+  double rhoSquared(double s) const {
+    if (!(a > 0.0)) return D;  // parallel to the axis: D holds x² + y²
+    double w = s - sAxis;
+    return a * w * w + D / a;
+  }
+  std::pair<double, double> operator()(double s) const {
+    double rho = std::sqrt(rhoSquared(s));
+    double value = (s + 2.0 * e) * s + k - 2.0 * R * rho;
+    double slope = 2.0 * (s + e) - (a > 0.0 ? 2.0 * R * a * (s - sAxis) / rho : 0.0);
+    return {value, slope};
+  }
+};
+
+enum class Search { Root, None, Undecided };
+
+// Newton's method on a convex function h from an end x of [lo, hi] where h
+// is positive, towards the nearest root: every tangent lies below a convex
+// function, so each iterate stays on x's side of that root and they approach
+// it monotonically (Kincaid and Cheney, "Numerical Analysis", §3.2, on
+// Newton's method for convex functions). When h slopes away from the root
+// side or an iterate leaves [lo, hi], there is no root; a near-double root,
+// where convergence is slow, is left undecided after a bounded number of
+// steps. The sign flips h into a convex function on concave pieces.
+template <class F>
+Search convexNewton(const F& g, double sign, double x, double lo, double hi, double& root) {
+  const bool rightward = x == lo;
+  for (int step = 0; step < kConvexSteps; ++step) {
+    auto [value, slope] = g(x);
+    value *= sign, slope *= sign;
+    if (!(value > 0.0)) {
+      root = x;  // rounding reached the root
+      return Search::Root;
+    }
+    if (rightward ? !(slope < 0.0) : !(slope > 0.0)) return Search::None;
+    double next = x - value / slope;
+    if (!(next >= lo && next <= hi)) return Search::None;
+    if (std::abs(next - x) <= kBracket) {
+      root = next;
+      return Search::Root;
+    }
+    x = next;
+  }
+  return Search::Undecided;
+}
+
+// The boundaries on [lo, hi] in order, found piece by piece where the tube's
+// factor g is convex or concave: g'' = 0 where ρ³ = R·D, that is at
+// sAxis ± w with w² = ((R·D)^(2/3) − D/a)/a; g is concave between (near the
+// axis) and convex outside. On a convex piece, {g <= 0} is one interval, so
+// the signs at its ends and Newton's method from the ends (convexNewton)
+// find its boundaries; on a concave piece, the same for {g >= 0}. Returns
+// the count, or −1 when this does not settle them (a line that meets the
+// axis, where g has a kink, or a near-tangency).
+int boundariesOnConvexPieces(const ConditionedLine& line, Root roots[4]) {
+  const dvec3 &b = line.b, &u = line.u;
+  const double R = line.R, r = line.r;
+  const double a = u.x * u.x + u.y * u.y;
+  const double cross = b.x * u.y - b.y * u.x;
+  TubeFactor g{glm::dot(b, u),
+               glm::dot(b, b) + R * R - r * r,
+               a,
+               a > 0.0 ? cross * cross : b.x * b.x + b.y * b.y,
+               a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0,
+               R};
+  // The breaks: the ends, and the inflections between them.
+  double breaks[4];
+  int count = 0;
+  breaks[count++] = line.lo;
+  double w = 0.0;
+  if (a > 0.0 && R > 0.0) {
+    if (!(g.D > 0.0)) return -1;  // the line meets the axis
+    const double w2 = (std::cbrt(R * g.D * R * g.D) - g.D / a) / a;
+    if (w2 > 0.0) {
+      w = std::sqrt(w2);
+      for (double end : {g.sAxis - w, g.sAxis + w})
+        if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
+    }
+  }
+  breaks[count++] = line.hi;
+
+  int found = 0;
+  double gLo = g(breaks[0]).first;
+  if (!(gLo > 0.0)) return -1;
+  for (int i = 1; i < count; ++i) {
+    const double lo = breaks[i - 1], hi = breaks[i];
+    const double gHi = g(hi).first;
+    const double sign = std::abs(0.5 * (lo + hi) - g.sAxis) < w ? -1.0 : 1.0;
+    const bool loPositive = sign * gLo > 0.0, hiPositive = sign * gHi > 0.0;
+    gLo = gHi;
+    if (!loPositive && !hiPositive) continue;  // the piece holds no boundary
+    if (found + 2 > 4) return -1;
+    double first, last;
+    if (loPositive && hiPositive) {
+      // Two boundaries or none: Newton from lo decides.
+      Search from = convexNewton(g, sign, lo, lo, hi, first);
+      if (from == Search::None) continue;
+      if (from == Search::Undecided || convexNewton(g, sign, hi, lo, hi, last) != Search::Root ||
+          !(first <= last))
+        return -1;
+      const double middle = 0.5 * (first + last);
+      roots[found++] = {first, lo, middle};
+      roots[found++] = {last, middle, hi};
+    } else {
+      // One boundary, approached from the end where sign·g is positive.
+      if (convexNewton(g, sign, loPositive ? lo : hi, lo, hi, first) != Search::Root) return -1;
+      roots[found++] = {first, lo, hi};
+    }
+  }
+  if (!(gLo > 0.0) || found % 2 != 0) return -1;
+  return found;
+}
+
+// The boundaries on [lo, hi] in order by isolating the quartic's roots
+// (quartic.h); ring says the torus has no lemon (R >= r). Returns the count,
+// or −1 if an end of [lo, hi] is inside.
+int boundariesByIsolation(const ConditionedLine& line, bool ring, Root roots[4]) {
+  const dvec3 &b = line.b, &u = line.u;
+  const double R = line.R, r = line.r, lo = line.lo, hi = line.hi;
+  // The quartic in s: with P(s) = |p|² + R² − r² = s² + 2e·s + k (e ≈ 0
+  // is what is left of b·u) and x² + y² = a·s² + 2h·s + g,
+  //   q(s) = P² − 4R²(a·s² + 2h·s + g),
+  // and its derivative, whose sign changes split [lo, hi].
+  double e = glm::dot(b, u);
+  double k = glm::dot(b, b) + R * R - r * r;
+  double a = u.x * u.x + u.y * u.y;
+  double h = b.x * u.x + b.y * u.y;
+  double quadratic = 4.0 * e * e + 2.0 * k - 4.0 * R * R * a;
+  double linear = 4.0 * e * k - 8.0 * R * R * h;
+  const double derivative[4] = {linear, 2.0 * quadratic, 12.0 * e, 4.0};
+  double breaks[5];
+  int count = 0;
+  breaks[count++] = lo;
+  double critical[3];
+  int n = polynomialSublevelBoundaries(derivative, 3, lo, hi, critical);
+  for (int i = 0; i < n; ++i)
+    if (critical[i] > breaks[count - 1] && critical[i] < hi) breaks[count++] = critical[i];
+  breaks[count++] = hi;
+
+  auto distance = [&](double s) {
+    MeridianDistance m = meridianDistance(b + s * u, u, R, r);
+    return std::pair<double, double>(m.value, m.slope);
+  };
+  int found = 0;
+  // Which side each break is on comes from the meridian distance, which
+  // is exact in sign where the quartic may round. Within a piece where the
+  // side changes, a ring torus's quartic (its second factor is positive
+  // there) changes sign at the same point and is far cheaper to evaluate
+  // (no square roots); a spindle's may also vanish on its lemon, so it
+  // keeps the distance.
+  const double quartic[5] = {k * k - 4.0 * R * R * (b.x * b.x + b.y * b.y), linear, quadratic,
+                             4.0 * e, 1.0};
+  auto polynomial = [&](double s) {
+    return std::pair<double, double>(polynomialValue(quartic, 4, s),
+                                     polynomialSlope(quartic, 4, s));
+  };
+  bool inside = distance(breaks[0]).first <= 0.0;  // false: outside the bounding sphere
+  bool startsInside = inside;
+  for (int i = 1; i < count; ++i) {
+    bool next = distance(breaks[i]).first <= 0.0;
+    if (next != inside) {
+      double s = ring ? bracketedRoot(polynomial, breaks[i - 1], breaks[i], inside, kBracket)
+                      : bracketedRoot(distance, breaks[i - 1], breaks[i], inside, kBracket);
+      roots[found++] = {s, breaks[i - 1], breaks[i]};
+    }
+    inside = next;
+  }
+  if (startsInside || inside) return -1;
+  return found;
 }
 
 }  // namespace
@@ -71,13 +271,17 @@ Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minor
 //     closest to the centre, make the direction unit and scale lengths so
 //     the bounding sphere has radius 1. Then |p|² = s² + c with c <= 1 and
 //     all coefficients are O(1), however far away the ray starts.
-//  2. Isolate the roots (quartic.h): the roots of the derivative split the
-//     chord of the bounding sphere into pieces where the quartic is
-//     monotone, so each piece holds at most one root of f, and at most one
-//     of the torus's own factor. The inside test (the sign of the meridian
-//     distance, as objectContains) at the ends of each piece says whether it
-//     holds a boundary; the lemon's roots never change that sign and are
-//     passed over. A safeguarded Newton–bisection finds the boundary.
+//  2. Find the boundaries where the tube's own factor g = (ρ − R)² + z² − r²
+//     (the sign of the inside test) changes sign: g is convex along the
+//     line except on one stretch near the axis, where it is concave, and
+//     Newton's method from the ends of such a piece finds its boundaries
+//     monotonically (boundariesOnConvexPieces). Where that does not settle
+//     them (a line through the axis, a near-tangency), isolate the
+//     quartic's roots (quartic.h): the roots of the derivative split the
+//     chord into pieces where the quartic is monotone, the inside test at
+//     the ends of each says whether it holds a boundary (the lemon's roots
+//     never change that sign and are passed over), and a safeguarded
+//     Newton–bisection finds it (boundariesByIsolation).
 //  3. Polish each boundary by Newton on f along the ray as given, kept
 //     inside its piece, taking a step only while |f| decreases.
 //  4. Pair the boundaries (outside at both ends of the chord) into spans;
@@ -139,61 +343,14 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
     if (t0 + hi * scale < ray.tMin || t0 + lo * scale > ray.tMax) return;
   }
 
-  // The quartic in s: with P(s) = |p|² + R² − r² = s² + 2e·s + k (e ≈ 0
-  // is what is left of b·u) and x² + y² = a·s² + 2h·s + g,
-  //   q(s) = P² − 4R²(a·s² + 2h·s + g),
-  // and its derivative, whose sign changes split [lo, hi].
-  double e = glm::dot(b, u);
-  double k = c + R * R - r * r;
-  double a = u.x * u.x + u.y * u.y;
-  double h = b.x * u.x + b.y * u.y;
-  double quadratic = 4.0 * e * e + 2.0 * k - 4.0 * R * R * a;
-  double linear = 4.0 * e * k - 8.0 * R * R * h;
-  const double derivative[4] = {linear, 2.0 * quadratic, 12.0 * e, 4.0};
-  double breaks[5];
-  int count = 0;
-  breaks[count++] = lo;
-  double critical[3];
-  int n = polynomialSublevelBoundaries(derivative, 3, lo, hi, critical);
-  for (int i = 0; i < n; ++i)
-    if (critical[i] > breaks[count - 1] && critical[i] < hi) breaks[count++] = critical[i];
-  breaks[count++] = hi;
-
-  // 2. The boundaries, each with the piece it lies in.
-  auto distance = [&](double s) {
-    MeridianDistance m = meridianDistance(b + s * u, u, R, r);
-    return std::pair<double, double>(m.value, m.slope);
-  };
-  struct Root {
-    double s, lo, hi;
-  };
+  // 2. The boundaries, each with the piece it lies in: on the pieces where
+  // the tube's own factor is convex or concave when that settles them, by
+  // the isolation of the quartic's roots otherwise.
+  const ConditionedLine line{b, u, R, r, lo, hi};
   Root roots[4];
-  int found = 0;
-  // Which side each break is on comes from the meridian distance, which
-  // is exact in sign where the quartic may round. Within a piece where the
-  // side changes, a ring torus's quartic (its second factor is positive
-  // there) changes sign at the same point and is far cheaper to evaluate
-  // (no square roots); a spindle's may also vanish on its lemon, so it
-  // keeps the distance.
-  const double quartic[5] = {k * k - 4.0 * R * R * (b.x * b.x + b.y * b.y), linear, quadratic,
-                             4.0 * e, 1.0};
-  auto polynomial = [&](double s) {
-    return std::pair<double, double>(polynomialValue(quartic, 4, s),
-                                     polynomialSlope(quartic, 4, s));
-  };
-  const bool ring = R_ >= r_;
-  bool inside = distance(breaks[0]).first <= 0.0;  // false: outside the bounding sphere
-  bool startsInside = inside;
-  for (int i = 1; i < count; ++i) {
-    bool next = distance(breaks[i]).first <= 0.0;
-    if (next != inside) {
-      double s = ring ? bracketedRoot(polynomial, breaks[i - 1], breaks[i], inside, kBracket)
-                      : bracketedRoot(distance, breaks[i - 1], breaks[i], inside, kBracket);
-      roots[found++] = {s, breaks[i - 1], breaks[i]};
-    }
-    inside = next;
-  }
-  if (startsInside || inside) return;  // cannot happen: the chord's ends are outside
+  int found = boundariesOnConvexPieces(line, roots);
+  if (found < 0) found = boundariesByIsolation(line, R_ >= r_, roots);
+  if (found < 0) return;  // cannot happen: the chord's ends are outside
 
   // 3. Polish on f(o + t·d) = first factor · second factor, with its
   // gradient 4(|p|² + R² − r²)·p − 8R²·(x, y, 0) for the slope.

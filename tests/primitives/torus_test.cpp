@@ -157,6 +157,34 @@ TEST(TorusPrimitive, RayThroughCentreAtAnAngle) {
   EXPECT_NEAR(spans[1].out.t, 20 + mid + half, 1e-12);
 }
 
+// Lines along y at x = δ in the plane z = z0: the tube's section there is
+// the annulus R − q <= ρ <= R + q, q = √(r² − z0²), which the line crosses
+// at y = ±√(ρ² − δ²). Near the axis the tube's factor (ρ − R)² + z² − r²
+// is concave along the line (for ρ³ < R·δ²), so these take both kinds of
+// piece the solver splits lines into; the spindle's inner boundaries (at
+// ρ = R − q = 0.05) lie in the concave piece when δ = 0.03.
+TEST(TorusPrimitive, LinesPassingNearTheAxis) {
+  struct Line {
+    double R, r, z0, delta;
+  };
+  const double nearPole = std::sqrt(1.0 - 0.45 * 0.45);
+  for (Line c :
+       {Line{3, 1, 0, 0.3}, Line{3, 1, 0, 1e-3}, Line{3, 1, 0.5, 1e-6}, Line{3, 1, 0, 1e-9},
+        Line{3, 1, 0.9, 1e-12}, Line{0.5, 1, nearPole, 0.03}, Line{0.5, 1, nearPole, 1e-7}}) {
+    SCOPED_TRACE(testing::Message() << "R " << c.R << ", z0 " << c.z0 << ", delta " << c.delta);
+    auto t = torus(c.R, c.r);
+    const double q = std::sqrt(c.r * c.r - c.z0 * c.z0);
+    const double inner = std::sqrt((c.R - q) * (c.R - q) - c.delta * c.delta);
+    const double outer = std::sqrt((c.R + q) * (c.R + q) - c.delta * c.delta);
+    SpanList spans = spansOf(*t, Ray(dvec3(c.delta, -10, c.z0), dvec3(0, 1, 0)));
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_NEAR(spans[0].in.t, 10 - outer, 1e-12);
+    EXPECT_NEAR(spans[0].out.t, 10 - inner, 1e-12);
+    EXPECT_NEAR(spans[1].in.t, 10 + inner, 1e-12);
+    EXPECT_NEAR(spans[1].out.t, 10 + outer, 1e-12);
+  }
+}
+
 TEST(TorusPrimitive, ContainsBoundsAndNormals) {
   auto t = torus(3.0, 1.0);
   EXPECT_TRUE(t->contains(dvec3(3, 0, 0)));
