@@ -122,79 +122,13 @@ Search convexNewton(const F& g, double sign, double x, double lo, double hi, dou
   return Search::Undecided;
 }
 
-// The boundaries on [lo, hi] in order, found piece by piece where the tube's
-// factor g is convex or concave: g'' = 0 where ρ³ = R·D, that is at
-// sAxis ± w with w² = ((R·D)^(2/3) − D/a)/a; g is concave between (near the
-// axis) and convex outside. On a convex piece, {g <= 0} is one interval, so
-// the signs at its ends and Newton's method from the ends (convexNewton)
-// find its boundaries; on a concave piece, the same for {g >= 0}. Returns
-// the count, or −1 when this does not settle them (a line that meets the
-// axis, where g has a kink, or a near-tangency).
-int boundariesOnConvexPieces(const ConditionedLine& line, Root roots[4]) {
+// The boundaries on [lo, hi] of the line in order, by isolating the
+// quartic's roots (quartic.h); ring says the torus has no lemon (R >= r).
+// Returns the count.
+int boundariesByIsolation(const ConditionedLine& line, double lo, double hi, bool ring,
+                          Root roots[4]) {
   const dvec3 &b = line.b, &u = line.u;
   const double R = line.R, r = line.r;
-  const double a = u.x * u.x + u.y * u.y;
-  const double cross = b.x * u.y - b.y * u.x;
-  TubeFactor g{glm::dot(b, u),
-               glm::dot(b, b) + R * R - r * r,
-               a,
-               a > 0.0 ? cross * cross : b.x * b.x + b.y * b.y,
-               a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0,
-               R};
-  // The breaks: the ends, and the inflections between them.
-  double breaks[4];
-  int count = 0;
-  breaks[count++] = line.lo;
-  double w = 0.0;
-  if (a > 0.0 && R > 0.0) {
-    if (!(g.D > 0.0)) return -1;  // the line meets the axis
-    const double w2 = (std::cbrt(R * g.D * R * g.D) - g.D / a) / a;
-    if (w2 > 0.0) {
-      w = std::sqrt(w2);
-      for (double end : {g.sAxis - w, g.sAxis + w})
-        if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
-    }
-  }
-  breaks[count++] = line.hi;
-
-  int found = 0;
-  double gLo = g(breaks[0]).first;
-  if (!(gLo > 0.0)) return -1;
-  for (int i = 1; i < count; ++i) {
-    const double lo = breaks[i - 1], hi = breaks[i];
-    const double gHi = g(hi).first;
-    const double sign = std::abs(0.5 * (lo + hi) - g.sAxis) < w ? -1.0 : 1.0;
-    const bool loPositive = sign * gLo > 0.0, hiPositive = sign * gHi > 0.0;
-    gLo = gHi;
-    if (!loPositive && !hiPositive) continue;  // the piece holds no boundary
-    if (found + 2 > 4) return -1;
-    double first, last;
-    if (loPositive && hiPositive) {
-      // Two boundaries or none: Newton from lo decides.
-      Search from = convexNewton(g, sign, lo, lo, hi, first);
-      if (from == Search::None) continue;
-      if (from == Search::Undecided || convexNewton(g, sign, hi, lo, hi, last) != Search::Root ||
-          !(first <= last))
-        return -1;
-      const double middle = 0.5 * (first + last);
-      roots[found++] = {first, lo, middle};
-      roots[found++] = {last, middle, hi};
-    } else {
-      // One boundary, approached from the end where sign·g is positive.
-      if (convexNewton(g, sign, loPositive ? lo : hi, lo, hi, first) != Search::Root) return -1;
-      roots[found++] = {first, lo, hi};
-    }
-  }
-  if (!(gLo > 0.0) || found % 2 != 0) return -1;
-  return found;
-}
-
-// The boundaries on [lo, hi] in order by isolating the quartic's roots
-// (quartic.h); ring says the torus has no lemon (R >= r). Returns the count,
-// or −1 if an end of [lo, hi] is inside.
-int boundariesByIsolation(const ConditionedLine& line, bool ring, Root roots[4]) {
-  const dvec3 &b = line.b, &u = line.u;
-  const double R = line.R, r = line.r, lo = line.lo, hi = line.hi;
   // The quartic in s: with P(s) = |p|² + R² − r² = s² + 2e·s + k (e ≈ 0
   // is what is left of b·u) and x² + y² = a·s² + 2h·s + g,
   //   q(s) = P² − 4R²(a·s² + 2h·s + g),
@@ -232,8 +166,7 @@ int boundariesByIsolation(const ConditionedLine& line, bool ring, Root roots[4])
     return std::pair<double, double>(polynomialValue(quartic, 4, s),
                                      polynomialSlope(quartic, 4, s));
   };
-  bool inside = distance(breaks[0]).first <= 0.0;  // false: outside the bounding sphere
-  bool startsInside = inside;
+  bool inside = distance(breaks[0]).first <= 0.0;
   for (int i = 1; i < count; ++i) {
     bool next = distance(breaks[i]).first <= 0.0;
     if (next != inside) {
@@ -243,7 +176,85 @@ int boundariesByIsolation(const ConditionedLine& line, bool ring, Root roots[4])
     }
     inside = next;
   }
-  if (startsInside || inside) return -1;
+  return found;
+}
+
+// The boundaries on the line's [lo, hi] in order, found piece by piece where
+// the tube's factor g is convex or concave: g'' = 0 where ρ³ = R·D, that is
+// at sAxis ± w with w² = ((R·D)^(2/3) − D/a)/a; g is concave between (near
+// the axis) and convex outside. On a convex piece, {g <= 0} is one
+// interval, so the signs at its ends and Newton's method from the ends
+// (convexNewton) find its boundaries; on a concave piece, the same for
+// {g >= 0}. A piece this does not settle (a near-tangency), or the whole
+// line when it meets the axis (where g has a kink), goes to the isolation
+// of the quartic's roots on that piece alone. ring says the torus has no
+// lemon (R >= r). Returns the count, or −1 if an end of [lo, hi] is inside
+// (it cannot be).
+int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, Root roots[4]) {
+  const dvec3 &b = line.b, &u = line.u;
+  const double R = line.R, r = line.r;
+  const double a = u.x * u.x + u.y * u.y;
+  const double cross = b.x * u.y - b.y * u.x;
+  TubeFactor g{glm::dot(b, u),
+               glm::dot(b, b) + R * R - r * r,
+               a,
+               a > 0.0 ? cross * cross : b.x * b.x + b.y * b.y,
+               a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0,
+               R};
+  // The breaks: the ends, and the inflections between them.
+  double breaks[4];
+  int count = 0;
+  breaks[count++] = line.lo;
+  double w = 0.0;
+  bool throughAxis = false;
+  if (a > 0.0 && R > 0.0) {
+    throughAxis = !(g.D > 0.0);
+    const double w2 = throughAxis ? 0.0 : (std::cbrt(R * g.D * R * g.D) - g.D / a) / a;
+    if (w2 > 0.0) {
+      w = std::sqrt(w2);
+      for (double end : {g.sAxis - w, g.sAxis + w})
+        if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
+    }
+  }
+  breaks[count++] = line.hi;
+
+  int found = 0;
+  double gLo = g(breaks[0]).first;
+  if (!(gLo > 0.0)) return -1;
+  for (int i = 1; i < count; ++i) {
+    const double lo = breaks[i - 1], hi = breaks[i];
+    const double gHi = g(hi).first;
+    const double sign = std::abs(0.5 * (lo + hi) - g.sAxis) < w ? -1.0 : 1.0;
+    const bool loPositive = sign * gLo > 0.0, hiPositive = sign * gHi > 0.0;
+    gLo = gHi;
+    if (!throughAxis && !loPositive && !hiPositive) continue;  // the piece holds no boundary
+    Root piece[4];
+    int n = -1;
+    double first, last;
+    if (throughAxis) {
+      // n stays −1: isolate.
+    } else if (loPositive && hiPositive) {
+      // Two boundaries or none: Newton from lo decides.
+      Search from = convexNewton(g, sign, lo, lo, hi, first);
+      if (from == Search::None) {
+        n = 0;
+      } else if (from == Search::Root && convexNewton(g, sign, hi, lo, hi, last) == Search::Root &&
+                 first <= last) {
+        const double middle = 0.5 * (first + last);
+        piece[0] = {first, lo, middle};
+        piece[1] = {last, middle, hi};
+        n = 2;
+      }
+    } else if (convexNewton(g, sign, loPositive ? lo : hi, lo, hi, first) == Search::Root) {
+      // One boundary, approached from the end where sign·g is positive.
+      piece[0] = {first, lo, hi};
+      n = 1;
+    }
+    if (n < 0) n = boundariesByIsolation(line, lo, hi, ring, piece);
+    if (found + n > 4) return -1;
+    for (int j = 0; j < n; ++j) roots[found++] = piece[j];
+  }
+  if (!(gLo > 0.0) || found % 2 != 0) return -1;
   return found;
 }
 
@@ -348,8 +359,7 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   // the isolation of the quartic's roots otherwise.
   const ConditionedLine line{b, u, R, r, lo, hi};
   Root roots[4];
-  int found = boundariesOnConvexPieces(line, roots);
-  if (found < 0) found = boundariesByIsolation(line, R_ >= r_, roots);
+  int found = boundariesOnConvexPieces(line, R_ >= r_, roots);
   if (found < 0) return;  // cannot happen: the chord's ends are outside
 
   // 3. Polish on f(o + t·d) = first factor · second factor, with its
