@@ -69,23 +69,17 @@ struct Root {
 // The tube's own factor of the quartic along the line,
 //   g(s) = |p|² + R² − r² − 2R·ρ = (ρ − R)² + z² − r²,   ρ = √(x² + y²),
 // negative inside the torus and positive outside, with its slope. With
-// |p|² = s² + 2e·s + c and ρ² = a·(s − sAxis)² + D/a, where sAxis is where
-// the line passes nearest the axis and D = a·(x² + y²) − (b·u in xy)² =
-// (b × u)z² (Lagrange's identity: no cancellation), its second derivative
-// is 2 − 2R·D/ρ³ (ρ'' = D/ρ³ for the distance from a line to a point
-// moving along another line).
+// |p|² = s² + 2e·s + c and ρ² = a·(s − sAxis)² + n, where sAxis is where
+// the line passes nearest the axis, at distance √n, its second derivative
+// is 2 − 2R·a·n/ρ³ (the distance from the axis has ρ'' = a·n/ρ³).
 struct TubeFactor {
-  double e, k, a, D, sAxis, R;
+  double e, k, a, n, sAxis, R;
 
-  double rhoSquared(double s) const {
-    if (!(a > 0.0)) return D;  // parallel to the axis: D holds x² + y²
-    double w = s - sAxis;
-    return a * w * w + D / a;
-  }
   std::pair<double, double> operator()(double s) const {
-    double rho = std::sqrt(rhoSquared(s));
-    double value = (s + 2.0 * e) * s + k - 2.0 * R * rho;
-    double slope = 2.0 * (s + e) - (a > 0.0 ? 2.0 * R * a * (s - sAxis) / rho : 0.0);
+    const double w = s - sAxis;
+    const double rho = std::sqrt(a * w * w + n);
+    const double value = (s + 2.0 * e) * s + k - 2.0 * R * rho;
+    const double slope = 2.0 * (s + e) - 2.0 * R * a * w / rho;
     return {value, slope};
   }
 };
@@ -179,42 +173,42 @@ int boundariesByIsolation(const ConditionedLine& line, double lo, double hi, boo
   return found;
 }
 
-// The boundaries on the line's [lo, hi] in order, found piece by piece where
-// the tube's factor g is convex or concave: g'' = 0 where ρ³ = R·D, that is
-// at sAxis ± w with w² = ((R·D)^(2/3) − D/a)/a; g is concave between (near
-// the axis) and convex outside. On a convex piece, {g <= 0} is one
-// interval, so the signs at its ends and Newton's method from the ends
-// (convexNewton) find its boundaries; on a concave piece, the same for
-// {g >= 0}. A piece this does not settle (a near-tangency), or the whole
-// line when it meets the axis (where g has a kink), goes to the isolation
-// of the quartic's roots on that piece alone. ring says the torus has no
-// lemon (R >= r). Returns the count, or −1 if an end of [lo, hi] is inside
-// (it cannot be).
+// The boundaries on the line's [lo, hi] in order, found piece by piece
+// where the tube's factor g is convex or concave: g'' = 0 at sAxis ± w,
+// where ρ³ = R·a·n; g is concave between (near the axis) and convex
+// outside. On a convex piece, {g <= 0} is one interval, so the signs at its
+// ends and Newton's method from the ends (convexNewton) find its
+// boundaries; on a concave piece, the same for {g >= 0}. A piece this does
+// not settle (a near-tangency), or the whole line when it meets the axis
+// (where g has a kink), goes to the isolation of the quartic's roots on
+// that piece alone. ring says the torus has no lemon (R >= r). Returns the
+// count, or −1 if an end of [lo, hi] is inside (it cannot be).
 int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, Root roots[4]) {
   const dvec3 &b = line.b, &u = line.u;
   const double R = line.R, r = line.r;
   const double a = u.x * u.x + u.y * u.y;
+  // n = ((x² + y²)·a − (b·u in xy)²)/a, whose numerator is (b × u)z² by
+  // Lagrange's identity: no cancellation.
   const double cross = b.x * u.y - b.y * u.x;
   TubeFactor g{glm::dot(b, u),
                glm::dot(b, b) + R * R - r * r,
                a,
-               a > 0.0 ? cross * cross : b.x * b.x + b.y * b.y,
+               a > 0.0 ? cross * cross / a : b.x * b.x + b.y * b.y,
                a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0,
                R};
-  // The breaks: the ends, and the inflections between them.
+  // The breaks: the ends, and the inflections between them, where
+  // ρ³ = R·a·n, so (s − sAxis)² = ((R·a·n)^(2/3) − n)/a: there are two when
+  // (R·a·n)² > n³, that is R²a² > n.
   double breaks[4];
   int count = 0;
   breaks[count++] = line.lo;
   double w = 0.0;
-  bool throughAxis = false;
-  if (a > 0.0 && R > 0.0) {
-    throughAxis = !(g.D > 0.0);
-    const double w2 = throughAxis ? 0.0 : (std::cbrt(R * g.D * R * g.D) - g.D / a) / a;
-    if (w2 > 0.0) {
-      w = std::sqrt(w2);
-      for (double end : {g.sAxis - w, g.sAxis + w})
-        if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
-    }
+  const bool throughAxis = !(g.n > 0.0);  // where g has a kink (or is flat, on the axis)
+  if (!throughAxis && R * R * a * a > g.n) {
+    const double ran = R * a * g.n;
+    w = std::sqrt((std::cbrt(ran * ran) - g.n) / a);
+    for (double end : {g.sAxis - w, g.sAxis + w})
+      if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
   }
   breaks[count++] = line.hi;
 
