@@ -1,5 +1,7 @@
-// Real roots of polynomials up to degree 4 by root isolation, the solver of
-// the torus (a ray meets it where a quartic in t vanishes).
+// Real roots of polynomials up to degree 4 by root isolation: the torus's
+// solver where Newton's method on its convex pieces does not settle a ray
+// (a near-tangency, a line through its axis), and the crossings of the
+// sweeps (a line against a revolved conic, a Bézier curve, a twist).
 //
 // Closed forms (Ferrari's quartic, Cardano's cubic) lose most of their digits
 // near multiple roots, which is exactly where a ray grazes a surface
