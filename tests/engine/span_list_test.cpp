@@ -224,6 +224,63 @@ TEST(SpanList, BooleansMatchBruteForceOnRandomLists) {
   }
 }
 
+// Two single spans are intersected and subtracted by comparisons when their
+// boundaries are clearly apart, and by the sweep otherwise: both give the
+// same spans, boundary for boundary. The sweep's answer is the one for the
+// same two spans with a far span added to a (which the shortcut does not
+// take, and which meets nothing of b). Ends on a grid of 8 points, each
+// moved by 0, ±kSameT/2 or ±2·kSameT relative, so that boundaries coincide,
+// are one point to the sweep, or are just apart.
+TEST(SpanList, SingleSpansGiveWhatTheSweepGives) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> grid(0, 7), nudge(0, 4), coin(0, 1);
+  const double nudges[5] = {0.0, 0.5 * kSameT, -0.5 * kSameT, 2 * kSameT, -2 * kSameT};
+  auto sameSpans = [](const SpanList& x, const SpanList& y) {
+    if (x.size() != y.size()) return false;
+    for (std::uint32_t i = 0; i < x.size(); ++i)
+      if (!sameBoundary(x[i].in, y[i].in) || !sameBoundary(x[i].out, y[i].out) ||
+          x[i].in.flip != y[i].in.flip || x[i].out.flip != y[i].out.flip)
+        return false;
+    return true;
+  };
+  // The sweep's spans less the far one, its last.
+  auto withoutLast = [](const SpanList& list) {
+    SpanList near;
+    for (std::uint32_t i = 0; i + 1 < list.size(); ++i) near.push_back(list[i]);
+    return near;
+  };
+  int apart = 0, close = 0;
+  for (int i = 0; i < 20000; ++i) {
+    int cells[4];
+    double t[4];
+    for (int k = 0; k < 4; ++k) {
+      cells[k] = grid(rng);
+      t[k] = (cells[k] + 1.0) * (1.0 + nudges[nudge(rng)]);
+    }
+    if (t[0] > t[1]) std::swap(t[0], t[1]);
+    if (t[2] > t[3]) std::swap(t[2], t[3]);
+    std::sort(cells, cells + 4);
+    (std::unique(cells, cells + 4) == cells + 4 ? apart : close) += 1;
+    const std::vector<bool> flips{bool(coin(rng)), bool(coin(rng))};
+    SpanList a = makeList({{t[0], t[1]}}, tagA(), flips);
+    SpanList b = makeList({{t[2], t[3]}}, tagB(), flips);
+    SpanList aAndFar =
+        makeList({{t[0], t[1]}, {100, 101}}, tagA(), {flips[0], flips[1], false, false});
+    SpanList fast, sweep;
+    intersect(a, b, fast);
+    intersect(aAndFar, b, sweep);
+    ASSERT_TRUE(sameSpans(fast, sweep))
+        << "[" << t[0] << ", " << t[1] << "] ∩ [" << t[2] << ", " << t[3] << "]";
+    subtract(a, b, fast);
+    subtract(aAndFar, b, sweep);
+    ASSERT_TRUE(sameSpans(fast, withoutLast(sweep)))
+        << "[" << t[0] << ", " << t[1] << "] − [" << t[2] << ", " << t[3] << "]";
+  }
+  // Both kinds are common: four ends in different cells are clearly apart.
+  EXPECT_GT(apart, 2000);
+  EXPECT_GT(close, 2000);
+}
+
 TEST(SpanList, BooleansWithEmptyOperands) {
   SpanList empty, out;
   SpanList a = makeList({{1, 2}, {4, 5}}, tagA());
