@@ -7,13 +7,29 @@
 
 namespace csgray::detail {
 
+namespace {
+
+// ask(r) with r the ray in the frame's object space, not copied when the
+// frame is the identity.
+template <class Ask>
+void inObjectSpace(const Affine& frame, const Ray& ray, Ask&& ask) {
+  if (frame.isIdentity()) {
+    ask(ray);
+  } else {
+    ask(frame.rayToObject(ray));
+  }
+}
+
+}  // namespace
+
 void Primitive::spans(const Ray& ray, SpanList& out) const {
   out.clear();
-  if (frame_.isIdentity()) {
-    objectSpans(ray, out);
-  } else {
-    objectSpans(frame_.rayToObject(ray), out);
-  }
+  inObjectSpace(frame_, ray, [&](const Ray& r) { objectSpans(r, out); });
+}
+
+void Primitive::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  out.clear();
+  inObjectSpace(frame_, ray, [&](const Ray& r) { objectSpansToFirstBoundary(r, out); });
 }
 
 bool Primitive::contains(const dvec3& p) const {

@@ -27,6 +27,7 @@ class Primitive : public Solid {
 
   const Bounds& bounds() const final { return bounds_; }
   void spans(const Ray& ray, SpanList& out) const final;
+  void spansToFirstBoundary(const Ray& ray, SpanList& out) const final;
   bool contains(const dvec3& p) const final;
   SolidPtr mapPrimitives(const PrimitiveMap& f) const final { return f(*this); }
 
@@ -60,6 +61,12 @@ class Primitive : public Solid {
  protected:
   // Spans of a ray given in object space; boundaries name this primitive.
   virtual void objectSpans(const Ray& ray, SpanList& out) const = 0;
+  // objectSpans for a ray that needs only the first boundary within the
+  // window (Solid::spansToFirstBoundary): a shape whose later boundaries
+  // cost more may leave them out. All of them by default.
+  virtual void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
+    objectSpans(ray, out);
+  }
   virtual bool objectContains(const dvec3& p) const = 0;
   // Outward normal (any length) at an object-space point on the face.
   virtual dvec3 objectNormal(const dvec3& p, int face) const = 0;

@@ -177,9 +177,8 @@ void Revolution::objectSpans(const Ray& ray, SpanList& out) const { spansOf(ray,
 
 // The renderer asks an opaque solid for its first boundary only: the
 // revolution then follows the ray's curve only as far as that.
-void Revolution::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
-  out.clear();
-  spansOf(frame().isIdentity() ? ray : frame().rayToObject(ray), true, out);
+void Revolution::objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  spansOf(ray, true, out);
 }
 
 void Revolution::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {

@@ -28,10 +28,10 @@ class Revolution : public PrimitiveShape<Revolution> {
   const RegionPtr& region() const { return swept_->region(); }
   double angleDegrees() const { return angleDegrees_; }
   std::string kind() const override { return "rotate_extrude"; }
-  void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
+  void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;

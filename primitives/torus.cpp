@@ -30,6 +30,11 @@ constexpr int kPolishSteps = 4;
 // solver several more steps with two square roots each.
 constexpr double kBracket = 1e-8;
 
+// For a ray that needs only its first boundary: how far beyond an entry
+// (in units of R + r) the torus must surely still be inside for the exit
+// in the same piece not to be looked for. Far above the polish's steps.
+constexpr double kFirstOnlyGap = 1e-6;
+
 // Newton steps on a convex piece before a near-double root is left to the
 // isolation of the quartic's roots: Newton halves the distance to a double
 // root per step, so 60 steps reach kBracket from across the chord.
@@ -55,10 +60,10 @@ MeridianDistance meridianDistance(const dvec3& p, const dvec3& u, double R, doub
 // The line in the conditioned frame of objectSpans: b + s·u with u a unit
 // vector, b the point nearest the centre, lengths in units of R + r; the
 // torus's radii in those units; the stretch [lo, hi] where it may meet the
-// torus, whose ends are outside it.
+// torus, whose ends are outside it; t = t0 + s·scale on the ray as given.
 struct ConditionedLine {
   dvec3 b, u;
-  double R, r, lo, hi;
+  double R, r, lo, hi, t0, scale;
 };
 
 // A boundary at s, within the piece [lo, hi] of the line that holds no other.
@@ -183,7 +188,16 @@ int boundariesByIsolation(const ConditionedLine& line, double lo, double hi, boo
 // (where g has a kink), goes to the isolation of the quartic's roots on
 // that piece alone. ring says the torus has no lemon (R >= r). Returns the
 // count, or −1 if an end of [lo, hi] is inside (it cannot be).
-int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, Root roots[4]) {
+//
+// With firstOnly, when the first boundary is an entry after tMin on the
+// ray as given (its piece starts there, and the polish keeps it in its
+// piece), the search stops there and returns 1: the ray's first boundary
+// is found, and its exit not looked for. An entry with an exit in the
+// same piece is taken so only when the exit is surely more than
+// kFirstOnlyGap beyond it (g < 0 there), so that the whole search would
+// keep the span rather than find a tangency polished to a point.
+int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, bool firstOnly, double tMin,
+                             Root roots[4]) {
   const dvec3 &b = line.b, &u = line.u;
   const double R = line.R, r = line.r;
   const double a = u.x * u.x + u.y * u.y;
@@ -225,13 +239,20 @@ int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, Root roots[
     Root piece[4];
     int n = -1;
     double first, last;
+    // The first boundary is an entry (the line starts outside); it ends the
+    // search for firstOnly when its piece starts after tMin.
+    const bool entryEnds = firstOnly && found == 0 && line.t0 + lo * line.scale > tMin;
     if (throughAxis) {
       // n stays −1: isolate.
     } else if (loPositive && hiPositive) {
       // Two boundaries or none: Newton from lo decides.
       Search from = convexNewton(g, sign, lo, lo, hi, first);
+      const double beyond = first + kFirstOnlyGap;
       if (from == Search::None) {
         n = 0;
+      } else if (from == Search::Root && entryEnds && beyond < hi && sign * g(beyond).first < 0.0) {
+        roots[0] = {first, lo, first + 0.5 * kFirstOnlyGap};
+        return 1;
       } else if (from == Search::Root && convexNewton(g, sign, hi, lo, hi, last) == Search::Root &&
                  first <= last) {
         const double middle = 0.5 * (first + last);
@@ -243,6 +264,10 @@ int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, Root roots[
       // One boundary, approached from the end where sign·g is positive.
       piece[0] = {first, lo, hi};
       n = 1;
+      if (entryEnds) {
+        roots[0] = piece[0];
+        return 1;
+      }
     }
     if (n < 0) n = boundariesByIsolation(line, lo, hi, ring, piece);
     if (found + n > 4) return -1;
@@ -292,7 +317,16 @@ Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minor
 //  4. Pair the boundaries (outside at both ends of the chord) into spans;
 //     spans that polishing left empty are dropped and ones that touch are
 //     joined, so a tangent ray gives a tiny span or nothing.
-void Torus::objectSpans(const Ray& ray, SpanList& out) const {
+void Torus::objectSpans(const Ray& ray, SpanList& out) const { spansOf(ray, false, out); }
+
+// A camera or shadow ray needs only the first boundary: an entry ends the
+// search, and the span it starts ends at the end of the chord instead of
+// the exit (Solid::spansToFirstBoundary allows it).
+void Torus::objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  spansOf(ray, true, out);
+}
+
+void Torus::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
   double dd = glm::dot(d, d);
@@ -351,9 +385,9 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   // 2. The boundaries, each with the piece it lies in: on the pieces where
   // the tube's own factor is convex or concave when that settles them, by
   // the isolation of the quartic's roots otherwise.
-  const ConditionedLine line{b, u, R, r, lo, hi};
+  const ConditionedLine line{b, u, R, r, lo, hi, t0, scale};
   Root roots[4];
-  int found = boundariesOnConvexPieces(line, R_ >= r_, roots);
+  int found = boundariesOnConvexPieces(line, R_ >= r_, firstOnly, ray.tMin, roots);
   if (found < 0) return;  // cannot happen: the chord's ends are outside
 
   // 3. Polish on f(o + t·d) = first factor · second factor, with its
@@ -388,7 +422,12 @@ void Torus::objectSpans(const Ray& ray, SpanList& out) const {
   // Keep the order the pieces gave (polishing stays within them).
   for (int i = 1; i < found; ++i) t[i] = std::max(t[i], t[i - 1]);
 
-  // 4. Spans: boundaries alternate in, out.
+  // 4. Spans: boundaries alternate in, out; a first boundary alone is an
+  // entry, whose span ends at the end of the chord in its place.
+  if (found == 1) {
+    if (t[0] <= ray.tMax) out.push_back(boundary(t[0]), boundary(std::max(t[0], t0 + hi * scale)));
+    return;
+  }
   Span spans[2];
   int made = 0;
   for (int i = 0; i + 1 < found; i += 2) {

@@ -19,12 +19,16 @@ class Torus : public PrimitiveShape<Torus> {
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
+  void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
 
  private:
+  // objectSpans, or with firstOnly only as far as the first boundary.
+  void spansOf(const Ray& ray, bool firstOnly, SpanList& out) const;
+
   double R_, r_;
 };
 

@@ -10,8 +10,10 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <optional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "check/part_check.h"
@@ -139,6 +141,61 @@ inline void expectSpansAgreeWithContainsOnRandomLines(const Solid& solid, int co
     expectSpansAgreeWithContains(solid, line);
     if (::testing::Test::HasFailure()) return;
   }
+}
+
+// The first boundary within [ray.tMin, ray.tMax] after tMin, and whether
+// the ray enters there (as the renderer takes it); none if there is none.
+inline std::optional<std::pair<Boundary, bool>> firstBoundary(const SpanList& spans,
+                                                              const Ray& ray) {
+  for (const Span& s : spans) {
+    const bool entering = s.in.t > ray.tMin;
+    const Boundary& b = entering ? s.in : s.out;
+    if (b.t <= ray.tMin) continue;
+    if (b.t > ray.tMax) break;
+    return std::pair{b, entering};
+  }
+  return std::nullopt;
+}
+
+// How many rays met the solid, and how many of those entered it first.
+struct FirstBoundaryCounts {
+  int hits = 0, entries = 0;
+};
+
+// spansToFirstBoundary gives the first boundary of the whole spans, bit for
+// bit, on rays from around the solid through a point of its box and from
+// such a point in any direction, over windows that start and end anywhere.
+inline FirstBoundaryCounts expectFirstBoundaryAgreesWithTheWholeSpans(const Solid& solid, int count,
+                                                                      unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Bounds box = solid.bounds();
+  const dvec3 pad = 0.5 * box.size();
+  FirstBoundaryCounts counts;
+  for (int r = 0; r < count; ++r) {
+    const dvec3 from = randomPoint(rng, Bounds{box.lo - pad, box.hi + pad});
+    const dvec3 through = randomPoint(rng, box);
+    if (from == through) continue;
+    Ray ray(from, glm::normalize(through - from));
+    // Every other ray from a point of the box (inside the solid or not).
+    if (r % 2) ray = Ray(through, randomDirection(rng));
+    const double reach = glm::length(box.size());
+    if (r % 3 == 1) ray.tMin = 2.0 * reach * u(rng);
+    if (r % 5 == 2) ray.tMax = ray.tMin + 2.0 * reach * u(rng);
+    SpanList whole, first;
+    solid.spans(ray, whole);
+    solid.spansToFirstBoundary(ray, first);
+    const auto expected = firstBoundary(whole, ray), actual = firstBoundary(first, ray);
+    EXPECT_EQ(actual.has_value(), expected.has_value()) << "ray " << r;
+    if (!expected || !actual) continue;
+    ++counts.hits;
+    counts.entries += expected->second;
+    EXPECT_EQ(actual->first.t, expected->first.t) << "ray " << r;
+    EXPECT_EQ(actual->first.primitive, expected->first.primitive);
+    EXPECT_EQ(actual->first.face, expected->first.face);
+    EXPECT_EQ(actual->second, expected->second);
+  }
+  return counts;
 }
 
 // Volume from span lengths on a grid of parallel rays along z through the

@@ -133,19 +133,6 @@ TEST(Revolution, SpansAgreeWithContainsOnRandomLines) {
   }
 }
 
-// The first boundary within [ray.tMin, ray.tMax] after tMin, and whether
-// the ray enters there (as the renderer takes it); none if there is none.
-std::optional<std::pair<Boundary, bool>> firstBoundary(const SpanList& spans, const Ray& ray) {
-  for (const Span& s : spans) {
-    const bool entering = s.in.t > ray.tMin;
-    const Boundary& b = entering ? s.in : s.out;
-    if (b.t <= ray.tMin) continue;
-    if (b.t > ray.tMax) break;
-    return std::pair{b, entering};
-  }
-  return std::nullopt;
-}
-
 // A thin wall of many segments up a wavy silhouette (as the turned vase of
 // bench/parts), whose edge index is deep.
 RegionPtr wavyWall() {
@@ -170,37 +157,9 @@ TEST(Revolution, FirstBoundaryAgreesWithTheWholeSpans) {
   auto solids = assorted();
   solids.push_back({"wavy wall", revolve(wavyWall())});
   solids.push_back({"wavy wedge", revolve(wavyWall(), 250.0)});
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const auto& [name, solid] : solids) {
     SCOPED_TRACE(name);
-    const Bounds box = solid->bounds();
-    const dvec3 pad = 0.5 * box.size();
-    int hits = 0, entries = 0;
-    for (int r = 0; r < 3000; ++r) {
-      // From around the solid through a point of its box, or from that point.
-      const dvec3 from = test::randomPoint(rng, Bounds{box.lo - pad, box.hi + pad});
-      const dvec3 through = test::randomPoint(rng, box);
-      if (from == through) continue;
-      Ray ray(from, glm::normalize(through - from));
-      // Every other ray from a point of the box (inside the solid or not).
-      if (r % 2) ray = Ray(through, test::randomDirection(rng));
-      const double reach = glm::length(box.size());
-      if (r % 3 == 1) ray.tMin = 2.0 * reach * u(rng);
-      if (r % 5 == 2) ray.tMax = ray.tMin + 2.0 * reach * u(rng);
-      SpanList whole, first;
-      solid->spans(ray, whole);
-      solid->spansToFirstBoundary(ray, first);
-      const auto expected = firstBoundary(whole, ray), actual = firstBoundary(first, ray);
-      ASSERT_EQ(actual.has_value(), expected.has_value()) << "ray " << r;
-      if (!expected) continue;
-      ++hits;
-      entries += expected->second;
-      EXPECT_EQ(actual->first.t, expected->first.t) << "ray " << r;
-      EXPECT_EQ(actual->first.primitive, expected->first.primitive);
-      EXPECT_EQ(actual->first.face, expected->first.face);
-      EXPECT_EQ(actual->second, expected->second);
-    }
+    const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*solid, 3000, 11);
     // Most rays meet the solid, both entering and leaving first.
     EXPECT_GT(hits, 600);
     EXPECT_GT(entries, 500);

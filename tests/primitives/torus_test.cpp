@@ -303,6 +303,20 @@ TEST(TorusPrimitive, ExtremeProportions) {
   }
 }
 
+// A camera or shadow ray asks for the first boundary only, and the torus
+// then stops at the first entry: that boundary is the one of the whole
+// spans, bit for bit.
+TEST(TorusPrimitive, FirstBoundaryAgreesWithTheWholeSpans) {
+  for (const auto& [name, solid] : assortedTori()) {
+    SCOPED_TRACE(name);
+    const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*solid, 3000, 5);
+    // Many rays meet the torus, both entering and leaving first.
+    EXPECT_GT(hits, 500);
+    EXPECT_GT(entries, 300);
+    EXPECT_LT(entries, hits - 25);
+  }
+}
+
 // Unit outward normals: against the ray where it enters, along it where it
 // leaves.
 TEST(TorusPrimitive, NormalsFaceOutward) {
