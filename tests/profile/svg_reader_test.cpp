@@ -106,7 +106,8 @@ TEST(XmlReader, BadDocumentsAreOneLineErrors) {
   EXPECT_EQ(bad(""), "part.svg: not an XML document (it has no element)");
   EXPECT_EQ(bad("<svg>\n<g>\n</svg>"),
             "part.svg:3: the end tag </svg> does not match <g> (line 2)");
-  EXPECT_EQ(bad("<svg>\n<g>"), "part.svg:2: the file ends inside <g> (line 2; is it cut short?)");
+  EXPECT_EQ(bad("<svg>\n<g>"),
+            "part.svg:2: <g> is not closed: the file ends first (is it cut short?)");
   EXPECT_EQ(bad("<svg a=1/>"), "part.svg:1: the attribute a has no quoted value");
   EXPECT_EQ(bad("<svg a='1' a='2'/>"), "part.svg:1: the attribute a is given twice");
   EXPECT_EQ(bad("<svg a='&nbsp;'/>"), "part.svg:1: the entity &nbsp; is not declared");
