@@ -100,8 +100,8 @@ class XmlReader {
       }
     }
     if (!open.empty())
-      fail(line_, "the file ends inside <" + open.back().name + "> (line " +
-                      std::to_string(open.back().line) + "; is it cut short?)");
+      fail(open.back().line,
+           "<" + open.back().name + "> is not closed: the file ends first (is it cut short?)");
     if (!haveRoot) throw std::invalid_argument(file_ + ": not an XML document (it has no element)");
     return root;
   }
