@@ -60,6 +60,16 @@ std::optional<double> svgNumber(std::string_view text) {
   return v;
 }
 
+std::string svgExcerpt(std::string_view text) {
+  std::string out;
+  for (char c : text.substr(0, 30))
+    if (!isSpace(c))
+      out += c;
+    else if (out.empty() || out.back() != ' ')
+      out += ' ';
+  return text.size() > 30 ? out + "..." : out;
+}
+
 std::vector<double> parseSvgNumbers(std::string_view text) {
   std::vector<double> out;
   std::size_t at = 0;
@@ -72,11 +82,10 @@ std::vector<double> parseSvgNumbers(std::string_view text) {
     if (at >= text.size()) break;
     const std::size_t end = svgNumberEnd(text, at);
     if (end == at)
-      throw std::invalid_argument("expected a number, found '" + std::string(text.substr(at, 20)) +
-                                  "'");
+      throw std::invalid_argument("expected a number, found '" + svgExcerpt(text.substr(at)) + "'");
     const std::optional<double> v = svgNumber(text.substr(at, end - at));
     if (!v)
-      throw std::invalid_argument("the number " + std::string(text.substr(at, end - at)) +
+      throw std::invalid_argument("the number " + svgExcerpt(text.substr(at, end - at)) +
                                   " is out of range");
     out.push_back(*v);
     at = end;
@@ -125,14 +134,8 @@ class PathParser {
  private:
   [[noreturn]] void fail(const std::string& what) const {
     const std::size_t from = commandStart_;
-    // The data read since the last command, its white space made single
-    // spaces so that the message stays on one line.
-    std::string context;
-    for (char c : data_.substr(from, std::min<std::size_t>(at_ - from, 30)))
-      if (!isSpace(c))
-        context += c;
-      else if (context.empty() || context.back() != ' ')
-        context += ' ';
+    // The data read since the last command.
+    const std::string context = svgExcerpt(data_.substr(from, at_ - from));
     throw std::invalid_argument(context.empty() ? what : "after '" + context + "': " + what);
   }
 
@@ -152,7 +155,7 @@ class PathParser {
       fail("expected a number, found '" + std::string(1, data_[at_]) + "'");
     }
     const std::optional<double> v = svgNumber(data_.substr(at_, end - at_));
-    if (!v) fail("the number " + std::string(data_.substr(at_, end - at_)) + " is out of range");
+    if (!v) fail("the number " + svgExcerpt(data_.substr(at_, end - at_)) + " is out of range");
     at_ = end;
     return *v;
   }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -46,6 +47,10 @@ std::vector<ProfileEdge> svgArc(const dvec2& from, double rx, double ry, double 
 std::size_t svgNumberEnd(std::string_view text, std::size_t at);
 // The value of a number so scanned; nullopt past ±10¹⁵ or not finite.
 std::optional<double> svgNumber(std::string_view text);
+// A piece of the file's text as messages quote it: on one line (its white
+// space made single spaces), at most 30 characters (then "...").
+std::string svgExcerpt(std::string_view text);
+
 // A list of numbers separated by white space and commas (the points of
 // <polygon>, a viewBox, a transform's arguments). Throws
 // std::invalid_argument for anything else in it.

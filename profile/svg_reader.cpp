@@ -221,14 +221,14 @@ class SvgReader {
     const std::optional<double> number =
         end > 0 ? svgNumber(std::string_view(value).substr(0, end)) : std::nullopt;
     if (!number)
-      fail(a->line, a->name + ": expected a length, found \"" + value.substr(0, 30) + "\"");
+      fail(a->line, a->name + ": expected a length, found \"" + svgExcerpt(value) + "\"");
     Length l{*number, trimmed(std::string_view(value).substr(end))};
     if (l.unit == "em" || l.unit == "ex")
       fail(a->line, a->name + ": lengths in " + l.unit +
                         " depend on a font; give them in mm, cm, in, pt, pc or px");
     if (l.unit != "" && l.unit != "px" && l.unit != "mm" && l.unit != "cm" && l.unit != "in" &&
         l.unit != "pt" && l.unit != "pc" && l.unit != "%")
-      fail(a->line, a->name + ": \"" + l.unit + "\" is not a unit of length");
+      fail(a->line, a->name + ": \"" + svgExcerpt(l.unit) + "\" is not a unit of length");
     return l;
   }
 
@@ -290,8 +290,8 @@ class SvgReader {
       const int ay = how.size() == 8 && how[0] == 'x' && how[4] == 'Y' ? part(5) : -1;
       if (ax < 0 || ay < 0 || (meetOrSlice != "meet" && meetOrSlice != "slice")) {
         const XmlAttribute* a = e.attribute("preserveAspectRatio");
-        fail(a ? a->line : e.line,
-             "preserveAspectRatio: \"" + ratio + "\" is not an alignment (xMidYMid meet, ...)");
+        fail(a ? a->line : e.line, "preserveAspectRatio: \"" + svgExcerpt(ratio) +
+                                       "\" is not an alignment (xMidYMid meet, ...)");
       }
       const double s =
           meetOrSlice == "meet" ? std::min(scale.x, scale.y) : std::max(scale.x, scale.y);
@@ -346,12 +346,12 @@ class SvgReader {
         fail(a->line,
              "transform: expected matrix(...), translate(...), scale(...), rotate(...), "
              "skewX(...) or skewY(...), found \"" +
-                 std::string(s.substr(nameStart, 30)) + "\"");
+                 svgExcerpt(s.substr(nameStart)) + "\"");
       std::vector<double> v;
       try {
         v = parseSvgNumbers(s.substr(at + 1, close - at - 1));
       } catch (const std::invalid_argument& error) {
-        fail(a->line, "transform: " + name + ": " + error.what());
+        fail(a->line, "transform: " + svgExcerpt(name) + ": " + error.what());
       }
       at = close + 1;
       const auto counts = [&](std::initializer_list<std::size_t> allowed) {
@@ -388,7 +388,7 @@ class SvgReader {
         const double t = turn.y / turn.x;
         m.linear = name == "skewX" ? dmat2(1.0, 0.0, t, 1.0) : dmat2(1.0, t, 0.0, 1.0);
       } else {
-        fail(a->line, "transform: \"" + name + "\" is not a transform");
+        fail(a->line, "transform: \"" + svgExcerpt(name) + "\" is not a transform");
       }
       // The list reads left to right as nested frames: the rightmost map
       // applies to the points first.
@@ -409,7 +409,8 @@ class SvgReader {
     if (const std::optional<std::string> rule = property(e, "fill-rule")) {
       if (*rule != "evenodd" && *rule != "nonzero" && *rule != "inherit") {
         const XmlAttribute* a = e.attribute("fill-rule");
-        fail(a ? a->line : e.line, "fill-rule: \"" + *rule + "\" is not evenodd or nonzero");
+        fail(a ? a->line : e.line,
+             "fill-rule: \"" + svgExcerpt(*rule) + "\" is not evenodd or nonzero");
       }
       if (*rule != "inherit") context.evenOdd = *rule == "evenodd";
     }
@@ -466,11 +467,12 @@ class SvgReader {
     if (!href) href = e.attribute("xlink:href");
     if (!href) return;
     if (!href->value.starts_with("#"))
-      fail(href->line,
-           "<use> of \"" + href->value + "\": only elements of this file (\"#id\") can be used");
+      fail(href->line, "<use> of \"" + svgExcerpt(href->value) +
+                           "\": only elements of this file (\"#id\") can be used");
     auto it = ids_.find(href->value.substr(1));
     if (it == ids_.end())
-      fail(href->line, "<use> of \"" + href->value + "\", which no element has as its id");
+      fail(href->line,
+           "<use> of \"" + svgExcerpt(href->value) + "\", which no element has as its id");
     if (context.useDepth >= kMaxUseDepth)
       fail(e.line, "<use> nested deeper than " + std::to_string(kMaxUseDepth) +
                        " (an element that uses itself?)");

@@ -1,5 +1,6 @@
 #include "profile/xml_reader.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -150,8 +151,9 @@ class XmlReader {
     while (at_ < text_.size() && isNameChar(text_[at_])) ++at_;
     if (at_ == start) {
       if (at_ >= text_.size()) fail(line_, "the file ends in " + std::string(where));
-      fail(line_, "expected a name in " + std::string(where) + ", found '" +
-                      std::string(1, text_[at_]) + "'");
+      fail(line_, "expected a name in " + std::string(where) + ", found " +
+                      (isSpace(text_[at_]) ? std::string("white space")
+                                           : "'" + std::string(1, text_[at_]) + "'"));
     }
     return std::string(text_.substr(start, at_ - start));
   }
@@ -186,6 +188,9 @@ class XmlReader {
     if (semicolon == std::string_view::npos || semicolon - at_ > 40)
       fail(line, "an '&' that starts no reference (write &amp; for '&')");
     const std::string_view name = text_.substr(at_ + 1, semicolon - at_ - 1);
+    if (name.empty() ||
+        !std::all_of(name.begin(), name.end(), [](char c) { return isNameChar(c) || c == '#'; }))
+      fail(line, "an '&' that starts no reference (write &amp; for '&')");
     while (at_ <= semicolon) advance();
     if (!name.empty() && name[0] == '#') {
       const bool hex = name.size() > 1 && name[1] == 'x';

@@ -311,6 +311,9 @@ TEST(SvgReader, BadDrawingsAreOneLineErrors) {
             "px");
   EXPECT_EQ(error("<svg width='10furlongs'/>"),
             "part.svg:1: width: \"furlongs\" is not a unit of length");
+  // What the file says is quoted on one line, and cut short.
+  EXPECT_EQ(error("<svg width='1mm\n   CAD and more words than a message should hold'/>"),
+            "part.svg:1: width: \"mm CAD and more words than ...\" is not a unit of length");
   EXPECT_EQ(error(page("<rect width='10' height='10' transform='turn(3)'/>")),
             "part.svg:2: transform: \"turn\" is not a transform");
   EXPECT_EQ(error(page("<rect width='10' height='10' transform='rotate(1 2)'/>")),
