@@ -704,7 +704,8 @@ class Importer {
     return readDxf(readInputFile(resolved(name), name, kMaxFileBytes), name, dxf);
   }
 
-  // import(file="x.svg", id=, dpi=, center=): its curves exact. OpenSCAD
+  // import(file="x.svg", id=, dpi=, center=): its curves exact, or
+  // OpenSCAD's polygons of them (40-gons, whatever $fn says). OpenSCAD
   // 2021.01 reads no layer, origin or scale of an SVG file (its .csg files
   // write them all the same), so neither does this.
   RegionPtr importSvg(const CsgNode& node, const std::string& name) {
@@ -713,6 +714,7 @@ class Importer {
     svg.dpi = number(node, "dpi", 72.0);
     if (!(svg.dpi >= 0.001)) throw NodeError("dpi must be a number >= 0.001");
     svg.center = boolean(node, "center", false);
+    svg.openscadPolygons = options_.facets == CsgFacets::OpenScad;
     return readSvg(readInputFile(resolved(name), name, kMaxFileBytes), name, svg);
   }
 

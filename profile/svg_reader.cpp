@@ -142,6 +142,43 @@ RegionPtr nonZeroRegion(const Loops& loops) {
   return faces.size() == 1 ? faces.front() : Region::boolean(Region::Op::Union, std::move(faces));
 }
 
+// The polygons OpenSCAD 2021.01 draws of curves (its libsvg's shape.cc and
+// path.cc): a whole circle or ellipse as 40 corners 9° apart, at
+// (rx·sin a, ry·cos a) from its centre; an arc of a degrees as
+// ⌊10·a/180⌋ + 4 chords, and a Bézier curve as 20, at equal steps of their
+// parameters.
+Loops openscadPolygons(const Loops& loops) {
+  Loops out;
+  for (const ProfileLoop& loop : loops) {
+    std::vector<dvec2> corners;
+    for (const ProfileEdge& e : loop.edges) {
+      const double sweep = std::abs(e.angle1 - e.angle0);
+      if (e.kind == ProfileEdge::Kind::Segment) {
+        corners.push_back(e.to);
+      } else if (e.kind == ProfileEdge::Kind::Arc && sweep >= 2.0 * pi) {
+        for (int i = 1; i <= 40; ++i) {
+          const dvec2 turn = unitCircleDegrees(9.0 * i);
+          corners.push_back(e.center + e.axes * dvec2(turn.y, turn.x));
+        }
+      } else {
+        const bool arc = e.kind == ProfileEdge::Kind::Arc;
+        const int n = arc ? int(sweep * 180.0 / pi * 10.0 / 180.0 + 4.0) : 20;
+        for (int i = 1; i < n; ++i)
+          corners.push_back(arc ? e.arcPoint(e.angle0 + (e.angle1 - e.angle0) * i / n)
+                                : bezierPoint(e, double(i) / n));
+        corners.push_back(e.to);
+      }
+    }
+    ProfileLoop polygon;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const dvec2& from = corners[i == 0 ? corners.size() - 1 : i - 1];
+      if (from != corners[i]) polygon.edges.push_back(ProfileEdge::segment(from, corners[i]));
+    }
+    if (!polygon.edges.empty()) out.push_back(std::move(polygon));
+  }
+  return out;
+}
+
 class SvgReader {
  public:
   SvgReader(const std::string& fileName, const SvgOptions& options)
@@ -427,6 +464,7 @@ class SvgReader {
     } else if (name == "path" || name == "rect" || name == "circle" || name == "ellipse" ||
                name == "polygon" || name == "polyline" || name == "line") {
       Loops loops = shape(e, name);
+      if (options_.openscadPolygons) loops = openscadPolygons(loops);
       if (!context.selected || !context.visible || loops.empty()) return;
       if (shapes_.size() >= kMaxShapes)
         fail(e.line,

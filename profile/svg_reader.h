@@ -33,6 +33,9 @@ struct SvgOptions {
   bool center = false;
   // Only the element with this id and what it holds; empty: the whole drawing.
   std::string id;
+  // Curves as the polygons OpenSCAD 2021.01 draws of them (svg_reader.cpp)
+  // rather than exact.
+  bool openscadPolygons = false;
 };
 
 // The region the drawing fills; fileName is used in messages. Throws

@@ -557,6 +557,11 @@ TEST(CsgImport, SvgNodes) {
   const Profile evaluated = evaluate(*model.regions[0], 1e-9);
   // Its STL has 6 significant digits.
   EXPECT_NEAR(area(evaluated), openscadVolume - openscadCircle + circle, 1e-5 * openscadVolume);
+  // With OpenSCAD's polygons, OpenSCAD's area.
+  options.facets = CsgFacets::OpenScad;
+  const CsgModel polygons = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*polygons.regions[0], 1e-9)), openscadVolume, 1e-6 * openscadVolume);
+  options.facets = CsgFacets::Exact;
   const ProfileBounds box = evaluated.bounds();
   EXPECT_NEAR(box.lo.x, 5.0, 1e-9);
   EXPECT_NEAR(box.lo.y, 4.0, 1e-9);
@@ -578,6 +583,25 @@ TEST(CsgImport, SvgNodes) {
     EXPECT_EQ(std::string(e.what()),
               "part.csg:2: import: svg_drawing.svg: no element has the id \"none\"");
   }
+}
+
+// Curves, against OpenSCAD 2021.01's export of `linear_extrude(height = 1)
+// import(file = "svg_curves.svg");` (volume 1272.657179): its chords with
+// --facets openscad, and exact areas otherwise: a 40 × 20 rectangle with
+// corners of radius 5, 800 − (4 − π)·25; a cubic lobe of width and height
+// 20 (its control points 20 above its ends), 0.6·20·20; a half disc of
+// radius 10; a parabola's segment, 2/3 of its control triangle (20 wide,
+// 15 high).
+TEST(CsgImport, SvgCurves) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  const std::string node = "import(file = \"svg_curves.svg\", center = false, dpi = 72);";
+  const CsgModel exact = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*exact.regions[0], 1e-7)),
+              800 - (4 - pi) * 25 + 0.6 * 400 + 50 * pi + 2.0 / 3.0 * 150, 1e-4);
+  options.facets = CsgFacets::OpenScad;
+  const CsgModel polygons = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*polygons.regions[0], 1e-9)), 1272.657179, 1e-6 * 1272.657179);
 }
 
 Scene exampleScene(const std::string& name, bool openscadFacets) {
