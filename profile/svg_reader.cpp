@@ -14,6 +14,7 @@
 #include "profile/bezier.h"
 #include "profile/region_evaluation.h"
 #include "profile/svg_path.h"
+#include "profile/svg_stroke.h"
 #include "profile/xml_reader.h"
 
 namespace csgray::detail {
@@ -142,33 +143,36 @@ RegionPtr nonZeroRegion(const Loops& loops) {
   return faces.size() == 1 ? faces.front() : Region::boolean(Region::Op::Union, std::move(faces));
 }
 
-// The polygons OpenSCAD 2021.01 draws of curves (its libsvg's shape.cc and
-// path.cc): a whole circle or ellipse as 40 corners 9° apart, at
-// (rx·sin a, ry·cos a) from its centre; an arc of a degrees as
-// ⌊10·a/180⌋ + 4 chords, and a Bézier curve as 20, at equal steps of their
-// parameters.
+// The corners after e.from of the polygon OpenSCAD 2021.01 draws of an
+// edge (its libsvg's shape.cc and path.cc): a whole circle or ellipse as 40
+// corners 9° apart, at (rx·sin a, ry·cos a) from its centre; an arc of a
+// degrees as ⌊10·a/180⌋ + 4 chords, and a Bézier curve as 20, at equal
+// steps of their parameters.
+void appendOpenscadChords(const ProfileEdge& e, std::vector<dvec2>& corners) {
+  const double sweep = std::abs(e.angle1 - e.angle0);
+  if (e.kind == ProfileEdge::Kind::Segment) {
+    corners.push_back(e.to);
+  } else if (e.kind == ProfileEdge::Kind::Arc && sweep >= 2.0 * pi) {
+    for (int i = 1; i <= 40; ++i) {
+      const dvec2 turn = unitCircleDegrees(9.0 * i);
+      corners.push_back(e.center + e.axes * dvec2(turn.y, turn.x));
+    }
+  } else {
+    const bool arc = e.kind == ProfileEdge::Kind::Arc;
+    const int n = arc ? int(sweep * 180.0 / pi * 10.0 / 180.0 + 4.0) : 20;
+    for (int i = 1; i < n; ++i)
+      corners.push_back(arc ? e.arcPoint(e.angle0 + (e.angle1 - e.angle0) * i / n)
+                            : bezierPoint(e, double(i) / n));
+    corners.push_back(e.to);
+  }
+}
+
+// The loops as OpenSCAD's polygons of them.
 Loops openscadPolygons(const Loops& loops) {
   Loops out;
   for (const ProfileLoop& loop : loops) {
     std::vector<dvec2> corners;
-    for (const ProfileEdge& e : loop.edges) {
-      const double sweep = std::abs(e.angle1 - e.angle0);
-      if (e.kind == ProfileEdge::Kind::Segment) {
-        corners.push_back(e.to);
-      } else if (e.kind == ProfileEdge::Kind::Arc && sweep >= 2.0 * pi) {
-        for (int i = 1; i <= 40; ++i) {
-          const dvec2 turn = unitCircleDegrees(9.0 * i);
-          corners.push_back(e.center + e.axes * dvec2(turn.y, turn.x));
-        }
-      } else {
-        const bool arc = e.kind == ProfileEdge::Kind::Arc;
-        const int n = arc ? int(sweep * 180.0 / pi * 10.0 / 180.0 + 4.0) : 20;
-        for (int i = 1; i < n; ++i)
-          corners.push_back(arc ? e.arcPoint(e.angle0 + (e.angle1 - e.angle0) * i / n)
-                                : bezierPoint(e, double(i) / n));
-        corners.push_back(e.to);
-      }
-    }
+    for (const ProfileEdge& e : loop.edges) appendOpenscadChords(e, corners);
     ProfileLoop polygon;
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const dvec2& from = corners[i == 0 ? corners.size() - 1 : i - 1];
@@ -178,6 +182,13 @@ Loops openscadPolygons(const Loops& loops) {
   }
   return out;
 }
+
+// What a shape draws: outlines it fills, and polylines whose strokes it
+// outlines.
+struct Drawn {
+  Loops loops;
+  std::vector<std::vector<dvec2>> strokes;
+};
 
 class SvgReader {
  public:
@@ -250,22 +261,30 @@ class SvgReader {
     }
   }
 
+  // A number and its unit, or nullopt when the text does not start with a
+  // number.
+  static std::optional<Length> splitLength(std::string_view text) {
+    const std::string value = trimmed(text);
+    const std::size_t end = svgNumberEnd(value, 0);
+    if (end == 0) return std::nullopt;
+    const std::optional<double> number = svgNumber(std::string_view(value).substr(0, end));
+    if (!number) return std::nullopt;
+    return Length{*number, trimmed(std::string_view(value).substr(end))};
+  }
+
   std::optional<Length> length(const XmlElement& e, std::string_view name) const {
     const XmlAttribute* a = e.attribute(name);
     if (!a) return std::nullopt;
-    const std::string value = trimmed(a->value);
-    const std::size_t end = svgNumberEnd(value, 0);
-    const std::optional<double> number =
-        end > 0 ? svgNumber(std::string_view(value).substr(0, end)) : std::nullopt;
-    if (!number)
-      fail(a->line, a->name + ": expected a length, found \"" + svgExcerpt(value) + "\"");
-    Length l{*number, trimmed(std::string_view(value).substr(end))};
-    if (l.unit == "em" || l.unit == "ex")
-      fail(a->line, a->name + ": lengths in " + l.unit +
+    const std::optional<Length> l = splitLength(a->value);
+    if (!l)
+      fail(a->line,
+           a->name + ": expected a length, found \"" + svgExcerpt(trimmed(a->value)) + "\"");
+    if (l->unit == "em" || l->unit == "ex")
+      fail(a->line, a->name + ": lengths in " + l->unit +
                         " depend on a font; give them in mm, cm, in, pt, pc or px");
-    if (l.unit != "" && l.unit != "px" && l.unit != "mm" && l.unit != "cm" && l.unit != "in" &&
-        l.unit != "pt" && l.unit != "pc" && l.unit != "%")
-      fail(a->line, a->name + ": \"" + svgExcerpt(l.unit) + "\" is not a unit of length");
+    if (l->unit != "" && l->unit != "px" && l->unit != "mm" && l->unit != "cm" && l->unit != "in" &&
+        l->unit != "pt" && l->unit != "pc" && l->unit != "%")
+      fail(a->line, a->name + ": \"" + svgExcerpt(l->unit) + "\" is not a unit of length");
     return l;
   }
 
@@ -463,15 +482,23 @@ class SvgReader {
       use(e, context);
     } else if (name == "path" || name == "rect" || name == "circle" || name == "ellipse" ||
                name == "polygon" || name == "polyline" || name == "line") {
-      Loops loops = shape(e, name);
+      Drawn drawn = shape(e, name);
+      Loops& loops = drawn.loops;
       if (options_.openscadPolygons) loops = openscadPolygons(loops);
-      if (!context.selected || !context.visible || loops.empty()) return;
-      if (shapes_.size() >= kMaxShapes)
+      if (!context.selected || !context.visible) return;
+      if (shapes_.size() + drawn.strokes.size() >= kMaxShapes)
         fail(e.line,
              "more than " + std::to_string(kMaxShapes) + " shapes (with the copies <use> makes)");
       if (std::abs(context.map.linear[0][0] * context.map.linear[1][1] -
                    context.map.linear[1][0] * context.map.linear[0][1]) == 0.0)
         return;  // flattened to a line or a point: no area
+      if (!drawn.strokes.empty()) {
+        const StrokeStyle style = strokeStyle(e);
+        for (const std::vector<dvec2>& line : drawn.strokes)
+          if (RegionPtr stroke = strokeRegion(line, style))
+            shapes_.push_back(stroke->transformed(context.map));
+      }
+      if (loops.empty()) return;
       for (ProfileLoop& loop : loops)
         for (ProfileEdge& edge : loop.edges) edge = edge.transformed(context.map);
       if (context.evenOdd) {
@@ -532,17 +559,37 @@ class SvgReader {
 
   // ---- Shapes ----------------------------------------------------------------
 
-  [[noreturn]] void openOutline(const XmlElement& e, const std::string& what) const {
-    fail(e.line, what +
-                     ": OpenSCAD makes an outline of its stroke, csgray imports closed "
-                     "outlines only (close it, or draw the stroke as a filled shape)");
+  // The stroke OpenSCAD outlines: stroke-width of the element itself (not
+  // inherited; 1 where it is missing or less than 0.01), its
+  // stroke-linecap (square by default) and stroke-linejoin (miter).
+  StrokeStyle strokeStyle(const XmlElement& e) const {
+    StrokeStyle style;
+    if (const std::optional<std::string> width = property(e, "stroke-width")) {
+      const std::optional<Length> l = splitLength(*width);
+      if (!l || (!l->unit.empty() && l->unit != "px")) {
+        const XmlAttribute* a = e.attribute("stroke-width");
+        fail(a ? a->line : e.line,
+             "stroke-width: expected a number (user units), found \"" + svgExcerpt(*width) + "\"");
+      }
+      if (l->number >= 0.01) style.width = l->number;
+    }
+    const std::string cap = property(e, "stroke-linecap").value_or("");
+    style.cap = cap == "butt"    ? StrokeStyle::Cap::Butt
+                : cap == "round" ? StrokeStyle::Cap::Round
+                                 : StrokeStyle::Cap::Square;
+    const std::string join = property(e, "stroke-linejoin").value_or("");
+    style.join = join == "bevel"   ? StrokeStyle::Join::Bevel
+                 : join == "round" ? StrokeStyle::Join::Round
+                                   : StrokeStyle::Join::Miter;
+    return style;
   }
 
-  Loops shape(const XmlElement& e, std::string_view name) const {
-    Loops loops;
+  Drawn shape(const XmlElement& e, std::string_view name) const {
+    Drawn drawn;
+    Loops& loops = drawn.loops;
     if (name == "path") {
       const XmlAttribute* d = e.attribute("d");
-      if (!d) return loops;
+      if (!d) return drawn;
       std::vector<SvgSubpath> subpaths;
       try {
         subpaths = parseSvgPath(d->value);
@@ -551,13 +598,15 @@ class SvgReader {
       }
       for (SvgSubpath& sub : subpaths) {
         const dvec2 start = sub.edges.front().from, end = sub.edges.back().to;
-        if (!sub.closed) {
-          ProfileBounds box;
-          for (const ProfileEdge& edge : sub.edges) box.include(edge.from), box.include(edge.to);
-          const double size = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
-          if (glm::length(end - start) > 1e-9 * size) openOutline(e, "a <path> that is not closed");
-          sub.edges.back().to = start;
+        // A subpath not closed by Z whose ends are more than 0.1 apart is a
+        // stroke, as OpenSCAD takes it, its curves OpenSCAD's chords; one
+        // whose ends are nearer is closed by a segment.
+        if (!sub.closed && glm::length(end - start) > 0.1) {
+          std::vector<dvec2>& line = drawn.strokes.emplace_back(1, start);
+          for (const ProfileEdge& edge : sub.edges) appendOpenscadChords(edge, line);
+          continue;
         }
+        if (end != start) sub.edges.push_back(ProfileEdge::segment(end, start));
         loops.push_back({std::move(sub.edges)});
       }
     } else if (name == "rect") {
@@ -577,18 +626,23 @@ class SvgReader {
       for (std::size_t i = 0; i + 1 < v.size(); i += 2)
         if (points.empty() || points.back() != dvec2(v[i], v[i + 1]))
           points.push_back({v[i], v[i + 1]});
-      if (name == "polyline" && points.size() > 1 && points.front() != points.back())
-        openOutline(e, "a <polyline>");
+      // OpenSCAD outlines a polyline's stroke, even one that ends where it
+      // starts.
+      if (name == "polyline") {
+        drawn.strokes.push_back(std::move(points));
+        return drawn;
+      }
       if (points.size() > 1 && points.front() == points.back()) points.pop_back();
-      if (points.size() < 3) return loops;
+      if (points.size() < 3) return drawn;
       ProfileLoop loop;
       for (std::size_t i = 0; i < points.size(); ++i)
         loop.edges.push_back(ProfileEdge::segment(points[i], points[(i + 1) % points.size()]));
       loops.push_back(std::move(loop));
     } else if (name == "line") {
-      openOutline(e, "a <line>");
+      drawn.strokes.push_back({{userLength(e, "x1", 0.0), userLength(e, "y1", 0.0)},
+                               {userLength(e, "x2", 0.0), userLength(e, "y2", 0.0)}});
     }
-    return loops;
+    return drawn;
   }
 
   // A rectangle, its corners rounded by quarters of the ellipse of radii

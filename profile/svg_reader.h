@@ -4,8 +4,10 @@
 // <path>, <rect> (with rounded corners), <circle>, <ellipse> and
 // <polygon>, in <g>, nested <svg> and <use> of what <defs> holds, under
 // their transforms, each filled by its fill-rule (even-odd where none is
-// given, as OpenSCAD fills) and united. Curves stay exact: segments,
-// quadratic and cubic Bézier curves and arcs of ellipses.
+// given, as OpenSCAD fills) and united; <line>, <polyline> and open paths
+// as the outlines of their strokes, as OpenSCAD makes them (svg_stroke.h).
+// Curves stay exact: segments, quadratic and cubic Bézier curves and arcs
+// of ellipses.
 //
 // Units follow OpenSCAD: the page's width and height in mm, cm, in, pt, pc,
 // px (96 to the inch) or none (the dpi given, 72 unless told); the viewBox
@@ -41,10 +43,9 @@ struct SvgOptions {
 // The region the drawing fills; fileName is used in messages. Throws
 // std::invalid_argument "file:line: what" for text that is not XML, a
 // root that is not <svg>, path data that cannot be read, a length in a
-// unit csgray does not know (em, ex), a transform it cannot read, an open
-// outline (a <line>, a <polyline>, a path not closed: OpenSCAD outlines
-// their strokes, csgray imports closed outlines only), an id no element
-// has, and a drawing that fills nothing.
+// unit csgray does not know (em, ex), a transform it cannot read, a
+// stroke-width that is not a number, an id no element has, and a drawing
+// that fills nothing.
 RegionPtr readSvg(std::string_view text, const std::string& fileName, const SvgOptions& options);
 
 }  // namespace csgray::detail

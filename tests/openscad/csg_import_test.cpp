@@ -604,6 +604,24 @@ TEST(CsgImport, SvgCurves) {
   EXPECT_NEAR(area(evaluate(*polygons.regions[0], 1e-9)), 1272.657179, 1e-6 * 1272.657179);
 }
 
+// Strokes, against OpenSCAD 2021.01's export of `linear_extrude(height =
+// 1) import(file = "svg_strokes.svg");` (volume 456.920264, its box from
+// (4.5, 7.99789) to (96.1157, 46)): OpenSCAD offsets the lines with
+// Clipper's integer coordinates (10⁻⁴ of a user unit), csgray exactly.
+TEST(CsgImport, SvgStrokes) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  const CsgModel model = importCsg("import(file = \"svg_strokes.svg\");", "part.csg", options);
+  const Profile evaluated = evaluate(*model.regions[0], 1e-9);
+  EXPECT_NEAR(area(evaluated), 456.920264, 1e-5 * 456.920264);
+  const ProfileBounds box = evaluated.bounds();
+  // Its STL's 6 digits, and Clipper's grid.
+  EXPECT_NEAR(box.lo.x, 4.5, 1e-4);
+  EXPECT_NEAR(box.lo.y, 7.99789, 1e-4);
+  EXPECT_NEAR(box.hi.x, 96.1157, 1e-4);
+  EXPECT_NEAR(box.hi.y, 46.0, 1e-4);
+}
+
 Scene exampleScene(const std::string& name, bool openscadFacets) {
   ScriptOptions options = test::exampleOptions();
   options.openscadFacets = openscadFacets;

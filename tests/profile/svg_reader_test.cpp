@@ -157,8 +157,6 @@ TEST(SvgReader, RectanglesCirclesAndEllipses) {
   // Radii past half a side stop there: a 20 × 20 square with rx 50 is a disc.
   EXPECT_NEAR(areaOf(page("<rect width='20' height='20' ry='50'/>")), 100 * pi, 1e-9);
   EXPECT_NEAR(areaOf(page("<polygon points='0,0 10,0 10,10'/>")), 50.0, 1e-9);
-  // A polyline back at its start is closed.
-  EXPECT_NEAR(areaOf(page("<polyline points='0 0 10 0 10 10 0 0'/>")), 50.0, 1e-9);
 }
 
 TEST(SvgReader, PathsWithArcsAndBezierCurves) {
@@ -295,6 +293,43 @@ TEST(SvgReader, NestedSvgUseDefsAndHiddenShapes) {
               pi, 1e-9);
 }
 
+// Lines, polylines and open paths are the outlines of their strokes, as
+// OpenSCAD makes them: stroke-width (1 unless given), square ends unless
+// stroke-linecap says, mitred corners unless stroke-linejoin says.
+TEST(SvgReader, StrokesOfOpenOutlines) {
+  // A line 10 long: 11 × 1 with its square ends, 10 × 2 with butt ends,
+  // and two half discs more with round ones.
+  EXPECT_NEAR(areaOf(page("<line x1='0' y1='0' x2='10' y2='0'/>")), 11.0, 1e-9);
+  EXPECT_NEAR(areaOf(page("<line x2='10' stroke-width='2' stroke-linecap='butt'/>")), 20.0, 1e-9);
+  EXPECT_NEAR(areaOf(page("<line x2='10' style='stroke-width:2;stroke-linecap:round'/>")),
+              20.0 + pi, 1e-9);
+  // A right angle, 2 wide, butt ends: two 10 × 2 bands overlapping by 1,
+  // and the corner's mitre, a unit square; a bevel cuts the square's
+  // corner at 1 from the vertex, a right triangle of height √2 − 1; a
+  // round join is a quarter disc.
+  const std::string corner = "points='0 0 10 0 10 10' stroke-width='2' stroke-linecap='butt'";
+  EXPECT_NEAR(areaOf(page("<polyline " + corner + "/>")), 40.0, 1e-9);
+  EXPECT_NEAR(areaOf(page("<polyline " + corner + " stroke-linejoin='bevel'/>")),
+              40.0 - (std::sqrt(2.0) - 1) * (std::sqrt(2.0) - 1), 1e-9);
+  EXPECT_NEAR(areaOf(page("<polyline " + corner + " stroke-linejoin='round'/>")), 39.0 + pi / 4,
+              1e-9);
+  // An open path is the same stroke; a polyline around a square is its
+  // stroke too (not filled): the 12 × 12 band less the 8 × 8 inside, less
+  // the corner its butt ends leave open.
+  EXPECT_NEAR(areaOf(page("<path d='M0 0 h10 v10' stroke-width='2' stroke-linecap='butt'/>")), 40.0,
+              1e-9);
+  EXPECT_NEAR(areaOf(page("<polyline points='0 0 10 0 10 10 0 10 0 0' stroke-width='2' "
+                          "stroke-linecap='butt'/>")),
+              144.0 - 64.0 - 1.0, 1e-9);
+  // A corner sharper than 60° is cut square rather than mitred (Clipper's
+  // mitre limit): the stroke of a 30° corner is the same either way.
+  const std::string sharp = "points='0 0 10 0 1.339746 5' stroke-width='2' stroke-linecap='butt'";
+  EXPECT_NEAR(areaOf(page("<polyline " + sharp + "/>")),
+              areaOf(page("<polyline " + sharp + " stroke-linejoin='bevel'/>")), 1e-9);
+  // Ends within 0.1 of each other close the path, as OpenSCAD closes it.
+  EXPECT_NEAR(areaOf(page("<path d='M0 0 h10 v10 h-10 v-9.95'/>")), 100.0, 1e-9);
+}
+
 TEST(SvgReader, BadDrawingsAreOneLineErrors) {
   EXPECT_EQ(error("<html/>"),
             "part.svg:1: not an SVG drawing (its root element is <html>, not <svg>)");
@@ -318,13 +353,8 @@ TEST(SvgReader, BadDrawingsAreOneLineErrors) {
             "part.svg:2: transform: \"turn\" is not a transform");
   EXPECT_EQ(error(page("<rect width='10' height='10' transform='rotate(1 2)'/>")),
             "part.svg:2: transform: rotate takes 1 or 3 numbers, not 2");
-  EXPECT_EQ(error(page("<line x1='0' y1='0' x2='10' y2='10' stroke='black'/>")),
-            "part.svg:2: a <line>: OpenSCAD makes an outline of its stroke, csgray imports closed "
-            "outlines only (close it, or draw the stroke as a filled shape)");
-  EXPECT_EQ(error(page("<polyline points='0 0 10 0 10 10'/>")).substr(0, 27),
-            "part.svg:2: a <polyline>: O");
-  EXPECT_EQ(error(page("<path d='M0 0 h10 v10'/>")).substr(0, 42),
-            "part.svg:2: a <path> that is not closed: O");
+  EXPECT_EQ(error(page("<line x2='10' stroke-width='2mm'/>")),
+            "part.svg:2: stroke-width: expected a number (user units), found \"2mm\"");
   EXPECT_EQ(error(page("<use href='#nothing'/>")),
             "part.svg:2: <use> of \"#nothing\", which no element has as its id");
   EXPECT_EQ(error(page("<g id='a'><use href='#a'/><rect width='1' height='1'/></g>")),
