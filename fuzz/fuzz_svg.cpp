@@ -1,5 +1,5 @@
 // A libFuzzer target for the SVG reader (profile/svg_reader, with its XML
-// reader and path data): every input must be read or refused with
+// reader, path data and strokes): every input must be read or refused with
 // std::invalid_argument whose message is one line naming the file;
 // anything else (a crash, a sanitizer report, another exception, a hang)
 // is a bug.
