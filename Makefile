@@ -99,8 +99,8 @@ fuzz: deps
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends clang libclang-rt-dev
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCSGRAY_FUZZ=ON -DCSGRAY_TESTS=OFF \
 	  -DCMAKE_CXX_COMPILER=clang++
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_stl fuzz_obj fuzz_off fuzz_ply
-	for format in stl obj off ply; do \
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_stl fuzz_obj fuzz_off fuzz_ply fuzz_svg
+	for format in stl obj off ply svg; do \
 	  mkdir -p $(FUZZ_BUILD)/corpus/$$format && \
 	  $(FUZZ_BUILD)/fuzz/fuzz_$$format -max_total_time=$(FUZZ_SECONDS) \
 	    $(FUZZ_BUILD)/corpus/$$format fuzz/corpus/$$format || exit 1; \

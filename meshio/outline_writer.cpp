@@ -66,9 +66,10 @@ void svgArc(std::string& d, const ProfileEdge& arc, double angle0, double angle1
                                                 std::hypot(arc.axes[0][0], arc.axes[0][1]), 0.0}
                                  : ellipseOf(arc.axes);
   const bool large = std::abs(angle1 - angle0) > kPi;
-  // Mirrored into SVG's frame a counterclockwise arc turns clockwise, which
-  // is SVG's sweep flag 1 (SVG 1.1, 8.3.8).
-  const bool sweep = counterclockwise(arc);
+  // SVG's sweep flag 1 runs its angle up in SVG's own coordinates (SVG
+  // 1.1, 8.3.8 and F.6.5), whose y axis is the plane's mirrored: there a
+  // counterclockwise arc of the plane runs its angle down, flag 0.
+  const bool sweep = !counterclockwise(arc);
   d += " A " + number(shape.rx) + " " + number(shape.ry) + " " + number(-shape.rotationDegrees) +
        " " + (large ? "1" : "0") + " " + (sweep ? "1" : "0") + " " + svgPoint(arc.arcPoint(angle1));
 }

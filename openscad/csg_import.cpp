@@ -18,6 +18,7 @@
 #include "profile/glyph_outlines.h"
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
+#include "profile/svg_reader.h"
 #include "scene/color_names.h"
 #include "scene/hull_shapes.h"
 #include "scene/material.h"
@@ -662,9 +663,9 @@ class Importer {
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return std::tolower(c); });
     if (ext == ".dxf") return {nullptr, importDxf(node, f->text)};
-    if (ext == ".svg") throw NodeError(f->text + ": SVG files cannot be imported yet");
+    if (ext == ".svg") return {nullptr, importSvg(node, f->text)};
     if (ext != ".stl" && ext != ".off" && ext != ".obj" && ext != ".ply")
-      throw NodeError(f->text + ": not a file csgray reads (STL, OFF, OBJ, PLY, DXF)");
+      throw NodeError(f->text + ": not a file csgray reads (STL, OFF, OBJ, PLY, DXF, SVG)");
     if (!options_.loadMesh) throw NodeError("this program cannot read mesh files");
     SolidPtr solid = meshShape(options_.loadMesh(resolved(f->text)), f->text);
     const double scale = number(node, "scale", 1.0);
@@ -701,6 +702,20 @@ class Importer {
     polygonSides(node, 1.0);  // checks $fa and $fs
     dxf.fragments = [this, &node](double r) { return polygonSides(node, r); };
     return readDxf(readInputFile(resolved(name), name, kMaxFileBytes), name, dxf);
+  }
+
+  // import(file="x.svg", id=, dpi=, center=): its curves exact, or
+  // OpenSCAD's polygons of them (40-gons, whatever $fn says). OpenSCAD
+  // 2021.01 reads no layer, origin or scale of an SVG file (its .csg files
+  // write them all the same), so neither does this.
+  RegionPtr importSvg(const CsgNode& node, const std::string& name) {
+    SvgOptions svg;
+    svg.id = string(node, "id", "");
+    svg.dpi = number(node, "dpi", 72.0);
+    if (!(svg.dpi >= 0.001)) throw NodeError("dpi must be a number >= 0.001");
+    svg.center = boolean(node, "center", false);
+    svg.openscadPolygons = options_.facets == CsgFacets::OpenScad;
+    return readSvg(readInputFile(resolved(name), name, kMaxFileBytes), name, svg);
   }
 
   // surface(file=, center=, invert=): a height map (scene/height_map.h).

@@ -47,8 +47,9 @@ void registerRegionApi(lua_State* L);
 void registerCsgApi(lua_State* L);
 Scene csgFileScene(const std::string& path, const ScriptOptions& options);
 void registerSweepApi(lua_State* L);
-// import_dxf{file=} and height_map{file=} (api_import.cpp): a DXF drawing
-// as a region, OpenSCAD's surface() as a solid.
+// import_dxf{file=}, import_svg{file=} and height_map{file=}
+// (api_import.cpp): a DXF or SVG drawing as a region, OpenSCAD's surface()
+// as a solid.
 void registerImportApi(lua_State* L);
 // projection(solid, {cut=}) (api_projection.cpp): a solid's section by
 // z = 0 or its shadow on it, as a region (ScriptOptions::projectSolid).

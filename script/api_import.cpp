@@ -1,7 +1,9 @@
-// Shapes read from files other than meshes: import_dxf{file=} (a DXF
-// drawing's outlines as a region, OpenSCAD's import() of a .dxf) and
+// Shapes read from files other than meshes: import_dxf{file=} and
+// import_svg{file=} (a DXF or SVG drawing as a region, OpenSCAD's import()
+// of a .dxf or .svg) and
 // height_map{file=} (OpenSCAD's surface(): a text file of heights or a PNG
 // image as a solid). Files follow the script's rule (script_path.h).
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -9,6 +11,7 @@
 #include "io/height_map_file.h"
 #include "io/input_file.h"
 #include "profile/dxf_reader.h"
+#include "profile/svg_reader.h"
 #include "script/api.h"
 #include "script/lua_args.h"
 #include "script/lua_values.h"
@@ -20,6 +23,29 @@ namespace csgray::detail {
 namespace {
 
 constexpr std::size_t kMaxDrawingBytes = std::size_t{64} << 20;
+
+// The drawing file= names, read by `read` (from its text and its name), its
+// errors prefixed with the function's name, pushed as a region whose edges
+// are charged to the script's memory.
+int pushDrawing(lua_State* L, const std::string& function, const std::optional<std::string>& file,
+                const std::function<RegionPtr(const std::string&, const std::string&)>& read) {
+  const std::string extension = function.substr(function.size() - 3);
+  if (!file) throw std::invalid_argument(function + ": needs file=\"part." + extension + "\"");
+  const std::string path = scriptFile(L, function, *file);
+  RegionPtr region;
+  try {
+    region = read(readInputFile(path, *file, kMaxDrawingBytes), *file);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(function + ": " + e.what());
+  }
+  region->forEachLeaf([&](const Profile& p) {
+    Sandbox::of(L).charge(L, p.loops.size() * sizeof(ProfileLoop));
+    for (const ProfileLoop& loop : p.loops)
+      Sandbox::of(L).charge(L, loop.edges.size() * sizeof(ProfileEdge));
+  });
+  pushRegion(L, region);
+  return 1;
+}
 
 // import_dxf{file="plate.dxf", layer="", origin={0, 0}, scale=1}.
 int importDxf(lua_State* L) {
@@ -34,21 +60,24 @@ int importDxf(lua_State* L) {
   }
   dxf.scale = args.number("scale").value_or(1.0);
   args.finish();
-  if (!file) throw std::invalid_argument("import_dxf: needs file=\"part.dxf\"");
-  const std::string path = scriptFile(L, "import_dxf", *file);
-  RegionPtr region;
-  try {
-    region = readDxf(readInputFile(path, *file, kMaxDrawingBytes), *file, dxf);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("import_dxf: " + std::string(e.what()));
-  }
-  Sandbox::of(L).charge(L, region->profile().loops.size() * sizeof(ProfileLoop));
-  region->forEachLeaf([&](const Profile& p) {
-    for (const ProfileLoop& loop : p.loops)
-      Sandbox::of(L).charge(L, loop.edges.size() * sizeof(ProfileEdge));
+  return pushDrawing(L, "import_dxf", file, [&](const std::string& text, const std::string& name) {
+    return readDxf(text, name, dxf);
   });
-  pushRegion(L, region);
-  return 1;
+}
+
+// import_svg{file="badge.svg", id="", dpi=72, center=false}.
+int importSvg(lua_State* L) {
+  checkArgumentCount(L, "import_svg", 1);
+  LuaArgs args(L, 1, "import_svg");
+  std::optional<std::string> file = args.string("file");
+  SvgOptions svg;
+  svg.id = args.string("id").value_or("");
+  svg.dpi = args.number("dpi").value_or(72.0);
+  svg.center = args.boolean("center").value_or(false);
+  args.finish();
+  return pushDrawing(L, "import_svg", file, [&](const std::string& text, const std::string& name) {
+    return readSvg(text, name, svg);
+  });
 }
 
 // height_map{file="terrain.dat" or "terrain.png", center=false, invert=false}.
@@ -83,6 +112,7 @@ int heightMap(lua_State* L) {
 
 void registerImportApi(lua_State* L) {
   lua_register(L, "import_dxf", guarded<importDxf>);
+  lua_register(L, "import_svg", guarded<importSvg>);
   lua_register(L, "height_map", guarded<heightMap>);
 }
 

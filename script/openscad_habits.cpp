@@ -31,7 +31,8 @@ std::string openscadNameHint(const std::string& name) {
       {"echo", "OpenSCAD's echo is print(...) here (it writes to standard error)"},
       {"import",
        "meshes are read with mesh{file=\"part.stl\"}, DXF drawings with "
-       "import_dxf{file=\"part.dxf\"}, OpenSCAD's .csg files with import_csg{file=\"part.csg\"}"},
+       "import_dxf{file=\"part.dxf\"}, SVG drawings with import_svg{file=\"part.svg\"}, "
+       "OpenSCAD's .csg files with import_csg{file=\"part.csg\"}"},
       {"surface", "OpenSCAD's surface() is height_map{file=\"terrain.dat\"} here"},
       {"projection", "projection() is not supported yet"},
       {"children", "a module is a Lua function here; pass the parts it works on as arguments"},

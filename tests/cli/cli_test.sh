@@ -819,5 +819,21 @@ printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n40\n5\n0\nENDSEC\n0\nEOF\n' > "$work
 if "$csgray" export "$work/dxf.csg" -o "$work/dxf.stl" --facets openscad >"$work/stdout" 2>"$work/stderr" &&
   grep -q "volume 153.073" "$work/stdout"; then pass; else fail "export a .csg file's DXF"; cat "$work/stdout" "$work/stderr"; fi
 
+# An SVG drawing, from a .csg file and from a script: one cut short is a
+# one-line error naming both lines; a whole one, a 20 × 10 mm rectangle
+# (a viewBox of 40 × 20 on a 20 × 10 mm page) 2 high, has volume 400.
+printf 'linear_extrude(height = 2) {\n  import(file = "cut.svg", center = false, dpi = 72);\n}\n' > "$work/svg.csg"
+printf '<svg width="20mm" height="10mm" viewBox="0 0 40 20">\n<rect width="40" height="20"/>\n<g>\n' > "$work/cut.svg"
+expect_exit 1 "an SVG file cut short" "$work/svg.stl" export "$work/svg.csg" -o "$work/svg.stl"
+expect_in_stderr "an SVG file cut short" "svg.csg:2: import: cut.svg:3: <g> is not closed: the file ends first (is it cut short?)"
+printf 'return linear_extrude{import_svg{file="cut.svg"}, height=2}\n' > "$work/svg.lua"
+expect_exit 1 "a script's SVG file cut short" "$work/svg.stl" export "$work/svg.lua" -o "$work/svg.stl"
+expect_in_stderr "a script's SVG file cut short" "svg.lua:1: import_svg: cut.svg:3: <g> is not closed"
+printf '</g>\n</svg>\n' >> "$work/cut.svg"
+for part in svg.csg svg.lua; do
+  if "$csgray" export "$work/$part" -o "$work/svg.stl" >"$work/stdout" 2>"$work/stderr" &&
+    grep -q "volume 400)" "$work/stdout"; then pass; else fail "export $part's SVG"; cat "$work/stdout" "$work/stderr"; fi
+done
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -17,6 +17,7 @@
 
 #include "profile/region_evaluation.h"
 #include "profile/shapes.h"
+#include "profile/svg_reader.h"
 
 namespace csgray::detail {
 namespace {
@@ -62,8 +63,9 @@ double pathArea(const std::string& d) {
       chord(at, q);
       double phi = 2.0 * std::asin(std::min(1.0, glm::length(q - at) / (2.0 * rx)));
       if (large) phi = 2.0 * kPi - phi;
-      // Sweep flag 1 is counterclockwise in the plane (clockwise in SVG).
-      twice += (sweep ? 1.0 : -1.0) * rx * rx * (phi - std::sin(phi));
+      // Sweep flag 1 runs the angle up in SVG's coordinates (SVG 1.1,
+      // F.6.5), whose y is the plane's mirrored: clockwise in the plane.
+      twice += (sweep ? -1.0 : 1.0) * rx * rx * (phi - std::sin(phi));
       at = q;
     } else if (command == "Z") {
       chord(at, start);
@@ -107,6 +109,35 @@ TEST(OutlineWriter, SvgEnclosesTheAnalyticArea) {
   EXPECT_EQ(attribute(svg, "width"), "4mm");
   EXPECT_EQ(attribute(svg, "height"), "2mm");
   EXPECT_EQ(attribute(svg, "viewBox"), "0 -2 4 2");
+}
+
+// The SVG read back (profile/svg_reader) is the region again: the same
+// area, its box moved to the page's bottom left corner at the origin.
+TEST(OutlineWriter, SvgReadsBackAsTheRegion) {
+  const RegionPtr plate =
+      Region::boolean(Region::Op::Difference,
+                      {rectangleRegion("rectangle", 30, 20, true),
+                       circleRegion(4.0, std::nullopt)->transformed({dmat2(1.0), {-8, 0}}),
+                       rectangleRegion("square", 6, 6, true)->transformed({dmat2(1.0), {8, 0}})});
+  const RegionPtr stadium = Region::boolean(
+      Region::Op::Union, {rectangleRegion("rectangle", 4, 2, true),
+                          circleRegion(1.0, std::nullopt)->transformed({dmat2(1.0), {2, 0}}),
+                          circleRegion(1.0, std::nullopt)->transformed({dmat2(1.0), {-2, 0}})});
+  const struct {
+    RegionPtr region;
+    double area;
+  } cases[] = {{plate, 600 - 16 * kPi - 36}, {stadium, 8 + kPi}};
+  for (const auto& c : cases) {
+    const Profile written = evaluated(c.region);
+    const RegionPtr read = readSvg(svgOutline(written), "outline.svg", {});
+    const Profile again = evaluated(read);
+    EXPECT_NEAR(area(again), c.area, 1e-9);
+    const ProfileBounds box = written.bounds(), readBox = again.bounds();
+    EXPECT_NEAR(readBox.lo.x, 0.0, 1e-12);
+    EXPECT_NEAR(readBox.lo.y, 0.0, 1e-12);
+    EXPECT_NEAR(readBox.hi.x, box.hi.x - box.lo.x, 1e-12);
+    EXPECT_NEAR(readBox.hi.y, box.hi.y - box.lo.y, 1e-12);
+  }
 }
 
 TEST(OutlineWriter, SvgArcsKeepTheirSense) {

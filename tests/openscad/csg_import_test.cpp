@@ -442,7 +442,7 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(importError("surface(file = \"x.dat\");"),
             "part.csg:1: surface: this program cannot read files");
   EXPECT_EQ(importError("import(file = \"x.svg\");"),
-            "part.csg:1: import: x.svg: SVG files cannot be imported yet");
+            "part.csg:1: import: this program cannot read files");
   EXPECT_EQ(importError("union() { cube(size = 1); square(size = 1); }"),
             "part.csg:1: union: mixes 2D and 3D children; extrude the 2D ones first");
   EXPECT_EQ(importError("cube(size = \"big\");"),
@@ -536,6 +536,90 @@ TEST(CsgImport, SurfaceAndDxfNodes) {
               "part.csg:2: import: example009.dxf: layer \"none\" draws no closed outline (its "
               "layers: body, dim, fan_side, fan_side_center, fan_top, plate)");
   }
+}
+
+// import() of an SVG drawing, against OpenSCAD 2021.01's export of
+// `linear_extrude(height = 1) import(file = "svg_drawing.svg");`: its
+// volume, and its box, which shows where OpenSCAD puts the page (its
+// bottom left corner at the origin). OpenSCAD draws the drawing's circle
+// (radius 12 user units, 6 mm) as a 40-gon, 20·6²·sin 9° of area, where
+// csgray's is π·6².
+TEST(CsgImport, SvgNodes) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  const std::string node =
+      "import(file = \"svg_drawing.svg\", layer = \"\", origin = [0, 0], center = false, dpi = "
+      "72, scale = 1, convexity = 1, $fn = 0, $fa = 12, $fs = 2, timestamp = 1795666030);";
+  const CsgModel model = importCsg(node, "part.csg", options);
+  ASSERT_EQ(model.regions.size(), 1u);
+  const double openscadVolume = 1275.132802;
+  const double circle = pi * 36.0, openscadCircle = 20.0 * 36.0 * std::sin(pi / 20.0);
+  const Profile evaluated = evaluate(*model.regions[0], 1e-9);
+  // Its STL has 6 significant digits.
+  EXPECT_NEAR(area(evaluated), openscadVolume - openscadCircle + circle, 1e-5 * openscadVolume);
+  // With OpenSCAD's polygons, OpenSCAD's area.
+  options.facets = CsgFacets::OpenScad;
+  const CsgModel polygons = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*polygons.regions[0], 1e-9)), openscadVolume, 1e-6 * openscadVolume);
+  options.facets = CsgFacets::Exact;
+  const ProfileBounds box = evaluated.bounds();
+  EXPECT_NEAR(box.lo.x, 5.0, 1e-9);
+  EXPECT_NEAR(box.lo.y, 4.0, 1e-9);
+  EXPECT_NEAR(box.hi.x, 76.0, 1e-9);
+  EXPECT_NEAR(box.hi.y, 55.0, 1e-9);
+  // center = true puts the box's middle on the origin; dpi = 144 halves
+  // nothing here, since the page's size is in mm.
+  const CsgModel centered = importCsg(
+      "import(file = \"svg_drawing.svg\", center = true, dpi = 144);", "part.csg", options);
+  const ProfileBounds middle = evaluate(*centered.regions[0], 1e-9).bounds();
+  EXPECT_NEAR(middle.lo.x + middle.hi.x, 0.0, 1e-9);
+  EXPECT_NEAR(middle.lo.y + middle.hi.y, 0.0, 1e-9);
+  EXPECT_NEAR(middle.hi.x - middle.lo.x, 71.0, 1e-9);
+  try {
+    importCsg("group() {\n  import(file = \"svg_drawing.svg\", id = \"none\");\n}", "part.csg",
+              options);
+    ADD_FAILURE() << "no error";
+  } catch (const CsgError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "part.csg:2: import: svg_drawing.svg: no element has the id \"none\"");
+  }
+}
+
+// Curves, against OpenSCAD 2021.01's export of `linear_extrude(height = 1)
+// import(file = "svg_curves.svg");` (volume 1272.657179): its chords with
+// --facets openscad, and exact areas otherwise: a 40 × 20 rectangle with
+// corners of radius 5, 800 − (4 − π)·25; a cubic lobe of width and height
+// 20 (its control points 20 above its ends), 0.6·20·20; a half disc of
+// radius 10; a parabola's segment, 2/3 of its control triangle (20 wide,
+// 15 high).
+TEST(CsgImport, SvgCurves) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  const std::string node = "import(file = \"svg_curves.svg\", center = false, dpi = 72);";
+  const CsgModel exact = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*exact.regions[0], 1e-7)),
+              800 - (4 - pi) * 25 + 0.6 * 400 + 50 * pi + 2.0 / 3.0 * 150, 1e-4);
+  options.facets = CsgFacets::OpenScad;
+  const CsgModel polygons = importCsg(node, "part.csg", options);
+  EXPECT_NEAR(area(evaluate(*polygons.regions[0], 1e-9)), 1272.657179, 1e-6 * 1272.657179);
+}
+
+// Strokes, against OpenSCAD 2021.01's export of `linear_extrude(height =
+// 1) import(file = "svg_strokes.svg");` (volume 456.920264, its box from
+// (4.5, 7.99789) to (96.1157, 46)): OpenSCAD offsets the lines with
+// Clipper's integer coordinates (10⁻⁴ of a user unit), csgray exactly.
+TEST(CsgImport, SvgStrokes) {
+  CsgImportOptions options;
+  options.resolveFile = [](const std::string& name) { return kData + name; };
+  const CsgModel model = importCsg("import(file = \"svg_strokes.svg\");", "part.csg", options);
+  const Profile evaluated = evaluate(*model.regions[0], 1e-9);
+  EXPECT_NEAR(area(evaluated), 456.920264, 1e-5 * 456.920264);
+  const ProfileBounds box = evaluated.bounds();
+  // Its STL's 6 digits, and Clipper's grid.
+  EXPECT_NEAR(box.lo.x, 4.5, 1e-4);
+  EXPECT_NEAR(box.lo.y, 7.99789, 1e-4);
+  EXPECT_NEAR(box.hi.x, 96.1157, 1e-4);
+  EXPECT_NEAR(box.hi.y, 46.0, 1e-4);
 }
 
 Scene exampleScene(const std::string& name, bool openscadFacets) {

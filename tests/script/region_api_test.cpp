@@ -328,8 +328,8 @@ TEST(ScriptRegion, OffsetsAndHullsAreAnalytic) {
   expectArea("hull{square(1), square(1):translate(3, 3)}", 7);
 }
 
-// import_dxf{} and height_map{} read files beside the script, by its
-// rules, and name the file and its line when it is wrong.
+// import_dxf{}, import_svg{} and height_map{} read files beside the
+// script, by its rules, and name the file and its line when it is wrong.
 TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
   const std::string folder = testing::TempDir() + "/drawings_and_heights";
   std::filesystem::create_directories(folder);
@@ -339,6 +339,12 @@ TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
          "10\n10\n20\n10\n10\n0\n20\n10\n0\nENDSEC\n0\nEOF\n";
   std::ofstream(folder + "/bad.dxf") << "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nx\n";
   std::ofstream(folder + "/hill.dat") << "# heights\n1 2\n3 4\n";
+  // A 20 × 20 mm page of 40 × 40 user units: a 10 × 10 square and a disc of
+  // radius 5 (2.5 mm) with the id "dot".
+  std::ofstream(folder + "/shapes.svg")
+      << "<svg width='20mm' height='20mm' viewBox='0 0 40 40'>\n<rect width='10' height='10'/>\n"
+         "<circle id='dot' cx='30' cy='30' r='5'/>\n</svg>\n";
+  std::ofstream(folder + "/bad.svg") << "<svg>\n<path d='M0 0 L1'/>\n</svg>\n";
   auto run = [&](const std::string& source) {
     std::ofstream(folder + "/part.lua") << source;
     return runScriptFile(folder + "/part.lua", test::exampleOptions());
@@ -357,6 +363,13 @@ TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
       "local lo, hi = r:bounds()\n"
       "assert(lo[1] == -10 and hi[2] == 10)\n"
       "return r");
+  run("local r = import_svg{file='shapes.svg'}\n"
+      "assert(math.abs(r:area() - (25 + math.pi * 6.25)) < 1e-9)\n"
+      "local dot = import_svg{file='shapes.svg', id='dot', center=true}\n"
+      "assert(math.abs(dot:area() - math.pi * 6.25) < 1e-9)\n"
+      "local lo, hi = dot:bounds()\n"
+      "assert(math.abs(lo[1] + 2.5) < 1e-12 and math.abs(hi[2] - 2.5) < 1e-12)\n"
+      "return linear_extrude{r, height=1}");
   // One cell of mean height 2.5 on a base at z = 0.
   const Scene hill = run("return height_map{file='hill.dat', center=true}");
   ASSERT_EQ(hill.objects.size(), 1u);
@@ -368,6 +381,13 @@ TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
   EXPECT_EQ(error("return import_dxf{file='square.dxf', layer='holes'}"),
             "part.lua:1: import_dxf: square.dxf: layer \"holes\" draws no closed outline (its "
             "layers: plate)");
+  EXPECT_EQ(error("return import_svg{file='bad.svg'}"),
+            "part.lua:1: import_svg: bad.svg:2: <path> d: after 'L1': expected a number, found "
+            "the end of the data");
+  EXPECT_EQ(error("return import_svg{file='shapes.svg', dpi=0}"),
+            "part.lua:1: import_svg: dpi must be a number >= 0.001");
+  EXPECT_EQ(error("return import_svg{file='none.svg'}").substr(0, 34),
+            "part.lua:1: import_svg: none.svg: ");
   EXPECT_EQ(error("return height_map{file='square.dxf'}"),
             "part.lua:1: height_map: square.dxf:2: 'SECTION' is not a number");
   const std::string outside = error("return height_map{file='../hill.dat'}");
