@@ -347,13 +347,18 @@ function parametric(args)
   -- the surface's size) is the earlier one.
   local raw = {}
   local lo, hi = {math.huge, math.huge, math.huge}, {-math.huge, -math.huge, -math.huge}
+  -- f(u, v), or a refusal where it is not a point.
+  local function point(u, v)
+    local p = f(u, v)
+    if type(p) ~= "table" or not finite(p[1]) or not finite(p[2]) or not finite(p[3]) then
+      refuse(name, "f(" .. u .. ", " .. v .. ") must give {x, y, z}, three numbers")
+    end
+    return p
+  end
   for j = 0, nv do
     for i = 0, nu do
       local u, v = u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv
-      local p = f(u, v)
-      if type(p) ~= "table" or not finite(p[1]) or not finite(p[2]) or not finite(p[3]) then
-        refuse(name, "f(" .. u .. ", " .. v .. ") must give {x, y, z}, three numbers")
-      end
+      local p = point(u, v)
       raw[j * (nu + 1) + i] = {p[1], p[2], p[3]}
       for k = 1, 3 do
         lo[k], hi[k] = math.min(lo[k], p[k]), math.max(hi[k], p[k])
@@ -404,8 +409,8 @@ function parametric(args)
     if smooth then
       for i, uv in ipairs(param) do
         local u, v = uv[1], uv[2]
-        local du = derivative(function(t) return f(t, v) end, u, u0, u1)
-        local dv = derivative(function(t) return f(u, t) end, v, v0, v1)
+        local du = derivative(function(t) return point(t, v) end, u, u0, u1)
+        local dv = derivative(function(t) return point(u, t) end, v, v0, v1)
         local n = {du[2] * dv[3] - du[3] * dv[2], du[3] * dv[1] - du[1] * dv[3],
                    du[1] * dv[2] - du[2] * dv[1]}
         local length = math.sqrt(n[1] * n[1] + n[2] * n[2] + n[3] * n[3])

@@ -212,28 +212,41 @@ TEST(ScriptLibrary, AMountainSurfaceIsItsSolidsTop) {
 
 TEST(ScriptLibrary, ASheetIsSeenAndCastsShadowsFromBothSides) {
   // A flat graph sheet in z = 0 shades as a plane there does, from above
-  // and from below, lit from the side the eye is on; and it shades a
-  // point behind it from a light on the other side.
-  const std::string lights =
+  // and from below, lit from the side the eye is on, also where it mirrors
+  // and lets through light (a ball on each side to be seen in it and
+  // through it); and it shades a point behind it from a light on the
+  // other side as the plane does: wholly when opaque, by its transparency
+  // when not.
+  const std::string rest =
+      "sphere(0.4):translate(-0.1, 0.2, 1), sphere(0.4):translate(0.5, -0.1, -1)}, "
       "lights={point_light{pos={0.3, 0.2, 5}}, point_light{pos={-0.2, 0.1, -5}}}, "
       "camera=camera{eye={0, -3, 3}}}";
-  const Scene sheet = runScript(
-      "return scene{objects={graph{f=function(x, y) return 0 end, x={-1, 1}, y={-1, 1}, "
-      "surface=true}:material{color={0.8, 0.5, 0.2}, specular=0.3}}, " +
-          lights,
-      "part.lua", {});
-  const Scene plane = runScript(
-      "return scene{objects={plane{}:material{color={0.8, 0.5, 0.2}, specular=0.3}}, " + lights,
-      "part.lua", {});
-  const Renderer withSheet(sheet, RenderOptions(8, 8)), withPlane(plane, RenderOptions(8, 8));
-  for (double side : {1.0, -1.0}) {
-    const Ray ray(dvec3(0.1, -0.2, 3 * side), dvec3(0.05, 0.02, -side));
-    const dvec3 seen = withSheet.trace(ray);
-    EXPECT_GT(seen.x, 0.3) << side;
-    test::expectVecNear(seen, withPlane.trace(ray), 1e-9);
-    // From below the upper light is hidden by the sheet, and the other way round.
-    EXPECT_EQ(withSheet.transmittance(dvec3(0.1, 0.1, -side), dvec3(0.1, 0.1, 4 * side)),
-              dvec3(0.0));
+  for (const std::string material :
+       {"{color={0.8, 0.5, 0.2}, specular=0.3}",
+        "{color={0.8, 0.5, 0.2}, specular=0.3, reflection=0.3, transparency=0.4}"}) {
+    SCOPED_TRACE(material);
+    const Scene sheet = runScript(
+        "return scene{objects={graph{f=function(x, y) return 0 end, x={-2, 2}, y={-2, 2}, "
+        "surface=true}:material" +
+            material + ", " + rest,
+        "part.lua", {});
+    const Scene plane = runScript("return scene{objects={plane{}:material" + material + ", " + rest,
+                                  "part.lua", {});
+    const Renderer withSheet(sheet, RenderOptions(8, 8)), withPlane(plane, RenderOptions(8, 8));
+    for (double side : {1.0, -1.0}) {
+      for (const dvec3& aim : {dvec3(0.25, -0.14, 0), dvec3(-0.1, 0.2, 0), dvec3(0.5, -0.1, 0)}) {
+        const dvec3 eye(0.1, -0.8, 3 * side);
+        const Ray ray(eye, aim - eye);
+        const dvec3 seen = withSheet.trace(ray);
+        EXPECT_GT(seen.x, 0.1) << side;
+        test::expectVecNear(seen, withPlane.trace(ray), 1e-9);
+      }
+      // From below the upper light is dimmed or hidden by the sheet, and
+      // the other way round.
+      const dvec3 from(0.1, 0.1, -side), to(0.1, 0.1, 4 * side);
+      EXPECT_EQ(withSheet.transmittance(from, to), withPlane.transmittance(from, to));
+      EXPECT_LT(withSheet.transmittance(from, to).x, 0.5);
+    }
   }
 }
 
