@@ -1,11 +1,12 @@
-// csgray::Surface: the script's open surfaces (scene/surface.h), with the
-// same checks.
+// csgray::Surface: the script's open surfaces (scene/surface.h and
+// scene/surface_mesh.h), with the same checks.
 
 #include "api/access.h"
 #include "api/convert.h"
 #include "api/errors.h"
 #include "csgray/scene.h"
 #include "scene/rotation.h"
+#include "scene/surface_mesh.h"
 
 namespace csgray {
 
@@ -47,6 +48,18 @@ Surface Surface::rectangle(double width, double height, bool center) {
 
 Surface Surface::square(double size, bool center) {
   return guarded([&] { return wrap(detail::rectangleOf("square", size, size, center)); });
+}
+
+Surface Surface::mesh(const std::vector<Vec3>& points,
+                      const std::vector<std::vector<std::int64_t>>& faces,
+                      const std::vector<Vec3>& normals, bool smooth) {
+  return guarded([&] {
+    std::vector<detail::dvec3> madePoints, madeNormals;
+    for (const Vec3& p : points) madePoints.push_back(toDetail(p));
+    for (const Vec3& n : normals) madeNormals.push_back(toDetail(n));
+    return wrap(
+        detail::meshSurfaceOf(std::move(madePoints), faces, std::move(madeNormals), smooth));
+  });
 }
 
 Surface Surface::translate(const Vec3& offset) const {

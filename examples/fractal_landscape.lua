@@ -1,13 +1,16 @@
--- fractal_landscape.lua: a mountain made by midpoint displacement on
--- triangles, with a lake: a still, transparent plane at the water line (z = −10).
--- The same seed gives the same mountain; change it for another. The lake
--- is an open surface, so an export holds the mountain alone.
+-- fractal_landscape.lua: a landscape made by midpoint displacement on
+-- triangles, over a lake: the mountain is an open surface
+-- (fractal_mountain{..., surface=true}: no block under it, shaded smooth),
+-- the lake a still, transparent plane at the water line (z = −10) through
+-- which the valleys under water show. The same seed gives the same
+-- landscape; change it for another. Nothing here is a solid, so there is
+-- nothing to export.
 --   csgray render examples/fractal_landscape.lua -o landscape.png
 local seed = seed or 7
-local mountain = fractal_mountain{size = 100, levels = 6, roughness = 0.55, seed = seed}
+local land = fractal_mountain{size = 100, levels = 6, roughness = 0.55, seed = seed, surface = true}
 return scene{
   objects = {
-    mountain:material{color = "olivedrab", diffuse = 0.85},
+    land:material{color = "olivedrab", diffuse = 0.85},
     plane{normal = {0, 0, 1}, offset = -10}
       :material{color = "royalblue", transparency = 0.4, reflection = 0.3},
   },

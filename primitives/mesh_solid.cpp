@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "primitives/triangle_crossing.h"
 #include "tessellation/mesh_edges.h"
 #include "tessellation/polygon_triangulation.h"
 
@@ -33,36 +34,6 @@ struct MeshSolid::Mesh {
 
 namespace {
 
-// Whether three points lie on one line, exactly: each component of the
-// cross product (b − a) × (c − a) is zero when its two products are equal.
-// In quadruple precision (113 bits) the differences of doubles of nearby
-// exponents and their products are exact, so a sliver that doubles would
-// round to no area at all (a float STL's, from an export) is told apart
-// from a face that truly has none.
-using Quad = __float128;
-std::array<Quad, 3> quadCross(const dvec3& a, const dvec3& b, const dvec3& c) {
-  const Quad ux = Quad(b.x) - Quad(a.x), uy = Quad(b.y) - Quad(a.y), uz = Quad(b.z) - Quad(a.z);
-  const Quad vx = Quad(c.x) - Quad(a.x), vy = Quad(c.y) - Quad(a.y), vz = Quad(c.z) - Quad(a.z);
-  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-}
-bool collinear(const dvec3& a, const dvec3& b, const dvec3& c) {
-  const std::array<Quad, 3> n = quadCross(a, b, c);
-  return n[0] == 0 && n[1] == 0 && n[2] == 0;
-}
-
-// The unit normal of a triangle that is not collinear; in quadruple
-// precision where doubles round its cross product to nothing.
-dvec3 unitNormal(const dvec3& a, const dvec3& b, const dvec3& c) {
-  const dvec3 n = glm::cross(b - a, c - a);
-  if (n != dvec3(0.0)) return glm::normalize(n);
-  const std::array<Quad, 3> q = quadCross(a, b, c);
-  Quad largest = 0;
-  for (Quad x : q) largest = std::max(largest, x < 0 ? -x : x);
-  if (largest == 0) return n;
-  return glm::normalize(
-      dvec3(double(q[0] / largest), double(q[1] / largest), double(q[2] / largest)));
-}
-
 [[noreturn]] void refuse(const std::string& message) {
   throw std::invalid_argument("polyhedron: " + message);
 }
@@ -71,133 +42,10 @@ std::string pointList(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   return std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c);
 }
 
-// ---- Exact sign of a·b − c·d --------------------------------------------------
-//
-// Error-free transformations (Shewchuk, "Adaptive Precision Floating-Point
-// Arithmetic and Fast Robust Geometric Predicates", 1997): a product is
-// p + e exactly with e = fma(a, b, −p), and Two_Two_Diff turns
-// (p₁ + e₁) − (p₂ + e₂) into a non-overlapping expansion whose largest
-// non-zero component has the sign of the exact value.
-
-void twoSum(double a, double b, double& x, double& y) {
-  x = a + b;
-  double bv = x - a, av = x - bv;
-  y = (a - av) + (b - bv);
-}
-
-void twoDiff(double a, double b, double& x, double& y) {
-  x = a - b;
-  double bv = a - x, av = x + bv;
-  y = (a - av) + (bv - b);
-}
-
-// (a1 + a0) − b = x2 + x1 + x0.
-void twoOneDiff(double a1, double a0, double b, double& x2, double& x1, double& x0) {
-  double i;
-  twoDiff(a0, b, i, x0);
-  twoSum(a1, i, x2, x1);
-}
-
-int signOf(double v) { return (v > 0.0) - (v < 0.0); }
-
-int exactSignOfDifference(double a, double b, double c, double d) {
-  double p = a * b, pe = std::fma(a, b, -p);
-  double q = c * d, qe = std::fma(c, d, -q);
-  double x[4], j, z;
-  twoOneDiff(p, pe, qe, j, z, x[0]);
-  twoOneDiff(j, z, q, x[3], x[2], x[1]);
-  for (int i = 3; i >= 0; --i)
-    if (x[i] != 0.0) return signOf(x[i]);
-  return 0;
-}
-
-// ---- The ray's frame (Woop, Benthin and Wald 2013, section 3) ------------------
-//
-// The ray becomes the z axis through the origin by a translation, a
-// permutation of the axes (z the largest direction component) and a shear;
-// a vertex then projects to (x, y) across the ray and z along it, in units
-// of the ray parameter. Every vertex is transformed the same way for every
-// triangle it belongs to, and the 2D edge functions of the transformed
-// vertices are evaluated with exact signs, so two triangles sharing an edge
-// always agree on the side of it the ray passes (Woop et al. get exactness
-// by evaluating float edge functions in double; in double precision the
-// sign is made exact with the expansion above).
-//
-// A ray exactly on an edge or vertex is broken to one side by symbolic
-// perturbation (Edelsbrunner and Mücke, "Simulation of Simplicity", 1990):
-// the ray is taken to be moved by (ε, ε²) across itself, the same for all
-// triangles, so it crosses exactly as many of them as a ray close by would:
-// one where the surface goes through, none or two (one in, one out) where
-// it grazes a silhouette.
-class RayFrame {
- public:
-  explicit RayFrame(const Ray& ray) : origin_(ray.origin) {
-    dvec3 d = glm::abs(ray.dir);
-    kz_ = d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
-    kx_ = (kz_ + 1) % 3;
-    ky_ = (kx_ + 1) % 3;
-    // Keep the winding of projected triangles when looking down −z.
-    if (ray.dir[kz_] < 0.0) std::swap(kx_, ky_);
-    sx_ = ray.dir[kx_] / ray.dir[kz_];
-    sy_ = ray.dir[ky_] / ray.dir[kz_];
-    sz_ = 1.0 / ray.dir[kz_];
-  }
-
-  dvec3 project(const dvec3& p) const {
-    dvec3 q = p - origin_;
-    return {q[kx_] - sx_ * q[kz_], q[ky_] - sy_ * q[kz_], sz_ * q[kz_]};
-  }
-
-  // +1 if the ray enters the solid through triangle abc (counter-clockwise
-  // seen from outside), −1 if it leaves, 0 if it misses; t where it meets.
-  int cross(const dvec3& a, const dvec3& b, const dvec3& c, double& t) const {
-    dvec3 A = project(a), B = project(b), C = project(c);
-    int s = edgeSign(B, C);
-    if (s == 0 || edgeSign(C, A) != s || edgeSign(A, B) != s) return 0;
-    // U + V + W = −2·(projected area), which is positive for a triangle
-    // seen from its back, that is where the ray enters.
-    double u = C.x * B.y - C.y * B.x, v = A.x * C.y - A.y * C.x, w = B.x * A.y - B.y * A.x;
-    double det = u + v + w;
-    double lo = std::min({A.z, B.z, C.z}), hi = std::max({A.z, B.z, C.z});
-    // Barycentric depth; a triangle almost edge-on may round det to 0 (or
-    // its barycentrics out of range), but any depth within it will do there.
-    t = det != 0.0 ? std::clamp((u * A.z + v * B.z + w * C.z) / det, lo, hi) : (lo + hi) / 2.0;
-    return s;
-  }
-
- private:
-  // The sign of the edge function e(P, Q) = Q.x·P.y − Q.y·P.x at the ray
-  // (the origin): exact, and never 0 for an edge that does not project to a
-  // point. At the ray moved by δ = (ε, ε²), e grows by
-  // (Q.y − P.y)·ε + (P.x − Q.x)·ε², which decides a tie. e(Q, P) = −e(P, Q)
-  // in every case, which is what makes shared edges agree.
-  static int edgeSign(const dvec3& P, const dvec3& Q) {
-    double l = Q.x * P.y, r = Q.y * P.x, e = l - r;
-    // Each product and the difference are rounded once: far above this
-    // bound the computed sign is the exact one.
-    if (std::abs(e) > 1e-15 * (std::abs(l) + std::abs(r))) return signOf(e);
-    if (int s = exactSignOfDifference(Q.x, P.y, Q.y, P.x)) return s;
-    if (Q.y != P.y) return Q.y > P.y ? 1 : -1;
-    return signOf(P.x - Q.x);
-  }
-
-  dvec3 origin_;
-  int kx_, ky_, kz_;
-  double sx_, sy_, sz_;
-};
-
 // A direction for the parity rays of contains(), chosen away from the axes
 // and the usual diagonals so that they rarely meet an edge exactly (the
 // perturbation makes them correct anyway).
 const dvec3 kProbeDirection = glm::normalize(dvec3(0.2718281828, 0.3141592654, 0.8660254038));
-
-// A ray the crossing test can take: finite, with a direction.
-bool usable(const Ray& ray) {
-  auto finite = [](const dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-  };
-  return finite(ray.origin) && finite(ray.dir) && ray.dir != dvec3(0.0);
-}
 
 struct Crossing {
   double t;
@@ -285,14 +133,8 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 
 template <class Visit>
 void MeshSolid::Mesh::forEachCrossing(const Ray& ray, Visit&& visit) const {
-  RayFrame frame(ray);
   double tMax = ray.tMax;
-  bvh.traverse(ray, tMax, [&](std::uint32_t i, double) {
-    const Triangle& tri = triangles[i];
-    double t;
-    if (int s = frame.cross(points[tri[0]], points[tri[1]], points[tri[2]], t)) visit(i, t, s);
-    return true;
-  });
+  forEachTriangleCrossing(bvh, points, triangles, ray, tMax, visit);
 }
 
 MeshSolid::MeshSolid(const std::vector<dvec3>& points,
@@ -345,7 +187,6 @@ MeshSolid::MeshSolid(const std::vector<dvec3>& points,
   std::vector<std::vector<std::uint32_t>>().swap(polygons);
   for (const Triangle& tri : mesh->triangles)
     for (std::uint32_t v : tri) mesh->bounds.include(mesh->points[v]);
-  double extent = std::max({mesh->bounds.size().x, mesh->bounds.size().y, mesh->bounds.size().z});
 
   for (std::uint32_t i = 0; i < mesh->triangles.size(); ++i) {
     const Triangle& tri = mesh->triangles[i];
@@ -414,18 +255,8 @@ MeshSolid::MeshSolid(const std::vector<dvec3>& points,
              " enclose no volume (a flat or doubled surface)");
   mesh->volume = volume;
 
-  // ---- The BVH over the triangles' boxes, padded so that the rounding of
-  // the box tests never loses a triangle that a ray meets on its edge
-  // (good for ray origins within about a million mesh sizes).
-  double scale = std::max({extent, glm::length(mesh->bounds.lo), glm::length(mesh->bounds.hi)});
-  dvec3 pad(1e-9 * scale);
-  std::vector<Bounds> boxes(mesh->triangles.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    for (std::uint32_t v : mesh->triangles[i]) boxes[i].include(mesh->points[v]);
-    boxes[i].lo -= pad;
-    boxes[i].hi += pad;
-  }
-  mesh->bvh = Bvh(boxes);
+  // ---- The BVH over the triangles (triangle_crossing.h).
+  mesh->bvh = triangleBvh(mesh->points, mesh->triangles, mesh->bounds);
 
   // ---- A shell that faces inward bounds a cavity, and must lie inside
   // another shell: its points must have a positive winding number with
@@ -461,7 +292,7 @@ std::size_t MeshSolid::memoryBytes() const {
 
 void MeshSolid::objectSpans(const Ray& ray, SpanList& out) const {
   // (A NaN would also break the sort below.)
-  if (!usable(ray)) return;
+  if (!usableRay(ray)) return;
   // Spans need only be exact within the window (solid.h). A line leaves
   // the closed mesh as often as it enters it, so the winding number at
   // tMin is minus the sum of the crossings from tMin on: the line before
@@ -526,7 +357,7 @@ bool MeshSolid::objectContains(const dvec3& p) const {
 dvec3 MeshSolid::objectNormal(const dvec3&, int face) const {
   const Triangle& tri = mesh_->triangles[std::size_t(face)];
   const dvec3 &a = mesh_->points[tri[0]], &b = mesh_->points[tri[1]], &c = mesh_->points[tri[2]];
-  return unitNormal(a, b, c);
+  return triangleNormal(a, b, c);
 }
 
 Bounds MeshSolid::objectBounds() const { return mesh_->bounds; }

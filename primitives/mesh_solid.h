@@ -13,11 +13,9 @@
 // faces the other way from the whole (inside a larger one) is a cavity.
 //
 // Rays meet the triangles through a BVH over their boxes, with the
-// watertight test of Woop, Benthin and Wald ("Watertight Ray/Triangle
-// Intersection", JCGT 2(1), 2013), its edge functions evaluated with exact
-// signs and ties broken by a fixed perturbation of the ray, so a ray through
-// an edge or a vertex crosses the surface exactly once: spans are neither
-// lost nor doubled there.
+// watertight test of triangle_crossing.h, so a ray through an edge or a
+// vertex crosses the surface exactly once: spans are neither lost nor
+// doubled there.
 #pragma once
 
 #include <array>

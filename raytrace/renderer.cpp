@@ -96,7 +96,7 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
 // What a ray met first, as the edge lines compare it.
 SurfaceSample surfaceSample(const SurfaceHit& hit, const dvec3& point, const dvec3& dir) {
   SurfaceSample sample;
-  dvec3 n = hit.surface ? hit.surface->normal()
+  dvec3 n = hit.surface ? hit.surface->normalAt(point, hit.face)
                         : hit.boundary.primitive->normal(point, hit.boundary.face);
   if (glm::dot(n, dir) > 0.0) n = -n;
   sample.surface = hit.surface ? static_cast<const void*>(hit.surface)
@@ -207,8 +207,9 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
   bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
     if (i >= solids) {
       const Surface& surface = *scene_.surfaces[i - solids];
-      std::optional<double> t = surface.hit(ray);
-      if (t && *t < tMax) best = SurfaceHit{*t, Boundary{}, &surface, -1, true}, tMax = *t;
+      int face = 0;
+      std::optional<double> t = surface.hit(ray, &face);
+      if (t && *t < tMax) best = SurfaceHit{*t, Boundary{}, &surface, -1, true, face}, tMax = *t;
       return true;
     }
     // The first boundary beyond tMin: an entry, or an exit when the ray
@@ -422,9 +423,13 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   if (hit->surface) {
     const Surface& s = *hit->surface;
     sp.material = &materialOf(s.material());
-    sp.normal = s.normal();
+    sp.normal = s.normalAt(sp.point, hit->face);
+    // A smooth mesh's normal leans away from its triangle's, which is the
+    // one that tells the side the ray comes from (both sides are shaded).
+    if (glm::dot(s.faceNormal(hit->face), ray.dir) > 0.0) sp.normal = -sp.normal;
     sp.color = sp.material->texture
-                   ? sp.material->texture->colorAt(s.texturePoint(sp.point), s.textureNormal())
+                   ? sp.material->texture->colorAt(s.texturePoint(sp.point),
+                                                   s.textureNormal(sp.point, hit->face))
                    : sp.material->color;
   } else {
     const Boundary& b = hit->boundary;
@@ -435,8 +440,8 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
                    ? sp.material->texture->colorAt(b.primitive->texturePoint(sp.point),
                                                    b.primitive->textureNormal(sp.point, b.face))
                    : sp.material->color;
+    if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
   }
-  if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
   const Material& m = *sp.material;
 
   // The media beyond the surface: the span list says whether the ray
@@ -628,7 +633,7 @@ RenderResult Renderer::renderAll() const {
                        dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
     if (!hit) return;
     dvec3 p = ray.at(hit->t);
-    dvec3 n = hit->surface ? hit->surface->normal()
+    dvec3 n = hit->surface ? hit->surface->normalAt(p, hit->face)
                            : hit->boundary.primitive->normal(p, hit->boundary.face);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);

@@ -98,6 +98,7 @@ struct SurfaceHit {
   const Surface* surface = nullptr;  // an open surface's
   int object = -1;                   // index of the solid in scene.objects
   bool entering = true;              // the ray enters the solid here (a span's start)
+  int face = 0;                      // an open surface's face (a mesh's triangle)
 };
 
 // The media a ray is in: the solids it has entered, innermost (last

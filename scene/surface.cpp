@@ -11,6 +11,7 @@
 
 #include "primitives/check.h"
 #include "profile/shapes.h"
+#include "scene/surface_mesh.h"
 #include "scene/value_checks.h"
 
 namespace csgray::detail {
@@ -94,6 +95,12 @@ Surface::Surface(RegionPtr region, const Affine& worldFromObject, std::string ki
   update();
 }
 
+Surface::Surface(std::shared_ptr<const SurfaceMesh> mesh, const Affine& worldFromObject,
+                 std::string kind)
+    : shape_(Shape::Mesh), mesh_(std::move(mesh)), frame_(worldFromObject), kind_(std::move(kind)) {
+  update();
+}
+
 SurfacePtr Surface::plane(const dvec3& point, const dvec3& normal) {
   requireFinite("plane", "point", point);
   dvec3 n = unitNormal("plane", normal);
@@ -138,7 +145,7 @@ SurfacePtr Surface::parallelogram(const dvec3& origin, const dvec3& u, const dve
                                    kind.empty() ? std::string("parallelogram") : kind);
 }
 
-std::optional<double> Surface::hit(const Ray& ray) const {
+std::optional<double> Surface::planeHit(const Ray& ray) const {
   // In the object frame the supporting plane is z = 0 with n = (0, 0, 1) and
   // t = 0, so λ = −n·w / n·r (docs/theory.md) is −o.z / d.z. The mapped
   // ray keeps its parameter, so λ is the world ray's parameter too.
@@ -168,9 +175,30 @@ std::optional<double> Surface::hit(const Ray& ray) const {
     case Shape::Region:
       inside = std::isfinite(x) && std::isfinite(y) && region_->contains(dvec2(x, y));
       break;
+    case Shape::Mesh:  // meshHit's
+      break;
   }
   if (!inside) return std::nullopt;
   return t;
+}
+
+std::optional<double> Surface::meshHit(const Ray& ray, int* face) const {
+  // The mapped ray keeps its parameter, as for the planar shapes.
+  std::uint32_t triangle = 0;
+  std::optional<double> t =
+      mesh_->hit(frame_.isIdentity() ? ray : frame_.rayToObject(ray), triangle);
+  if (face) *face = int(triangle);
+  return t;
+}
+
+dvec3 Surface::faceNormal(int face) const {
+  if (shape_ != Shape::Mesh) return normal_;
+  return frame_.normalToWorld(mesh_->faceNormal(std::uint32_t(face)));
+}
+
+dvec3 Surface::meshNormalAt(const dvec3& worldPoint, int face) const {
+  return frame_.normalToWorld(
+      mesh_->normalAt(frame_.pointToObject(worldPoint), std::uint32_t(face)));
 }
 
 dvec3 Surface::texturePoint(const dvec3& worldPoint) const {
@@ -178,6 +206,12 @@ dvec3 Surface::texturePoint(const dvec3& worldPoint) const {
 }
 
 dvec3 Surface::textureNormal() const { return textureFromObject_.normalToWorld(dvec3(0, 0, 1)); }
+
+dvec3 Surface::textureNormal(const dvec3& worldPoint, int face) const {
+  if (shape_ != Shape::Mesh) return textureNormal();
+  return textureFromObject_.normalToWorld(
+      mesh_->normalAt(frame_.pointToObject(worldPoint), std::uint32_t(face)));
+}
 
 SurfacePtr Surface::transformed(const Affine& worldFromObject) const {
   auto copy = std::make_shared<Surface>(*this);
@@ -215,6 +249,12 @@ void Surface::update() {
     for (int i = 0; i < 3; ++i) half[i] = std::sqrt(m[0][i] * m[0][i] + m[1][i] * m[1][i]);
     bounds_.include(c - half);
     bounds_.include(c + half);
+  } else if (shape_ == Shape::Mesh) {
+    // The box of the eight corners of the mesh's box, placed.
+    const Bounds& box = mesh_->bounds();
+    for (int i = 0; i < 8; ++i)
+      bounds_.include(frame_.pointToWorld(dvec3(
+          i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y, i & 4 ? box.hi.z : box.lo.z)));
   } else if (shape_ == Shape::Region) {
     // The corners of the region's box in its plane bound its image.
     const ProfileBounds& box = region_->bounds();

@@ -1,12 +1,14 @@
-// Planar surfaces that are not solids (docs/theory.md, "Planar surfaces"): an infinite
+// Surfaces that are not solids (docs/theory.md, "Planar surfaces"): an infinite
 // plane, a disc, a triangle and a parallelogram (a rectangle and a square
-// are parallelograms with right angles). They enclose nothing, so they are
-// scene objects with a material and never operands of a boolean.
+// are parallelograms with right angles), and an open triangle mesh
+// (scene/surface_mesh.h). They enclose nothing, so they are scene objects
+// with a material and never operands of a boolean.
 //
 // Each shape is the unit shape in the plane z = 0 of its own frame, placed
 // by an affine frame: the frame's x and y columns span the supporting plane,
 // so the object-space (x, y) of a hit are the linear factors (ϑ, φ) of the
-// intersection test.
+// intersection test. A mesh's frame places it; its triangles tell their
+// own normals.
 #pragma once
 
 #include <memory>
@@ -21,6 +23,7 @@
 namespace csgray::detail {
 
 class Surface;
+class SurfaceMesh;
 using SurfacePtr = std::shared_ptr<const Surface>;
 
 class Surface : public std::enable_shared_from_this<Surface> {
@@ -31,12 +34,15 @@ class Surface : public std::enable_shared_from_this<Surface> {
     Triangle,       // ϑ, φ ≥ 0 and ϑ + φ ≤ 1
     Parallelogram,  // ϑ, φ ∈ [0, 1]
     Region,         // (ϑ, φ) in a 2D region (scene/region_surface.h)
+    Mesh,           // an open triangle mesh, not planar (scene/surface_mesh.h)
   };
 
   // worldFromObject maps the unit shape into place; it must be invertible.
   Surface(Shape shape, const Affine& worldFromObject, std::string kind);
   // A 2D region in the plane z = 0 of its frame (scene/region_surface.h).
   Surface(RegionPtr region, const Affine& worldFromObject, std::string kind);
+  // An open triangle mesh, placed by its frame.
+  Surface(std::shared_ptr<const SurfaceMesh> mesh, const Affine& worldFromObject, std::string kind);
 
   // A plane through point with the given normal.
   static SurfacePtr plane(const dvec3& point, const dvec3& normal);
@@ -50,30 +56,51 @@ class Surface : public std::enable_shared_from_this<Surface> {
                                   const std::string& kind = "parallelogram");
 
   // The ray parameter λ of the hit with tMin < λ < tMax, if any
-  // (λ = −n·w / n·r; a ray parallel to the plane misses).
-  std::optional<double> hit(const Ray& ray) const;
-  // Unit normal in world space (the frame's z axis through the normal
-  // matrix); the renderer turns it towards the viewer.
+  // (λ = −n·w / n·r; a ray parallel to the plane misses). face, if given,
+  // is set to the face hit: a mesh's triangle, 0 on a planar shape.
+  std::optional<double> hit(const Ray& ray, int* face = nullptr) const {
+    if (shape_ == Shape::Mesh) return meshHit(ray, face);
+    if (face) *face = 0;
+    return planeHit(ray);
+  }
+  // A planar shape's unit normal in world space (the frame's z axis
+  // through the normal matrix).
   const dvec3& normal() const { return normal_; }
+  // The unit normal that shades a point on face `face` (hit's): a planar
+  // shape's normal(); on a mesh, interpolated from its points' normals
+  // when smooth. It lies on the side of faceNormal(face), which tells
+  // which side of the surface a ray is on; the renderer turns both towards
+  // the viewer.
+  dvec3 normalAt(const dvec3& worldPoint, int face) const {
+    return shape_ == Shape::Mesh ? meshNormalAt(worldPoint, face) : normal_;
+  }
+  dvec3 faceNormal(int face) const;
   const Bounds& bounds() const { return bounds_; }
   Shape shape() const { return shape_; }
   const std::string& kind() const { return kind_; }
   const Affine& frame() const { return frame_; }
-  const RegionPtr& region() const { return region_; }  // a Region's, else null
+  const RegionPtr& region() const { return region_; }                       // a Region's, else null
+  const std::shared_ptr<const SurfaceMesh>& mesh() const { return mesh_; }  // a Mesh's, else null
 
   const MaterialPtr& material() const { return material_; }
   // Texture space: the world as it was when the material was given.
   dvec3 texturePoint(const dvec3& worldPoint) const;
   dvec3 textureNormal() const;
+  // At a point on face `face` (hit's), which a mesh needs.
+  dvec3 textureNormal(const dvec3& worldPoint, int face) const;
 
   SurfacePtr transformed(const Affine& worldFromObject) const;
   SurfacePtr withMaterial(const MaterialPtr& material) const;
 
  private:
   void update();
+  std::optional<double> planeHit(const Ray& ray) const;
+  std::optional<double> meshHit(const Ray& ray, int* face) const;
+  dvec3 meshNormalAt(const dvec3& worldPoint, int face) const;
 
   Shape shape_;
   RegionPtr region_;
+  std::shared_ptr<const SurfaceMesh> mesh_;
   Affine frame_;
   std::string kind_;
   MaterialPtr material_;

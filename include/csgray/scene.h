@@ -4,6 +4,7 @@
 // csgray::Error (InvalidArgument) with the same message.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,9 +21,10 @@ class Surface;
 struct Access;
 }  // namespace detail
 
-// A planar surface that is not a solid: it encloses no volume, so it takes
-// no part in booleans and is not exported, but it renders (a floor, a
-// wall). An immutable value like Solid.
+// A surface that is not a solid: planar (a floor, a wall) or an open mesh
+// of triangles (a graph's sheet, a landscape). It encloses no volume, so
+// it takes no part in booleans and is not exported, but it renders, seen
+// from both sides. An immutable value like Solid.
 class CSGRAY_API Surface {
  public:
   // The infinite plane normal · p = offset.
@@ -35,6 +37,13 @@ class CSGRAY_API Surface {
   // In the xy plane from the origin (centred on it with center), facing +z.
   static Surface rectangle(double width, double height, bool center = false);
   static Surface square(double size, bool center = false);
+  // An open surface of triangles: faces of three point indices (from 0,
+  // in either order), shaded smooth with one normal per point (none, or a
+  // zero one: averaged from the triangles around the point), or flat with
+  // smooth = false. Triangles with no area are left out.
+  static Surface mesh(const std::vector<Vec3>& points,
+                      const std::vector<std::vector<std::int64_t>>& faces,
+                      const std::vector<Vec3>& normals = {}, bool smooth = true);
 
   Surface translate(const Vec3& offset) const;
   Surface rotate(const Vec3& degrees) const;

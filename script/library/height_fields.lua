@@ -1,8 +1,8 @@
 -- The script library, part 1: graphs of functions of two variables,
 -- parametric surfaces and fractal mountains, as closed triangle meshes
--- (polyhedron{}). Written in the script language and run in the script's
--- sandbox, so a user's function is charged to the script's budget like
--- any other code. Errors name the line of the script that called the
+-- (polyhedron{}) or as open surfaces (mesh_surface{}). Written in the
+-- script language and run in the script's sandbox, so a user's function
+-- is charged to the script's budget like any other code. Errors name the line of the script that called the
 -- library.
 
 local function finite(x)
@@ -44,15 +44,61 @@ local function functionOverRanges(name, args, usage, a, b)
   return args.f, a0, a1, b0, b1
 end
 
--- polyhedron{} called for a library function: its error, if any, comes
--- back as the library function's own, at the script's line.
-local function solidOf(name, points, faces)
-  local ok, result = pcall(polyhedron, {points = points, faces = faces})
+-- polyhedron{} or mesh_surface{} (`maker`, named `makerName`) called for
+-- a library function: its error, if any, comes back as the library
+-- function's own, at the script's line.
+local function made(name, maker, makerName, args)
+  local ok, result = pcall(maker, args)
   if not ok then
-    local message = tostring(result):gsub("^[^:]*:%d+: ", ""):gsub("^polyhedron: ", "")
-    return nil, message
+    local message = tostring(result):gsub("^[^:]*:%d+: ", ""):gsub("^" .. makerName .. ": ", "")
+    refuse(name, message)
   end
   return result
+end
+
+local function solidOf(name, points, faces)
+  return made(name, polyhedron, "polyhedron", {points = points, faces = faces})
+end
+
+-- The open surface of the triangles (mesh_surface{}), with a normal per
+-- point (or none: averaged from the triangles), smooth unless `smooth` is
+-- false.
+local function surfaceOf(name, points, faces, normals, smooth)
+  return made(name, mesh_surface, "mesh_surface",
+              {points = points, faces = faces, normals = normals, smooth = smooth})
+end
+
+-- The options that choose a surface rather than a solid: surface=true
+-- (then no base) and smooth=false (flat triangles). Returns surface, smooth.
+local function surfaceOptions(name, args)
+  if args.surface ~= nil and type(args.surface) ~= "boolean" then
+    refuse(name, "surface must be true or false")
+  end
+  if args.smooth ~= nil and type(args.smooth) ~= "boolean" then
+    refuse(name, "smooth must be true or false")
+  end
+  if args.surface and args.base ~= nil then
+    refuse(name, "a surface (surface=true) has no base: give one or the other")
+  end
+  if args.smooth ~= nil and not args.surface then
+    refuse(name, "smooth is for a surface (surface=true); a solid's faces are flat")
+  end
+  return args.surface == true, args.smooth ~= false
+end
+
+-- The derivative of g (a function of one number giving a number or a
+-- list of numbers) at t in [t0, t1], by central differences of step h
+-- (h of about the cube root of the rounding error of a double times the
+-- range balances the two errors: Press et al., "Numerical Recipes",
+-- 3rd ed., 5.7), one-sided at the ends. Returns a list of numbers.
+local function derivative(g, t, t0, t1)
+  local h = 1e-5 * (t1 - t0)
+  local a, b = math.max(t0, t - h), math.min(t1, t + h)
+  local ga, gb = g(a), g(b)
+  if type(ga) == "number" then ga, gb = {ga}, {gb} end
+  local d = {}
+  for k = 1, #ga do d[k] = (gb[k] - ga[k]) / (b - a) end
+  return d
 end
 
 -- The closed solid under a height field: the top surface (triangles over
@@ -114,17 +160,17 @@ local function solidUnder(name, what, points, triangles, base, lowest)
     faces[#faces + 1] = {middle, below[w], below[v]}
     v = w
   until v == first
-  local solid, why = solidOf(name, all, faces)
-  if not solid then refuse(name, why) end
-  return solid
+  return solidOf(name, all, faces)
 end
 
 -- graph{f=function(x, y) return z end, x={x0, x1}, y={y0, y1},
---   resolution=16, tolerance=0.01, base=}
+--   resolution=16, tolerance=0.01, base=, surface=false, smooth=true}
 -- The solid under z = f(x, y) over the rectangle, down to `base` (by
 -- default a twentieth of the rectangle's larger side below the lowest
--- point). The top starts as a grid of resolution × resolution cells, each
--- cut into two triangles along a diagonal, and is refined where f bends
+-- point); with surface=true the graph's sheet alone, an open surface
+-- whose normals come from f's derivatives. The top starts as a grid of
+-- resolution × resolution cells, each cut into two triangles along a
+-- diagonal, and is refined where f bends
 -- away from the triangles: a triangle whose edge midpoints lie farther
 -- than `tolerance` from it (in z) is cut in two through the middle of its
 -- refinement edge, the newest-vertex bisection of Mitchell ("Adaptive
@@ -144,6 +190,7 @@ function graph(args)
     refuse(name, "tolerance must be a positive number (got " .. tostring(tolerance) .. ")")
   end
   if args.base ~= nil and not finite(args.base) then refuse(name, "base must be a number") end
+  local asSurface, smooth = surfaceOptions(name, args)
 
   local points = {}
   local problem = nil
@@ -253,18 +300,34 @@ function graph(args)
       top[#top + 1] = r
     end
   end
+  if asSurface then
+    -- The normal (−∂f/∂x, −∂f/∂y, 1) at each point.
+    local normals = {}
+    if smooth then
+      for i, p in ipairs(used) do
+        local x, y = p[1], p[2]
+        local fx = derivative(function(t) return height(t, y) end, x, x0, x1)[1]
+        local fy = derivative(function(t) return height(x, t) end, y, y0, y1)[1]
+        normals[i] = {-fx, -fy, 1}
+      end
+      if problem then refuse(name, problem) end
+    end
+    return surfaceOf(name, used, top, normals, smooth)
+  end
   local base = args.base or lowest - 0.05 * math.max(x1 - x0, y1 - y0)
   return solidUnder(name, "graph", used, top, base, lowest)
 end
 
 -- parametric{f=function(u, v) return {x, y, z} end, u={u0, u1}, v={v0, v1},
---   resolution={nu, nv}, closed_u=false, closed_v=false}
+--   resolution={nu, nv}, closed_u=false, closed_v=false, surface=false,
+--   smooth=true}
 -- The solid bounded by a parametric surface that closes up: a grid of
 -- nu × nv cells over the parameter rectangle, each cut into two
 -- triangles; with closed_u the cells at u1 join those at u0 (and likewise
 -- for v), and points that f puts in one place (the poles of a sphere) are
 -- one point. The surface must then be closed, or it is refused with the
--- place of an open edge.
+-- place of an open edge. With surface=true it is an open surface, closed
+-- or not (a Möbius strip, a helicoid), its normals ∂f/∂u × ∂f/∂v.
 function parametric(args)
   local name = "parametric"
   local f, u0, u1, v0, v1 = functionOverRanges(name, args,
@@ -278,18 +341,24 @@ function parametric(args)
     end
   end
   local closedU, closedV = args.closed_u == true, args.closed_v == true
+  local asSurface, smooth = surfaceOptions(name, args)
 
   -- The grid's points, one per place: a point f gives again (to 1e-9 of
   -- the surface's size) is the earlier one.
   local raw = {}
   local lo, hi = {math.huge, math.huge, math.huge}, {-math.huge, -math.huge, -math.huge}
+  -- f(u, v), or a refusal where it is not a point.
+  local function point(u, v)
+    local p = f(u, v)
+    if type(p) ~= "table" or not finite(p[1]) or not finite(p[2]) or not finite(p[3]) then
+      refuse(name, "f(" .. u .. ", " .. v .. ") must give {x, y, z}, three numbers")
+    end
+    return p
+  end
   for j = 0, nv do
     for i = 0, nu do
       local u, v = u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv
-      local p = f(u, v)
-      if type(p) ~= "table" or not finite(p[1]) or not finite(p[2]) or not finite(p[3]) then
-        refuse(name, "f(" .. u .. ", " .. v .. ") must give {x, y, z}, three numbers")
-      end
+      local p = point(u, v)
       raw[j * (nu + 1) + i] = {p[1], p[2], p[3]}
       for k = 1, 3 do
         lo[k], hi[k] = math.min(lo[k], p[k]), math.max(hi[k], p[k])
@@ -299,7 +368,7 @@ function parametric(args)
   local size = math.max(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
   if not (size > 0) then refuse(name, "f puts every point in one place") end
   local grain = 1e-9 * size
-  local points, index, at = {}, {}, {}
+  local points, index, at, param = {}, {}, {}, {}
   for j = 0, nv do
     for i = 0, nu do
       local g = j * (nu + 1) + i
@@ -313,6 +382,7 @@ function parametric(args)
                                   math.floor(p[2] / grain + 0.5), math.floor(p[3] / grain + 0.5))
         if not at[key] then
           points[#points + 1] = p
+          param[#points] = {u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv}
           at[key] = #points - 1
         end
         index[g] = at[key]
@@ -331,6 +401,30 @@ function parametric(args)
       add(a, c, d)
     end
   end
+  if asSurface then
+    -- The normal ∂f/∂u × ∂f/∂v at each point; where it vanishes (a pole,
+    -- where a whole edge of the grid is one point) it is left to the
+    -- triangles around the point.
+    local normals = {}
+    if smooth then
+      for i, uv in ipairs(param) do
+        local u, v = uv[1], uv[2]
+        local du = derivative(function(t) return point(t, v) end, u, u0, u1)
+        local dv = derivative(function(t) return point(u, t) end, v, v0, v1)
+        local n = {du[2] * dv[3] - du[3] * dv[2], du[3] * dv[1] - du[1] * dv[3],
+                   du[1] * dv[2] - du[2] * dv[1]}
+        local length = math.sqrt(n[1] * n[1] + n[2] * n[2] + n[3] * n[3])
+        if not finite(length) then
+          refuse(name, "f gave no finite derivative at (" .. u .. ", " .. v .. ")")
+        end
+        -- A billionth of the largest product: no direction to speak of.
+        local scale = math.sqrt((du[1] ^ 2 + du[2] ^ 2 + du[3] ^ 2) *
+                                (dv[1] ^ 2 + dv[2] ^ 2 + dv[3] ^ 2))
+        normals[i] = length > 1e-9 * scale and n or {0, 0, 0}
+      end
+    end
+    return surfaceOf(name, points, faces, normals, smooth)
+  end
   -- Closed: every edge has two faces that run along it the other way.
   local count = #points
   local runs = {}
@@ -348,13 +442,12 @@ function parametric(args)
         refuse(name, string.format(
             "the surface does not close up into a solid: the edge from (%g, %g, %g) to " ..
             "(%g, %g, %g) is not between two faces (closed_u and closed_v join the " ..
-            "parameter rectangle's opposite sides)", p[1], p[2], p[3], q[1], q[2], q[3]))
+            "parameter rectangle's opposite sides; surface=true makes an open surface)",
+            p[1], p[2], p[3], q[1], q[2], q[3]))
       end
     end
   end
-  local solid, why = solidOf(name, points, faces)
-  if not solid then refuse(name, why) end
-  return solid
+  return solidOf(name, points, faces)
 end
 
 -- A number in [-1, 1) from a seed and two whole numbers, the same on every
@@ -368,7 +461,8 @@ local function noise(seed, i, j)
   return ((h >> 11) * 2.0 ^ -53) * 2 - 1
 end
 
--- fractal_mountain{size=100, levels=6, roughness=0.5, seed=1, base=}
+-- fractal_mountain{size=100, levels=6, roughness=0.5, seed=1, base=,
+--   surface=false, smooth=true}
 -- A square of side `size` from the origin, its height made by midpoint
 -- displacement on triangles (Fournier, Fussell and Carpenter, "Computer
 -- rendering of stochastic models", CACM 25(6), 1982): the square cut into
@@ -376,7 +470,8 @@ end
 -- times, each new midpoint raised or lowered from its edge's mean height
 -- by a random amount. The first level's amounts are up to a quarter of
 -- `size`; each further level's are `roughness` times the last's. The
--- same seed gives the same mountain. A solid down to `base`.
+-- same seed gives the same mountain. A solid down to `base`, or with
+-- surface=true the landscape alone, an open surface.
 function fractal_mountain(args)
   local name = "fractal_mountain"
   args = args or {}
@@ -392,6 +487,7 @@ function fractal_mountain(args)
   end
   if math.type(seed) ~= "integer" then refuse(name, "seed must be a whole number") end
   if args.base ~= nil and not finite(args.base) then refuse(name, "base must be a number") end
+  local asSurface, smooth = surfaceOptions(name, args)
 
   local n = 1 << levels
   local z = {}
@@ -435,6 +531,7 @@ function fractal_mountain(args)
       triangles[#triangles + 1] = {a, c, d}
     end
   end
+  if asSurface then return surfaceOf(name, points, triangles, nil, smooth) end
   local base = args.base or lowest - 0.05 * size
   return solidUnder(name, "mountain", points, triangles, base, lowest)
 end

@@ -197,6 +197,10 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
        [] {
          csgray::Surface::plane({0, 0, 0});
        }},
+      {"return mesh_surface{points={{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, faces={{0, 1, 3}}}",
+       [] {
+         csgray::Surface::mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 3}});
+       }},
   };
   for (const Case& c : cases) {
     auto [code, message] = errorOf(c.call);
@@ -302,6 +306,20 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   EXPECT_EQ(copy.part().kind(), "sphere");
   EXPECT_EQ(scene.part().kind(), "union");
   EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);
+}
+
+TEST(ApiScene, AMeshSurfaceIsASurface) {
+  // Two triangles of the unit square at z = 1, moved up by 2: the sheet
+  // renders as the script's mesh_surface{} does, and is no part.
+  const csgray::Surface sheet =
+      csgray::Surface::mesh({{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {{0, 1, 2}, {0, 2, 3}})
+          .translate({0, 0, 2});
+  EXPECT_EQ(sheet.kind(), "mesh surface");
+  EXPECT_NEAR(sheet.bounds().lo.z, 3.0, 1e-6);
+  EXPECT_NEAR(sheet.bounds().hi.x, 1.0, 1e-6);
+  csgray::Scene scene;
+  scene.add(sheet);
+  EXPECT_EQ(errorOf([&] { scene.part(); }).first, ErrorCode::InvalidArgument);
 }
 
 TEST(ApiExport, ASphereIsClosedAndWithinTheTolerance) {
