@@ -23,7 +23,7 @@ class Boolean : public Solid {
   // Limits that keep rays and destructors off the end of the stack, and
   // trees whose shared subtrees multiply out within reach.
   static constexpr int kMaxDepth = 1000;
-  static constexpr std::size_t kMaxPrimitives = 1'000'000;
+  static constexpr std::size_t kMaxPrimitives = 2'000'000;
   // Nodes with more operands than this keep a BVH over them.
   static constexpr std::size_t kBvhOperands = 4;
 
@@ -47,6 +47,7 @@ class Boolean : public Solid {
   std::span<const SolidPtr> children() const override { return operands_; }
   std::string kind() const override;
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+  SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;
   void prepare() const override;
 
  private:
