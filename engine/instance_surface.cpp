@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "engine/boolean.h"
 #include "engine/instance.h"
 #include "engine/primitive.h"
 
@@ -41,6 +42,20 @@ class UseSearch {
       const bool done = visit(*instance->child(), instance->rayToChild(ray));
       // A better use below this instance: its normal into this frame.
       if (distance_ < before) best_.normal = instance->frame().normalToWorld(best_.normal);
+      return done;
+    }
+    if (auto* boolean = dynamic_cast<const Boolean*>(&node)) {
+      // The operands whose boxes the ray meets about b.t, through the
+      // node's BVH: a wide union is not searched operand by operand.
+      Ray near = ray;
+      const double slack = 1e-9 * (1.0 + std::abs(b_.t));
+      near.tMin = b_.t - slack;
+      near.tMax = b_.t + slack;
+      bool done = false;
+      boolean->forEachOperandHitBy(near, [&](const Solid& operand) {
+        done = visit(operand, ray);
+        return !done;
+      });
       return done;
     }
     for (const SolidPtr& child : node.children())

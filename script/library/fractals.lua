@@ -55,9 +55,9 @@ end
 -- circumradius size/2 (as tetrahedron{r=}) replaced, level times over, by
 -- the four of half its size at its corners, which touch at their corners.
 -- Its volume is (1/2)^level of the first's. Built from the smallest up:
--- each level is four moved uses of the level below, which a transform
--- shares rather than copies, so the part holds level + 1 distinct pieces
--- however many tetrahedra it shows.
+-- above level 4, each level is four moved uses of the level below, which
+-- a transform shares rather than copies, so memory grows with the level,
+-- not with the 4^level tetrahedra it shows.
 function sierpinski_tetrahedron(args)
   local name = "sierpinski_tetrahedron"
   local args, level, size = compoundArguments(name, args, 4, 10, 100)
@@ -69,11 +69,26 @@ function sierpinski_tetrahedron(args)
     corners[#corners + 1] = {2 * math.sqrt(2) / 3 * math.cos(angle),
                              2 * math.sqrt(2) / 3 * math.sin(angle), -1 / 3}
   end
-  -- The level below, of circumradius r, goes to the corners of the
-  -- tetrahedron of circumradius 2r about the same centre: r times each.
-  local r = size / 2 / 2 ^ level
-  local part = tetrahedron{r = r}
-  for _ = 1, level do
+  -- The first levels as one flat union of moved tetrahedra (a ray finds
+  -- its few among them through the union's BVH, faster than through
+  -- nested uses); above them each level is four moved uses of the level
+  -- below, of circumradius r, at the corners of the tetrahedron of
+  -- circumradius 2r about the same centre: r times each.
+  local flat = math.min(level, 4)
+  local r = size / 2 / 2 ^ (level - flat)
+  local pieces = {}
+  local function place(x, y, z, s, depth)
+    if depth == 0 then
+      pieces[#pieces + 1] = tetrahedron{r = s}:translate(x, y, z)
+      return
+    end
+    for _, c in ipairs(corners) do
+      place(x + c[1] * s / 2, y + c[2] * s / 2, z + c[3] * s / 2, s / 2, depth - 1)
+    end
+  end
+  place(0, 0, 0, r, flat)
+  local part = #pieces == 1 and pieces[1] or union(table.unpack(pieces))
+  for _ = flat + 1, level do
     local uses = {}
     for _, c in ipairs(corners) do
       uses[#uses + 1] = part:translate(c[1] * r, c[2] * r, c[3] * r)
