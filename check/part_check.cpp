@@ -11,6 +11,7 @@
 #include "check/ray_grids.h"
 #include "check/report_findings.h"
 #include "engine/boolean.h"
+#include "engine/instance.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_probe.h"
 #include "export/cgal/mesh_validity.h"
@@ -58,6 +59,10 @@ std::size_t modelPieces(const Solid& solid) {
 
 CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
                                   const CheckOptions& options) {
+  // The distances to the surface read each primitive's frame: instances
+  // multiplied out.
+  if (solid.hasInstances())
+    return checkMeshAgainstSolid(*flattened(solid.shared_from_this()), mesh, options);
   CheckReport report;
   report.options = options;
   report.triangles = mesh.size();

@@ -30,6 +30,7 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
     const SolidPtr& s = operands_[i];
     insideBeyondWindow_ = insideBeyondWindow_ && s->insideBeyondWindow();
     if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s->insideBeyondWindow();
+    instances_ = instances_ || s->hasInstances();
     primitives_ += s->primitiveCount();
     booleans_ += s->booleanCount();
     depth_ = std::max(depth_, s->depth() + 1);
@@ -309,6 +310,18 @@ SolidPtr Boolean::mapPrimitives(const PrimitiveMap& f) const {
   for (const SolidPtr& s : operands_) mapped.push_back(s->mapPrimitives(f));
   auto copy = std::make_shared<Boolean>(op_, std::move(mapped));
   copy->setOrigin(origin());
+  return copy;
+}
+
+SolidPtr Boolean::mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const {
+  // A node used many times (under instances) is mapped once.
+  if (auto found = done.find(this); found != done.end()) return found->second;
+  std::vector<SolidPtr> mapped;
+  mapped.reserve(operands_.size());
+  for (const SolidPtr& s : operands_) mapped.push_back(s->mapSharedPrimitives(f, done));
+  auto copy = std::make_shared<Boolean>(op_, std::move(mapped));
+  copy->setOrigin(origin());
+  done.emplace(this, copy);
   return copy;
 }
 

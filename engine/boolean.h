@@ -23,7 +23,7 @@ class Boolean : public Solid {
   // Limits that keep rays and destructors off the end of the stack, and
   // trees whose shared subtrees multiply out within reach.
   static constexpr int kMaxDepth = 1000;
-  static constexpr std::size_t kMaxPrimitives = 1'000'000;
+  static constexpr std::size_t kMaxPrimitives = 2'000'000;
   // Nodes with more operands than this keep a BVH over them.
   static constexpr std::size_t kBvhOperands = 4;
 
@@ -45,8 +45,13 @@ class Boolean : public Solid {
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool contains(const dvec3& p) const override;
   std::span<const SolidPtr> children() const override { return operands_; }
+  // Calls visit(operand) for each operand whose box the ray meets within
+  // its window (through the BVH where there is one) until it returns false.
+  template <class Visit>
+  void forEachOperandHitBy(const Ray& ray, Visit&& visit) const;
   std::string kind() const override;
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+  SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;
   void prepare() const override;
 
  private:
@@ -71,6 +76,17 @@ class Boolean : public Solid {
   mutable std::atomic<bool> bvhReady_{false};
   mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
 };
+
+template <class Visit>
+void Boolean::forEachOperandHitBy(const Ray& ray, Visit&& visit) const {
+  const Bvh& tree = bvh();
+  const std::size_t first = tree.empty() ? operands_.size() : firstInBvh();
+  for (std::size_t i = 0; i < first; ++i)
+    if (operands_[i]->bounds().hitBy(ray) && !visit(*operands_[i])) return;
+  if (tree.empty()) return;
+  double tMax = ray.tMax;
+  tree.traverse(ray, tMax, [&](std::uint32_t i, double) { return visit(*operands_[first + i]); });
+}
 
 SolidPtr unionOf(std::vector<SolidPtr> operands);
 SolidPtr intersectionOf(std::vector<SolidPtr> operands);

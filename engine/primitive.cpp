@@ -5,6 +5,8 @@
 #include <glm/mat3x3.hpp>
 #include <stdexcept>
 
+#include "engine/moved_box.h"
+
 namespace csgray::detail {
 
 namespace {
@@ -61,13 +63,7 @@ void Primitive::updateBounds() {
     bounds_ = frame_.isIdentity() ? local : Bounds::everything();
     return;
   }
-  // The box of the eight transformed corners.
-  bounds_ = Bounds{};
-  for (int i = 0; i < 8; ++i) {
-    dvec3 corner(i & 1 ? local.hi.x : local.lo.x, i & 2 ? local.hi.y : local.lo.y,
-                 i & 4 ? local.hi.z : local.lo.z);
-    bounds_.include(frame_.pointToWorld(corner));
-  }
+  bounds_ = movedBox(local, frame_);
 }
 
 }  // namespace csgray::detail

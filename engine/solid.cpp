@@ -1,19 +1,35 @@
 #include "engine/solid.h"
 
+#include "engine/boolean.h"
+#include "engine/instance.h"
 #include "engine/primitive.h"
 
 namespace csgray::detail {
 
 SolidPtr Solid::transformed(const Affine& worldFromObject) const {
+  if (auto* instance = dynamic_cast<const Instance*>(this)) {
+    auto moved =
+        std::make_shared<Instance>(instance->child(), instance->frame().then(worldFromObject));
+    moved->setOrigin(origin());
+    return moved;
+  }
+  if (dynamic_cast<const Boolean*>(this)) {
+    auto moved = std::make_shared<Instance>(shared_from_this(), worldFromObject);
+    moved->setOrigin(origin());
+    return moved;
+  }
   return mapPrimitives(
       [&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
 }
 
 SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
-  return mapPrimitives([&](const Primitive& p) -> SolidPtr {
-    if (p.material()) return p.shared_from_this();
-    return p.withMaterial(material);
-  });
+  SharedMap done;
+  return mapSharedPrimitives(
+      [&](const Primitive& p) -> SolidPtr {
+        if (p.material()) return p.shared_from_this();
+        return p.withMaterial(material);
+      },
+      done);
 }
 
 std::string SourceLine::text() const {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "engine/affine.h"
@@ -69,14 +70,27 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // node's BVH), so that a renderer can do it before its threads start.
   virtual void prepare() const {}
 
-  // Operands of a boolean node; none for a primitive.
+  // Operands of a boolean node, the shared child of an instance (in the
+  // instance's frame, engine/instance.h); none for a primitive.
   virtual std::span<const SolidPtr> children() const { return {}; }
   // A short description: "sphere", "union", ...
   virtual std::string kind() const = 0;
 
   // The same tree with every primitive p replaced by f(p).
+  // Instances are multiplied out: f sees each use of a shared primitive,
+  // in the world's frame.
   using PrimitiveMap = std::function<SolidPtr(const Primitive&)>;
   virtual SolidPtr mapPrimitives(const PrimitiveMap& f) const = 0;
+  // The same, for maps that do not depend on where a primitive is (a
+  // material): f sees each distinct primitive once, in its own frame, and
+  // the result shares what this tree shares. done holds the nodes mapped
+  // so far.
+  using SharedMap = std::unordered_map<const Solid*, SolidPtr>;
+  virtual SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& /*done*/) const {
+    return mapPrimitives(f);
+  }
+  // Is there an instance (engine/instance.h) in the tree?
+  bool hasInstances() const { return instances_; }
 
   // Size of the tree: primitives and boolean nodes below and including this
   // one, counting a shared subtree once per use (as rays visit it), and the
@@ -91,9 +105,13 @@ class Solid : public std::enable_shared_from_this<Solid> {
   const SourceLine& origin() const { return origin_; }
   void setOrigin(SourceLine origin) const { origin_ = std::move(origin); }
 
-  // This solid moved by worldFromObject (applied after any transform it has).
+  // This solid moved by worldFromObject (applied after any transform it
+  // has): a primitive is copied with the composed frame, a boolean node or
+  // an instance becomes an instance that shares the tree.
   SolidPtr transformed(const Affine& worldFromObject) const;
-  // This solid with the material given to every primitive that has none.
+  // This solid with the material given to every primitive that has none
+  // (the instances' children mapped once, so a subtree shared elsewhere
+  // keeps its own materials there).
   SolidPtr withDefaultMaterial(const MaterialPtr& material) const;
 
  protected:
@@ -101,6 +119,7 @@ class Solid : public std::enable_shared_from_this<Solid> {
   std::size_t booleans_ = 0;
   int depth_ = 0;
   bool insideBeyondWindow_ = true;
+  bool instances_ = false;
   mutable SourceLine origin_;
 };
 

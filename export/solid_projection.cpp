@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "engine/instance.h"
 #include "engine/primitive.h"
 #include "export/cgal/mesh_boolean.h"
 #include "profile/mesh_projection.h"
@@ -91,6 +92,7 @@ double shadowBooleanTolerance(const Solid& solid) { return 10.0 * projectionTole
 Profile solidProjection(const SolidPtr& solid, bool cut) {
   const SolidPtr model = modelOf(solid);
   if (!model) return {};
+  if (model->hasInstances()) return solidProjection(flattened(model), cut);
   const double tolerance = projectionTolerance(*model);
   // The regions' edges are segments: the 2D booleans need no tolerance of
   // their own, but evaluate() asks for one.

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/instance_surface.h"
 #include "engine/primitive.h"
 #include "raytrace/edge_lines.h"
 #include "raytrace/optics.h"
@@ -75,8 +76,11 @@ std::vector<SolidPtr> objectsAndGhosts(const Scene& scene) {
     return m;
   }();
   std::vector<SolidPtr> objects = scene.objects;
-  for (const SolidPtr& s : scene.ghosts)
-    objects.push_back(s->mapPrimitives([&](const Primitive& p) { return p.withMaterial(ghost); }));
+  for (const SolidPtr& s : scene.ghosts) {
+    Solid::SharedMap done;
+    objects.push_back(
+        s->mapSharedPrimitives([&](const Primitive& p) { return p.withMaterial(ghost); }, done));
+  }
   return objects;
 }
 
@@ -93,11 +97,9 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
   return scale;
 }
 
-// What a ray met first, as the edge lines compare it.
-SurfaceSample surfaceSample(const SurfaceHit& hit, const dvec3& point, const dvec3& dir) {
+// What a ray met first, as the edge lines compare it; n is the normal there.
+SurfaceSample surfaceSample(const SurfaceHit& hit, dvec3 n, const dvec3& dir) {
   SurfaceSample sample;
-  dvec3 n = hit.surface ? hit.surface->normalAt(point, hit.face)
-                        : hit.boundary.primitive->normal(point, hit.boundary.face);
   if (glm::dot(n, dir) > 0.0) n = -n;
   sample.surface = hit.surface ? static_cast<const void*>(hit.surface)
                                : static_cast<const void*>(hit.boundary.primitive);
@@ -232,6 +234,11 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
     return true;
   });
   return best;
+}
+
+dvec3 Renderer::normalAt(const SurfaceHit& hit, const Ray& ray) const {
+  if (hit.surface) return hit.surface->normalAt(ray.at(hit.t), hit.face);
+  return boundarySurface(*objects_[std::size_t(hit.object)], ray, hit.boundary).normal;
 }
 
 dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
@@ -434,12 +441,12 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   } else {
     const Boundary& b = hit->boundary;
     sp.material = &materialOf(b);
-    sp.normal = b.primitive->normal(sp.point, b.face);
-    if (b.flip) sp.normal = -sp.normal;
-    sp.color = sp.material->texture
-                   ? sp.material->texture->colorAt(b.primitive->texturePoint(sp.point),
-                                                   b.primitive->textureNormal(sp.point, b.face))
-                   : sp.material->color;
+    const bool textured = sp.material->texture != nullptr;
+    const BoundarySurface surface =
+        boundarySurface(*objects_[std::size_t(hit->object)], ray, b, textured);
+    sp.normal = b.flip ? -surface.normal : surface.normal;
+    sp.color = textured ? sp.material->texture->colorAt(surface.texturePoint, surface.textureNormal)
+                        : sp.material->color;
     if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
   }
   const Material& m = *sp.material;
@@ -512,17 +519,19 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
 
 dvec3 Renderer::withHighlights(const Ray& ray, const dvec3& color) const {
   std::optional<Boundary> nearest;
+  const Solid* nearestSolid = nullptr;
   SpanList spans;
   for (const SolidPtr& s : scene_.highlights) {
     s->spansToFirstBoundary(ray, spans);
     for (const Span& span : spans) {
       const Boundary& b = span.in.t > ray.tMin ? span.in : span.out;
-      if (b.primitive && b.t > ray.tMin && (!nearest || b.t < nearest->t)) nearest = b;
+      if (b.primitive && b.t > ray.tMin && (!nearest || b.t < nearest->t))
+        nearest = b, nearestSolid = s.get();
       break;
     }
   }
   if (!nearest) return color;
-  const dvec3 n = nearest->primitive->normal(ray.at(nearest->t), nearest->face);
+  const dvec3 n = boundarySurface(*nearestSolid, ray, *nearest).normal;
   const double facing = std::abs(glm::dot(glm::normalize(n), glm::normalize(ray.dir)));
   return glm::mix(color, kHighlightColor * (0.6 + 0.4 * facing), kHighlightOpacity);
 }
@@ -632,12 +641,10 @@ RenderResult Renderer::renderAll() const {
       result.depth.set(x, y,
                        dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
     if (!hit) return;
-    dvec3 p = ray.at(hit->t);
-    dvec3 n = hit->surface ? hit->surface->normalAt(p, hit->face)
-                           : hit->boundary.primitive->normal(p, hit->boundary.face);
+    dvec3 n = normalAt(*hit, ray);
+    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, n, ray.dir);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);
-    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, p, ray.dir);
   });
 
   if (refine) {
@@ -675,7 +682,7 @@ RenderResult Renderer::renderAll() const {
       SurfaceSample sample;
       if (!hit) return sample;
       point = ray.at(hit->t);
-      sample = surfaceSample(*hit, point, ray.dir);
+      sample = surfaceSample(*hit, normalAt(*hit, ray), ray.dir);
       return sample;
     };
     forEachTile(true, [&](int x, int y, RayCounts& counts) {

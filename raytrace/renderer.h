@@ -133,6 +133,10 @@ class Renderer {
   // The colour seen along a ray from the camera's medium.
   dvec3 trace(const Ray& ray) const;
   std::optional<SurfaceHit> firstHit(const Ray& ray) const;
+  // The unit normal where firstHit(ray) met a surface, outward from the
+  // primitive or the open surface's own (a subtracted solid's flip not
+  // applied).
+  dvec3 normalAt(const SurfaceHit& hit, const Ray& ray) const;
   // The share of light that passes from one point to another: 0 where
   // something opaque lies between, the transparency and filter colour of
   // each stretch of a transparent solid (and each transparent surface)

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "engine/instance.h"
 #include "primitives/box.h"
 #include "primitives/cgal/point_hull.h"
 #include "primitives/convex_polyhedron.h"
@@ -319,8 +320,12 @@ void requireSide(const char* function, const char* name, double value) {
 SolidPtr hullShape(const std::vector<SolidPtr>& operands) {
   const std::string function = "hull";
   if (operands.empty()) throw error(function, "needs at least one solid");
+  // The leaves in the world's frame: instances multiplied out (and kept
+  // alive while the leaves are read).
+  std::vector<SolidPtr> placed;
+  for (const SolidPtr& s : operands) placed.push_back(flattened(s));
   std::vector<const Primitive*> leaves;
-  for (const SolidPtr& s : operands) collectLeaves(s, function, leaves);
+  for (const SolidPtr& s : placed) collectLeaves(s, function, leaves);
   std::vector<Ball> balls;
   for (const Primitive* p : leaves)
     if (std::optional<Ball> b = ballOf(*p)) balls.push_back(*b);
@@ -352,8 +357,9 @@ SolidPtr hullShape(const std::vector<SolidPtr>& operands) {
 
 SolidPtr minkowskiShape(const std::vector<SolidPtr>& operands) {
   if (operands.empty()) throw error("minkowski", "needs at least one solid");
-  SolidPtr sum = operands[0];
-  for (std::size_t i = 1; i < operands.size(); ++i) sum = minkowskiPair(sum, operands[i]);
+  SolidPtr sum = flattened(operands[0]);
+  for (std::size_t i = 1; i < operands.size(); ++i)
+    sum = minkowskiPair(sum, flattened(operands[i]));
   return sum;
 }
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "engine/instance.h"
 #include "engine/primitive.h"
 #include "scene/value_checks.h"
 
@@ -27,6 +28,9 @@ void checkMaterial(const Material& m) {
 
 SolidPtr solidWithMaterial(const SolidPtr& solid, const MaterialPtr& material) {
   if (auto* p = dynamic_cast<const Primitive*>(solid.get())) return p->withMaterial(material);
+  // A texture lies in the world as it is when given: the uses of a shared
+  // part each get their own piece of it, so instances are multiplied out.
+  if (material && material->texture) return flattened(solid)->withDefaultMaterial(material);
   return solid->withDefaultMaterial(material);
 }
 

@@ -1,8 +1,10 @@
 #include "scene/modifiers.h"
 
+#include <unordered_map>
 #include <utility>
 
 #include "engine/boolean.h"
+#include "engine/instance.h"
 
 namespace csgray::detail {
 
@@ -26,6 +28,7 @@ MarkedSolid::MarkedSolid(Modifier modifier, SolidPtr marked)
   booleans_ = marked_->booleanCount();
   depth_ = marked_->depth();
   insideBeyondWindow_ = marked_->insideBeyondWindow();
+  instances_ = marked_->hasInstances();
   setOrigin(marked_->origin());
 }
 
@@ -61,6 +64,10 @@ class Resolver {
   // The solid without marks, or null when nothing of it is in the model.
   SolidPtr resolve(const SolidPtr& solid) {
     if (auto* marked = dynamic_cast<const MarkedSolid*>(solid.get())) return resolveMarked(*marked);
+    // Marks under an instance are taken out of a copy in the world's frame,
+    // so that the ghosts and highlights are where the instance puts them.
+    if (auto* instance = dynamic_cast<const Instance*>(solid.get()))
+      return unmarked(instance->child()) ? solid : resolve(flattened(solid));
     auto* boolean = dynamic_cast<const Boolean*>(solid.get());
     if (!boolean) return solid;  // a primitive
     std::vector<SolidPtr> operands;
@@ -118,8 +125,18 @@ class Resolver {
     return nullptr;
   }
 
+  // Is the tree free of marks? Each shared node is looked at once.
+  bool unmarked(const SolidPtr& solid) {
+    if (auto known = unmarked_.find(solid.get()); known != unmarked_.end()) return known->second;
+    bool free = !dynamic_cast<const MarkedSolid*>(solid.get());
+    for (const SolidPtr& child : solid->children()) free = free && unmarked(child);
+    unmarked_.emplace(solid.get(), free);
+    return free;
+  }
+
   std::vector<SolidPtr> ghosts_, highlights_;
   std::vector<ResolvedModifiers> onlies_;
+  std::unordered_map<const Solid*, bool> unmarked_;
 };
 
 }  // namespace

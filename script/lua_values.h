@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 #include <vector>
 
 #include "scene/scene.h"
@@ -218,10 +219,11 @@ inline void markOrigin(lua_State* L, const Solid& solid) {
 inline void pushSolid(lua_State* L, SolidPtr solid) {
   Sandbox& sandbox = Sandbox::of(L);
   std::vector<Sandbox::HeldObject> fresh;
-  // The nodes a call makes form a tree (a transform copies a shared
-  // subtree once per use), so the walk visits each once.
+  // The nodes a call makes may share nodes (a material given to a part
+  // of instances maps each shared node once): each is counted once.
+  std::unordered_set<const Solid*> seen;
   auto collect = [&](auto& self, const SolidPtr& node) -> void {
-    if (sandbox.holds(node)) return;
+    if (sandbox.holds(node) || !seen.insert(node.get()).second) return;
     const std::size_t operands = node->children().size();
     fresh.push_back(
         {node, operands == 0 ? kBytesPerShape : kBytesPerBoolean + operands * sizeof(SolidPtr)});

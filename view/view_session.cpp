@@ -178,7 +178,7 @@ PickResult ViewSession::pick(const FrameRequest& request, double x, double y) {
   if (const Primitive* primitive = hit->boundary.primitive) {
     result.kind = primitive->material() == sectionMaterial() ? "section" : primitive->kind();
     result.source = primitive->origin().text();
-    result.normal = primitive->normal(result.point, int(hit->boundary.face));
+    result.normal = renderer.normalAt(*hit, ray);
     if (hit->boundary.flip) result.normal = -result.normal;
   } else if (hit->surface) {
     result.kind = hit->surface->kind();

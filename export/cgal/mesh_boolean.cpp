@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "engine/boolean.h"
+#include "engine/instance.h"
 #include "engine/primitive.h"
 #include "export/cgal/convex_intersection.h"
 #include "export/cgal/exact_boolean.h"
@@ -792,6 +793,9 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
                      MeshBooleanStats* stats) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("the tolerance must be a positive number");
+  // The mesh of each primitive is made in the world: instances multiplied out.
+  if (solid.hasInstances())
+    return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats);
   const EvaluationFrame frame(solid);
   const Bounds box = frame.evalBounds(solid.bounds());
   if (!box.empty() && !box.finite())

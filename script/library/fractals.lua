@@ -54,31 +54,49 @@ end
 -- The union of 4^level regular tetrahedra: the tetrahedron of
 -- circumradius size/2 (as tetrahedron{r=}) replaced, level times over, by
 -- the four of half its size at its corners, which touch at their corners.
--- Its volume is (1/2)^level of the first's.
+-- Its volume is (1/2)^level of the first's. Built from the smallest up:
+-- above level 4, each level is four moved uses of the level below, which
+-- a transform shares rather than copies, so memory grows with the level,
+-- not with the 4^level tetrahedra it shows.
 function sierpinski_tetrahedron(args)
   local name = "sierpinski_tetrahedron"
-  local args, level, size = compoundArguments(name, args, 4, 8, 100)
-  -- tetrahedron{r=R}'s corners: (0, 0, R) and three on z = -R/3 at
-  -- distance 2√2·R/3 from the axis, one of them in the xz plane at x > 0.
+  local args, level, size = compoundArguments(name, args, 4, 10, 100)
+  -- tetrahedron{r=1}'s corners: (0, 0, 1) and three on z = -1/3 at
+  -- distance 2√2/3 from the axis, one of them in the xz plane at x > 0.
   local corners = {{0, 0, 1}}
   for k = 0, 2 do
     local angle = 2 * math.pi * k / 3
     corners[#corners + 1] = {2 * math.sqrt(2) / 3 * math.cos(angle),
                              2 * math.sqrt(2) / 3 * math.sin(angle), -1 / 3}
   end
+  -- The first levels as one flat union of moved tetrahedra (a ray finds
+  -- its few among them through the union's BVH, faster than through
+  -- nested uses); above them each level is four moved uses of the level
+  -- below, of circumradius r, at the corners of the tetrahedron of
+  -- circumradius 2r about the same centre: r times each.
+  local flat = math.min(level, 4)
+  local r = size / 2 / 2 ^ (level - flat)
   local pieces = {}
-  local function place(x, y, z, r, depth)
+  local function place(x, y, z, s, depth)
     if depth == 0 then
-      pieces[#pieces + 1] = tetrahedron{r = r}:translate(x, y, z)
+      pieces[#pieces + 1] = tetrahedron{r = s}:translate(x, y, z)
       return
     end
     for _, c in ipairs(corners) do
-      place(x + c[1] * r / 2, y + c[2] * r / 2, z + c[3] * r / 2, r / 2, depth - 1)
+      place(x + c[1] * s / 2, y + c[2] * s / 2, z + c[3] * s / 2, s / 2, depth - 1)
     end
   end
-  place(0, 0, 0, size / 2, level)
-  if #pieces == 1 then return pieces[1] end
-  return union(table.unpack(pieces))
+  place(0, 0, 0, r, flat)
+  local part = #pieces == 1 and pieces[1] or union(table.unpack(pieces))
+  for _ = flat + 1, level do
+    local uses = {}
+    for _, c in ipairs(corners) do
+      uses[#uses + 1] = part:translate(c[1] * r, c[2] * r, c[3] * r)
+    end
+    part = union(table.unpack(uses))
+    r = 2 * r
+  end
+  return part
 end
 
 -- The squares of a Pythagoras tree (Bosman, 1942) in the plane: each
@@ -141,7 +159,9 @@ function pythagoras_tree_3d(args)
   local degrees = math.deg(angle)
   local c, s = math.cos(angle), math.sin(angle)
   -- The tree of the unit cube [0, 1]³, in its own frame; each child's
-  -- frame is turned a quarter turn about its vertical axis.
+  -- frame is turned a quarter turn about its vertical axis. Both children
+  -- are moved uses of one subtree, which transforms share, so the part
+  -- holds one subtree per level.
   local function tree(depth)
     local cube = box{size = {1, 1, 1}}
     if depth == level then return cube end

@@ -163,6 +163,36 @@ TEST(Check, BoxVolumesAreExactAlongEveryGrid) {
 
 TEST(Check, ADrilledBlockChecksOut) { EXPECT_TRUE(test::checksOut(*drilledBlock())); }
 
+// An assembly of three uses of one part (transforms of a boolean, so
+// instances that share it) exports and checks as the copied assembly does,
+// with three times the part's volume.
+TEST(Check, AnAssemblyOfInstancesChecksAsItsCopy) {
+  const SolidPtr part = drilledBlock();
+  const Affine frames[3] = {
+      Affine::translation({0, 0, 0}),
+      Affine::rotation(kPi / 3, glm::normalize(dvec3(1, 1, 0)))
+          .then(Affine::translation({40, 0, 0})),
+      Affine::rotation(kPi / 2, dvec3(0, 0, 1)).then(Affine::translation({0, 40, 0}))};
+  std::vector<SolidPtr> shared, copied;
+  for (const Affine& f : frames) {
+    shared.push_back(part->transformed(f));
+    copied.push_back(
+        part->mapPrimitives([&](const Primitive& p) { return p.withFrame(p.frame().then(f)); }));
+  }
+  const SolidPtr assembly = unionOf(shared), copy = unionOf(copied);
+  ASSERT_TRUE(assembly->hasInstances());
+  ASSERT_FALSE(copy->hasInstances());
+  const CheckReport one = checkPart(*part, quick());
+  const CheckReport a = checkPart(*assembly, quick()), b = checkPart(*copy, quick());
+  ASSERT_TRUE(a.ok()) << checkReportText(a, "assembly");
+  ASSERT_TRUE(b.ok()) << checkReportText(b, "copy");
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_NEAR(a.meshVolume, b.meshVolume, 1e-9 * b.meshVolume);
+  EXPECT_NEAR(a.meshVolume, 3 * one.meshVolume, 1e-6 * b.meshVolume);
+  EXPECT_NEAR(a.exactVolume, 3 * one.exactVolume, 0.01 * a.exactVolume);
+  EXPECT_EQ(a.modelPieces, 3u);
+}
+
 // The export bug the check found: where rounding folded a sliver of a
 // rotated union's coplanar faces, CGAL's repair smoothed a vertex 1.2 units
 // off the wall, and the mesh was still valid. The repair must now stay on

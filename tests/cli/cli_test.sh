@@ -733,7 +733,7 @@ expect_in_stderr "mesh with a short vertex row" "short_row.ply:11: vertex 1: the
 printf 'local ok = pcall(string.rep, "x", 1 << 30)\nreturn sphere(1)\n' > "$work/caught_memory.lua"
 printf 'local function f() pcall(f) pcall(f) end\nf()\nreturn sphere(1)\n' > "$work/doubling.lua"
 printf 'local s = sphere(1)\nfor i = 1, 25 do s = s + s:translate(1, 0, 0) end\nreturn s\n' \
-  > "$work/copies.lua"
+  > "$work/uses.lua"
 printf 'return sphere(1, 2)\n' > "$work/extra_argument.lua"
 printf 'local s = sphere(1)\nsetmetatable(s, {})\nreturn s\n' > "$work/solid_metatable.lua"
 expect_exit 1 "memory error under pcall" "$work/out.png" render "$work/caught_memory.lua" -o "$work/out.png"
@@ -742,8 +742,10 @@ expect_in_stderr "memory error under pcall" "caught_memory.lua:1: script exceede
 expect_exit 1 "doubling recursion" "$work/out.png" render "$work/doubling.lua" -o "$work/out.png" \
   --script-timeout 30
 expect_in_stderr "doubling recursion" "doubling.lua:1: script exceeded the instruction budget"
-expect_exit 1 "copies in a union" "$work/out.png" render "$work/copies.lua" -o "$work/out.png"
-expect_in_stderr "copies in a union" "copies.lua:2: script exceeded the memory limit of 1024 MiB"
+# (Moved uses of a part share it: the limit on primitives, which counts
+# uses, stops the doubling.)
+expect_exit 1 "uses in a union" "$work/out.png" render "$work/uses.lua" -o "$work/out.png"
+expect_in_stderr "uses in a union" "uses.lua:2: union: the part would have more than 2000000 primitives"
 expect_exit 1 "extra argument" "$work/out.png" render "$work/extra_argument.lua" -o "$work/out.png"
 expect_in_stderr "extra argument" "extra_argument.lua:1: sphere: takes 1 argument (got 2)"
 expect_exit 1 "metatable of a solid" "$work/out.png" render "$work/solid_metatable.lua" -o "$work/out.png"

@@ -1,10 +1,13 @@
 // Rays allocate nothing: camera and shadow rays through a plate with
 // spheres and holes (bench/plate.lua), which go through a union's BVH, a
-// difference's first-boundary cuts and the scene's BVH, once the first ray
-// has run (operator new counted by allocation_counter.h).
+// difference's first-boundary cuts and the scene's BVH, and through the
+// Sierpinski tetrahedron (bench/parts/sierpinski.lua), whose levels are
+// instances of one another, once the first ray has run (operator new
+// counted by allocation_counter.h).
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 
 #include "allocation_counter.h"
 #include "raytrace/renderer.h"
@@ -14,11 +17,14 @@
 namespace csgray::detail {
 namespace {
 
-TEST(Rays, TracingThePlateAllocatesNothing) {
-  for (const char* n : {"8", "64"}) {
+TEST(Rays, TracingThePlateAndTheSierpinskiTetrahedronAllocatesNothing) {
+  const std::string plate = std::string(CSGRAY_SOURCE_DIR) + "/bench/plate.lua";
+  const std::string sierpinski = std::string(CSGRAY_SOURCE_DIR) + "/bench/parts/sierpinski.lua";
+  for (const auto& [file, define, n] : {std::tuple{plate, "n", "8"}, std::tuple{plate, "n", "64"},
+                                        std::tuple{sierpinski, "level", "5"}}) {
     ScriptOptions options;
-    options.defines = {{"n", n}};
-    Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/bench/plate.lua", options);
+    options.defines = {{define, n}};
+    Scene scene = runScriptFile(file, options);
     const int w = 64, h = 48;
     Renderer renderer(scene, RenderOptions(w, h, 1));
     Camera camera(*scene.camera, w, h);
@@ -31,8 +37,8 @@ TEST(Rays, TracingThePlateAllocatesNothing) {
         renderer.trace(ray);  // with its shadow rays to both lights
         hits += renderer.firstHit(ray).has_value();
       }
-    EXPECT_EQ(test::allocations(), before) << "plate(" << n << ")";
-    EXPECT_GT(hits, w * h / 3) << "plate(" << n << ")";  // the rays did meet the part
+    EXPECT_EQ(test::allocations(), before) << file << " " << n;
+    EXPECT_GT(hits, w * h / 3) << file << " " << n;  // the rays did meet the part
   }
 }
 

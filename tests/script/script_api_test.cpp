@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/boolean.h"
+#include "engine/instance.h"
 #include "engine/primitive.h"
 #include "io/image_file.h"
 #include "script/script.h"
@@ -557,11 +558,13 @@ TEST(ScriptTexture, TexturesAreFixedToThePart) {
       primitiveOf(std::string("return box(2):translate(10, 0, 0):material{color=") + texture + "}");
   ASSERT_TRUE(after);
   expectVecNear(after->texturePoint({10.3, 0.3, 0.3}), dvec3(10.3, 0.3, 0.3), 1e-12);
-  // A textured boolean moved as a whole: each leaf keeps its texture space.
+  // A textured boolean moved as a whole: each leaf keeps its texture space
+  // (the leaves in their places: the moved boolean is an instance).
   Scene scene = sceneOf(std::string("return (box(1) + sphere(1):translate(5, 0, 0)):material{") +
                         "color=" + texture + "}:translate(0, 100, 0)");
   ASSERT_EQ(scene.objects.size(), 1u);
-  for (const SolidPtr& child : scene.objects[0]->children()) {
+  const SolidPtr placed = flattened(scene.objects[0]);
+  for (const SolidPtr& child : placed->children()) {
     auto* leaf = dynamic_cast<const Primitive*>(child.get());
     ASSERT_NE(leaf, nullptr);
     dvec3 centre = 0.5 * (leaf->bounds().lo + leaf->bounds().hi);
@@ -965,12 +968,12 @@ TEST(ScriptScene, HugeListsAreCharged) {
                         "return scene{objects=sphere(1), lights=t}",
                         options),
             "(no error)");
-  // 600 000 uses of a part of two primitives: more than 1 000 000.
+  // 1 200 000 uses of a part of two primitives: more than 2 000 000.
   expectError(
       "local s, t = sphere(1) + box(1), {}\n"
-      "for i = 1, 600000 do t[i] = s end\n"
+      "for i = 1, 1200000 do t[i] = s end\n"
       "return scene{objects=t}",
-      "part.lua:3: scene: objects[500001]: the scene would have more than 1000000 primitives");
+      "part.lua:3: scene: objects[1000001]: the scene would have more than 2000000 primitives");
   // A scene that fails (a bad entry, caught by pcall) gives its charge back.
   options.limits.memoryBytes = 16u << 20;
   EXPECT_EQ(

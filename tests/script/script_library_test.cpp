@@ -318,7 +318,7 @@ TEST(ScriptLibrary, ErrorsNameTheScriptsLine) {
             "part.lua:1: fractal_mountain: levels must be a whole number from 1 to 9 (got 12)");
   EXPECT_EQ(
       scriptError("return sierpinski_tetrahedron{level=-1}"),
-      "part.lua:1: sierpinski_tetrahedron: level must be a whole number from 0 to 8 (got -1)");
+      "part.lua:1: sierpinski_tetrahedron: level must be a whole number from 0 to 10 (got -1)");
   // A base at or above the lowest point leaves no solid under it.
   EXPECT_EQ(
       scriptError("local g = graph{f=function(x, y) return x end, x={0, 1}, y={0, 1}, base=0}"),

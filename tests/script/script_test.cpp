@@ -226,7 +226,7 @@ TEST(Script, DeepAndExplodingTreesAreRefused) {
             std::string::npos);
   // A shared part used 2^40 times: the count multiplies out.
   std::string e = scriptError("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
-  EXPECT_NE(e.find("part.lua:2: union: the part would have more than 1000000 primitives"),
+  EXPECT_NE(e.find("part.lua:2: union: the part would have more than 2000000 primitives"),
             std::string::npos)
       << e;
 }
@@ -238,20 +238,31 @@ TEST(Script, CollectedSolidsGiveBackTheirMemory) {
   // if collected solids were still counted.
   EXPECT_NO_THROW(runScript("for i = 1, 2000000 do local s = sphere(1) end return sphere(1)",
                             "churn.lua", options));
-  // A transform copies the tree: 100 copies of a 10 000-sphere part do not fit.
+  // A material copies the tree: 100 painted copies of a 10 000-sphere part
+  // do not fit.
   options.limits.memoryBytes = 256u << 20;
   std::string e;
   try {
     runScript(R"(
       local t = {} for i = 1, 10000 do t[i] = sphere(1):translate(i, 0, 0) end
       local part, copies = union(t), {}
-      for i = 1, 100 do copies[i] = part:translate(0, i, 0) end
+      for i = 1, 100 do copies[i] = part:material{color = {1, 0, i / 100}} end
       return union(copies))",
               "copies.lua", options);
   } catch (const ScriptError& error) {
     e = error.what();
   }
   EXPECT_NE(e.find("script exceeded the memory limit of 256 MiB"), std::string::npos) << e;
+  // A transform shares it: 100 moved uses of the part fit, a million
+  // spheres by use.
+  Scene shared = runScript(R"(
+      local t = {} for i = 1, 10000 do t[i] = sphere(1):translate(i, 0, 0) end
+      local part, uses = union(t), {}
+      for i = 1, 100 do uses[i] = part:translate(0, i, 0) end
+      return union(uses))",
+                           "uses.lua", options);
+  ASSERT_EQ(shared.objects.size(), 1u);
+  EXPECT_EQ(shared.objects[0]->primitiveCount(), 1'000'000u);
 }
 
 TEST(Script, MissingFileIsAClearError) {

@@ -1,0 +1,59 @@
+#include "engine/instance.h"
+
+#include "engine/moved_box.h"
+#include "engine/primitive.h"
+
+namespace csgray::detail {
+
+Instance::Instance(SolidPtr child, const Affine& worldFromChild)
+    : child_(std::move(child)), worldFromChild_(worldFromChild) {
+  primitives_ = child_->primitiveCount();
+  booleans_ = child_->booleanCount();
+  depth_ = child_->depth() + 1;
+  insideBeyondWindow_ = child_->insideBeyondWindow();
+  instances_ = true;
+  const Bounds& local = child_->bounds();
+  if (local.empty()) return;
+  // An unbounded child may reach anywhere once moved.
+  bounds_ = local.finite() ? movedBox(local, worldFromChild_) : Bounds::everything();
+}
+
+Ray Instance::rayToChild(const Ray& ray) const {
+  Ray r = worldFromChild_.rayToObject(ray);
+  // A translation leaves the direction, and so 1/dir, as it was: three
+  // divisions saved at each instance a ray goes through.
+  r.invDir = r.dir == ray.dir ? ray.invDir : 1.0 / r.dir;
+  return r;
+}
+
+// (Whoever asks has tested this instance's box, and the child tests its
+// own, tighter one: no box test here.)
+void Instance::spans(const Ray& ray, SpanList& out) const { child_->spans(rayToChild(ray), out); }
+
+void Instance::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  child_->spansToFirstBoundary(rayToChild(ray), out);
+}
+
+bool Instance::contains(const dvec3& p) const {
+  return bounds_.contains(p) && child_->contains(worldFromChild_.pointToObject(p));
+}
+
+SolidPtr Instance::mapPrimitives(const PrimitiveMap& f) const {
+  return child_->mapPrimitives([&](const Primitive& p) {
+    const SolidPtr moved = p.withFrame(p.frame().then(worldFromChild_));
+    return f(static_cast<const Primitive&>(*moved));
+  });
+}
+
+SolidPtr Instance::mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const {
+  auto mapped = std::make_shared<Instance>(child_->mapSharedPrimitives(f, done), worldFromChild_);
+  mapped->setOrigin(origin());
+  return mapped;
+}
+
+SolidPtr flattened(const SolidPtr& solid) {
+  if (!solid->hasInstances()) return solid;
+  return solid->mapPrimitives([](const Primitive& p) { return p.shared_from_this(); });
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,110 @@
+#include "engine/instance_surface.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "engine/boolean.h"
+#include "engine/instance.h"
+#include "engine/primitive.h"
+
+namespace csgray::detail {
+
+namespace {
+
+BoundarySurface surfaceOf(const Primitive& primitive, const dvec3& point, const Boundary& b,
+                          bool texture) {
+  BoundarySurface s;
+  s.normal = primitive.normal(point, int(b.face));
+  if (texture) {
+    s.texturePoint = primitive.texturePoint(point);
+    s.textureNormal = primitive.textureNormal(point, int(b.face));
+  }
+  return s;
+}
+
+// The search for the use of b.primitive that the ray met: the candidate
+// whose boundary on the same face lies nearest b.t, stopping at one within
+// rounding of it.
+class UseSearch {
+ public:
+  UseSearch(const Boundary& b, bool texture)
+      : b_(b), texture_(texture), closeEnough_(1e-9 * (1.0 + std::abs(b.t))) {}
+
+  bool found() const { return distance_ < kInfinity; }
+  const BoundarySurface& surface() const { return best_; }
+
+  // Looks in node, the ray given in node's frame; true when done.
+  bool visit(const Solid& node, const Ray& ray) {
+    if (&node == b_.primitive) return offer(static_cast<const Primitive&>(node), ray);
+    if (!near(node.bounds(), ray.at(b_.t))) return false;
+    if (auto* instance = dynamic_cast<const Instance*>(&node)) {
+      const double before = distance_;
+      const bool done = visit(*instance->child(), instance->rayToChild(ray));
+      // A better use below this instance: its normal into this frame.
+      if (distance_ < before) best_.normal = instance->frame().normalToWorld(best_.normal);
+      return done;
+    }
+    if (auto* boolean = dynamic_cast<const Boolean*>(&node)) {
+      // The operands whose boxes the ray meets about b.t, through the
+      // node's BVH: a wide union is not searched operand by operand.
+      Ray near = ray;
+      const double slack = 1e-9 * (1.0 + std::abs(b_.t));
+      near.tMin = b_.t - slack;
+      near.tMax = b_.t + slack;
+      bool done = false;
+      boolean->forEachOperandHitBy(near, [&](const Solid& operand) {
+        done = visit(operand, ray);
+        return !done;
+      });
+      return done;
+    }
+    for (const SolidPtr& child : node.children())
+      if (visit(*child, ray)) return true;
+    return false;
+  }
+
+ private:
+  // Boxes hold their solids' surfaces up to rounding of the point.
+  static bool near(const Bounds& box, const dvec3& p) {
+    const double margin = 1e-9 * (1.0 + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
+    return p.x >= box.lo.x - margin && p.x <= box.hi.x + margin && p.y >= box.lo.y - margin &&
+           p.y <= box.hi.y + margin && p.z >= box.lo.z - margin && p.z <= box.hi.z + margin;
+  }
+
+  bool offer(const Primitive& primitive, const Ray& ray) {
+    Ray line = ray;
+    line.tMin = -kInfinity;
+    line.tMax = kInfinity;
+    primitive.spans(line, spans_);
+    for (const Span& s : spans_)
+      for (const Boundary* end : {&s.in, &s.out}) {
+        const double d = std::abs(end->t - b_.t);
+        if (end->face != b_.face || !(d < distance_)) continue;
+        distance_ = d;
+        best_ = surfaceOf(primitive, ray.at(b_.t), b_, texture_);
+      }
+    return distance_ <= closeEnough_;
+  }
+
+  const Boundary& b_;
+  const bool texture_;
+  const double closeEnough_;
+  double distance_ = kInfinity;
+  BoundarySurface best_{};
+  SpanList spans_;
+};
+
+}  // namespace
+
+BoundarySurface boundarySurface(const Solid& root, const Ray& ray, const Boundary& b,
+                                bool texture) {
+  const dvec3 point = ray.at(b.t);
+  if (!root.hasInstances()) return surfaceOf(*b.primitive, point, b, texture);
+  UseSearch search(b, texture);
+  search.visit(root, ray);
+  // Not found only if rounding put the point outside every box that holds
+  // the primitive: its frame is then the best guess there is.
+  return search.found() ? search.surface() : surfaceOf(*b.primitive, point, b, texture);
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,220 @@
+// Instances: a transformed boolean shares its tree rather than copying it.
+// An instanced tree (nested instances, a non-uniform scale among their
+// frames) answers as the copied tree does: the same spans, first
+// boundaries, containment and volume; the surface at a boundary under the
+// instances has the copy's normal; a material given to one use stays with
+// that use; and a render of either is the same image.
+#include "engine/instance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <random>
+
+#include "engine/boolean.h"
+#include "engine/instance_surface.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/sphere.h"
+#include "raytrace/renderer.h"
+#include "scene/material.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The copy a transform made before instances: every primitive moved.
+SolidPtr copyMoved(const SolidPtr& solid, const Affine& frame) {
+  return solid->mapPrimitives(
+      [&](const Primitive& p) { return p.withFrame(p.frame().then(frame)); });
+}
+
+// One piece: a box and a ball, less a square hole through the box. Its
+// volume: 1·2·3 + 4π/3 − 0.5·0.5·3.
+SolidPtr piece() {
+  SolidPtr ball = Primitive::create<Sphere>(1.0)->transformed(Affine::translation({3, 1, 1}));
+  SolidPtr hole = Primitive::create<Box>(dvec3(0.5, 0.5, 10))
+                      ->transformed(Affine::translation({0.25, 0.25, -1}));
+  return differenceOf({unionOf({Primitive::create<Box>(dvec3(1, 2, 3)), ball}), hole});
+}
+const double kPieceVolume = 6.0 + 4.0 * kPi / 3.0 - 0.75;
+
+// Two uses of the piece, and two uses of that pair: one scaled by 2 in z
+// (twice the volume), one turned; all apart. Built by `move`, which is
+// either the transform (instances) or the copy.
+struct Frames {
+  Affine a = Affine::translation({0, 0, 0});
+  Affine b =
+      Affine::rotation(0.7, glm::normalize(dvec3(1, 2, 3))).then(Affine::translation({12, 0, 0}));
+  Affine c = Affine::scaling({1, 1, 2}).then(Affine::translation({0, 0, 5}));
+  Affine d =
+      Affine::rotation(1.1, glm::normalize(dvec3(0, 1, 1))).then(Affine::translation({0, 45, 0}));
+};
+const double kTreeVolume = 2 * kPieceVolume * 2 + 2 * kPieceVolume;
+
+template <class Move>
+SolidPtr tree(const SolidPtr& part, Move move) {
+  const Frames f;
+  SolidPtr pair = unionOf({move(part, f.a), move(part, f.b)});
+  return unionOf({move(pair, f.c), move(pair, f.d)});
+}
+
+SolidPtr instanced() {
+  return tree(piece(), [](const SolidPtr& s, const Affine& m) { return s->transformed(m); });
+}
+SolidPtr copied() { return tree(piece(), copyMoved); }
+
+// A ray in a random direction through a random point of the solid (or,
+// one time in four, of its box).
+Ray randomRayThrough(std::mt19937_64& rng, const Solid& solid) {
+  dvec3 p = test::randomPoint(rng, solid.bounds());
+  if (rng() % 4 != 0)
+    while (!solid.contains(p)) p = test::randomPoint(rng, solid.bounds());
+  const dvec3 d = test::randomDirection(rng);
+  return Ray(p - 200.0 * d, d);
+}
+
+TEST(Instance, TransformOfABooleanSharesItsTree) {
+  SolidPtr part = piece();
+  SolidPtr moved = part->transformed(Affine::translation({1, 2, 3}));
+  auto* instance = dynamic_cast<const Instance*>(moved.get());
+  ASSERT_NE(instance, nullptr);
+  EXPECT_EQ(instance->child(), part);
+  // A transform of an instance composes the frames and keeps the child.
+  SolidPtr twice = moved->transformed(Affine::scaling({2, 2, 2}));
+  auto* again = dynamic_cast<const Instance*>(twice.get());
+  ASSERT_NE(again, nullptr);
+  EXPECT_EQ(again->child(), part);
+  // A primitive is still moved as a copy.
+  SolidPtr ball = Primitive::create<Sphere>(1.0)->transformed(Affine::translation({1, 0, 0}));
+  EXPECT_NE(dynamic_cast<const Primitive*>(ball.get()), nullptr);
+  EXPECT_TRUE(instanced()->hasInstances());
+  EXPECT_FALSE(copied()->hasInstances());
+  EXPECT_EQ(instanced()->primitiveCount(), copied()->primitiveCount());
+}
+
+TEST(Instance, AnswersAsTheCopiedTree) {
+  SolidPtr shared = instanced(), copy = copied();
+  shared->prepare();
+  copy->prepare();
+  // Bounds: the instance's box holds the copy's.
+  const Bounds bs = shared->bounds(), bc = copy->bounds();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_LE(bs.lo[a], bc.lo[a] + 1e-9);
+    EXPECT_GE(bs.hi[a], bc.hi[a] - 1e-9);
+  }
+  std::mt19937_64 rng(7);
+  int met = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Ray ray = randomRayThrough(rng, *copy);
+    const SpanList a = test::spansOf(*shared, ray), b = test::spansOf(*copy, ray);
+    ASSERT_EQ(a.size(), b.size()) << i;
+    met += !a.empty();
+    for (std::uint32_t k = 0; k < a.size(); ++k) {
+      EXPECT_NEAR(a[k].in.t, b[k].in.t, 1e-9 * (1 + std::abs(b[k].in.t)));
+      EXPECT_NEAR(a[k].out.t, b[k].out.t, 1e-9 * (1 + std::abs(b[k].out.t)));
+      EXPECT_EQ(a[k].in.face, b[k].in.face);
+      EXPECT_EQ(a[k].in.flip, b[k].in.flip);
+      EXPECT_EQ(a[k].in.primitive->kind(), b[k].in.primitive->kind());
+    }
+    SpanList fa, fb;
+    shared->spansToFirstBoundary(ray, fa);
+    copy->spansToFirstBoundary(ray, fb);
+    ASSERT_EQ(fa.empty(), fb.empty());
+    if (!fa.empty()) EXPECT_NEAR(fa[0].in.t, fb[0].in.t, 1e-9 * (1 + std::abs(fb[0].in.t)));
+    const dvec3 p = test::randomPoint(rng, bc);
+    EXPECT_EQ(shared->contains(p), copy->contains(p)) << p.x << " " << p.y << " " << p.z;
+  }
+  EXPECT_GT(met, 2000);
+  test::expectSpansAgreeWithContainsOnRandomLines(*shared);
+  EXPECT_NEAR(test::gridVolume(*shared, bc, 400), kTreeVolume, 0.01 * kTreeVolume);
+  EXPECT_NEAR(test::gridVolume(*copy, bc, 400), kTreeVolume, 0.01 * kTreeVolume);
+  // Multiplied out, the instances are the copy.
+  SolidPtr flat = flattened(shared);
+  EXPECT_FALSE(flat->hasInstances());
+  EXPECT_EQ(flat->primitiveCount(), copy->primitiveCount());
+  EXPECT_NEAR(test::gridVolume(*flat, bc, 400), kTreeVolume, 0.01 * kTreeVolume);
+}
+
+TEST(Instance, NormalsUnderNestedInstancesAreTheCopys) {
+  SolidPtr shared = instanced(), copy = copied();
+  std::mt19937_64 rng(11);
+  int compared = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Ray ray = randomRayThrough(rng, *copy);
+    const SpanList a = test::spansOf(*shared, ray), b = test::spansOf(*copy, ray);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::uint32_t k = 0; k < a.size(); ++k)
+      for (int end = 0; end < 2; ++end) {
+        const Boundary& x = end ? a[k].out : a[k].in;
+        const Boundary& y = end ? b[k].out : b[k].in;
+        const dvec3 expected = y.primitive->normal(ray.at(y.t), int(y.face));
+        test::expectVecNear(boundarySurface(*shared, ray, x).normal, expected, 1e-9);
+        // The copy has no instances: its own primitive's normal.
+        test::expectVecNear(boundarySurface(*copy, ray, y).normal, expected, 0.0);
+        ++compared;
+      }
+  }
+  EXPECT_GT(compared, 4000);
+}
+
+TEST(Instance, AMaterialGivenToOneUseStaysWithIt) {
+  auto red = std::make_shared<Material>();
+  red->color = dvec3(1, 0, 0);
+  const Frames f;
+  SolidPtr part = piece();
+  SolidPtr painted = part->transformed(f.a)->withDefaultMaterial(red);
+  SolidPtr plain = part->transformed(f.b);
+  // Still a use of a shared tree, now a painted copy of it; the piece
+  // itself and its other use keep no material.
+  ASSERT_TRUE(painted->hasInstances());
+  SolidPtr both = unionOf({painted, plain});
+  std::mt19937_64 rng(3);
+  int redHits = 0, plainHits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Ray ray = randomRayThrough(rng, *both);
+    for (const Span& s : test::spansOf(*both, ray)) {
+      const bool inPainted = painted->contains(ray.at(0.5 * (s.in.t + s.out.t)));
+      EXPECT_EQ(s.in.primitive->material(), inPainted ? red : nullptr);
+      (inPainted ? redHits : plainHits)++;
+    }
+    for (const Span& s : test::spansOf(*part, ray)) EXPECT_EQ(s.in.primitive->material(), nullptr);
+  }
+  EXPECT_GT(redHits, 50);
+  EXPECT_GT(plainHits, 50);
+}
+
+TEST(Instance, RendersAsTheCopiedTree) {
+  // One camera for both: the instances' boxes are larger than the copy's.
+  const dvec3 centre = copied()->bounds().center();
+  const CameraSpec camera{centre + dvec3(20, -30, 25), centre, dvec3(0, 0, 1), 50.0};
+  auto render = [&](const SolidPtr& solid) {
+    Scene scene;
+    auto gold = std::make_shared<Material>();
+    gold->color = dvec3(0.9, 0.7, 0.2);
+    gold->specular = 0.5;
+    scene.objects.push_back(solidWithMaterial(solid, gold));
+    scene.camera = camera;
+    scene.lights.push_back(Light{Light::Kind::Point, dvec3(100, -100, 200)});
+    RenderOptions options(240, 180, 1);
+    options.normalAov = true;
+    options.depthAov = true;
+    return Renderer(scene, options).renderAll();
+  };
+  const RenderResult a = render(instanced()), b = render(copied());
+  int part = 0;
+  for (int y = 0; y < 180; ++y)
+    for (int x = 0; x < 240; ++x) {
+      test::expectVecNear(a.color.at(x, y), b.color.at(x, y), 1e-6);
+      test::expectVecNear(a.normal.at(x, y), b.normal.at(x, y), 1e-6);
+      part += std::isfinite(a.depth.at(x, y).x);
+    }
+  EXPECT_GT(part, 200);  // the uses cover some hundreds of pixels
+}
+
+}  // namespace
+}  // namespace csgray::detail
