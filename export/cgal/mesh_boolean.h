@@ -22,6 +22,7 @@ struct MeshBooleanStats {
   std::size_t repairs = 0;        // self-intersections from rounding removed
   std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
   std::size_t strayShells = 0;    // slivers outside the exact part, removed
+  std::size_t reordered = 0;      // 1: made on a second try, operands in reverse order
   double checkSeconds = 0.0;      // in meshDefect
 };
 

@@ -407,6 +407,22 @@ TEST(ContactExport, RandomPartsWithSharedFacesAndTangenciesCheckOut) {
   }
 }
 
+TEST(ContactExport, RandomPartsThatNeedTheirUnionsInTheOtherOrder) {
+  // Seeds of randomContactPart whose contacts, resolved pair by pair in
+  // the script's order, leave two moved faces crossing near a corner where
+  // three or more solids touch; in the reverse order they come out valid.
+  for (unsigned seed : {85u, 130u, 203u}) {
+    const std::string source = randomContactPart(seed);
+    SCOPED_TRACE(source);
+    const SolidPtr solid = part(source);
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(stats.reordered, 1u);
+    EXPECT_EQ(meshDefect(mesh).text, "");
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
+  }
+}
+
 // ---- The same primitive twice ---------------------------------------------------
 
 TEST(ContactExport, APrimitiveRepeatedIsExportedOnce) {
