@@ -1,6 +1,7 @@
 #include "export/cgal/mesh_boolean.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 
 #include <algorithm>
 #include <chrono>
@@ -245,6 +246,14 @@ bool defectPoint(const std::string& defect, dvec3& p) {
          std::sscanf(defect.c_str() + open, "(%lf, %lf, %lf)", &p.x, &p.y, &p.z) == 3;
 }
 
+// The order in which the evaluator meets operands, and whether it refuses
+// a boolean of an operand that touches itself where the other's surface
+// runs (meshOfSolid).
+struct EvaluationOrder {
+  bool reversed = false;  // each union's operands, and a difference's cutters, last to first
+  bool refusePinches = true;
+};
+
 // Evaluates the tree with exact constructions (Epeck): a corefinement's new
 // points are exact, so the next boolean in a chain sees them where they
 // are (CGAL's manual, PMP, "Corefinement and Boolean Operations": with
@@ -272,8 +281,11 @@ class Evaluator {
 
   // reversed: the operands of every union (and a difference's cutters)
   // taken last to first (see meshOfSolid).
-  Evaluator(double tolerance, const EvaluationFrame& frame, MeshBooleanStats& stats, bool reversed)
-      : tolerance_(tolerance), frame_(frame), stats_(stats), reversed_(reversed) {}
+  Evaluator(double tolerance, const EvaluationFrame& frame, MeshBooleanStats& stats,
+            const EvaluationOrder& order)
+      : tolerance_(tolerance), frame_(frame), stats_(stats), order_(order) {}
+
+  bool refusedPinch() const { return refusedPinch_; }
 
   // A mesh M with M ∩ region = solid ∩ region; M may reach past the region
   // (an unbounded primitive is meshed within a larger box), which the
@@ -300,7 +312,7 @@ class Evaluator {
       case Boolean::Op::Union: {
         std::vector<Piece> pieces;
         for (const SolidPtr& s : operands) pieces.push_back(evaluate(*s, region));
-        if (reversed_) std::reverse(pieces.begin(), pieces.end());
+        if (order_.reversed) std::reverse(pieces.begin(), pieces.end());
         return unite(std::move(pieces));
       }
       case Boolean::Op::Intersection: {
@@ -323,7 +335,7 @@ class Evaluator {
         // reach past the region: the cutters are meshed over all of it.
         std::vector<Piece> cutters;
         for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
-        if (reversed_) std::reverse(cutters.begin(), cutters.end());
+        if (order_.reversed) std::reverse(cutters.begin(), cutters.end());
         Piece cut = unite(std::move(cutters));
         if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
         // A contact's offset moved some of the minuend's faces off the
@@ -580,6 +592,20 @@ class Evaluator {
     }
     ++stats_.corefinements;
     setBooleanInProgress(booleanText(a, b, op));
+    // An operand that touches itself (solids that met at a corner, united
+    // before: CGAL gave each a vertex of its own there, at one place) must
+    // not go into a corefinement whose other operand's surface runs through
+    // that corner (CGAL's manual, PMP, corefinement: the inputs must not
+    // self-intersect); given one, CGAL crashed, or ran for minutes on a few
+    // boxes. The boolean fails instead, and meshOfSolid tries the other
+    // order, where the solids meet in another sequence (and, when that
+    // fails too, goes ahead: most such meshes CGAL does cut).
+    if (order_.refusePinches && (pinchedOn(a.mesh, b) || pinchedOn(b.mesh, a))) {
+      refusedPinch_ = true;
+      throw std::runtime_error(booleanText(a, b, op) +
+                               " meets a corner where two solids touch, and CGAL cannot cut "
+                               "there");
+    }
     // The operands as they were, for another try.
     const Mesh keptA = a.mesh, keptB = b.mesh;
     const double grown = std::max(a.grown, b.grown);
@@ -623,6 +649,24 @@ class Evaluator {
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);
+  }
+
+  // Has the mesh two vertices at one place (to doubles), within the other
+  // piece's box and on its surface?
+  static bool pinchedOn(const Mesh& mesh, const Piece& other) {
+    std::vector<std::pair<dvec3, Vertex>> near;
+    for (Vertex v : mesh.vertices())
+      if (const dvec3 p = pointOf(mesh, v); other.box.contains(p)) near.emplace_back(p, v);
+    std::sort(near.begin(), near.end(), [](const auto& x, const auto& y) {
+      return std::tie(x.first.x, x.first.y, x.first.z) < std::tie(y.first.x, y.first.y, y.first.z);
+    });
+    std::optional<CGAL::Side_of_triangle_mesh<Mesh, K>> side;
+    for (std::size_t i = 0; i + 1 < near.size(); ++i) {
+      if (near[i].first != near[i + 1].first) continue;
+      if (!side) side.emplace(other.mesh);
+      if ((*side)(mesh.point(near[i].second)) == CGAL::ON_BOUNDARY) return true;
+    }
+    return false;
   }
 
   // a = a op b by exactBoolean; false when CGAL cannot make a 2-manifold,
@@ -675,7 +719,8 @@ class Evaluator {
   const EvaluationFrame& frame_;
   std::size_t triangles_ = 0;  // tessellated so far
   MeshBooleanStats& stats_;
-  bool reversed_;
+  EvaluationOrder order_;
+  bool refusedPinch_ = false;
   std::unordered_map<const Material*, std::uint32_t> tags_;
 };
 
@@ -793,11 +838,18 @@ PartMesh partOf(const RoundedMesh& rounded, std::vector<MaterialPtr> materials) 
 // The mesh of the solid with its unions' operands in the script's order,
 // or reversed (meshOfSolid).
 PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stored,
-                     MeshBooleanStats& counts, bool reversed) {
+                     MeshBooleanStats& counts, const EvaluationOrder& order, bool& refusedPinch) {
   const EvaluationFrame frame(solid);
   const Bounds box = frame.evalBounds(solid.bounds());
-  Evaluator evaluator(tolerance, frame, counts, reversed);
-  auto piece = evaluator.evaluate(solid, box);
+  Evaluator evaluator(tolerance, frame, counts, order);
+  auto piece = [&] {
+    try {
+      return evaluator.evaluate(solid, box);
+    } catch (...) {
+      refusedPinch = evaluator.refusedPinch();
+      throw;
+    }
+  }();
   if (piece.empty()) return PartMesh{{}, {}, std::move(evaluator.materials)};
 
   RoundedMesh rounded = roundedCopy(piece.mesh, frame, stored);
@@ -886,26 +938,34 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // Where several solids touch near one place, the offsets that resolve
   // their contacts (docs/cli.md, "Contacts") are made pair by pair in the
   // order the booleans meet them, and an order can leave two moved faces
-  // crossing. The other order resolves the same contacts the other way
-  // round: of 260 random parts of touching boxes, balls and cylinders, 8
-  // failed, and 3 of them export so (3 others crash in CGAL before a
-  // second try can start). The first try's error is the one reported
-  // when both fail.
-  try {
-    return meshInOrder(solid, tolerance, stored, counts, false);
-  } catch (const std::runtime_error&) {
-    if (!hasOrderedOperands(solid)) throw;
-    const std::exception_ptr first = std::current_exception();
-    MeshBooleanStats again;
+  // crossing, or a mesh that touches itself where a later operand cuts.
+  // The other order meets the same contacts the other way round: of 300
+  // random parts of touching boxes, balls and cylinders, 8 failed or
+  // crashed in the script's order, and 5 of them export so. A boolean
+  // refused for such a corner in both orders is then made as it comes.
+  // The error reported is the first one that is not such a refusal.
+  std::vector<EvaluationOrder> orders = {{false, true}};
+  if (hasOrderedOperands(solid)) orders.push_back({true, true});
+  std::exception_ptr first, firstNotRefused;
+  bool anyRefused = false;
+  for (std::size_t k = 0; k < orders.size(); ++k) {
+    MeshBooleanStats attempt;
+    bool refusedPinch = false;
     try {
-      PartMesh part = meshInOrder(solid, tolerance, stored, again, true);
-      again.reordered = 1;
-      counts = again;
+      PartMesh part = meshInOrder(solid, tolerance, stored, attempt, orders[k], refusedPinch);
+      attempt.reordered = orders[k].reversed;
+      counts = attempt;
       return part;
     } catch (const std::runtime_error&) {
-      std::rethrow_exception(first);
+      if (!first) first = std::current_exception();
+      if (!refusedPinch && !firstNotRefused) firstNotRefused = std::current_exception();
+      anyRefused = anyRefused || refusedPinch;
     }
+    // Both orders tried with refusals: the same again, going ahead.
+    if (k + 1 == orders.size() && orders[k].refusePinches && anyRefused)
+      for (std::size_t j = 0; j <= k; ++j) orders.push_back({orders[j].reversed, false});
   }
+  std::rethrow_exception(firstNotRefused ? firstNotRefused : first);
 }
 
 }  // namespace csgray::detail
