@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include "engine/instance_surface.h"
@@ -44,12 +45,17 @@ double largest(const dvec3& c) { return std::max({c.x, c.y, c.z}); }
 
 // Does any primitive of the solid let light through? A shadow ray needs all
 // the spans of such a solid (each stretch dims it), and of any other only
-// the first boundary (an opaque stretch stops it).
-bool letsLightThrough(const Solid& solid) {
+// the first boundary (an opaque stretch stops it). A subtree shared by many
+// uses (an instance's child) is looked at once: `opaque` holds those found
+// to let none through (a million uses of the Sierpinski tetrahedron of
+// level 10 took 0.1 s otherwise).
+bool letsLightThrough(const Solid& solid, std::unordered_set<const Solid*>& opaque) {
   if (auto* primitive = dynamic_cast<const Primitive*>(&solid))
     return materialOf(primitive->material()).transparency > 0.0;
+  if (opaque.count(&solid)) return false;
   for (const SolidPtr& s : solid.children())
-    if (letsLightThrough(*s)) return true;
+    if (letsLightThrough(*s, opaque)) return true;
+  opaque.insert(&solid);
   return false;
 }
 
@@ -181,9 +187,10 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     }
   }
   if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
+  std::unordered_set<const Solid*> opaque;
   for (const SolidPtr& s : objects_) {
     s->prepare();
-    seeThrough_.push_back(letsLightThrough(*s));
+    seeThrough_.push_back(letsLightThrough(*s, opaque));
   }
   for (const SolidPtr& s : scene_.highlights) s->prepare();
   scale_ = sceneScale(scene, cameraSpec_);
