@@ -164,6 +164,31 @@ void offsetMesh(Mesh& mesh, double delta, const Bounds& near) {
   for (const auto& [v, q] : moved) mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
 }
 
+// The mesh's vertices within `near` that share their place (to doubles)
+// with another: groups of two or more, each in its own vector.
+template <class Mesh>
+std::vector<std::vector<typename Mesh::Vertex_index>> coincidentVertices(
+    const Mesh& mesh, const Bounds& near = Bounds::everything()) {
+  std::vector<std::pair<dvec3, typename Mesh::Vertex_index>> order;
+  order.reserve(mesh.number_of_vertices());
+  for (auto v : mesh.vertices())
+    if (const dvec3 p = pointOf(mesh, v); near.contains(p)) order.emplace_back(p, v);
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.x, a.first.y, a.first.z) < std::tie(b.first.x, b.first.y, b.first.z);
+  });
+  std::vector<std::vector<typename Mesh::Vertex_index>> groups;
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && order[j].first == order[i].first) ++j;
+    if (j - i > 1) {
+      groups.emplace_back();
+      for (std::size_t k = i; k < j; ++k) groups.back().push_back(order[k].second);
+    }
+    i = j;
+  }
+  return groups;
+}
+
 // Where solids touch at a point, CGAL's boolean keeps the mesh a 2-manifold
 // by giving each of them a vertex of its own there, at one place, which the
 // validity check rightly finds touching. Each such vertex is moved by delta
@@ -172,23 +197,9 @@ void offsetMesh(Mesh& mesh, double delta, const Bounds& near) {
 // many were moved.
 template <class Mesh>
 std::size_t separateCoincidentVertices(Mesh& mesh, double delta, StoredCoordinate stored) {
-  std::vector<std::pair<dvec3, typename Mesh::Vertex_index>> order;
-  order.reserve(mesh.number_of_vertices());
-  for (auto v : mesh.vertices()) order.emplace_back(pointOf(mesh, v), v);
-  auto less = [](const auto& a, const auto& b) {
-    return std::tie(a.first.x, a.first.y, a.first.z) < std::tie(b.first.x, b.first.y, b.first.z);
-  };
-  std::sort(order.begin(), order.end(), less);
   std::vector<std::pair<typename Mesh::Vertex_index, dvec3>> moved;
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i + 1;
-    while (j < order.size() && order[j].first == order[i].first) ++j;
-    if (j - i > 1)
-      for (std::size_t k = i; k < j; ++k)
-        moved.emplace_back(order[k].second,
-                           order[k].first + vertexOffset(mesh, order[k].second, -delta));
-    i = j;
-  }
+  for (const auto& group : coincidentVertices(mesh))
+    for (auto v : group) moved.emplace_back(v, pointOf(mesh, v) + vertexOffset(mesh, v, -delta));
   for (auto& [v, q] : moved)
     mesh.point(v) =
         typename Mesh::Point(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
@@ -279,8 +290,8 @@ class Evaluator {
     bool empty() const { return mesh.number_of_faces() == 0; }
   };
 
-  // reversed: the operands of every union (and a difference's cutters)
-  // taken last to first (see meshOfSolid).
+  // order: the order it meets operands in, and whether it refuses to cut
+  // where an operand touches itself (see meshOfSolid).
   Evaluator(double tolerance, const EvaluationFrame& frame, MeshBooleanStats& stats,
             const EvaluationOrder& order)
       : tolerance_(tolerance), frame_(frame), stats_(stats), order_(order) {}
@@ -654,17 +665,10 @@ class Evaluator {
   // Has the mesh two vertices at one place (to doubles), within the other
   // piece's box and on its surface?
   static bool pinchedOn(const Mesh& mesh, const Piece& other) {
-    std::vector<std::pair<dvec3, Vertex>> near;
-    for (Vertex v : mesh.vertices())
-      if (const dvec3 p = pointOf(mesh, v); other.box.contains(p)) near.emplace_back(p, v);
-    std::sort(near.begin(), near.end(), [](const auto& x, const auto& y) {
-      return std::tie(x.first.x, x.first.y, x.first.z) < std::tie(y.first.x, y.first.y, y.first.z);
-    });
     std::optional<CGAL::Side_of_triangle_mesh<Mesh, K>> side;
-    for (std::size_t i = 0; i + 1 < near.size(); ++i) {
-      if (near[i].first != near[i + 1].first) continue;
+    for (const auto& group : coincidentVertices(mesh, other.box)) {
       if (!side) side.emplace(other.mesh);
-      if ((*side)(mesh.point(near[i].second)) == CGAL::ON_BOUNDARY) return true;
+      if ((*side)(mesh.point(group.front())) == CGAL::ON_BOUNDARY) return true;
     }
     return false;
   }
