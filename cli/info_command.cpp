@@ -23,6 +23,7 @@ void printInfo(const std::string& script, const Scene& scene) {
     TreeStats s = treeStats(*object);
     stats.primitives += s.primitives;
     stats.booleans += s.booleans;
+    stats.storedPrimitives += s.storedPrimitives;
   }
   Bounds b = scene.bounds();
   std::cout << script << "\n";
@@ -33,7 +34,11 @@ void printInfo(const std::string& script, const Scene& scene) {
     if (b.finite()) std::cout << "  size:          " << formatPoint(b.size()) << "\n";
   }
   std::cout << "  objects:       " << scene.objects.size() << "\n"
-            << "  primitives:    " << stats.primitives << "\n"
+            << "  primitives:    " << stats.primitives;
+  // A part placed many times by instances is stored once (engine/instance.h).
+  if (stats.storedPrimitives != stats.primitives)
+    std::cout << " (" << stats.storedPrimitives << " distinct, the rest placed again by instances)";
+  std::cout << "\n"
             << "  boolean nodes: " << stats.booleans << "\n"
             << "  surfaces:      " << scene.surfaces.size() << "\n"
             << "  lights:        " << scene.lights.size()

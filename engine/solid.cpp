@@ -1,5 +1,7 @@
 #include "engine/solid.h"
 
+#include <unordered_set>
+
 #include "engine/boolean.h"
 #include "engine/instance.h"
 #include "engine/primitive.h"
@@ -38,8 +40,22 @@ std::string SourceLine::text() const {
   return via > 0 && via != line ? text + " via line " + std::to_string(via) : text;
 }
 
+namespace {
+
+// The primitives under solid that are not under a subtree already seen.
+std::size_t storedPrimitives(const Solid& solid, std::unordered_set<const Solid*>& seen) {
+  if (!seen.insert(&solid).second) return 0;
+  if (dynamic_cast<const Primitive*>(&solid)) return 1;
+  std::size_t count = 0;
+  for (const SolidPtr& child : solid.children()) count += storedPrimitives(*child, seen);
+  return count;
+}
+
+}  // namespace
+
 TreeStats treeStats(const Solid& solid) {
-  return TreeStats{solid.primitiveCount(), solid.booleanCount()};
+  std::unordered_set<const Solid*> seen;
+  return TreeStats{solid.primitiveCount(), solid.booleanCount(), storedPrimitives(solid, seen)};
 }
 
 }  // namespace csgray::detail

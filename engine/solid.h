@@ -123,10 +123,13 @@ class Solid : public std::enable_shared_from_this<Solid> {
   mutable SourceLine origin_;
 };
 
-// Counts of a tree, for `csgray info`.
+// Counts of a tree, for `csgray info`: primitives and booleans as the part
+// uses them (a subtree placed by several instances counts once per use),
+// and the primitives stored, each shared subtree counted once.
 struct TreeStats {
   std::size_t primitives = 0;
   std::size_t booleans = 0;
+  std::size_t storedPrimitives = 0;
 };
 TreeStats treeStats(const Solid& solid);
 

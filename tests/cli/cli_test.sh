@@ -79,6 +79,18 @@ else
   fail "info"; cat "$work/stdout"
 fi
 
+# A moved union is stored once: info counts its uses and what is stored.
+cat >"$work/instances.lua" <<'EOF2'
+local pair = union(sphere{r=1}, sphere{r=1}:translate(1.5, 0, 0))
+return union(pair, pair:translate(0, 5, 0), pair:translate(0, 10, 0))
+EOF2
+if "$csgray" info "$work/instances.lua" >"$work/stdout" 2>&1 &&
+   grep -q 'primitives: *6 (2 distinct, the rest placed again by instances)' "$work/stdout"; then
+  pass
+else
+  fail "info with instances"; cat "$work/stdout"
+fi
+
 # -D sets a global.
 if "$csgray" info "$work/param.lua" -D radius=3 >"$work/stdout" 2>&1 &&
    grep -q '\[3, 3, 3\]' "$work/stdout"; then

@@ -454,6 +454,18 @@ TEST(BooleanTree, TreeStatsCountsNodes) {
   EXPECT_EQ(stats.booleans, 3);
 }
 
+TEST(BooleanTree, TreeStatsCountsASharedSubtreeOnceAsStored) {
+  // Moving a boolean makes an instance that shares its tree: three uses of
+  // a union of two primitives are six primitives in use, two stored.
+  SolidPtr pair = unionOf({sphereAt(1.0, dvec3(0.0)), sphereAt(1.0, dvec3(1.5, 0, 0))});
+  SolidPtr three = unionOf({pair, pair->transformed(Affine::translation({0, 5, 0})),
+                            pair->transformed(Affine::translation({0, 10, 0}))});
+  TreeStats stats = treeStats(*three);
+  EXPECT_EQ(stats.primitives, 6u);
+  EXPECT_EQ(stats.storedPrimitives, 2u);
+  EXPECT_EQ(treeStats(*pair).storedPrimitives, treeStats(*pair).primitives);
+}
+
 TEST(BooleanTree, KindsAndOperands) {
   SolidPtr a = Primitive::create<Sphere>(1.0), b = Primitive::create<Box>(dvec3(1.0));
   EXPECT_EQ(unionOf({a, b})->kind(), "union");
