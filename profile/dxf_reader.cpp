@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <map>
 #include <numbers>
@@ -13,6 +14,7 @@
 #include <string_view>
 
 #include "engine/degrees.h"
+#include "profile/b_spline.h"
 #include "profile/region_evaluation.h"
 
 namespace csgray::detail {
@@ -286,14 +288,18 @@ class DxfReader {
       ellipse(r, fragmentScale, edges);
     } else if (r.type == "LWPOLYLINE") {
       lightweightPolyline(r, inBlock, edges);
+    } else if (r.type == "SPLINE") {
+      spline(r, edges);
     } else if (r.type == "INSERT") {
       insert(r, into);
     } else {
       fail(r.line, std::string(r.type) +
                        " entities are not supported (LINE, LWPOLYLINE, POLYLINE, ARC, CIRCLE, "
-                       "ELLIPSE and INSERT are)");
+                       "ELLIPSE, SPLINE and INSERT are)");
     }
-    add(edges, r.type != "ELLIPSE" && r.type != "LINE" && mirrored(r), into);
+    // Lines, ellipses and splines are given in world coordinates.
+    const bool world = r.type == "ELLIPSE" || r.type == "LINE" || r.type == "SPLINE";
+    add(edges, !world && mirrored(r), into);
   }
 
   double positive(const Record& r, int code, const std::string& what) const {
@@ -352,6 +358,36 @@ class DxfReader {
     const dmat2 axes(major, ratio * dvec2(-major.y, major.x));
     addArc(ProfileEdge::arc(center, axes, start, end), glm::length(major) * fragmentScale, start,
            end - start, 2.0 * pi, out);
+  }
+
+  // A SPLINE by its degree (group 71), knots (40, in order) and control
+  // points (10/20), as Bézier edges (profile/b_spline.h). Splines with
+  // weights that differ (rational: 41) have no exact Bézier form here, and
+  // a spline given by fit points alone (11/21) leaves its curve to the
+  // program that drew it: both are refused.
+  void spline(const Record& r, std::vector<ProfileEdge>& out) const {
+    BSpline s;
+    s.degree = int(number(r, 71, 3.0));
+    std::vector<double> weights;
+    bool fitPoints = false;
+    for (const Group& g : r.groups) {
+      if (g.code == 40) s.knots.push_back(number(g));
+      if (g.code == 41) weights.push_back(number(g));
+      if (g.code == 10) s.controls.push_back({number(g), 0.0});
+      if (g.code == 20 && !s.controls.empty()) s.controls.back().y = number(g);
+      fitPoints |= g.code == 11;
+    }
+    if (s.controls.empty())
+      fail(r.line, fitPoints ? "a SPLINE given by fit points only is not supported (give its "
+                               "control points and knots)"
+                             : "a SPLINE without control points");
+    if (std::adjacent_find(weights.begin(), weights.end(), std::not_equal_to<>()) != weights.end())
+      fail(r.line, "a rational SPLINE (control points of different weights) is not supported");
+    try {
+      out = bSplineEdges(s);
+    } catch (const std::invalid_argument& e) {
+      fail(r.line, std::string("SPLINE: ") + e.what());
+    }
   }
 
   void lightweightPolyline(const Record& r, bool inBlock, std::vector<ProfileEdge>& out) const {

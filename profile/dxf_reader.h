@@ -1,10 +1,11 @@
 // A region from a DXF drawing (AutoCAD's Drawing Interchange Format, ASCII):
 // OpenSCAD's import() of a .dxf file, and import_dxf{} in scripts
 // (docs/script.md, "DXF drawings"). The entities LINE, LWPOLYLINE and
-// POLYLINE (with bulges: arcs), ARC, CIRCLE, ELLIPSE and INSERT (blocks,
-// nested) are joined end to end into closed outlines, filled by the
-// even-odd rule as OpenSCAD fills them. Arcs, circles and ellipses stay
-// exact arcs unless `fragments` asks for OpenSCAD's polygons. Annotations
+// POLYLINE (with bulges: arcs), ARC, CIRCLE, ELLIPSE, SPLINE (which
+// OpenSCAD does not read) and INSERT (blocks, nested) are joined end to
+// end into closed outlines, filled by the even-odd rule as OpenSCAD fills
+// them. Arcs, circles and ellipses stay exact arcs unless `fragments` asks
+// for OpenSCAD's polygons; splines stay exact Bézier curves. Annotations
 // (DIMENSION, TEXT, MTEXT, POINT, HATCH, ...) are left out.
 //
 // The format: Autodesk, "DXF Reference" (AutoCAD 2012), group codes and the
@@ -33,8 +34,8 @@ struct DxfOptions {
 // The region the drawing's text draws; fileName is used in messages.
 // Throws std::invalid_argument "file:line: what" for text that is not DXF,
 // a value that is not a number, a truncated section, an unknown block, an
-// entity that draws shapes csgray cannot read (SPLINE, ...), and a layer
-// that draws nothing.
+// entity that draws shapes csgray cannot read (3DFACE, a rational SPLINE,
+// ...), and a layer that draws nothing.
 RegionPtr readDxf(const std::string& text, const std::string& fileName, const DxfOptions& options);
 
 }  // namespace csgray::detail

@@ -168,6 +168,47 @@ TEST(DxfReader, LayersOriginScaleAndBlocks) {
   EXPECT_NEAR(areaOf(drawing(entity("INSERT", {{2, "two"}}), blocks)), 2.0, 1e-9);
 }
 
+// A SPLINE entity: degree (71), knots (40) and control points (10/20).
+std::string spline(int degree, const std::vector<double>& knots, const std::vector<dvec2>& controls,
+                   const std::vector<std::pair<int, std::string>>& more = {}) {
+  std::vector<std::pair<int, std::string>> groups = {{8, "0"}, {71, std::to_string(degree)}};
+  for (double k : knots) groups.push_back({40, num(k)});
+  for (const dvec2& p : controls) {
+    groups.push_back({10, num(p.x)});
+    groups.push_back({20, num(p.y)});
+  }
+  groups.insert(groups.end(), more.begin(), more.end());
+  return entity("SPLINE", groups);
+}
+
+TEST(DxfReader, SplinesAreExactCurves) {
+  // A closed uniform quadratic spline on the corners of a square of side 2
+  // (the first two corners repeated at the end): four parabolas from one
+  // side's midpoint to the next, each cutting off two thirds of its
+  // corner's triangle (Archimedes' quadrature of the parabola), so the
+  // area is the inner diamond's 2 plus 4 · (2/3) · (1/2) = 10/3.
+  const std::vector<dvec2> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  EXPECT_NEAR(areaOf(drawing(spline(2, {0, 1, 2, 3, 4, 5, 6, 7, 8}, square))), 10.0 / 3.0, 1e-8);
+  // Equal weights are a plain spline. A clamped cubic of four points is
+  // one Bézier: from (0,0) by (0,3), (3,3) to (3,0), x = 9s² − 6s³ and
+  // y = 9s(1 − s), so with the x axis back it encloses
+  // ∫ y dx = ∫₀¹ 9s(1 − s) · 18s(1 − s) ds = 162 · B(3, 3) = 162/30.
+  const std::string cubic = spline(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {0, 3}, {3, 3}, {3, 0}},
+                                   {{41, "1"}, {41, "1"}, {41, "1"}, {41, "1"}});
+  EXPECT_NEAR(areaOf(drawing(cubic + line(3, 0, 0, 0))), 162.0 / 30.0, 1e-8);
+  // Rational splines and splines by fit points only are refused.
+  EXPECT_EQ(error(drawing(spline(2, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}},
+                                 {{41, "1"}, {41, "0.7071"}, {41, "1"}}))),
+            "part.dxf:7: a rational SPLINE (control points of different weights) is not "
+            "supported");
+  EXPECT_EQ(error(drawing(entity("SPLINE", {{8, "0"}, {71, "3"}, {11, "0"}, {21, "0"}}))),
+            "part.dxf:7: a SPLINE given by fit points only is not supported (give its control "
+            "points and knots)");
+  EXPECT_EQ(error(drawing(spline(3, {0, 0, 1, 1}, square))),
+            "part.dxf:7: SPLINE: a spline with 6 control points of degree 3 needs 10 knots, not "
+            "4");
+}
+
 TEST(DxfReader, BadFilesAreOneLineErrors) {
   EXPECT_EQ(error(""), "part.dxf: not a DXF drawing (no ENTITIES section)");
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\nLINE\n"),
@@ -178,9 +219,9 @@ TEST(DxfReader, BadFilesAreOneLineErrors) {
             "part.dxf:7: group code 10 has no value");
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n" + line(0, 0, 1, 1)),
             "part.dxf:16: the file ends inside the ENTITIES section (is it cut short?)");
-  EXPECT_EQ(error(drawing(entity("SPLINE", {{8, "0"}}))),
-            "part.dxf:7: SPLINE entities are not supported (LINE, LWPOLYLINE, POLYLINE, ARC, "
-            "CIRCLE, ELLIPSE and INSERT are)");
+  EXPECT_EQ(error(drawing(entity("3DFACE", {{8, "0"}}))),
+            "part.dxf:7: 3DFACE entities are not supported (LINE, LWPOLYLINE, POLYLINE, ARC, "
+            "CIRCLE, ELLIPSE, SPLINE and INSERT are)");
   EXPECT_EQ(error(drawing(entity("INSERT", {{2, "nothing"}}))),
             "part.dxf:7: INSERT of the block \"nothing\", which the file does not define");
   const std::string loop =
