@@ -1,6 +1,7 @@
 #include "view/view_session.h"
 
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 
 #include "check/exact_volume.h"
@@ -182,6 +183,10 @@ PickResult ViewSession::pick(const FrameRequest& request, double x, double y) {
     if (hit->boundary.flip) result.normal = -result.normal;
   } else if (hit->surface) {
     result.kind = hit->surface->kind();
+    // An open surface has two sides: the normal of the one seen (0 − n, not
+    // −n, so that no component is −0).
+    result.normal = hit->surface->normalAt(result.point, hit->face);
+    if (glm::dot(result.normal, ray.dir) > 0.0) result.normal = dvec3(0.0) - result.normal;
   }
   return result;
 }

@@ -157,6 +157,17 @@ TEST_F(ViewServerTest, PickNamesThePointThePrimitiveAndItsLine) {
   EXPECT_EQ(get("/pick?size=101x101&" + kFront + "&ortho=20&x=1&y=1"), "{\"hit\":false}");
 }
 
+TEST_F(ViewServerTest, PickOnAnOpenSurfaceGivesTheNormalOfTheSideSeen) {
+  // A square sheet in the plane y = 0, its faces wound to face +y, seen
+  // from -y: the normal points back at the camera.
+  start(
+      "return scene{objects={mesh_surface{points={{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, "
+      "{5, 0, -5}}, faces={{0, 1, 2}, {0, 2, 3}}, smooth=false}}}\n");
+  const std::string hit = get("/pick?size=101x101&" + kFront + "&ortho=20&x=60.5&y=40.5");
+  EXPECT_NE(hit.find("\"kind\":\"mesh surface\""), std::string::npos) << hit;
+  EXPECT_NE(hit.find("\"normal\":[0,-1,0]"), std::string::npos) << hit;
+}
+
 TEST_F(ViewServerTest, ASectionCutsThePartInTheFrameAndThePick) {
   start("return box{size={10, 10, 10}, center=true} - box{size={8, 8, 8}, center=true}\n");
   const std::string view = "size=101x101&" + kFront + "&ortho=20";
