@@ -262,6 +262,28 @@ TEST(DxfReader, CutShortOrGarbledFilesNeverCrash) {
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
   }
+  // The same for a drawing with a spline (examples/dxf_cam.lua's), whose
+  // knots and control points a cut or a changed byte leave out of step.
+  std::ifstream camFile(CSGRAY_SOURCE_DIR "/examples/drawings/cam.dxf");
+  std::stringstream cam;
+  cam << camFile.rdbuf();
+  const std::string drawn = cam.str();
+  DxfOptions lobe;
+  lobe.layer = "cam";
+  EXPECT_NO_THROW(readDxf(drawn, "part.dxf", lobe));
+  for (std::size_t at = 1; at < drawn.size(); at += 59) {
+    std::string garbled = drawn;
+    garbled[at] = "x7\n-."[at % 5];
+    for (const std::string& text : {drawn.substr(0, at), garbled}) {
+      try {
+        readDxf(text, "part.dxf", lobe);
+      } catch (const std::invalid_argument& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind("part.dxf", 0), 0u) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      }
+    }
+  }
 }
 
 }  // namespace
