@@ -21,8 +21,8 @@ namespace {
 CsgImportOptions csgOptions(const std::string& path, const ScriptOptions& options) {
   CsgImportOptions csg;
   csg.facets = options.openscadFacets ? CsgFacets::OpenScad : CsgFacets::Exact;
-  std::string folder = std::filesystem::path(path).parent_path().string();
-  if (folder.empty()) folder = ".";
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string folder = parent.empty() ? std::string(".") : parent.string();
   csg.resolveFile = [folder, &options](const std::string& name) {
     return allowedFile("import", name, folder, options);
   };
