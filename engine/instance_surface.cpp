@@ -37,14 +37,14 @@ class UseSearch {
   bool visit(const Solid& node, const Ray& ray) {
     if (&node == b_.primitive) return offer(static_cast<const Primitive&>(node), ray);
     if (!near(node.bounds(), ray.at(b_.t))) return false;
-    if (auto* instance = dynamic_cast<const Instance*>(&node)) {
+    if (const Instance* instance = node.asInstance()) {
       const double before = distance_;
       const bool done = visit(*instance->child(), instance->rayToChild(ray));
       // A better use below this instance: its normal into this frame.
       if (distance_ < before) best_.normal = instance->frame().normalToWorld(best_.normal);
       return done;
     }
-    if (auto* boolean = dynamic_cast<const Boolean*>(&node)) {
+    if (const Boolean* boolean = node.asBoolean()) {
       // The operands whose boxes the ray meets about b.t, through the
       // node's BVH: a wide union is not searched operand by operand.
       Ray near = ray;

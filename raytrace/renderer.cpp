@@ -271,13 +271,16 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     auto material = [](const Span& s) -> const Material& {
       return materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
     };
-    // An opaque solid stops the light at its first stretch, which its
-    // first boundary tells; a transparent one dims it by every stretch.
-    if (seeThrough_[i]) {
-      objects_[i]->spans(ray, spans);
-    } else {
-      objects_[i]->spansToFirstBoundary(ray, spans);
+    // An opaque solid stops the light wherever it meets the segment: any
+    // hit will do, not the nearest. (Its stretch's material would dim the
+    // light by a transparency of 0: to nothing.) A transparent solid dims
+    // it by every stretch.
+    if (!seeThrough_[i]) {
+      if (!objects_[i]->meetsWindow(ray, spans)) return true;
+      pass = dvec3(0.0);
+      return false;
     }
+    objects_[i]->spans(ray, spans);
     for (const Span& s : spans)
       if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
     return true;
