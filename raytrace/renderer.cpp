@@ -461,19 +461,22 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   }
   const Material& m = *sp.material;
 
-  // The media beyond the surface: the span list says whether the ray
-  // enters or leaves the solid; an open surface encloses nothing.
-  Media beyond = hit->surface    ? media
-                 : hit->entering ? media.entered(hit->object, m.ior)
-                                 : media.left(hit->object);
-  double n1 = media.current(), n2 = beyond.current();
-
   // Inside a transparent solid the ray sees the light beyond the face it
   // leaves by: the stretch was dimmed and tinted where the ray entered.
   bool leaving = !hit->surface && !hit->entering && m.transparency > 0.0;
   double kr = leaving ? 0.0 : m.reflection;
   double kt = leaving ? 1.0 : m.transparency;
   dvec3 tint = leaving ? dvec3(1.0) : m.filter;
+
+  // The media beyond the surface, for a ray that goes on through it (not
+  // copied at an opaque one): the span list says whether the ray enters
+  // or leaves the solid; an open surface encloses nothing.
+  Media beyond;
+  if (kt > 0.0)
+    beyond = hit->surface    ? media
+             : hit->entering ? media.entered(hit->object, m.ior)
+                             : media.left(hit->object);
+  double n1 = media.current(), n2 = beyond.current();
   // (A surface that passes all light shows none of its own: no shadow rays.)
   dvec3 color(0.0);
   if (!leaving && kt < 1.0) {
