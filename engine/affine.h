@@ -32,6 +32,8 @@ class Affine {
   const glm::dmat4& worldFromObject() const { return worldFromObject_; }
   const glm::dmat4& objectFromWorld() const { return objectFromWorld_; }
   bool isIdentity() const { return identity_; }
+  // Is the linear part the identity (rayToObject then only moves the origin)?
+  bool isTranslation() const { return translation_; }
 
   dvec3 pointToObject(const dvec3& p) const { return dvec3(objectFromWorld_ * glm::dvec4(p, 1.0)); }
   dvec3 pointToWorld(const dvec3& p) const { return dvec3(worldFromObject_ * glm::dvec4(p, 1.0)); }

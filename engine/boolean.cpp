@@ -285,6 +285,17 @@ void Boolean::unionToFirstBoundary(const Ray& ray, SpanList& out) const {
   if (startsInside) spans(ray, out);
 }
 
+bool Boolean::meetsWindow(const Ray& ray, SpanList& scratch) const {
+  if (op_ != Op::Union) return Solid::meetsWindow(ray, scratch);
+  // (A union without a BVH tests its operands' boxes, not its own.)
+  bool met = false;
+  forEachOperandHitBy(ray, [&](const Solid& s) {
+    met = s.meetsWindow(ray, scratch);
+    return !met;
+  });
+  return met;
+}
+
 bool Boolean::contains(const dvec3& p) const {
   switch (op_) {
     case Op::Union:

@@ -43,6 +43,9 @@ class Boolean : public Solid {
   // along all of the first operand. For a union: the first boundary of the
   // operand the ray enters first, the others asked only up to it.
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  // For a union: does any operand meet the window? The first one that does
+  // ends the search.
+  bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool contains(const dvec3& p) const override;
   std::span<const SolidPtr> children() const override { return operands_; }
   // Calls visit(operand) for each operand whose box the ray meets within
@@ -50,6 +53,7 @@ class Boolean : public Solid {
   template <class Visit>
   void forEachOperandHitBy(const Ray& ray, Visit&& visit) const;
   std::string kind() const override;
+  const Boolean* asBoolean() const override { return this; }
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
   SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;
   void prepare() const override;

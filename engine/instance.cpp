@@ -34,6 +34,10 @@ void Instance::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   child_->spansToFirstBoundary(rayToChild(ray), out);
 }
 
+bool Instance::meetsWindow(const Ray& ray, SpanList& scratch) const {
+  return child_->meetsWindow(rayToChild(ray), scratch);
+}
+
 bool Instance::contains(const dvec3& p) const {
   return bounds_.contains(p) && child_->contains(worldFromChild_.pointToObject(p));
 }

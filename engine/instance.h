@@ -25,11 +25,13 @@ class Instance : public Solid {
   const Bounds& bounds() const override { return bounds_; }
   void spans(const Ray& ray, SpanList& out) const override;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool contains(const dvec3& p) const override;
   void prepare() const override { child_->prepare(); }
   std::span<const SolidPtr> children() const override { return {&child_, 1}; }
   // What the user made and moved: "union", ...
   std::string kind() const override { return child_->kind(); }
+  const Instance* asInstance() const override { return this; }
   // The child's primitives moved into this instance's frame, then f.
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
   SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;

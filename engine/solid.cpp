@@ -24,6 +24,13 @@ SolidPtr Solid::transformed(const Affine& worldFromObject) const {
       [&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
 }
 
+bool Solid::meetsWindow(const Ray& ray, SpanList& scratch) const {
+  spansToFirstBoundary(ray, scratch);
+  for (const Span& s : scratch)
+    if (s.out.t > ray.tMin && s.in.t < ray.tMax) return true;
+  return false;
+}
+
 SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {
   SharedMap done;
   return mapSharedPrimitives(

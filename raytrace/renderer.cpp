@@ -271,13 +271,16 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     auto material = [](const Span& s) -> const Material& {
       return materialOf(s.in.t > 0.0 || !s.out.primitive ? s.in : s.out);
     };
-    // An opaque solid stops the light at its first stretch, which its
-    // first boundary tells; a transparent one dims it by every stretch.
-    if (seeThrough_[i]) {
-      objects_[i]->spans(ray, spans);
-    } else {
-      objects_[i]->spansToFirstBoundary(ray, spans);
+    // An opaque solid stops the light wherever it meets the segment: any
+    // hit will do, not the nearest. (Its stretch's material would dim the
+    // light by a transparency of 0: to nothing.) A transparent solid dims
+    // it by every stretch.
+    if (!seeThrough_[i]) {
+      if (!objects_[i]->meetsWindow(ray, spans)) return true;
+      pass = dvec3(0.0);
+      return false;
     }
+    objects_[i]->spans(ray, spans);
     for (const Span& s : spans)
       if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
     return true;
@@ -458,19 +461,22 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   }
   const Material& m = *sp.material;
 
-  // The media beyond the surface: the span list says whether the ray
-  // enters or leaves the solid; an open surface encloses nothing.
-  Media beyond = hit->surface    ? media
-                 : hit->entering ? media.entered(hit->object, m.ior)
-                                 : media.left(hit->object);
-  double n1 = media.current(), n2 = beyond.current();
-
   // Inside a transparent solid the ray sees the light beyond the face it
   // leaves by: the stretch was dimmed and tinted where the ray entered.
   bool leaving = !hit->surface && !hit->entering && m.transparency > 0.0;
   double kr = leaving ? 0.0 : m.reflection;
   double kt = leaving ? 1.0 : m.transparency;
   dvec3 tint = leaving ? dvec3(1.0) : m.filter;
+
+  // The media beyond the surface, for a ray that goes on through it (not
+  // copied at an opaque one): the span list says whether the ray enters
+  // or leaves the solid; an open surface encloses nothing.
+  Media beyond;
+  if (kt > 0.0)
+    beyond = hit->surface    ? media
+             : hit->entering ? media.entered(hit->object, m.ior)
+                             : media.left(hit->object);
+  double n1 = media.current(), n2 = beyond.current();
   // (A surface that passes all light shows none of its own: no shadow rays.)
   dvec3 color(0.0);
   if (!leaving && kt < 1.0) {

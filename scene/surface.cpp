@@ -46,6 +46,18 @@ void basisAround(const dvec3& n, dvec3& a, dvec3& b) {
   b = glm::cross(n, a);
 }
 
+// Coordinate `axis` of a world point (w = 1) or direction (w = 0) in the
+// frame's object space, bit for bit as Affine::rayToObject maps it: as
+// given for the identity, moved for a translation, else summed in the
+// order of glm's matrix product, (m₀x + m₁y) + (m₂z + m₃w) (the build
+// contracts no products into fused multiply-adds).
+double objectCoordinate(const Affine& frame, int axis, const dvec3& v, double w) {
+  const glm::dmat4& m = frame.objectFromWorld();
+  if (frame.isIdentity()) return v[axis];
+  if (frame.isTranslation()) return w == 0.0 ? v[axis] : v[axis] + m[3][axis];
+  return (m[0][axis] * v.x + m[1][axis] * v.y) + (m[2][axis] * v.z + m[3][axis] * w);
+}
+
 // The frame with the given columns; a singular or non-finite one (which the
 // shape's own checks should already have refused) is reported under the
 // shape's name.
@@ -148,15 +160,23 @@ SurfacePtr Surface::parallelogram(const dvec3& origin, const dvec3& u, const dve
 std::optional<double> Surface::planeHit(const Ray& ray) const {
   // In the object frame the supporting plane is z = 0 with n = (0, 0, 1) and
   // t = 0, so λ = −n·w / n·r (docs/theory.md) is −o.z / d.z. The mapped
-  // ray keeps its parameter, so λ is the world ray's parameter too.
-  Ray r = frame_.isIdentity() ? ray : frame_.rayToObject(ray);
+  // ray keeps its parameter, so λ is the world ray's parameter too. Only
+  // the object z decides whether the ray meets the plane within its
+  // window: x and y are mapped only for a ray that does (most shadow rays
+  // from the ground do not), not the whole ray through the 4 × 4 matrix.
+  auto object = [&](int axis, const dvec3& origin, const dvec3& dir) {
+    return dvec2(objectCoordinate(frame_, axis, origin, 1.0),
+                 objectCoordinate(frame_, axis, dir, 0.0));
+  };
+  const dvec2 z = object(2, ray.origin, ray.dir);
   // Parallel to the plane, or lying in it: no hit.
-  if (r.dir.z == 0.0) return std::nullopt;
-  double t = -r.origin.z / r.dir.z;
+  if (z.y == 0.0) return std::nullopt;
+  double t = -z.x / z.y;
   // Also refuses NaN and an overflow to infinity.
   if (!(t > ray.tMin && t < ray.tMax)) return std::nullopt;
   // The linear factors (ϑ, φ) of the hit are its object (x, y) (Winkler, 17.3.2.3).
-  double x = r.origin.x + t * r.dir.x, y = r.origin.y + t * r.dir.y;
+  const dvec2 ox = object(0, ray.origin, ray.dir), oy = object(1, ray.origin, ray.dir);
+  double x = ox.x + t * ox.y, y = oy.x + t * oy.y;
   bool inside = false;
   switch (shape_) {
     case Shape::Plane:

@@ -162,6 +162,68 @@ TEST(Instance, NormalsUnderNestedInstancesAreTheCopys) {
   EXPECT_GT(compared, 4000);
 }
 
+// A boolean moved as a whole (one instance, or instances of instances,
+// over a tree without any) has its normals found through the frames of
+// the chain, without the search: the copy's, also under a non-uniform
+// scale between them.
+TEST(Instance, NormalsUnderAChainOfInstancesAreTheCopys) {
+  const Frames f;
+  const SolidPtr part = piece();
+  const SolidPtr once = part->transformed(f.b);
+  const SolidPtr chain = std::make_shared<Instance>(std::make_shared<Instance>(part, f.c), f.d);
+  const SolidPtr onceCopy = copyMoved(part, f.b), chainCopy = copyMoved(copyMoved(part, f.c), f.d);
+  std::mt19937_64 rng(13);
+  int compared = 0;
+  for (const auto& [shared, copy] : {std::pair(once, onceCopy), std::pair(chain, chainCopy)}) {
+    ASSERT_TRUE(shared->hasInstances());
+    for (int i = 0; i < 2000; ++i) {
+      const Ray ray = randomRayThrough(rng, *copy);
+      const SpanList a = test::spansOf(*shared, ray), b = test::spansOf(*copy, ray);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::uint32_t k = 0; k < a.size(); ++k)
+        for (int end = 0; end < 2; ++end) {
+          const Boundary& x = end ? a[k].out : a[k].in;
+          const Boundary& y = end ? b[k].out : b[k].in;
+          const dvec3 expected = y.primitive->normal(ray.at(y.t), int(y.face));
+          test::expectVecNear(boundarySurface(*shared, ray, x).normal, expected, 1e-9);
+          ++compared;
+        }
+    }
+  }
+  EXPECT_GT(compared, 2000);
+}
+
+// The shadow ray's question, whether a solid meets a window of the ray,
+// has the answer of the solid's spans there: for unions of instances
+// (which stop at the first operand that meets it), their copies, and the
+// differences within, on random windows along random lines.
+TEST(Instance, MeetsAWindowWhereItsSpansLie) {
+  const SolidPtr shared = instanced(), copy = copied(), part = piece();
+  shared->prepare();
+  copy->prepare();
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> along(150.0, 250.0);
+  int met = 0, missed = 0;
+  SpanList scratch;
+  for (int i = 0; i < 4000; ++i) {
+    Ray ray = randomRayThrough(rng, *copy);
+    ray.tMin = along(rng);
+    ray.tMax = ray.tMin + 0.25 * along(rng) - 37.0;
+    for (const SolidPtr& solid : {shared, copy, part}) {
+      Ray whole = ray;
+      whole.tMin = -kInfinity;
+      whole.tMax = kInfinity;
+      bool inWindow = false;
+      for (const Span& s : test::spansOf(*solid, whole))
+        inWindow = inWindow || (s.out.t > ray.tMin && s.in.t < ray.tMax);
+      EXPECT_EQ(solid->meetsWindow(ray, scratch), inWindow) << i;
+      (inWindow ? met : missed)++;
+    }
+  }
+  EXPECT_GT(met, 500);
+  EXPECT_GT(missed, 500);
+}
+
 TEST(Instance, AMaterialGivenToOneUseStaysWithIt) {
   auto red = std::make_shared<Material>();
   red->color = dvec3(1, 0, 0);
