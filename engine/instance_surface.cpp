@@ -12,6 +12,11 @@ namespace csgray::detail {
 
 namespace {
 
+// The use key one instance further out (BoundarySurface::use).
+std::uintptr_t useThrough(std::uintptr_t use, const Instance& instance) {
+  return use * 1000003u ^ reinterpret_cast<std::uintptr_t>(&instance);
+}
+
 BoundarySurface surfaceOf(const Primitive& primitive, const dvec3& point, const Boundary& b,
                           bool texture) {
   BoundarySurface s;
@@ -42,7 +47,10 @@ class UseSearch {
       const double before = distance_;
       const bool done = visit(*instance->child(), instance->rayToChild(ray));
       // A better use below this instance: its normal into this frame.
-      if (distance_ < before) best_.normal = instance->frame().normalToWorld(best_.normal);
+      if (distance_ < before) {
+        best_.normal = instance->frame().normalToWorld(best_.normal);
+        best_.use = useThrough(best_.use, *instance);
+      }
       return done;
     }
     if (const Boolean* boolean = node.asBoolean()) {
@@ -107,7 +115,10 @@ std::optional<BoundarySurface> underInstanceChain(const Solid& node, const Ray& 
   if (!instance) return std::nullopt;
   std::optional<BoundarySurface> s =
       underInstanceChain(*instance->child(), instance->rayToChild(ray), b, texture);
-  if (s) s->normal = instance->frame().normalToWorld(s->normal);
+  if (s) {
+    s->normal = instance->frame().normalToWorld(s->normal);
+    s->use = useThrough(s->use, *instance);
+  }
   return s;
 }
 

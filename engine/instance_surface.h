@@ -8,6 +8,8 @@
 // that is shaded pays for it; a tree without instances pays nothing.
 #pragma once
 
+#include <cstdint>
+
 #include "engine/solid.h"
 
 namespace csgray::detail {
@@ -16,6 +18,10 @@ struct BoundarySurface {
   dvec3 normal;         // unit, outward from the primitive (a flip is the caller's)
   dvec3 texturePoint;   // Primitive::texturePoint, when asked for
   dvec3 textureNormal;  // Primitive::textureNormal, when asked for
+  // Which use of the primitive: 0 where it has one; under instances, a key
+  // of the instances on the way to it, the same for the same use (the edge
+  // lines tell two uses of one primitive apart by it).
+  std::uintptr_t use = 0;
 };
 
 // The surface at boundary b (b.primitive not null) of a ray through root,

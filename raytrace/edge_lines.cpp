@@ -23,7 +23,7 @@ EdgeSide edgeBetween(const SurfaceSample& a, const dvec3& pa, const SurfaceSampl
       std::max(std::abs(glm::dot(d, dvec3(a.normal))), std::abs(glm::dot(d, dvec3(b.normal))));
   if (off > style.jumpPixels * footprint && off > 0.25 * apart) return nearer;
   // A crease: another face, turned by more than the crease angle.
-  if (a.surface == b.surface && a.face == b.face) return EdgeSide::None;
+  if (a.surface == b.surface && a.use == b.use && a.face == b.face) return EdgeSide::None;
   const double cosCrease = std::cos(style.creaseDegrees * std::numbers::pi / 180.0);
   if (glm::dot(a.normal, b.normal) < cosCrease) return nearer;
   return EdgeSide::None;

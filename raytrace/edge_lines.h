@@ -7,12 +7,14 @@
 // - one meets the part and the other nothing (an outline);
 // - each lies off the other's tangent plane by more than a couple of
 //   pixels (a jump in depth: an outline over a farther surface);
-// - they are on different faces (another primitive, or another face of
-//   it) whose normals differ by more than the crease angle.
+// - they are on different faces (another primitive, another use of it
+//   placed by an instance, or another face of it) whose normals differ by
+//   more than the crease angle.
 // Faces that meet flush or tangentially (a union of two boxes side by
 // side, a fillet) get no line, nor do the triangles of a smooth mesh.
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 
 #include "engine/ray.h"
@@ -22,6 +24,7 @@ namespace csgray::detail {
 // What the ray through a pixel's centre meets first.
 struct SurfaceSample {
   const void* surface = nullptr;  // the primitive or open surface; null: nothing
+  std::uintptr_t use = 0;         // which use of a shared primitive (BoundarySurface::use)
   int face = 0;                   // the primitive's face
   float t = 0.0f;                 // distance along the unit ray
   glm::vec3 normal{0.0f};         // unit, turned to face the eye

@@ -104,8 +104,9 @@ double sceneScale(const Scene& scene, const CameraSpec& camera) {
 }
 
 // What a ray met first, as the edge lines compare it; n is the normal there.
-SurfaceSample surfaceSample(const SurfaceHit& hit, dvec3 n, const dvec3& dir) {
+SurfaceSample surfaceSample(const SurfaceHit& hit, dvec3 n, std::uintptr_t use, const dvec3& dir) {
   SurfaceSample sample;
+  sample.use = use;
   if (glm::dot(n, dir) > 0.0) n = -n;
   sample.surface = hit.surface ? static_cast<const void*>(hit.surface)
                                : static_cast<const void*>(hit.boundary.primitive);
@@ -243,9 +244,11 @@ std::optional<SurfaceHit> Renderer::firstHit(const Ray& ray) const {
   return best;
 }
 
-dvec3 Renderer::normalAt(const SurfaceHit& hit, const Ray& ray) const {
+dvec3 Renderer::normalAt(const SurfaceHit& hit, const Ray& ray, std::uintptr_t* use) const {
   if (hit.surface) return hit.surface->normalAt(ray.at(hit.t), hit.face);
-  return boundarySurface(*objects_[std::size_t(hit.object)], ray, hit.boundary).normal;
+  const BoundarySurface s = boundarySurface(*objects_[std::size_t(hit.object)], ray, hit.boundary);
+  if (use) *use = s.use;
+  return s.normal;
 }
 
 dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
@@ -654,8 +657,9 @@ RenderResult Renderer::renderAll() const {
       result.depth.set(x, y,
                        dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
     if (!hit) return;
-    dvec3 n = normalAt(*hit, ray);
-    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, n, ray.dir);
+    std::uintptr_t use = 0;
+    dvec3 n = normalAt(*hit, ray, &use);
+    if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, n, use, ray.dir);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);
   });
@@ -695,7 +699,9 @@ RenderResult Renderer::renderAll() const {
       SurfaceSample sample;
       if (!hit) return sample;
       point = ray.at(hit->t);
-      sample = surfaceSample(*hit, normalAt(*hit, ray), ray.dir);
+      std::uintptr_t use = 0;
+      const dvec3 n = normalAt(*hit, ray, &use);
+      sample = surfaceSample(*hit, n, use, ray.dir);
       return sample;
     };
     forEachTile(true, [&](int x, int y, RayCounts& counts) {

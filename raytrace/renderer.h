@@ -135,8 +135,9 @@ class Renderer {
   std::optional<SurfaceHit> firstHit(const Ray& ray) const;
   // The unit normal where firstHit(ray) met a surface, outward from the
   // primitive or the open surface's own (a subtracted solid's flip not
-  // applied).
-  dvec3 normalAt(const SurfaceHit& hit, const Ray& ray) const;
+  // applied). use, when given, is set to which use of a shared primitive
+  // it is (BoundarySurface::use).
+  dvec3 normalAt(const SurfaceHit& hit, const Ray& ray, std::uintptr_t* use = nullptr) const;
   // The share of light that passes from one point to another: 0 where
   // something opaque lies between, the transparency and filter colour of
   // each stretch of a transparent solid (and each transparent surface)

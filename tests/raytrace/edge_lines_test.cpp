@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <string>
 
+#include "engine/solid.h"
 #include "raytrace/renderer.h"
 #include "script/script.h"
 #include "test_support.h"
@@ -73,6 +74,19 @@ TEST(EdgeLines, CreasesAndStepsGoToTheNearerSide) {
             EdgeSide::Second);
 }
 
+TEST(EdgeLines, TwoUsesOfOnePrimitiveMeetAtACrease) {
+  // Two places of one shared box (instances): the same primitive and face,
+  // turned 90° apart, get a line; the same use does not.
+  const dvec3 p(0, 0, 0), q(0.01, 0.01, 0);
+  SurfaceSample first = sampleOn(a, 0, p, dvec3(0, -1, 0));
+  SurfaceSample second = sampleOn(a, 0, q, dvec3(1, 0, 0));
+  first.use = 11;
+  second.use = 12;
+  EXPECT_EQ(edgeBetween(first, p, second, q, 0.01), EdgeSide::First);
+  second.use = 11;
+  EXPECT_EQ(edgeBetween(first, p, second, q, 0.01), EdgeSide::None);
+}
+
 // The share of the line in a pixel: 0 for the plain colour, 1 for the
 // line's full colour over it, from the channel that differs most.
 double coverageOf(const dvec3& plain, const dvec3& lined) {
@@ -81,6 +95,31 @@ double coverageOf(const dvec3& plain, const dvec3& lined) {
   for (int k = 1; k < 3; ++k)
     if (std::abs(full[k]) > std::abs(full[i])) i = k;
   return (lined[i] - plain[i]) / full[i];
+}
+
+// Two tilted uses of one bar (a union moved twice is one shared tree,
+// placed by two instances) meet in a valley where the same face of the
+// same box meets itself turned by 50°: the valley gets its line as it does
+// when the two bars are made apart, pixel for pixel.
+TEST(EdgeLines, TwoPlacesOfOneSharedPartMeetAtALine) {
+  const std::string bar =
+      "local function bar() return union(box{size={10, 2, 2}}:translate(0, -1, -2), "
+      "sphere{r=0.5}:translate(9, 0, -1)) end\n";
+  Scene shared = runScript(bar +
+                               "local b = bar()\nreturn union(b:rotate(25, 0, 0), "
+                               "b:rotate(-25, 0, 0))",
+                           "part.lua");
+  Scene apart =
+      runScript(bar + "return union(bar():rotate(25, 0, 0), bar():rotate(-25, 0, 0))", "part.lua");
+  ASSERT_EQ(treeStats(*shared.objects[0]).storedPrimitives, 2u);
+  ASSERT_EQ(treeStats(*apart.objects[0]).storedPrimitives, 4u);
+  RenderOptions options(200, 150, 1);
+  options.edges = true;
+  const Image a = Renderer(shared, options).render(), b = Renderer(apart, options).render();
+  int differ = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) differ += glm::length(a.at(x, y) - b.at(x, y)) > 0.02;
+  EXPECT_EQ(differ, 0);
 }
 
 // A box from a script, rendered with and without lines: a pixel changes
