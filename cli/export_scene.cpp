@@ -116,13 +116,17 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
     std::fprintf(
         stderr,
         "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
-        "csgray: %zu primitives tessellated, %zu booleans, %zu joined without one, %zu "
+        "csgray: %zu primitives tessellated, %zu booleans (%zu in doubles, %zu by CGAL%s), %zu "
+        "joined without one, %zu "
         "glued face to face, %zu rounding repair%s, %zu contact%s resolved, %zu stray shell%s "
         "removed%s\n",
         scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
-        secs(evaluated, written), counts.primitives, counts.corefinements, counts.merges,
-        counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s", counts.contacts,
-        counts.contacts == 1 ? "" : "s", counts.strayShells, counts.strayShells == 1 ? "" : "s",
+        secs(evaluated, written), counts.primitives, counts.corefinements, counts.inDoubles,
+        counts.corefinements - counts.inDoubles,
+        counts.redoneByCgal ? "; the part made again by CGAL alone after a check failed" : "",
+        counts.merges, counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s",
+        counts.contacts, counts.contacts == 1 ? "" : "s", counts.strayShells,
+        counts.strayShells == 1 ? "" : "s",
         counts.reordered ? "; made on a second try, each union's operands in reverse order" : "");
   std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
               mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));

@@ -1,8 +1,9 @@
 // A solid's boolean tree evaluated on meshes, for export: every primitive
 // tessellates itself within the chord tolerance, and the booleans are
-// computed by CGAL's corefinement (Polygon Mesh Processing) with exact
-// predicates and exact constructions, so that chained operations stay
-// consistent.
+// computed in doubles with exact predicates where the operands are in
+// general position (double_boolean.h), else by CGAL's corefinement
+// (Polygon Mesh Processing) with exact predicates and exact
+// constructions, so that chained operations stay consistent.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +17,9 @@ namespace csgray::detail {
 // What the evaluation did, for --stats and the benchmarks.
 struct MeshBooleanStats {
   std::size_t primitives = 0;     // primitives tessellated
-  std::size_t corefinements = 0;  // CGAL boolean operations
+  std::size_t corefinements = 0;  // boolean operations on meshes
+  std::size_t inDoubles = 0;      // of them, made in doubles (double_boolean.h), not by CGAL
+  bool redoneByCgal = false;      // the part failed its check with booleans in doubles
   std::size_t merges = 0;         // operands joined without one (boxes apart)
   std::size_t glued = 0;          // unions of solids stacked on the same faces
   std::size_t repairs = 0;        // self-intersections from rounding removed
@@ -42,7 +45,10 @@ struct MeshBooleanStats {
 // buffer, safe to read from a signal handler.
 const char* booleanInProgress();
 
+// doubles: each boolean is tried in doubles first (double_boolean.h), and
+// the part made again with CGAL's booleans alone if its mesh then fails;
+// false: CGAL's booleans only (for tests that compare the two).
 PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored = nullptr,
-                     MeshBooleanStats* stats = nullptr);
+                     MeshBooleanStats* stats = nullptr, bool doubles = true);
 
 }  // namespace csgray::detail

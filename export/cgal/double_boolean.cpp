@@ -1,0 +1,651 @@
+#include "export/cgal/double_boolean.h"
+
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace csgray::detail {
+
+namespace {
+
+using K = CGAL::Epick;
+using Point = K::Point_3;
+using Id = std::uint32_t;  // a vertex: the operands' points, then the crossings
+using Triangle = std::array<Id, 3>;
+
+// Thrown where the operands are not in general position or a step finds
+// something inconsistent; doubleBoolean then declines.
+struct Declined {};
+
+std::uint64_t pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+
+// One operand: its faces by Surface_mesh index (removed ones left empty),
+// their corners as global ids, the mesh edge under each side.
+struct Operand {
+  Id base = 0;  // the global id of its vertex 0
+  std::vector<Triangle> corners;
+  std::vector<std::array<std::uint32_t, 3>> edges;  // edge k runs corners k → k+1
+  std::vector<std::uint32_t> tags;
+  std::vector<std::uint32_t> faces;  // the live ones
+};
+
+// A piece of a face after the cut: a triangle of global ids.
+struct Piece {
+  Triangle corners;
+  std::uint32_t face;
+};
+
+// Where an edge of one operand crosses a face of the other: the part of
+// the edge from the crossing towards `from` lies inside the other operand
+// when fromInside.
+struct Crossing {
+  Id point;
+  Id from;
+  std::uint32_t edge;
+  bool fromInside;
+};
+
+// The boolean's working state: the points, the crossings found, and what
+// each face of each operand is to be cut along.
+class DoubleBoolean {
+ public:
+  DoubleBoolean(const ExactMesh& a, const ExactMesh& b) : meshes_{&a, &b} {
+    for (int s = 0; s < 2; ++s) load(s);
+  }
+
+  std::optional<ExactMesh> run(Boolean::Op op) {
+    findCrossings();
+    for (int s = 0; s < 2; ++s) {
+      sortEdgePoints(s);
+      cutFaces(s);
+      classify(s);
+    }
+    return assemble(op);
+  }
+
+ private:
+  // The operand's points (exact doubles, or Declined) and faces.
+  void load(int s) {
+    const ExactMesh& mesh = *meshes_[s];
+    Operand& op = ops_[s];
+    op.base = Id(points_.size());
+    points_.resize(points_.size() + mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+    for (auto v : mesh.vertices()) {
+      const auto& p = mesh.point(v);
+      std::array<double, 3> xyz;
+      for (int k = 0; k < 3; ++k) {
+        const auto range = CGAL::to_interval(p[k]);
+        if (range.first != range.second) throw Declined{};
+        xyz[k] = range.first;
+      }
+      points_[op.base + v] = Point(xyz[0], xyz[1], xyz[2]);
+    }
+    const std::size_t slots = mesh.number_of_faces() + mesh.number_of_removed_faces();
+    op.corners.resize(slots);
+    op.edges.resize(slots);
+    op.tags.resize(slots);
+    auto tags = tagsOf(mesh);
+    for (auto f : mesh.faces()) {
+      auto h = mesh.halfedge(f);
+      for (int k = 0; k < 3; ++k, h = mesh.next(h)) {
+        op.corners[f][k] = op.base + Id(mesh.source(h));
+        op.edges[f][k] = std::uint32_t(mesh.edge(h));
+      }
+      if (h != mesh.halfedge(f)) throw Declined{};  // not a triangle
+      op.tags[f] = tags ? tags[f] : 0;
+      op.faces.push_back(std::uint32_t(f));
+    }
+    faceSegments_[s].resize(slots);
+    facePoints_[s].resize(slots);
+  }
+
+  const Point& at(Id id) const { return points_[id]; }
+
+  // The pairs of faces whose boxes meet, each tested.
+  void findCrossings() {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+    std::vector<Box> boxes[2];
+    for (int s = 0; s < 2; ++s) {
+      boxes[s].reserve(ops_[s].faces.size());
+      for (std::uint32_t f : ops_[s].faces) {
+        const Triangle& t = ops_[s].corners[f];
+        boxes[s].emplace_back(at(t[0]).bbox() + at(t[1]).bbox() + at(t[2]).bbox(), f);
+      }
+    }
+    CGAL::box_intersection_d(boxes[0].begin(), boxes[0].end(), boxes[1].begin(), boxes[1].end(),
+                             [&](const Box& a, const Box& b) { facePair(a.info(), b.info()); });
+  }
+
+  // The predicates below are exact, and where one is zero the operands
+  // are taken as they would be with the second moved by an infinitesimal
+  // δ = (ε, ε², ε³): a simulation of simplicity (Edelsbrunner and Mücke,
+  // "Simulation of Simplicity", ACM Trans. Graphics 9(1), 1990). Each is
+  // linear in δ, so its sign is that of the first nonzero coordinate of
+  // its gradient, x before y before z; every decision is made for one
+  // and the same perturbed input, so they agree with each other.
+
+  // The sign of the x, y or z coordinate of (b − a) × (d − c), exactly.
+  static CGAL::Sign crossSign(const Point& a, const Point& b, const Point& c, const Point& d,
+                              int axis) {
+    using FT = CGAL::Epeck::FT;
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    return CGAL::sign((FT(b[i]) - FT(a[i])) * (FT(d[j]) - FT(c[j])) -
+                      (FT(b[j]) - FT(a[j])) * (FT(d[i]) - FT(c[i])));
+  }
+
+  // The side of point p (of operand 1 − s) against the plane of triangle
+  // t (of operand s). orient3d(t, p) = n·(p − t₀) with n = (t₁ − t₀) ×
+  // (t₂ − t₀); with the second operand moved by δ it gains ±n·δ.
+  CGAL::Orientation sideOf(int s, const Triangle& t, Id p) const {
+    const CGAL::Orientation o = CGAL::orientation(at(t[0]), at(t[1]), at(t[2]), at(p));
+    if (o != CGAL::ZERO) return o;
+    for (int axis = 0; axis < 3; ++axis) {
+      // The normal's coordinate: an orient2d of the triangle.
+      const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+      const auto flat = [&](Id v) { return K::Point_2(at(v)[i], at(v)[j]); };
+      const CGAL::Orientation n = CGAL::orientation(flat(t[0]), flat(t[1]), flat(t[2]));
+      if (n == CGAL::ZERO) continue;
+      // A corner on the other's face, not beside it in its plane: the
+      // solids would touch there (or the perturbation would part them
+      // by a point contact, which the export's check refuses).
+      bool inside = true;
+      for (int k = 0; k < 3; ++k)
+        inside = inside && CGAL::orientation(flat(t[k]), flat(t[(k + 1) % 3]), flat(p)) != -n;
+      if (inside) throw Declined{};
+      return s == 0 ? n : -n;
+    }
+    throw Declined{};  // a triangle without area
+  }
+
+  // orient3d(p, q, a, b) for an edge pq of operand s and an edge ab of the
+  // other: it gains δ·((b − a) × (q − p)) when ab is moved by δ.
+  CGAL::Orientation turnOf(int s, Id p, Id q, Id a, Id b) const {
+    const CGAL::Orientation o = CGAL::orientation(at(p), at(q), at(a), at(b));
+    if (o != CGAL::ZERO) return o;
+    for (int axis = 0; axis < 3; ++axis) {
+      const CGAL::Sign c = crossSign(at(a), at(b), at(p), at(q), axis);
+      if (c != CGAL::ZERO) return s == 0 ? c : -c;
+    }
+    throw Declined{};  // parallel edges in one plane
+  }
+
+  // The sides of a triangle's corners against the plane of another, of
+  // the other operand s.
+  std::array<CGAL::Orientation, 3> sides(const Triangle& t, int s, const Triangle& plane) const {
+    std::array<CGAL::Orientation, 3> o;
+    for (int k = 0; k < 3; ++k) o[k] = sideOf(s, plane, t[k]);
+    return o;
+  }
+
+  static bool across(const std::array<CGAL::Orientation, 3>& o) {
+    return !(o[0] == o[1] && o[1] == o[2]);
+  }
+
+  // Faces fa of the first operand and fb of the second: in general
+  // position they meet along one segment, between two points where an
+  // edge of one crosses the other.
+  void facePair(std::uint32_t fa, std::uint32_t fb) {
+    const Triangle& ta = ops_[0].corners[fa];
+    const Triangle& tb = ops_[1].corners[fb];
+    const auto oa = sides(ta, 1, tb);
+    if (!across(oa)) return;
+    const auto ob = sides(tb, 0, ta);
+    if (!across(ob)) return;
+    Id found[6];
+    int n = 0;
+    for (int k = 0; k < 3; ++k)
+      if (oa[k] != oa[(k + 1) % 3])
+        if (auto id = crossing(0, fa, k, fb, oa[k])) found[n++] = *id;
+    for (int k = 0; k < 3; ++k)
+      if (ob[k] != ob[(k + 1) % 3])
+        if (auto id = crossing(1, fb, k, fa, ob[k])) found[n++] = *id;
+    if (n == 0) return;
+    // Where an edge of each crosses the other's (in the input, before the
+    // perturbation) the segment between their crossings is infinitesimal:
+    // both are one point (crossing), and the segment is left out.
+    if (n == 2 && found[0] == found[1]) return;
+    if (n != 2) throw Declined{};
+    faceSegments_[0][fa].push_back({found[0], found[1]});
+    faceSegments_[1][fb].push_back({found[0], found[1]});
+    segments_.insert(pairKey(found[0], found[1]));
+  }
+
+  // The point where edge k of face f of operand s crosses face g of the
+  // other, if it does; its start is on side `fromSide` of g's plane.
+  std::optional<Id> crossing(int s, std::uint32_t f, int k, std::uint32_t g,
+                             CGAL::Orientation fromSide) {
+    const Triangle& t = ops_[s].corners[f];
+    const Triangle& other = ops_[1 - s].corners[g];
+    const Id p = t[k], q = t[(k + 1) % 3];
+    // The line pq passes inside the triangle where it turns the same way
+    // about all three of its edges (orient3d; Shewchuk, "Adaptive
+    // Precision Floating-Point Arithmetic and Fast Robust Geometric
+    // Predicates", 1997, for the predicate).
+    CGAL::Orientation turn[3];
+    int onEdge = -1;  // the edge of g that pq meets, unperturbed
+    for (int i = 0; i < 3; ++i) {
+      const Id a = other[i], b = other[(i + 1) % 3];
+      turn[i] = turnOf(s, p, q, a, b);
+      if (CGAL::orientation(at(p), at(q), at(a), at(b)) == CGAL::ZERO) {
+        if (onEdge != -1) throw Declined{};  // through a corner of g
+        onEdge = i;
+      }
+    }
+    if (turn[0] != turn[1] || turn[1] != turn[2]) return std::nullopt;  // passes outside
+    const std::uint32_t edge = ops_[s].edges[f][k];
+    // A crossing of pq and an edge of g, shared by the faces on both sides
+    // of each: one point, keyed by the two edges (the first operand's
+    // first), on both edges.
+    std::uint32_t otherEdge = 0;
+    std::uint64_t key = std::uint64_t(s) << 63 | std::uint64_t(edge) << 32 | g;
+    if (onEdge != -1) {
+      otherEdge = ops_[1 - s].edges[g][onEdge];
+      key = std::uint64_t(s == 0 ? edge : otherEdge) << 32 | (s == 0 ? otherEdge : edge);
+    }
+    auto& ids = onEdge == -1 ? crossingIds_ : edgeCrossingIds_;
+    auto [it, added] = ids.try_emplace(key, Id(points_.size()));
+    if (!added) return it->second;
+    // The point on pq at the plane: signed distances dp, dq of its ends
+    // (up to the normal's length), pq cut at dp / (dp − dq).
+    const Point &a = at(other[0]), &b = at(other[1]), &c = at(other[2]);
+    const auto normal = CGAL::cross_product(b - a, c - a);
+    const double dp = normal * (at(p) - a), dq = normal * (at(q) - a);
+    // (dp = dq = 0: pq in g's plane, which only the perturbation parts.)
+    const double ratio = dp / (dp - dq);
+    if (!(ratio >= 0.0 && ratio <= 1.0)) throw Declined{};
+    const double u = ratio;
+    points_.push_back(at(p) + u * (at(q) - at(p)));
+    const Id id = it->second;
+    // Along the edge from its lower id to its higher one.
+    edgePoints_[s][edge].push_back({p < q ? u : 1.0 - u, id});
+    if (onEdge == -1) {
+      facePoints_[1 - s][g].push_back(id);
+    } else {
+      const Id a = std::min(other[onEdge], other[(onEdge + 1) % 3]),
+               b = std::max(other[onEdge], other[(onEdge + 1) % 3]);
+      const auto along = at(b) - at(a);
+      const double w =
+          std::clamp(((points_.back() - at(a)) * along) / along.squared_length(), 0.0, 1.0);
+      edgePoints_[1 - s][otherEdge].push_back({w, id});
+    }
+    crossings_[s].push_back({id, p, edge, fromSide == CGAL::NEGATIVE});
+    return id;
+  }
+
+  // Each cut edge's points in order from its lower id; two at one place:
+  // Declined.
+  void sortEdgePoints(int s) {
+    for (auto& [edge, list] : edgePoints_[s]) {
+      std::sort(list.begin(), list.end());
+      for (std::size_t i = 1; i < list.size(); ++i)
+        if (!(list[i - 1].first < list[i].first)) throw Declined{};
+    }
+  }
+
+  // The points of face f's boundary in order, its corners and the points
+  // on its edges.
+  std::vector<Id> boundaryOf(int s, std::uint32_t f) const {
+    const Operand& op = ops_[s];
+    std::vector<Id> ring;
+    for (int k = 0; k < 3; ++k) {
+      const Id p = op.corners[f][k], q = op.corners[f][(k + 1) % 3];
+      ring.push_back(p);
+      auto it = edgePoints_[s].find(op.edges[f][k]);
+      if (it == edgePoints_[s].end()) continue;
+      if (p < q)
+        for (const auto& [u, id] : it->second) ring.push_back(id);
+      else
+        for (auto e = it->second.rbegin(); e != it->second.rend(); ++e) ring.push_back(e->second);
+    }
+    return ring;
+  }
+
+  // Every face of operand s, cut along its segments into pieces.
+  void cutFaces(int s) {
+    const Operand& op = ops_[s];
+    pieces_[s].reserve(op.faces.size());
+    for (std::uint32_t f : op.faces) {
+      if (faceSegments_[s][f].empty()) {
+        pieces_[s].push_back({op.corners[f], f});
+        continue;
+      }
+      if (!cutOnce(s, f)) cutFace(s, f);
+    }
+  }
+
+  // A face crossed by one segment from edge to edge (most cut faces), in
+  // two convex pieces, a triangle and a quadrilateral (the triangle cut by
+  // a line), without a triangulation: the quadrilateral along its shorter
+  // diagonal. False for any other face.
+  bool cutOnce(int s, std::uint32_t f) {
+    if (faceSegments_[s][f].size() != 1 || !facePoints_[s][f].empty()) return false;
+    const std::vector<Id> ring = boundaryOf(s, f);
+    if (ring.size() != 5) return false;
+    const auto [x, y] = faceSegments_[s][f][0];
+    const int i = int(std::find(ring.begin(), ring.end(), x) - ring.begin());
+    const int j = int(std::find(ring.begin(), ring.end(), y) - ring.begin());
+    if (i == 5 || j == 5) throw Declined{};
+    // The piece from one end to the other along the ring, and the rest.
+    const int from = std::min(i, j), to = std::max(i, j);
+    std::vector<Id> one(ring.begin() + from, ring.begin() + to + 1), other;
+    for (int k = to; k != from + 5; ++k) other.push_back(ring[k % 5]);
+    other.push_back(ring[from]);
+    if (one.size() < 3 || other.size() < 3) throw Declined{};  // along an edge
+    for (const std::vector<Id>* polygon : {&one, &other}) {
+      const std::vector<Id>& p = *polygon;
+      if (p.size() == 3) {
+        pieces_[s].push_back({{p[0], p[1], p[2]}, f});
+        continue;
+      }
+      const bool first =
+          CGAL::squared_distance(at(p[0]), at(p[2])) <= CGAL::squared_distance(at(p[1]), at(p[3]));
+      const int d = first ? 0 : 1;
+      pieces_[s].push_back({{p[d], p[d + 1], p[d + 2]}, f});
+      pieces_[s].push_back({{p[d], p[d + 2], p[(d + 3) % 4]}, f});
+    }
+    return true;
+  }
+
+  // A cut face: the constrained Delaunay triangulation of its boundary
+  // (corners and the points on its edges), the crossings inside it and its
+  // segments, in the plane of the normal's largest coordinate; the
+  // triangles inside the boundary are its pieces. Constraints that cross
+  // (CGAL throws), points that meet, or a count of triangles that is not
+  // the boundary's: Declined.
+  void cutFace(int s, std::uint32_t f) {
+    struct VertexInfo {
+      Id id = 0;
+      int ring = -1;  // its place on the boundary, or -1 inside
+    };
+    using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
+    using Fb =
+        CGAL::Triangulation_face_base_with_info_2<bool, K,
+                                                  CGAL::Constrained_triangulation_face_base_2<K>>;
+    using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+    using Cdt =
+        CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+
+    const Triangle& t = ops_[s].corners[f];
+    const auto normal = CGAL::cross_product(at(t[1]) - at(t[0]), at(t[2]) - at(t[0]));
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
+    // Dropping the axis keeps the orientation for the next two in cyclic
+    // order when the normal points along it.
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const bool flipped = normal[axis] < 0.0;
+    auto flat = [&](Id id) { return K::Point_2(at(id)[u], at(id)[v]); };
+
+    const std::vector<Id> ring = boundaryOf(s, f);
+    const std::vector<Id>& inner = facePoints_[s][f];
+    const int n = int(ring.size());
+    Cdt cdt;
+    std::unordered_map<Id, Cdt::Vertex_handle> handle;
+    auto insert = [&](Id id, int place) {
+      auto vh = cdt.insert(flat(id));
+      if (vh->info().ring != -1 || !handle.emplace(id, vh).second) throw Declined{};
+      vh->info() = {id, place};
+      if (place == -1) vh->info().ring = -2;  // inserted, inside
+    };
+    try {
+      for (int i = 0; i < n; ++i) insert(ring[i], i);
+      for (Id id : inner) insert(id, -1);
+      if (cdt.number_of_vertices() != handle.size()) throw Declined{};
+      for (int i = 0; i < n; ++i) cdt.insert_constraint(handle[ring[i]], handle[ring[(i + 1) % n]]);
+      for (const auto& [a, b] : faceSegments_[s][f]) {
+        auto ia = handle.find(a), ib = handle.find(b);
+        if (ia == handle.end() || ib == handle.end()) throw Declined{};
+        cdt.insert_constraint(ia->second, ib->second);
+      }
+    } catch (const Declined&) {
+      throw;
+    } catch (const std::exception&) {
+      throw Declined{};  // constraints that cross
+    }
+    if (cdt.number_of_vertices() != handle.size()) throw Declined{};
+    // The faces outside the boundary: reached from the infinite face
+    // without crossing a boundary edge.
+    auto onRing = [&](Cdt::Face_handle face, int i) {
+      const int a = face->vertex(Cdt::cw(i))->info().ring,
+                b = face->vertex(Cdt::ccw(i))->info().ring;
+      return a >= 0 && b >= 0 && ((a + 1) % n == b || (b + 1) % n == a);
+    };
+    for (auto face : cdt.all_face_handles()) face->info() = false;
+    std::vector<Cdt::Face_handle> pending = {cdt.infinite_face()};
+    cdt.infinite_face()->info() = true;
+    while (!pending.empty()) {
+      auto face = pending.back();
+      pending.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        auto next = face->neighbor(i);
+        if (next->info() || onRing(face, i)) continue;
+        next->info() = true;
+        pending.push_back(next);
+      }
+    }
+    // A polygon of n corners with m points inside has n + 2m − 2
+    // triangles (Euler's formula).
+    std::size_t inside = 0;
+    for (auto face : cdt.finite_face_handles()) {
+      if (face->info()) continue;
+      ++inside;
+      Triangle piece{face->vertex(0)->info().id, face->vertex(1)->info().id,
+                     face->vertex(2)->info().id};
+      if (flipped) std::swap(piece[1], piece[2]);
+      pieces_[s].push_back({piece, f});
+    }
+    if (inside != std::size_t(n) + 2 * inner.size() - 2) throw Declined{};
+  }
+
+  // Whether each piece of operand s lies inside the other operand. The
+  // pieces form patches, joined across edges that are not segments; across
+  // a segment inside and outside swap (general position). A patch that
+  // holds the start of a cut edge takes its side from the sign of that
+  // edge's end against the crossed face (exact); a shell that has none is
+  // tested with one of its corners (CGAL::Side_of_triangle_mesh, exact
+  // predicates). Sides that disagree: Declined.
+  void classify(int s) {
+    const std::vector<Piece>& pieces = pieces_[s];
+    const std::size_t count = pieces.size();
+    std::vector<std::uint32_t> parent(count);
+    for (std::size_t i = 0; i < count; ++i) parent[i] = std::uint32_t(i);
+    auto root = [&](std::uint32_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    // Each edge of a closed mesh has two pieces: the pieces' edges sorted
+    // by their ends, in pairs.
+    struct EdgeUse {
+      std::uint64_t key;
+      std::uint32_t piece;
+      bool operator<(const EdgeUse& other) const { return key < other.key; }
+    };
+    std::vector<EdgeUse> uses;
+    uses.reserve(3 * count);
+    for (std::size_t i = 0; i < count; ++i)
+      for (int k = 0; k < 3; ++k)
+        uses.push_back(
+            {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]), std::uint32_t(i)});
+    std::sort(uses.begin(), uses.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> across;
+    for (std::size_t i = 0; i < uses.size(); i += 2) {
+      const std::uint64_t key = uses[i].key;
+      if (i + 1 == uses.size() || uses[i + 1].key != key ||
+          (i + 2 < uses.size() && uses[i + 2].key == key))
+        throw Declined{};
+      if (segments_.count(key)) {
+        across.emplace_back(uses[i].piece, uses[i + 1].piece);
+      } else {
+        const std::uint32_t a = root(uses[i].piece), b = root(uses[i + 1].piece);
+        if (a != b) parent[a] = b;
+      }
+    }
+    auto pieceOn = [&](Id a, Id b) {
+      const EdgeUse probe{pairKey(a, b), 0};
+      auto it = std::lower_bound(uses.begin(), uses.end(), probe);
+      if (it == uses.end() || it->key != probe.key) throw Declined{};
+      return it->piece;
+    };
+    // The patches' graph across segments.
+    std::vector<std::vector<std::uint32_t>> neighbours(count);
+    for (auto [a, b] : across) {
+      const std::uint32_t ra = root(a), rb = root(b);
+      if (ra == rb) throw Declined{};
+      neighbours[ra].push_back(rb);
+      neighbours[rb].push_back(ra);
+    }
+    std::vector<signed char> side(count, -1);  // of each patch's root: 1 inside
+    std::vector<std::uint32_t> pending;
+    auto label = [&](std::uint32_t patch, bool in) {
+      if (side[patch] == -1) {
+        side[patch] = in;
+        pending.push_back(patch);
+      } else if (side[patch] != in) {
+        throw Declined{};
+      }
+    };
+    auto spread = [&] {
+      while (!pending.empty()) {
+        const std::uint32_t patch = pending.back();
+        pending.pop_back();
+        for (std::uint32_t next : neighbours[patch]) label(next, !side[patch]);
+      }
+    };
+    for (const Crossing& c : crossings_[s]) {
+      const auto& list = edgePoints_[s].at(c.edge);
+      std::size_t i = 0;
+      while (list[i].second != c.point) ++i;
+      const bool towardsLow = c.from < otherEnd(s, c);
+      Id next = c.from;
+      if (towardsLow && i > 0) next = list[i - 1].second;
+      if (!towardsLow && i + 1 < list.size()) next = list[i + 1].second;
+      label(root(pieceOn(c.point, next)), c.fromInside);
+    }
+    spread();
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t patch = root(std::uint32_t(i));
+      if (side[patch] != -1) continue;
+      const Id corner = pieces[i].corners[0];
+      if (corner >= ops_[s].base + meshes_[s]->number_of_vertices() +
+                        meshes_[s]->number_of_removed_vertices() ||
+          corner < ops_[s].base)
+        continue;  // a crossing: some other piece of the patch has a corner
+      const CGAL::Bounded_side where = placeIn(1 - s, at(corner));
+      if (where == CGAL::ON_BOUNDARY) throw Declined{};
+      label(patch, where == CGAL::ON_BOUNDED_SIDE);
+      spread();
+    }
+    inside_[s].resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const signed char in = side[root(std::uint32_t(i))];
+      if (in == -1) throw Declined{};
+      inside_[s][i] = in;
+    }
+  }
+
+  // The other end of a crossing's edge.
+  Id otherEnd(int s, const Crossing& c) const {
+    const ExactMesh& mesh = *meshes_[s];
+    const auto h = mesh.halfedge(ExactMesh::Edge_index(c.edge));
+    const Id a = ops_[s].base + Id(mesh.source(h)), b = ops_[s].base + Id(mesh.target(h));
+    return a == c.from ? b : a;
+  }
+
+  // Where a point lies against operand s, by a copy of it in doubles.
+  CGAL::Bounded_side placeIn(int s, const Point& p) {
+    using Mesh = CGAL::Surface_mesh<Point>;
+    if (!sideTests_[s]) {
+      auto mesh = std::make_shared<Mesh>();
+      const ExactMesh& exact = *meshes_[s];
+      std::vector<Mesh::Vertex_index> vertex(exact.number_of_vertices() +
+                                             exact.number_of_removed_vertices());
+      for (auto v : exact.vertices()) vertex[v] = mesh->add_vertex(at(ops_[s].base + Id(v)));
+      for (std::uint32_t f : ops_[s].faces) {
+        const Triangle& t = ops_[s].corners[f];
+        if (mesh->add_face(vertex[t[0] - ops_[s].base], vertex[t[1] - ops_[s].base],
+                           vertex[t[2] - ops_[s].base]) == Mesh::null_face())
+          throw Declined{};
+      }
+      sideMeshes_[s] = mesh;
+      sideTests_[s] = std::make_shared<CGAL::Side_of_triangle_mesh<Mesh, K>>(*mesh);
+    }
+    return (*sideTests_[s])(p);
+  }
+
+  // The pieces the operation keeps, as a closed, consistently oriented
+  // mesh (each directed edge once, and its reverse once), or Declined.
+  std::optional<ExactMesh> assemble(Boolean::Op op) {
+    const bool keepInside[2] = {op == Boolean::Op::Intersection, op != Boolean::Op::Union};
+    const bool reverse[2] = {false, op == Boolean::Op::Difference};
+    std::vector<Triangle> kept;
+    std::vector<std::uint32_t> keptTags;
+    for (int s = 0; s < 2; ++s)
+      for (std::size_t i = 0; i < pieces_[s].size(); ++i) {
+        if (bool(inside_[s][i]) != keepInside[s]) continue;
+        Triangle t = pieces_[s][i].corners;
+        if (reverse[s]) std::swap(t[1], t[2]);
+        kept.push_back(t);
+        keptTags.push_back(ops_[s].tags[pieces_[s][i].face]);
+      }
+    ExactMesh out;
+    std::vector<ExactMesh::Vertex_index> vertex(points_.size());
+    std::vector<bool> used(points_.size(), false);
+    for (const Triangle& t : kept)
+      for (Id id : t) used[id] = true;
+    for (Id id = 0; id < points_.size(); ++id)
+      if (used[id]) {
+        const Point& p = points_[id];
+        vertex[id] = out.add_vertex(CGAL::Epeck::Point_3(p.x(), p.y(), p.z()));
+      }
+    auto tags = tagsOf(out);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      const Triangle& t = kept[i];
+      const auto f = out.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
+      if (f == ExactMesh::null_face()) throw Declined{};
+      tags[f] = keptTags[i];
+    }
+    // add_face refuses an edge used twice the same way; an edge used
+    // once is left on the border.
+    for (auto h : out.halfedges())
+      if (out.is_border(h)) throw Declined{};
+    return out;
+  }
+
+  const ExactMesh* meshes_[2];
+  Operand ops_[2];
+  std::vector<Point> points_;
+  std::unordered_map<std::uint64_t, Id> crossingIds_;      // (operand, edge, face)
+  std::unordered_map<std::uint64_t, Id> edgeCrossingIds_;  // (edge, edge)
+  std::unordered_map<std::uint32_t, std::vector<std::pair<double, Id>>> edgePoints_[2];
+  std::vector<std::vector<std::pair<Id, Id>>> faceSegments_[2];
+  std::vector<std::vector<Id>> facePoints_[2];
+  std::unordered_set<std::uint64_t> segments_;
+  std::vector<Crossing> crossings_[2];
+  std::vector<Piece> pieces_[2];
+  std::vector<char> inside_[2];
+  std::shared_ptr<CGAL::Surface_mesh<Point>> sideMeshes_[2];
+  std::shared_ptr<CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Point>, K>> sideTests_[2];
+};
+
+}  // namespace
+
+std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op) {
+  try {
+    return DoubleBoolean(a, b).run(op);
+  } catch (const Declined&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace csgray::detail

@@ -1,0 +1,28 @@
+// One boolean of two closed meshes whose points are all doubles, made in
+// doubles: every decision by an exact predicate (CGAL's filtered orient3d
+// and orient2d on Epick points), every new point a rounded construction.
+// It declines wherever the operands are not in general position (a vertex
+// on the other's plane, an edge through an edge, coplanar faces) or
+// anything it builds is inconsistent; the evaluator then asks CGAL's exact
+// corefinement (exact_boolean.h). The idea follows Manifold's booleans
+// (Elalish et al., github.com/elalish/manifold, docs "Manifold
+// Library"), doubles with exact predicates; the code is csgray's own.
+#pragma once
+
+#include <optional>
+
+#include "engine/boolean.h"
+#include "export/cgal/exact_mesh.h"
+
+namespace csgray::detail {
+
+// a op b, its faces tagged with the materials of the faces they came
+// from, its points doubles (so that a chain of such booleans stays
+// eligible); nothing when declined. The operands must be closed,
+// 2-manifold and outward: the result then is too, in general position,
+// and is checked to be closed and consistently oriented before it is
+// returned. Declined at once when a coordinate of an operand is not a
+// double (CGAL::to_interval is not a point: a corefinement made it).
+std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op);
+
+}  // namespace csgray::detail
