@@ -49,11 +49,13 @@ class Bvh {
   static constexpr int kWidth = 4;
 
  private:
-  // A node of up to four children: the binary SAH tree with every other
-  // level folded into its parent (Wald, Benthin and Boulos, "Getting rid
-  // of packets", 2008, build their 4-wide trees so), so that one AVX test
-  // of four boxes replaces three tests of two. The boxes stay in double
-  // precision, so each child's entry t is the one Bounds::entry gives.
+  // A node of up to four children: the binary SAH tree collapsed, each
+  // node taking its children's children while it has room (multi-branching
+  // BVHs for single-ray SIMD traversal: Wald, Benthin and Boulos, "Getting
+  // rid of packets", IEEE Symposium on Interactive Ray Tracing 2008), so
+  // that one AVX test of four boxes replaces up to three tests of two. The
+  // boxes stay in double precision: each child's entry t is the one
+  // Bounds::entry gives.
   struct Node {
     // The children's boxes axis by axis: lo[axis][child].
     alignas(32) double lo[3][kWidth];
