@@ -64,7 +64,8 @@ const Bvh& Boolean::bvh() const {
   // thread-local writes every time (2 % of a plate(8) render).
   if (bvhReady_.load(std::memory_order_acquire)) return bvh_;
   std::call_once(bvhBuilt_, [this] {
-    if (op_ != Op::Intersection && operands_.size() - firstInBvh() > kBvhOperands) {
+    const std::size_t limit = op_ == Op::Union ? kBvhUnionOperands : kBvhOperands;
+    if (op_ != Op::Intersection && operands_.size() - firstInBvh() > limit) {
       std::vector<Bounds> boxes;
       boxes.reserve(operands_.size() - firstInBvh());
       for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)

@@ -24,8 +24,12 @@ class Boolean : public Solid {
   // trees whose shared subtrees multiply out within reach.
   static constexpr int kMaxDepth = 1000;
   static constexpr std::size_t kMaxPrimitives = 2'000'000;
-  // Nodes with more operands than this keep a BVH over them.
+  // Nodes with more operands than this keep a BVH over them. A union of
+  // two or more keeps one too: a ray's first boundary in it is a walk
+  // nearest first (unionToFirstBoundary), and one BVH node tests up to
+  // four operands' boxes at once.
   static constexpr std::size_t kBvhOperands = 4;
+  static constexpr std::size_t kBvhUnionOperands = 1;
 
   // A chain of the same operation is kept flat: (a - b) - c becomes
   // a - b - c, and a union operand of a union is spliced in, so a script

@@ -9,7 +9,7 @@ namespace csgray::detail {
 namespace {
 
 constexpr int kBins = 16;
-// One item a leaf: an inner node tests both children's boxes at once
+// One item a leaf: a node tests its children's boxes at once
 // (Bvh::childEntries), so an item's box is tested there, never in a leaf.
 constexpr std::uint32_t kLeafSize = 1;
 // Cost of visiting a node relative to testing an item (an item is a whole
@@ -22,10 +22,47 @@ double halfArea(const Bounds& b) {
   return s.x * s.y + s.y * s.z + s.z * s.x;
 }
 
+// The binary SAH tree, built first and then folded into Bvh's 4-wide nodes.
+struct BinaryNode {
+  Bounds box;
+  std::uint32_t start;  // leaf: first entry in items; inner: index of the left child
+  std::uint32_t count;  // leaf: number of items; inner: 0 (right child is start + 1)
+};
+
 }  // namespace
 
+class BvhBuilder {
+ public:
+  BvhBuilder(std::span<const Bounds> boxes, std::vector<std::uint32_t>& items)
+      : boxes_(boxes), items_(items), centres_(boxes.size()) {
+    for (std::uint32_t item : items_) centres_[item] = boxes_[item].center();
+    binary_.reserve(2 * items_.size());
+    binary_.push_back({});
+    build(0, 0, std::uint32_t(items_.size()), 0);
+  }
+
+  // Bvh's nodes: the binary root's children, the grandchildren of those of
+  // them that are inner nodes, and so on (fold).
+  std::vector<Bvh::Node> wideNodes() {
+    std::vector<Bvh::Node> nodes;
+    std::vector<std::uint32_t> root{0};
+    if (binary_[0].count == 0) root = {binary_[0].start, binary_[0].start + 1};
+    fold(root, nodes);
+    nodes.shrink_to_fit();  // memoryBytes counts the capacity
+    return nodes;
+  }
+
+ private:
+  void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth);
+  std::uint32_t fold(std::vector<std::uint32_t> children, std::vector<Bvh::Node>& nodes) const;
+
+  std::span<const Bounds> boxes_;
+  std::vector<std::uint32_t>& items_;
+  std::vector<dvec3> centres_;
+  std::vector<BinaryNode> binary_;
+};
+
 Bvh::Bvh(std::span<const Bounds> boxes) {
-  std::vector<dvec3> centres(boxes.size());
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
     if (boxes[i].empty()) continue;
     if (!boxes[i].finite()) {
@@ -33,43 +70,60 @@ Bvh::Bvh(std::span<const Bounds> boxes) {
       continue;
     }
     items_.push_back(i);
-    centres[i] = boxes[i].center();
   }
   if (items_.empty()) return;
-  // The boxes of the nodes are needed while building; traversal keeps
-  // only each inner node's pair of child boxes.
-  std::vector<Bounds> nodeBoxes;
-  nodes_.reserve(2 * items_.size());
-  nodeBoxes.reserve(2 * items_.size());
-  nodes_.push_back({});
-  nodeBoxes.push_back({});
-  build(0, boxes, centres, nodeBoxes, 0, std::uint32_t(items_.size()), 0);
-  rootBox_ = nodeBoxes[0];
-  children_.resize(nodes_.size());
-  for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    if (nodes_[n].count > 0) continue;
-    for (int child = 0; child < 2; ++child) {
-      const Bounds& b = nodeBoxes[nodes_[n].start + child];
-      for (int a = 0; a < 3; ++a) {
-        children_[n].lo[a][child] = b.lo[a];
-        children_[n].hi[a][child] = b.hi[a];
-      }
-    }
-  }
+  nodes_ = BvhBuilder(boxes, items_).wideNodes();
 }
 
-void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
-                const std::vector<dvec3>& centres, std::vector<Bounds>& nodeBoxes,
-                std::uint32_t begin, std::uint32_t end, int depth) {
+// Makes a wide node of the binary nodes given (one or two), and the nodes
+// below it; returns its index. While there is room, the inner child of
+// largest area gives way to its two children, in its place, so that the
+// children keep the binary tree's left-to-right order.
+std::uint32_t BvhBuilder::fold(std::vector<std::uint32_t> children,
+                               std::vector<Bvh::Node>& nodes) const {
+  while (children.size() < Bvh::kWidth) {
+    int widest = -1;
+    for (int c = 0; c < int(children.size()); ++c)
+      if (binary_[children[c]].count == 0 &&
+          (widest < 0 ||
+           halfArea(binary_[children[c]].box) > halfArea(binary_[children[widest]].box)))
+        widest = c;
+    if (widest < 0) break;
+    std::uint32_t left = binary_[children[widest]].start;
+    children[widest] = left;
+    children.insert(children.begin() + widest + 1, left + 1);
+  }
+  const std::uint32_t index = std::uint32_t(nodes.size());
+  nodes.emplace_back();
+  for (int c = 0; c < Bvh::kWidth; ++c) {
+    Bounds box;  // an unused slot: empty, never met
+    std::uint32_t first = 0, count = 0;
+    if (c < int(children.size())) {
+      const BinaryNode& child = binary_[children[c]];
+      box = child.box;
+      if (child.count > 0) {
+        first = child.start, count = child.count;
+      } else {
+        first = fold({child.start, child.start + 1}, nodes), count = Bvh::kInner;
+      }
+    }
+    Bvh::Node& node = nodes[index];  // (fold may have moved it)
+    for (int a = 0; a < 3; ++a) node.lo[a][c] = box.lo[a], node.hi[a][c] = box.hi[a];
+    node.first[c] = first;
+    node.count[c] = count;
+  }
+  return index;
+}
+
+void BvhBuilder::build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
   Bounds box, centreBox;
   for (std::uint32_t i = begin; i < end; ++i) {
-    box.include(boxes[items_[i]]);
-    centreBox.include(centres[items_[i]]);
+    box.include(boxes_[items_[i]]);
+    centreBox.include(centres_[items_[i]]);
   }
-  nodes_[node] = {begin, end - begin};
-  nodeBoxes[node] = box;
+  binary_[node] = {box, begin, end - begin};
   std::uint32_t n = end - begin;
-  if (n <= kLeafSize || depth + 1 >= kMaxDepth) return;
+  if (n <= kLeafSize || depth + 1 >= Bvh::kMaxDepth) return;
 
   // Binned SAH: the cost of a split is A(left)·n(left) + A(right)·n(right)
   // over A(node), plus the traversal; the best plane over three axes and
@@ -82,11 +136,11 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
     std::array<Bounds, kBins> binBox;
     std::array<std::uint32_t, kBins> binCount{};
     auto binOf = [&](std::uint32_t item) {
-      return std::min(kBins - 1, int((centres[item][axis] - lo) / extent * kBins));
+      return std::min(kBins - 1, int((centres_[item][axis] - lo) / extent * kBins));
     };
     for (std::uint32_t i = begin; i < end; ++i) {
       int b = binOf(items_[i]);
-      binBox[b].include(boxes[items_[i]]);
+      binBox[b].include(boxes_[items_[i]]);
       ++binCount[b];
     }
     // Sweep from the right for the right-hand areas, then from the left.
@@ -117,7 +171,7 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
     double lo = centreBox.lo[bestAxis], extent = centreBox.hi[bestAxis] - lo;
     auto right =
         std::partition(items_.begin() + begin, items_.begin() + end, [&](std::uint32_t item) {
-          return std::min(kBins - 1, int((centres[item][bestAxis] - lo) / extent * kBins)) <=
+          return std::min(kBins - 1, int((centres_[item][bestAxis] - lo) / extent * kBins)) <=
                  bestBin;
         });
     mid = std::uint32_t(right - items_.begin());
@@ -126,14 +180,13 @@ void Bvh::build(std::uint32_t node, std::span<const Bounds> boxes,
     // middle anyway, so that leaves stay single.
     mid = begin + n / 2;
   }
-  std::uint32_t left = std::uint32_t(nodes_.size());
-  nodes_.push_back({});
-  nodes_.push_back({});
-  nodeBoxes.resize(nodes_.size());
-  nodes_[node].start = left;
-  nodes_[node].count = 0;
-  build(left, boxes, centres, nodeBoxes, begin, mid, depth + 1);
-  build(left + 1, boxes, centres, nodeBoxes, mid, end, depth + 1);
+  std::uint32_t left = std::uint32_t(binary_.size());
+  binary_.push_back({});
+  binary_.push_back({});
+  binary_[node].start = left;
+  binary_[node].count = 0;
+  build(left, begin, mid, depth + 1);
+  build(left + 1, mid, end, depth + 1);
 }
 
 }  // namespace csgray::detail
