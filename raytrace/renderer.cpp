@@ -20,6 +20,8 @@ namespace csgray::detail {
 
 // What one pixel's rays share: their random numbers and the ray counts.
 struct TraceContext {
+  explicit TraceContext(const Sampler& sampler) : rng(sampler) {}
+
   Sampler rng;
   RayCounts counts{};
   // The CAD look's ground shadow where the pixel's first ray met the

@@ -17,7 +17,12 @@ namespace {
 
 constexpr auto kLongPoll = std::chrono::seconds(20);
 
-ViewReply line(int status, const std::string& text) { return {status, text + "\n"}; }
+ViewReply line(int status, const std::string& text) {
+  ViewReply reply;
+  reply.status = status;
+  reply.body = text + "\n";
+  return reply;
+}
 
 ViewReply json(std::string body) {
   return {200, std::move(body), "application/json", {{"Cache-Control", "no-store"}}};
