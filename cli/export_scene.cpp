@@ -127,7 +127,9 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
         counts.merges, counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s",
         counts.contacts, counts.contacts == 1 ? "" : "s", counts.strayShells,
         counts.strayShells == 1 ? "" : "s",
-        counts.reordered ? "; made on a second try, each union's operands in reverse order" : "");
+        counts.reordered == 0   ? ""
+        : counts.reordered == 1 ? "; made on a second try, each union's operands in reverse order"
+                                : "; made on a last try, each union's operands shuffled");
   std::printf("csgray: wrote %s (%zu triangles, volume %.6g) in %.2f s\n", options.output.c_str(),
               mesh.mesh.size(), mesh.mesh.volume(), scriptSeconds + secs(start, written));
 }

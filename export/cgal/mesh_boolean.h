@@ -25,8 +25,10 @@ struct MeshBooleanStats {
   std::size_t repairs = 0;        // self-intersections from rounding removed
   std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
   std::size_t strayShells = 0;    // slivers outside the exact part, removed
-  std::size_t reordered = 0;      // 1: made on a second try, operands in reverse order
-  double checkSeconds = 0.0;      // in meshDefect
+  // 0: made with the operands in the script's order; 1: reversed, on a
+  // second try; more: shuffled, on a last try.
+  std::size_t reordered = 0;
+  double checkSeconds = 0.0;  // in meshDefect
 };
 
 // The closed mesh of the solid. Operands whose boxes do not overlap are

@@ -407,6 +407,20 @@ TEST(ContactExport, RandomPartsWithSharedFacesAndTangenciesCheckOut) {
   }
 }
 
+// Exports randomContactPart(seed) with its points stored so, expects a
+// valid mesh that checks out against the model, and returns the order it
+// was made in (MeshBooleanStats::reordered).
+std::size_t reorderedAndValid(unsigned seed, StoredCoordinate stored) {
+  const std::string source = randomContactPart(seed);
+  SCOPED_TRACE(source);
+  const SolidPtr solid = part(source);
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, stored, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
+  return stats.reordered;
+}
+
 TEST(ContactExport, RandomPartsThatNeedTheirUnionsInTheOtherOrder) {
   // Seeds of randomContactPart whose contacts, met in the script's order,
   // leave two moved faces crossing near a corner where three or more
@@ -414,16 +428,19 @@ TEST(ContactExport, RandomPartsThatNeedTheirUnionsInTheOtherOrder) {
   // before a solid whose face runs through it, which CGAL crashed on (70)
   // or worked at for minutes (157); in the reverse order they come out
   // valid.
-  for (unsigned seed : {70u, 85u, 130u, 157u, 203u}) {
-    const std::string source = randomContactPart(seed);
-    SCOPED_TRACE(source);
-    const SolidPtr solid = part(source);
-    MeshBooleanStats stats;
-    const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
-    EXPECT_EQ(stats.reordered, 1u);
-    EXPECT_EQ(meshDefect(mesh).text, "");
-    EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
-  }
+  for (unsigned seed : {70u, 85u, 130u, 157u, 203u})
+    EXPECT_EQ(reorderedAndValid(seed, nullptr), 1u);
+}
+
+TEST(ContactExport, RandomPartsThatNeedAShuffledOrder) {
+  // Seeds of randomContactPart that fail in both the script's order and
+  // the reverse one: their unions meet a corner where two solids touch
+  // with a solid whose face runs through it (160, 175: CGAL's result on
+  // such input is undefined, and it crashed now and then), or leave moved
+  // faces crossing once rounded to an STL file's floats (245). One of the
+  // shuffled orders makes them valid.
+  const StoredCoordinate asStlStores = [](double x) { return double(float(x)); };
+  for (unsigned seed : {160u, 175u, 245u}) EXPECT_GE(reorderedAndValid(seed, asStlStores), 2u);
 }
 
 // ---- The same primitive twice ---------------------------------------------------
