@@ -5,7 +5,9 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <optional>
 #include <random>
@@ -493,6 +495,10 @@ class Evaluator {
         groups.push_back(std::move(piece));
         members.push_back({groups.back().box});
       } else {
+        // Boxes apart by a hair: corners a hair apart are made one place,
+        // which the end resolves as a contact (separateCoincidentVertices).
+        for (const Bounds& member : members[g])
+          weldNearVertices(groups[g].mesh, piece.mesh, hairApart(member, piece.box));
         members[g].push_back(piece.box);
         join(groups[g], piece);
       }
@@ -555,6 +561,7 @@ class Evaluator {
         Piece& b = pieces[i + 1];
         if (!a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
+          weldNearVertices(a.mesh, b.mesh, hairApart(a.box, b.box));
           join(a, b);
         } else {
           corefine(a, b, op);
@@ -609,6 +616,7 @@ class Evaluator {
     // grid of spheres copies the box's faces, not the spheres').
     if (op != Boolean::Op::Difference && b.mesh.number_of_faces() > a.mesh.number_of_faces())
       std::swap(a, b);
+    if (weldNearVertices(a.mesh, b.mesh, hairApart(a.box, b.box))) b.shape = 0;
     // Solids stacked face to face on the same triangles need no
     // corefinement (a frustum on the one below it).
     if (op == Boolean::Op::Union && glueAcrossPlane(a.mesh, b.mesh, a.box, b.box)) {
@@ -693,6 +701,75 @@ class Evaluator {
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);
+  }
+
+  // Solids placed to meet at a corner (a Sierpinski tetrahedron's) meet
+  // there only to within the rounding of their coordinates, a few units in
+  // the last place: this far, relative to the coordinates' size.
+  static double hair(const Bounds& box) {
+    const dvec3 lo = glm::abs(box.lo), hi = glm::abs(box.hi);
+    return std::max({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) * 0x1p-40;
+  }
+
+  // Where the boxes overlap or come within a hair of each other, grown by
+  // a hair; empty when they are further apart.
+  static Bounds hairApart(const Bounds& a, const Bounds& b) {
+    const dvec3 reach(std::max(hair(a), hair(b)));
+    return {glm::max(a.lo, b.lo) - reach, glm::min(a.hi, b.hi) + reach};
+  }
+
+  // The boolean of solids that meet at a corner only to a hair would cut
+  // a feature a hair wide, which rounding folds (a tetrahedron was lost,
+  // and a Sierpinski tetrahedron exported 6 % light). Each vertex of b
+  // within a hair of a vertex of a, in the region (hairApart), takes a's
+  // point, so that the solids meet exactly and the boolean resolves a
+  // plain contact. Returns whether any vertex moved.
+  static bool weldNearVertices(const Mesh& a, Mesh& b, const Bounds& region) {
+    if (region.empty()) return false;
+    const double reach = hair(region);
+    struct Corner {
+      dvec3 p;
+      Vertex v;
+      bool ofB;
+    };
+    std::vector<Corner> corners;
+    for (const Mesh* mesh : std::array<const Mesh*, 2>{&a, &b})
+      for (Vertex v : mesh->vertices())
+        if (const dvec3 p = pointOf(*mesh, v); region.contains(p))
+          corners.push_back({p, v, mesh == &b});
+    std::sort(corners.begin(), corners.end(),
+              [](const Corner& l, const Corner& r) { return l.p.x < r.p.x; });
+    std::vector<std::pair<Vertex, Vertex>> pairs;  // (of a, of b)
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      for (std::size_t j = i + 1; j < corners.size() && corners[j].p.x - corners[i].p.x <= reach;
+           ++j) {
+        const Corner& u = corners[i].ofB ? corners[j] : corners[i];
+        const Corner& w = corners[i].ofB ? corners[i] : corners[j];
+        const dvec3 d = glm::abs(u.p - w.p);
+        if (!u.ofB && w.ofB && u.p != w.p && d.y <= reach && d.z <= reach)
+          pairs.emplace_back(u.v, w.v);
+      }
+    if (pairs.empty()) return false;
+    // Only where the solids meet at the corner alone: every edge from it
+    // leads outside the other solid (its midpoint is outside; its far end
+    // may be another contact). Where they overlap around it (the centres
+    // of two caps in one plane), the hair does no harm, and two points made
+    // one there left CGAL a mesh it refused to cut.
+    const CGAL::Side_of_triangle_mesh<Mesh, K> insideA(a), insideB(b);
+    auto leadsOut = [](const Mesh& mesh, Vertex v, const auto& otherSide) {
+      for (auto h : CGAL::halfedges_around_target(v, mesh))
+        if (otherSide(CGAL::midpoint(mesh.point(mesh.source(h)), mesh.point(v))) !=
+            CGAL::ON_UNBOUNDED_SIDE)
+          return false;
+      return true;
+    };
+    bool moved = false;
+    for (const auto& [u, w] : pairs)
+      if (leadsOut(a, u, insideB) && leadsOut(b, w, insideA)) {
+        b.point(w) = a.point(u);
+        moved = true;
+      }
+    return moved;
   }
 
   // Has the mesh two vertices at one place (to doubles), within the other

@@ -152,6 +152,23 @@ TEST(ContactExport, SolidsStackedOnFacesThatDifferAreCorefined) {
   }
 }
 
+TEST(ContactExport, SierpinskiTetrahedraThatMeetAtCornersAreSplitThere) {
+  // Each level puts four tetrahedra of half the size at the corners, each
+  // meeting the other three at one corner, where their irrational
+  // coordinates agree only to rounding: level 1's are joined (their boxes
+  // apart by a hair), the later levels' are united (boxes that overlap).
+  // Each tetrahedron stays its own shell, half the volume per level.
+  const double r = 50.0, edge = 4.0 * r / std::sqrt(6.0);
+  const double whole = edge * edge * edge / (6.0 * std::sqrt(2.0));
+  for (int level = 1; level <= 3; ++level) {
+    const double volume = whole / std::pow(2.0, level);
+    const TriangleMesh mesh = exportsValid(
+        "return sierpinski_tetrahedron{level = " + std::to_string(level) + ", size = 100}", volume,
+        1e-3 * volume);
+    EXPECT_EQ(meshShells(mesh).count, std::size_t(1) << (2 * level));
+  }
+}
+
 TEST(ContactExport, BoxesTouchingAlongAnEdgeAreJoined) {
   // The union's operands grow by a hundredth of the tolerance: a bridge of
   // that width joins them along the edge, one shell.
