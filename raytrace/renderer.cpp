@@ -15,7 +15,6 @@
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
 #include "raytrace/scattering.h"
-#include "raytrace/shadow_cache.h"
 
 namespace csgray::detail {
 
@@ -31,8 +30,6 @@ struct TraceContext {
   std::optional<double> skyHidden;
   // Diffuse bounces on the path so far (indirect light).
   int bounces = 0;
-  // What blocked each light's last shadow ray on this thread, if kept.
-  ShadowCache* shadowCache = nullptr;
 };
 
 namespace {
@@ -257,24 +254,10 @@ dvec3 Renderer::normalAt(const SurfaceHit& hit, const Ray& ray, std::uintptr_t* 
 }
 
 dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
-  return transmittance(from, to, nullptr);
-}
-
-dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to, ShadowCacheEntry* cache) const {
   Ray ray(from, to - from, 0.0, 1.0);
   dvec3 pass(1.0);
   SpanList spans;
   const std::uint32_t solids = std::uint32_t(objects_.size());
-  // What blocked this light's last shadow ray, if it blocks this one too,
-  // makes the answer the walk would give: something opaque meets the
-  // segment, and the light is blocked (direct() asks no more than that).
-  if (cache && cache->item != ShadowCacheEntry::kNone) {
-    const bool blocked = cache->item < solids
-                             ? cache->occluder.stillMeets(ray, spans)
-                             : scene_.surfaces[cache->item - solids]->hit(ray).has_value();
-    if (blocked) return dvec3(0.0);
-  }
-  std::uint32_t blocker = ShadowCacheEntry::kNone;
   double tMax = 1.0;
   // Each stretch inside a transparent solid or surface dims the light;
   // anything opaque ends the search.
@@ -285,9 +268,7 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to, ShadowCacheEnt
   bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
     if (i >= solids) {
       const Surface& surface = *scene_.surfaces[i - solids];
-      if (!surface.hit(ray) || dim(materialOf(surface.material()))) return true;
-      blocker = i;  // an opaque surface
-      return false;
+      return !surface.hit(ray) || dim(materialOf(surface.material()));
     }
     if (i >= ghostsFrom_) return true;  // ghosts cast no shadows
     // A stretch inside the solid: its material is the one of the face
@@ -302,9 +283,6 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to, ShadowCacheEnt
     if (!seeThrough_[i]) {
       if (!objects_[i]->meetsWindow(ray, spans)) return true;
       pass = dvec3(0.0);
-      // Found again, to be remembered: most shadow rays are not blocked,
-      // and those do not pay for the bookkeeping.
-      if (cache && cache->occluder.record(*objects_[i], ray, spans)) blocker = i;
       return false;
     }
     objects_[i]->spans(ray, spans);
@@ -312,9 +290,6 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to, ShadowCacheEnt
       if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
     return true;
   });
-  // A ray that got through forgets the occluder: the next is likely to
-  // get through as well, and would only pay for asking it.
-  if (cache) cache->item = blocker;
   return pass;
 }
 
@@ -333,9 +308,7 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   if (scene_.indirect.samples == 0 && m.ambient > 0.0)
     color =
         m.ambient * sp.color * (scene_.ambientOcclusion.samples > 0 ? unoccluded(sp, ctx) : 1.0);
-  for (std::size_t lightIndex = 0; lightIndex < lights_.size(); ++lightIndex) {
-    const Light& light = lights_[lightIndex];
-    ShadowCacheEntry* cache = ctx.shadowCache ? ctx.shadowCache->forLight(lightIndex) : nullptr;
+  for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {
       double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers
       if (light.isArea()) u = ctx.rng.next(), v = ctx.rng.next();
@@ -348,7 +321,7 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
       dvec3 pass(1.0);
       if (light.castsShadows) {
         ++ctx.counts.shadow;
-        pass = transmittance(origin, s, cache);
+        pass = transmittance(origin, s);
         if (largest(pass) <= 0.0) continue;
       }
       double highlight = 0.0;
@@ -613,15 +586,10 @@ RenderResult Renderer::renderAll() const {
   const double rows = double(h) * (1 + int(refine) + int(edges));
   std::atomic<int> pixelsDone = 0;
   std::atomic<std::uint64_t> primary = 0, shadow = 0, secondary = 0;
-  struct TileWork {
-    RayCounts counts;
-    ShadowCache shadows;
-  };
 
-  // Runs work(x, y, tile) for every pixel, in tiles of 16 × 16 that the
+  // Runs work(x, y, counts) for every pixel, in tiles of 16 × 16 that the
   // threads take in order, row of tiles by row of tiles from the top; the
-  // rays a tile traced are added up once per tile, and its pixels share
-  // one occluder cache of shadow rays (the tile's TileWork). In the last pass, the
+  // rays a tile traced are added up once per tile. In the last pass, the
   // tile that finishes a band of rows hands it on (options_.rowsDone).
   constexpr int kTile = 16;
   const int tilesX = (w + kTile - 1) / kTile, tiles = tilesX * ((h + kTile - 1) / kTile);
@@ -641,15 +609,15 @@ RenderResult Renderer::renderAll() const {
     auto tile = [&](int i) {
       const int x0 = i % tilesX * kTile, x1 = std::min(w, x0 + kTile);
       const int y0 = i / tilesX * kTile, y1 = std::min(h, y0 + kTile);
-      TileWork state{RayCounts{}, ShadowCache(lights_.size())};
+      RayCounts counts;
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
           if (cancelled()) return;  // a band it is in is never handed on
-          work(x, y, state);
+          work(x, y, counts);
         }
-      primary += state.counts.primary;
-      shadow += state.counts.shadow;
-      secondary += state.counts.secondary;
+      primary += counts.primary;
+      shadow += counts.shadow;
+      secondary += counts.secondary;
       const int pixels = (y1 - y0) * (x1 - x0);
       if (options_.progress) {
         int done = pixelsDone.fetch_add(pixels);
@@ -680,11 +648,10 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
-  forEachTile(!refine && !edges, [&](int x, int y, TileWork& tile) {
+  forEachTile(!refine && !edges, [&](int x, int y, RayCounts& counts) {
     TraceContext ctx{Sampler(x, y)};
-    ctx.shadowCache = &tile.shadows;
     result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, ctx));
-    add(tile.counts, ctx.counts);
+    add(counts, ctx.counts);
     if (!options_.depthAov && !options_.normalAov && !edges) return;
     Ray ray = camera_.ray(x + 0.5, y + 0.5);
     std::optional<SurfaceHit> hit = firstHit(ray);
@@ -715,12 +682,11 @@ RenderResult Renderer::renderAll() const {
         }
       return false;
     };
-    forEachTile(!edges, [&](int x, int y, TileWork& tile) {
+    forEachTile(!edges, [&](int x, int y, RayCounts& counts) {
       if (!differs(x, y)) return;
       TraceContext ctx{Sampler(x, y, 1)};
-      ctx.shadowCache = &tile.shadows;
       result.color.set(x, y, pixel(x, y, options_.samples, ctx));
-      add(tile.counts, ctx.counts);
+      add(counts, ctx.counts);
     });
   }
   if (edges) {
@@ -740,7 +706,7 @@ RenderResult Renderer::renderAll() const {
       sample = surfaceSample(*hit, n, use, ray.dir);
       return sample;
     };
-    forEachTile(true, [&](int x, int y, TileWork& tile) {
+    forEachTile(true, [&](int x, int y, RayCounts& counts) {
       const SurfaceSample& here = at(x, y);
       const dvec3 centre(x + 0.5, y + 0.5, 0.0);
       dvec3 herePoint = camera_.ray(centre.x, centre.y).at(here.t);
@@ -760,7 +726,7 @@ RenderResult Renderer::renderAll() const {
         for (int i = 0; i < kEdgeBisections; ++i) {
           const double m = 0.5 * (lo + hi);
           dvec3 probePoint(0.0);
-          ++tile.counts.primary;
+          ++counts.primary;
           const SurfaceSample probe =
               sampleAt(centre.x + m * step[0], centre.y + m * step[1], probePoint);
           const double pt = probe.surface && here.surface ? std::min(here.t, probe.t)

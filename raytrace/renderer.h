@@ -24,7 +24,6 @@
 
 namespace csgray::detail {
 class Sampler;
-struct ShadowCacheEntry;
 struct TraceContext;
 }  // namespace csgray::detail
 
@@ -154,9 +153,6 @@ class Renderer {
   dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, TraceContext& ctx,
               int raysLeft = kRaysPerCameraRay - 1) const;
   dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
-  // transmittance(from, to), the light's occluder cache asked first and
-  // updated (raytrace/shadow_cache.h); none if cache is null.
-  dvec3 transmittance(const dvec3& from, const dvec3& to, ShadowCacheEntry* cache) const;
   // The light that reaches a point from other surfaces (the scene's
   // indirect light): the mean of what diffusely scattered rays see.
   dvec3 indirect(const ShadingPoint& sp, const Media& media, int depth, double weight,
