@@ -129,9 +129,7 @@ class UseSearch {
 // normal brought up through the same frames innermost first).
 std::optional<BoundarySurface> hintedSurface(const UseHint& hint, const Solid& root, const Ray& ray,
                                              const Boundary& b, bool texture) {
-  if (hint.root != &root) return std::nullopt;
-  const Solid* subtree = hint.instances ? hint.chain[hint.instances - 1]->child().get() : &root;
-  if (!hint.knows(subtree, b.primitive)) return std::nullopt;
+  if (hint.root != &root || !hint.knows(hint.wayEnd(), b.primitive)) return std::nullopt;
   Ray local = ray;
   for (int i = 0; i < hint.instances; ++i) local = hint.chain[i]->rayToChild(local);
   UseSearch search(b, texture);
@@ -165,6 +163,10 @@ std::optional<BoundarySurface> underInstanceChain(const Solid& node, const Ray& 
 
 }  // namespace
 
+const Solid* UseHint::wayEnd() const {
+  return instances ? chain[instances - 1]->child().get() : root;
+}
+
 bool UseHint::knows(const Solid* subtree, const Primitive* primitive) const {
   for (const Reach& r : known)
     if (r.subtree == subtree && r.primitive == primitive) return true;
@@ -193,8 +195,7 @@ BoundarySurface boundarySurface(const Solid& root, const Ray& ray, const Boundar
   if (!search.found()) return surfaceOf(*b.primitive, point, b, texture);
   if (hint && search.wayToBest(*hint)) {
     hint->root = &root;
-    hint->learn(hint->instances ? hint->chain[hint->instances - 1]->child().get() : &root,
-                b.primitive);
+    hint->learn(hint->wayEnd(), b.primitive);
   }
   return search.surface();
 }

@@ -47,6 +47,8 @@ struct UseHint {
   Reach known[kKnown];  // the last few seen, oldest overwritten first
   int nextKnown = 0;
 
+  // Where the way ends: its last instance's child, or the root.
+  const Solid* wayEnd() const;
   bool knows(const Solid* subtree, const Primitive* primitive) const;
   void learn(const Solid* subtree, const Primitive* primitive);
 };

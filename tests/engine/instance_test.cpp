@@ -207,9 +207,7 @@ TEST(Instance, AHintGivesTheSearchsSurface) {
       const Ray ray(first.origin + dvec3(jitter(rng), jitter(rng), jitter(rng)), first.dir);
       for (const Span& s : test::spansOf(*shared, ray))
         for (const Boundary* b : {&s.in, &s.out}) {
-          const Solid* subtree =
-              hint.instances ? hint.chain[hint.instances - 1]->child().get() : shared.get();
-          hinted += hint.root == shared.get() && hint.knows(subtree, b->primitive);
+          hinted += hint.root == shared.get() && hint.knows(hint.wayEnd(), b->primitive);
           const BoundarySurface with = boundarySurface(*shared, ray, *b, true, &hint);
           const BoundarySurface without = boundarySurface(*shared, ray, *b, true);
           EXPECT_EQ(with.normal, without.normal) << i << " " << k;
