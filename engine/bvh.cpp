@@ -72,6 +72,7 @@ Bvh::Bvh(std::span<const Bounds> boxes) {
     items_.push_back(i);
   }
   if (items_.empty()) return;
+  if (items_.size() == 1) onlyBox_ = boxes[items_[0]];
   nodes_ = BvhBuilder(boxes, items_).wideNodes();
 }
 

@@ -75,6 +75,7 @@ class Bvh {
   std::vector<Node> nodes_;           // nodes_[0] is the root
   std::vector<std::uint32_t> items_;  // in leaf order
   std::vector<std::uint32_t> unbounded_;
+  Bounds onlyBox_;  // the box of the one bounded item, when there is one only
 
   friend class BvhBuilder;
 };
@@ -84,6 +85,14 @@ void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
   for (std::uint32_t item : unbounded_)
     if (!visit(item, ray.tMin)) return;
   if (nodes_.empty()) return;
+  // One bounded item (a scene of one part over a ground plane): its slab
+  // test alone, the one the node's would give (childEntries), without the
+  // node's other three slots, the ordering and the stack.
+  if (items_.size() == 1) {
+    const double t = boxEntry(onlyBox_, ray, ray.tMin, tMax);
+    if (t != kInfinity) visit(items_[0], t);
+    return;
+  }
   // A child that is met lies on the stack until it is visited: a node or a
   // leaf's items, and where the ray enters its box.
   struct Entry {

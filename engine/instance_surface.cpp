@@ -1,5 +1,6 @@
 #include "engine/instance_surface.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <optional>
@@ -38,6 +39,14 @@ class UseSearch {
 
   bool found() const { return distance_ < kInfinity; }
   const BoundarySurface& surface() const { return best_; }
+  // The instances on the way to the best use, outermost first; false if
+  // there were more than a hint holds.
+  bool wayToBest(UseHint& hint) const {
+    if (bestDepth_ > UseHint::kMaxInstances) return false;
+    hint.instances = bestDepth_;
+    std::copy(bestWay_, bestWay_ + bestDepth_, hint.chain);
+    return true;
+  }
 
   // Looks in node, the ray given in node's frame; true when done.
   bool visit(const Solid& node, const Ray& ray) {
@@ -45,7 +54,10 @@ class UseSearch {
     if (!near(node.bounds(), ray.at(b_.t))) return false;
     if (const Instance* instance = node.asInstance()) {
       const double before = distance_;
+      if (depth_ < UseHint::kMaxInstances) way_[depth_] = instance;
+      ++depth_;
       const bool done = visit(*instance->child(), instance->rayToChild(ray));
+      --depth_;
       // A better use below this instance: its normal into this frame.
       if (distance_ < before) {
         best_.normal = instance->frame().normalToWorld(best_.normal);
@@ -72,14 +84,8 @@ class UseSearch {
     return false;
   }
 
- private:
-  // Boxes hold their solids' surfaces up to rounding of the point.
-  static bool near(const Bounds& box, const dvec3& p) {
-    const double margin = 1e-9 * (1.0 + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
-    return p.x >= box.lo.x - margin && p.x <= box.hi.x + margin && p.y >= box.lo.y - margin &&
-           p.y <= box.hi.y + margin && p.z >= box.lo.z - margin && p.z <= box.hi.z + margin;
-  }
-
+  // Offers b's primitive, the ray given in its frame (the last step of a
+  // visit); true if it has a boundary on b's face within rounding of b.t.
   bool offer(const Primitive& primitive, const Ray& ray) {
     Ray line = ray;
     line.tMin = -kInfinity;
@@ -91,8 +97,18 @@ class UseSearch {
         if (end->face != b_.face || !(d < distance_)) continue;
         distance_ = d;
         best_ = surfaceOf(primitive, ray.at(b_.t), b_, texture_);
+        bestDepth_ = depth_;
+        std::copy(way_, way_ + std::min(depth_, UseHint::kMaxInstances), bestWay_);
       }
     return distance_ <= closeEnough_;
+  }
+
+ private:
+  // Boxes hold their solids' surfaces up to rounding of the point.
+  static bool near(const Bounds& box, const dvec3& p) {
+    const double margin = 1e-9 * (1.0 + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
+    return p.x >= box.lo.x - margin && p.x <= box.hi.x + margin && p.y >= box.lo.y - margin &&
+           p.y <= box.hi.y + margin && p.z >= box.lo.z - margin && p.z <= box.hi.z + margin;
   }
 
   const Boundary& b_;
@@ -101,7 +117,30 @@ class UseSearch {
   double distance_ = kInfinity;
   BoundarySurface best_{};
   SpanList spans_;
+  // The instances on the way to the node visited, and to the best use.
+  int depth_ = 0, bestDepth_ = 0;
+  const Instance* way_[UseHint::kMaxInstances];
+  const Instance* bestWay_[UseHint::kMaxInstances];
 };
+
+// The surface at the use the hint names, if that use has a boundary on b's
+// face within rounding of b.t: the search's answer there, with the same
+// steps (the ray taken down the instances, the primitive offered, the
+// normal brought up through the same frames innermost first).
+std::optional<BoundarySurface> hintedSurface(const UseHint& hint, const Solid& root, const Ray& ray,
+                                             const Boundary& b, bool texture) {
+  if (hint.root != &root || !hint.knows(hint.wayEnd(), b.primitive)) return std::nullopt;
+  Ray local = ray;
+  for (int i = 0; i < hint.instances; ++i) local = hint.chain[i]->rayToChild(local);
+  UseSearch search(b, texture);
+  if (!search.offer(*b.primitive, local)) return std::nullopt;
+  BoundarySurface s = search.surface();
+  for (int i = hint.instances - 1; i >= 0; --i) {
+    s.normal = hint.chain[i]->frame().normalToWorld(s.normal);
+    s.use = useThrough(s.use, *hint.chain[i]);
+  }
+  return s;
+}
 
 // The surface when node is a chain of instances over a tree without any (a
 // boolean moved as a whole, as a script's transform of it makes): b's
@@ -124,16 +163,41 @@ std::optional<BoundarySurface> underInstanceChain(const Solid& node, const Ray& 
 
 }  // namespace
 
-BoundarySurface boundarySurface(const Solid& root, const Ray& ray, const Boundary& b,
-                                bool texture) {
+const Solid* UseHint::wayEnd() const {
+  return instances ? chain[instances - 1]->child().get() : root;
+}
+
+bool UseHint::knows(const Solid* subtree, const Primitive* primitive) const {
+  for (const Reach& r : known)
+    if (r.subtree == subtree && r.primitive == primitive) return true;
+  return false;
+}
+
+void UseHint::learn(const Solid* subtree, const Primitive* primitive) {
+  if (knows(subtree, primitive)) return;
+  known[nextKnown] = {subtree, primitive};
+  nextKnown = (nextKnown + 1) % kKnown;
+}
+
+BoundarySurface boundarySurface(const Solid& root, const Ray& ray, const Boundary& b, bool texture,
+                                UseHint* hint) {
   const dvec3 point = ray.at(b.t);
   if (!root.hasInstances()) return surfaceOf(*b.primitive, point, b, texture);
   if (std::optional<BoundarySurface> s = underInstanceChain(root, ray, b, texture)) return *s;
+  if (hint) {
+    if (std::optional<BoundarySurface> s = hintedSurface(*hint, root, ray, b, texture)) return *s;
+    hint->root = nullptr;
+  }
   UseSearch search(b, texture);
   search.visit(root, ray);
   // Not found only if rounding put the point outside every box that holds
   // the primitive: its frame is then the best guess there is.
-  return search.found() ? search.surface() : surfaceOf(*b.primitive, point, b, texture);
+  if (!search.found()) return surfaceOf(*b.primitive, point, b, texture);
+  if (hint && search.wayToBest(*hint)) {
+    hint->root = &root;
+    hint->learn(hint->wayEnd(), b.primitive);
+  }
+  return search.surface();
 }
 
 }  // namespace csgray::detail

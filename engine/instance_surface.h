@@ -24,9 +24,43 @@ struct BoundarySurface {
   std::uintptr_t use = 0;
 };
 
+class Instance;
+
+// Where the last search found its use: the root searched and the
+// instances on the way, outermost first. Neighbouring pixels mostly see
+// the same part, so a renderer keeps one hint per thread and tries that
+// way first, for whichever primitive of the part the boundary names, if
+// the primitive is known to lie under the way's last instance with no
+// other instance between (its child and the primitive were seen together
+// at the end of a way before: `known`).
+struct UseHint {
+  static constexpr int kMaxInstances = 16;
+  static constexpr int kKnown = 8;
+  struct Reach {
+    const Solid* subtree = nullptr;  // the child of a way's last instance (or the root)
+    const Primitive* primitive = nullptr;
+  };
+
+  const Solid* root = nullptr;  // null: no hint
+  int instances = 0;
+  const Instance* chain[kMaxInstances];
+  Reach known[kKnown];  // the last few seen, oldest overwritten first
+  int nextKnown = 0;
+
+  // Where the way ends: its last instance's child, or the root.
+  const Solid* wayEnd() const;
+  bool knows(const Solid* subtree, const Primitive* primitive) const;
+  void learn(const Solid* subtree, const Primitive* primitive);
+};
+
 // The surface at boundary b (b.primitive not null) of a ray through root,
-// given in the frame root is in.
+// given in the frame root is in. With a hint, the use of b's primitive on
+// its way is offered first and taken when it has a boundary on b's face
+// within rounding of b.t, which is what ends the search too; after a
+// search the hint is the way to the use found. (The search takes the first such use in its order,
+// the hint the last one found: they differ only where two uses of one primitive have that face at
+// one point of the ray.)
 BoundarySurface boundarySurface(const Solid& root, const Ray& ray, const Boundary& b,
-                                bool texture = false);
+                                bool texture = false, UseHint* hint = nullptr);
 
 }  // namespace csgray::detail

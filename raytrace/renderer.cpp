@@ -30,6 +30,9 @@ struct TraceContext {
   std::optional<double> skyHidden;
   // Diffuse bounces on the path so far (indirect light).
   int bounces = 0;
+  // Where the last shaded boundary's use was found, on this thread
+  // (engine/instance_surface.h), if kept.
+  UseHint* useHint = nullptr;
 };
 
 namespace {
@@ -458,7 +461,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     sp.material = &materialOf(b);
     const bool textured = sp.material->texture != nullptr;
     const BoundarySurface surface =
-        boundarySurface(*objects_[std::size_t(hit->object)], ray, b, textured);
+        boundarySurface(*objects_[std::size_t(hit->object)], ray, b, textured, ctx.useHint);
     sp.normal = b.flip ? -surface.normal : surface.normal;
     sp.color = textured ? sp.material->texture->colorAt(surface.texturePoint, surface.textureNormal)
                         : sp.material->color;
@@ -586,10 +589,15 @@ RenderResult Renderer::renderAll() const {
   const double rows = double(h) * (1 + int(refine) + int(edges));
   std::atomic<int> pixelsDone = 0;
   std::atomic<std::uint64_t> primary = 0, shadow = 0, secondary = 0;
+  struct TileWork {
+    RayCounts counts;
+    UseHint useHint;
+  };
 
-  // Runs work(x, y, counts) for every pixel, in tiles of 16 × 16 that the
+  // Runs work(x, y, tile) for every pixel, in tiles of 16 × 16 that the
   // threads take in order, row of tiles by row of tiles from the top; the
-  // rays a tile traced are added up once per tile. In the last pass, the
+  // rays a tile traced are added up once per tile, and its pixels share
+  // one hint of where shaded boundaries' uses lie (the tile's TileWork). In the last pass, the
   // tile that finishes a band of rows hands it on (options_.rowsDone).
   constexpr int kTile = 16;
   const int tilesX = (w + kTile - 1) / kTile, tiles = tilesX * ((h + kTile - 1) / kTile);
@@ -609,15 +617,15 @@ RenderResult Renderer::renderAll() const {
     auto tile = [&](int i) {
       const int x0 = i % tilesX * kTile, x1 = std::min(w, x0 + kTile);
       const int y0 = i / tilesX * kTile, y1 = std::min(h, y0 + kTile);
-      RayCounts counts;
+      TileWork state;
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
           if (cancelled()) return;  // a band it is in is never handed on
-          work(x, y, counts);
+          work(x, y, state);
         }
-      primary += counts.primary;
-      shadow += counts.shadow;
-      secondary += counts.secondary;
+      primary += state.counts.primary;
+      shadow += state.counts.shadow;
+      secondary += state.counts.secondary;
       const int pixels = (y1 - y0) * (x1 - x0);
       if (options_.progress) {
         int done = pixelsDone.fetch_add(pixels);
@@ -648,10 +656,11 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
-  forEachTile(!refine && !edges, [&](int x, int y, RayCounts& counts) {
+  forEachTile(!refine && !edges, [&](int x, int y, TileWork& tile) {
     TraceContext ctx{Sampler(x, y)};
+    ctx.useHint = &tile.useHint;
     result.color.set(x, y, pixel(x, y, refine ? 1 : options_.samples, ctx));
-    add(counts, ctx.counts);
+    add(tile.counts, ctx.counts);
     if (!options_.depthAov && !options_.normalAov && !edges) return;
     Ray ray = camera_.ray(x + 0.5, y + 0.5);
     std::optional<SurfaceHit> hit = firstHit(ray);
@@ -682,11 +691,12 @@ RenderResult Renderer::renderAll() const {
         }
       return false;
     };
-    forEachTile(!edges, [&](int x, int y, RayCounts& counts) {
+    forEachTile(!edges, [&](int x, int y, TileWork& tile) {
       if (!differs(x, y)) return;
       TraceContext ctx{Sampler(x, y, 1)};
+      ctx.useHint = &tile.useHint;
       result.color.set(x, y, pixel(x, y, options_.samples, ctx));
-      add(counts, ctx.counts);
+      add(tile.counts, ctx.counts);
     });
   }
   if (edges) {
@@ -706,7 +716,7 @@ RenderResult Renderer::renderAll() const {
       sample = surfaceSample(*hit, n, use, ray.dir);
       return sample;
     };
-    forEachTile(true, [&](int x, int y, RayCounts& counts) {
+    forEachTile(true, [&](int x, int y, TileWork& tile) {
       const SurfaceSample& here = at(x, y);
       const dvec3 centre(x + 0.5, y + 0.5, 0.0);
       dvec3 herePoint = camera_.ray(centre.x, centre.y).at(here.t);
@@ -726,7 +736,7 @@ RenderResult Renderer::renderAll() const {
         for (int i = 0; i < kEdgeBisections; ++i) {
           const double m = 0.5 * (lo + hi);
           dvec3 probePoint(0.0);
-          ++counts.primary;
+          ++tile.counts.primary;
           const SurfaceSample probe =
               sampleAt(centre.x + m * step[0], centre.y + m * step[1], probePoint);
           const double pt = probe.surface && here.surface ? std::min(here.t, probe.t)

@@ -43,7 +43,14 @@ class CheckerTexture final : public Texture {
     // (which would overflow far from the origin); NaN counts as odd. The
     // millionth of a cell added keeps a face that lies on a cell boundary
     // (a floor at z = 0) in one cell: its hit points round to either side.
-    auto odd = [this](double c) { return std::fmod(std::floor(c / size_ + 1e-6), 2.0) != 0.0; };
+    // The parity of the whole number k is k − 2·floor(k/2), each step exact
+    // in doubles (halving, floor, doubling; the difference is 0 or 1), so
+    // it equals fmod(k, 2) (NaN and ±inf give NaN: odd) without a call
+    // into libm, which took 3 % of the glass scene's render.
+    auto odd = [this](double c) {
+      const double k = std::floor(c / size_ + 1e-6);
+      return k - 2.0 * std::floor(0.5 * k) != 0.0;
+    };
     return (odd(p.x) != odd(p.y)) != odd(p.z) ? b_ : a_;
   }
 

@@ -71,6 +71,36 @@ TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesTheRayMeets) {
   }
 }
 
+// Trees of one to five boxes (one bounded box takes a path of its own)
+// visit a box with the entry t of its slab test, also for rays parallel to
+// an axis that run in the plane of a face (0·inf in the test).
+TEST(Bvh, EntryIsTheBoxsSlabTest) {
+  std::mt19937_64 rng(5);
+  int met = 0;
+  for (int n = 1; n <= 5; ++n) {
+    const std::vector<Bounds> boxes = randomBoxes(rng, n);
+    const Bvh bvh(boxes);
+    for (int r = 0; r < 400; ++r) {
+      Ray ray = randomRay(rng);
+      if (r % 4 == 0) {  // along y, in the plane of box 0's low x face
+        ray = Ray(dvec3(boxes[0].lo.x, -15.0, boxes[0].center().z), dvec3(0, 1, 0));
+      }
+      double tMax = ray.tMax;
+      std::set<std::uint32_t> visited;
+      bvh.traverse(ray, tMax, [&](std::uint32_t item, double t) {
+        EXPECT_EQ(t, boxEntry(boxes[item], ray, ray.tMin, ray.tMax)) << n << " " << r;
+        visited.insert(item);
+        return true;
+      });
+      for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        EXPECT_EQ(visited.count(i) == 1, boxEntry(boxes[i], ray, ray.tMin, ray.tMax) != kInfinity)
+            << n << " " << r << " " << i;
+      met += int(visited.size());
+    }
+  }
+  EXPECT_GT(met, 300);
+}
+
 TEST(Bvh, PruningByTMaxFindsTheNearestBox) {
   std::mt19937_64 rng(2);
   std::vector<Bounds> boxes = randomBoxes(rng, 500);

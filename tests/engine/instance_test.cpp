@@ -189,6 +189,39 @@ TEST(Instance, NormalsUnderAChainOfInstancesAreTheCopys) {
   EXPECT_GT(compared, 2000);
 }
 
+// A hint kept from boundary to boundary (as a render thread keeps one)
+// changes nothing: along bundles of neighbouring rays through the nested
+// instances, every boundary's normal, use and texture frame are the ones
+// the search alone finds, bit for bit, while most of them come from the
+// hint's way.
+TEST(Instance, AHintGivesTheSearchsSurface) {
+  const SolidPtr shared = instanced();
+  shared->prepare();
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  UseHint hint;
+  int compared = 0, hinted = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Ray first = randomRayThrough(rng, *shared);
+    for (int k = 0; k < 4; ++k) {
+      const Ray ray(first.origin + dvec3(jitter(rng), jitter(rng), jitter(rng)), first.dir);
+      for (const Span& s : test::spansOf(*shared, ray))
+        for (const Boundary* b : {&s.in, &s.out}) {
+          hinted += hint.root == shared.get() && hint.knows(hint.wayEnd(), b->primitive);
+          const BoundarySurface with = boundarySurface(*shared, ray, *b, true, &hint);
+          const BoundarySurface without = boundarySurface(*shared, ray, *b, true);
+          EXPECT_EQ(with.normal, without.normal) << i << " " << k;
+          EXPECT_EQ(with.use, without.use) << i << " " << k;
+          EXPECT_EQ(with.texturePoint, without.texturePoint) << i << " " << k;
+          EXPECT_EQ(with.textureNormal, without.textureNormal) << i << " " << k;
+          ++compared;
+        }
+    }
+  }
+  EXPECT_GT(compared, 5000);
+  EXPECT_GT(hinted, compared / 3);
+}
+
 // The shadow ray's question, whether a solid meets a window of the ray,
 // has the answer of the solid's spans there: for unions of instances
 // (which stop at the first operand that meets it), their copies, and the

@@ -103,6 +103,39 @@ TEST(CheckerTexture, FarFromTheOriginStillAlternates) {
   EXPECT_EQ(checker->colorAt({-x, 0.5, 0.5}, kUp), kB);  // cell -1e12 - 1 is odd
 }
 
+// The parity is the one fmod(k, 2) gives for the cell index k, wherever
+// the point is: beyond 2^53 (where every double is even), at ±0, and off
+// to infinity or NaN (odd).
+TEST(CheckerTexture, ParityIsTheRemainderOfTheCellIndexEverywhere) {
+  TexturePtr checker = checkerTexture(kA, kB, 1.0);
+  auto expected = [](double x) {
+    const double k = std::floor(x + 1e-6);
+    return std::fmod(k, 2.0) != 0.0 ? kB : kA;
+  };
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> exponent(-3.0, 300.0);
+  std::vector<double> xs = {0.0,
+                            -0.0,
+                            0.5,
+                            -0.5,
+                            9007199254740992.0,
+                            9007199254740994.0,
+                            -9007199254740993.5,
+                            1e300,
+                            -1e300,
+                            std::numeric_limits<double>::infinity(),
+                            -std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::quiet_NaN()};
+  for (int n = 0; n < 2000; ++n) xs.push_back((n % 2 ? -1.0 : 1.0) * std::pow(10.0, exponent(rng)));
+  int odd = 0;
+  for (double x : xs) {
+    const dvec3 colour = checker->colorAt({x, 0.5, 0.5}, kUp);
+    EXPECT_EQ(colour, expected(x)) << x;
+    odd += colour == kB;
+  }
+  EXPECT_GT(odd, 3);  // both parities occur (small indices alternate)
+}
+
 TEST(CheckerTexture, TranslationMovesThePattern) {
   TexturePtr checker = placed(checkerTexture(kA, kB, 1.0), Affine::translation({0.5, 0.0, 0.0}));
   // The cell boundaries are now at x = k + 0.5: x in (0.5, 1.5) is cell 0.
