@@ -20,6 +20,7 @@ class Torus : public PrimitiveShape<Torus> {
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool objectMeetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
