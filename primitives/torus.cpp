@@ -76,8 +76,7 @@ struct ConditionedLine {
 // box, or crosses it only inside the hole (ρ < R − r at both ends of the
 // piece: ρ² is convex along a line), misses the torus without a quartic;
 // one that meets it solves on a shorter piece.
-bool conditionedLine(const Ray& ray, double majorRadius, double minorRadius,
-                     ConditionedLine& line) {
+bool conditionedLine(const Ray& ray, const TorusInUnits& torus, ConditionedLine& line) {
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
   double dd = glm::dot(d, d);
@@ -89,18 +88,17 @@ bool conditionedLine(const Ray& ray, double majorRadius, double minorRadius,
   double again = glm::dot(closest, d) / dd;
   t0 -= again;
   closest -= again * d;
-  double size = majorRadius + minorRadius;
+  const double size = torus.size;
   double len = std::sqrt(dd);
   dvec3 b = closest / size;  // the origin of s, in units of the bounding radius
   dvec3 u = d / len;         // unit direction
-  double R = majorRadius / size, r = minorRadius / size;
   double c = glm::dot(b, b);
   if (!(c < 1.0)) return false;  // misses the bounding sphere (or touches it on the equator)
   double reach = std::sqrt((1.0 + kMargin) * (1.0 + kMargin) - c);
   double scale = size / len;  // t = t0 + s·scale
   if (t0 + reach * scale < ray.tMin || t0 - reach * scale > ray.tMax) return false;
   double lo = -reach, hi = reach;
-  const double slab = minorRadius / size * (1.0 + kMargin);
+  const double slab = torus.slab;
   if (u.z != 0.0) {
     double a0 = (-slab - b.z) / u.z, a1 = (slab - b.z) / u.z;
     if (a0 > a1) std::swap(a0, a1);
@@ -120,11 +118,11 @@ bool conditionedLine(const Ray& ray, double majorRadius, double minorRadius,
     return false;
   }
   if (!(lo < hi)) return false;
-  const double hole = (majorRadius - minorRadius) / size * (1.0 - kMargin);
+  const double hole = torus.hole;
   auto rho2 = [&](double s) { return (a * s + 2.0 * h) * s + g; };
   if (hole > 0.0 && rho2(lo) < hole * hole && rho2(hi) < hole * hole) return false;
   if (t0 + hi * scale < ray.tMin || t0 + lo * scale > ray.tMax) return false;
-  line = ConditionedLine{b, u, R, r, lo, hi, t0, scale};
+  line = ConditionedLine{b, u, torus.R, torus.r, lo, hi, t0, scale};
   return true;
 }
 
@@ -428,6 +426,9 @@ Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minor
     msg << "torus: R must be >= 0 (got " << majorRadius << ")";
     throw std::invalid_argument(msg.str());
   }
+  const double size = R_ + r_;
+  inUnits_ = {size, R_ / size, r_ / size, r_ / size * (1.0 + kMargin),
+              (R_ - r_) / size * (1.0 - kMargin)};
 }
 
 // The ray meets the surface where f(o + t·d) = 0, with
@@ -474,7 +475,7 @@ void Torus::objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
 // the whole search found the boundaries it starts from as well.
 bool Torus::objectMeetsWindow(const Ray& ray, SpanList& scratch) const {
   ConditionedLine line;
-  if (!conditionedLine(ray, R_, r_, line)) return false;
+  if (!conditionedLine(ray, inUnits_, line)) return false;
   const double sMin = (ray.tMin - line.t0) / line.scale;
   const double sMax = (ray.tMax - line.t0) / line.scale;
   switch (meetsOnWindow(line, sMin, sMax)) {
@@ -491,7 +492,7 @@ bool Torus::objectMeetsWindow(const Ray& ray, SpanList& scratch) const {
 void Torus::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   // 1. The conditioned line, narrowed to the ring-shaped box.
   ConditionedLine line;
-  if (!conditionedLine(ray, R_, r_, line)) return;
+  if (!conditionedLine(ray, inUnits_, line)) return;
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
   const double t0 = line.t0, scale = line.scale, hi = line.hi;

@@ -10,6 +10,15 @@
 
 namespace csgray::detail {
 
+// A torus's sizes in units of its bounding radius, as the conditioning of
+// every ray (torus.cpp) uses them: divided once, not per ray.
+struct TorusInUnits {
+  double size;  // R + r, the bounding sphere's radius
+  double R, r;  // the radii in units of size
+  double slab;  // the half-height r, grown by the solver's margin
+  double hole;  // the hole's radius R − r, shrunk by the margin
+};
+
 class Torus : public PrimitiveShape<Torus> {
  public:
   Torus(double majorRadius, double minorRadius);
@@ -31,6 +40,7 @@ class Torus : public PrimitiveShape<Torus> {
   void spansOf(const Ray& ray, bool firstOnly, SpanList& out) const;
 
   double R_, r_;
+  TorusInUnits inUnits_;
 };
 
 }  // namespace csgray::detail
