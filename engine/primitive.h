@@ -71,7 +71,7 @@ class Primitive : public Solid {
   // Solid::meetsWindow for a ray in object space: the answer of
   // objectSpansToFirstBoundary's spans by default; a shape that can tell
   // without finding its boundaries exactly may answer sooner. scratch is
-  // working space (not cleared).
+  // working space, whatever it holds on entry.
   virtual bool objectMeetsWindow(const Ray& ray, SpanList& scratch) const;
   virtual bool objectContains(const dvec3& p) const = 0;
   // Outward normal (any length) at an object-space point on the face.
