@@ -34,6 +34,18 @@ void Primitive::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   inObjectSpace(frame_, ray, [&](const Ray& r) { objectSpansToFirstBoundary(r, out); });
 }
 
+bool Primitive::meetsWindow(const Ray& ray, SpanList& scratch) const {
+  bool met = false;
+  inObjectSpace(frame_, ray, [&](const Ray& r) { met = objectMeetsWindow(r, scratch); });
+  return met;
+}
+
+bool Primitive::objectMeetsWindow(const Ray& ray, SpanList& scratch) const {
+  scratch.clear();
+  objectSpansToFirstBoundary(ray, scratch);
+  return scratch.meetsOpenWindow(ray.tMin, ray.tMax);
+}
+
 bool Primitive::contains(const dvec3& p) const {
   return objectContains(frame_.isIdentity() ? p : frame_.pointToObject(p));
 }

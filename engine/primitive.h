@@ -28,6 +28,7 @@ class Primitive : public Solid {
   const Bounds& bounds() const final { return bounds_; }
   void spans(const Ray& ray, SpanList& out) const final;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const final;
+  bool meetsWindow(const Ray& ray, SpanList& scratch) const final;
   bool contains(const dvec3& p) const final;
   SolidPtr mapPrimitives(const PrimitiveMap& f) const final { return f(*this); }
 
@@ -67,6 +68,11 @@ class Primitive : public Solid {
   virtual void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
     objectSpans(ray, out);
   }
+  // Solid::meetsWindow for a ray in object space: the answer of
+  // objectSpansToFirstBoundary's spans by default; a shape that can tell
+  // without finding its boundaries exactly may answer sooner. scratch is
+  // working space, whatever it holds on entry.
+  virtual bool objectMeetsWindow(const Ray& ray, SpanList& scratch) const;
   virtual bool objectContains(const dvec3& p) const = 0;
   // Outward normal (any length) at an object-space point on the face.
   virtual dvec3 objectNormal(const dvec3& p, int face) const = 0;

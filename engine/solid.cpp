@@ -26,9 +26,7 @@ SolidPtr Solid::transformed(const Affine& worldFromObject) const {
 
 bool Solid::meetsWindow(const Ray& ray, SpanList& scratch) const {
   spansToFirstBoundary(ray, scratch);
-  for (const Span& s : scratch)
-    if (s.out.t > ray.tMin && s.in.t < ray.tMax) return true;
-  return false;
+  return scratch.meetsOpenWindow(ray.tMin, ray.tMax);
 }
 
 SolidPtr Solid::withDefaultMaterial(const MaterialPtr& material) const {

@@ -32,6 +32,12 @@ double SpanList::lengthWithin(double t0, double t1) const {
   return sum;
 }
 
+bool SpanList::meetsOpenWindow(double t0, double t1) const {
+  for (const Span& s : *this)
+    if (s.out.t > t0 && s.in.t < t1) return true;
+  return false;
+}
+
 bool SpanList::valid() const {
   for (std::uint32_t i = 0; i < size_; ++i) {
     const Span& s = data_[i];

@@ -59,6 +59,8 @@ class SpanList {
 
   // Sum of span lengths clipped to [t0, t1].
   double lengthWithin(double t0, double t1) const;
+  // Does some span reach into the open window (t0, t1)?
+  bool meetsOpenWindow(double t0, double t1) const;
 
   // Are all the invariants true: sorted, disjoint, in <= out, no NaN?
   bool valid() const;

@@ -66,6 +66,66 @@ struct ConditionedLine {
   double R, r, lo, hi, t0, scale;
 };
 
+// The line of a ray in the conditioned frame (step 1 of objectSpans),
+// narrowed to the ring-shaped box; false when the ray misses the torus
+// there or meets that box only outside its window.
+//
+// The chord of the bounding sphere is narrowed to where the ray is in the
+// slab |z| <= r and in the cylinder ρ <= R + r (each grown by the margin,
+// so the ends stay outside the torus): a ray that misses this ring-shaped
+// box, or crosses it only inside the hole (ρ < R − r at both ends of the
+// piece: ρ² is convex along a line), misses the torus without a quartic;
+// one that meets it solves on a shorter piece.
+bool conditionedLine(const Ray& ray, const TorusInUnits& torus, ConditionedLine& line) {
+  const dvec3& o = ray.origin;
+  const dvec3& d = ray.dir;
+  double dd = glm::dot(d, d);
+  if (!(dd > 0.0)) return false;
+  // The closest point to the centre, t = t0; a second pass removes what
+  // rounding left of its component along d.
+  double t0 = -glm::dot(o, d) / dd;
+  dvec3 closest = o + t0 * d;
+  double again = glm::dot(closest, d) / dd;
+  t0 -= again;
+  closest -= again * d;
+  const double size = torus.size;
+  double len = std::sqrt(dd);
+  dvec3 b = closest / size;  // the origin of s, in units of the bounding radius
+  dvec3 u = d / len;         // unit direction
+  double c = glm::dot(b, b);
+  if (!(c < 1.0)) return false;  // misses the bounding sphere (or touches it on the equator)
+  double reach = std::sqrt((1.0 + kMargin) * (1.0 + kMargin) - c);
+  double scale = size / len;  // t = t0 + s·scale
+  if (t0 + reach * scale < ray.tMin || t0 - reach * scale > ray.tMax) return false;
+  double lo = -reach, hi = reach;
+  const double slab = torus.slab;
+  if (u.z != 0.0) {
+    double a0 = (-slab - b.z) / u.z, a1 = (slab - b.z) / u.z;
+    if (a0 > a1) std::swap(a0, a1);
+    lo = std::max(lo, a0), hi = std::min(hi, a1);
+  } else if (std::abs(b.z) > slab) {
+    return false;
+  }
+  // ρ²(s) = a·s² + 2h·s + g against (1 + margin)².
+  const double a = u.x * u.x + u.y * u.y, h = b.x * u.x + b.y * u.y, g = b.x * b.x + b.y * b.y;
+  const double outer = (1.0 + kMargin) * (1.0 + kMargin);
+  if (a > 0.0) {
+    const double disc = h * h - a * (g - outer);
+    if (!(disc > 0.0)) return false;
+    const double root = std::sqrt(disc);
+    lo = std::max(lo, (-h - root) / a), hi = std::min(hi, (-h + root) / a);
+  } else if (g > outer) {
+    return false;
+  }
+  if (!(lo < hi)) return false;
+  const double hole = torus.hole;
+  auto rho2 = [&](double s) { return (a * s + 2.0 * h) * s + g; };
+  if (hole > 0.0 && rho2(lo) < hole * hole && rho2(hi) < hole * hole) return false;
+  if (t0 + hi * scale < ray.tMin || t0 + lo * scale > ray.tMax) return false;
+  line = ConditionedLine{b, u, torus.R, torus.r, lo, hi, t0, scale};
+  return true;
+}
+
 // A boundary at s, within the piece [lo, hi] of the line that holds no other.
 struct Root {
   double s, lo, hi;
@@ -88,6 +148,52 @@ struct TubeFactor {
     return {value, slope};
   }
 };
+
+// The tube's factor on a line, and where it is convex or concave: g'' = 0
+// at sAxis ± w, where ρ³ = R·a·n, so (s − sAxis)² = ((R·a·n)^(2/3) − n)/a;
+// there are two such points when (R·a·n)² > n³, that is R²a² > n. g is
+// concave between them (near the axis) and convex outside.
+struct TubeOnLine {
+  TubeFactor g;
+  double w;          // half the concave stretch; −1 when there is none
+  bool throughAxis;  // the line meets the axis, where g has a kink (or is flat, on it)
+
+  // lo, the inflections strictly between lo and hi, and hi: the ends of
+  // the pieces. Returns the count.
+  int breaks(double lo, double hi, double out[4]) const {
+    int count = 0;
+    out[count++] = lo;
+    if (w >= 0.0)
+      for (double end : {g.sAxis - w, g.sAxis + w})
+        if (end > out[count - 1] && end < hi) out[count++] = end;
+    out[count++] = hi;
+    return count;
+  }
+  // −1 on the concave piece [lo, hi], 1 on a convex one.
+  double sign(double lo, double hi) const {
+    return std::abs(0.5 * (lo + hi) - g.sAxis) < w ? -1.0 : 1.0;
+  }
+};
+
+TubeOnLine tubeOnLine(const ConditionedLine& line) {
+  const dvec3 &b = line.b, &u = line.u;
+  const double R = line.R, r = line.r;
+  const double a = u.x * u.x + u.y * u.y;
+  // n = ((x² + y²)·a − (b·u in xy)²)/a, whose numerator is (b × u)z² by
+  // Lagrange's identity: no cancellation.
+  const double cross = b.x * u.y - b.y * u.x;
+  TubeOnLine tube{TubeFactor{glm::dot(b, u), glm::dot(b, b) + R * R - r * r, a,
+                             a > 0.0 ? cross * cross / a : b.x * b.x + b.y * b.y,
+                             a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0, R},
+                  -1.0, false};
+  const double n = tube.g.n;
+  tube.throughAxis = !(n > 0.0);
+  if (!tube.throughAxis && R * R * a * a > n) {
+    const double ran = R * a * n;
+    tube.w = std::sqrt((std::cbrt(ran * ran) - n) / a);
+  }
+  return tube;
+}
 
 enum class Search { Root, None, Undecided };
 
@@ -179,11 +285,10 @@ int boundariesByIsolation(const ConditionedLine& line, double lo, double hi, boo
 }
 
 // The boundaries on the line's [lo, hi] in order, found piece by piece
-// where the tube's factor g is convex or concave: g'' = 0 at sAxis ± w,
-// where ρ³ = R·a·n; g is concave between (near the axis) and convex
-// outside. On a convex piece, {g <= 0} is one interval, so the signs at its
-// ends and Newton's method from the ends (convexNewton) find its
-// boundaries; on a concave piece, the same for {g >= 0}. A piece this does
+// where the tube's factor g is convex or concave (TubeOnLine). On a
+// convex piece, {g <= 0} is one interval, so the signs at its ends and
+// Newton's method from the ends (convexNewton) find its boundaries; on a
+// concave piece, the same for {g >= 0}. A piece this does
 // not settle (a near-tangency), or the whole line when it meets the axis
 // (where g has a kink), goes to the isolation of the quartic's roots on
 // that piece alone. ring says the torus has no lemon (R >= r). Returns the
@@ -198,33 +303,11 @@ int boundariesByIsolation(const ConditionedLine& line, double lo, double hi, boo
 // keep the span rather than find a tangency polished to a point.
 int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, bool firstOnly, double tMin,
                              Root roots[4]) {
-  const dvec3 &b = line.b, &u = line.u;
-  const double R = line.R, r = line.r;
-  const double a = u.x * u.x + u.y * u.y;
-  // n = ((x² + y²)·a − (b·u in xy)²)/a, whose numerator is (b × u)z² by
-  // Lagrange's identity: no cancellation.
-  const double cross = b.x * u.y - b.y * u.x;
-  TubeFactor g{glm::dot(b, u),
-               glm::dot(b, b) + R * R - r * r,
-               a,
-               a > 0.0 ? cross * cross / a : b.x * b.x + b.y * b.y,
-               a > 0.0 ? -(b.x * u.x + b.y * u.y) / a : 0.0,
-               R};
-  // The breaks: the ends, and the inflections between them, where
-  // ρ³ = R·a·n, so (s − sAxis)² = ((R·a·n)^(2/3) − n)/a: there are two when
-  // (R·a·n)² > n³, that is R²a² > n.
+  const TubeOnLine tube = tubeOnLine(line);
+  const TubeFactor& g = tube.g;
+  const bool throughAxis = tube.throughAxis;
   double breaks[4];
-  int count = 0;
-  breaks[count++] = line.lo;
-  double w = 0.0;
-  const bool throughAxis = !(g.n > 0.0);  // where g has a kink (or is flat, on the axis)
-  if (!throughAxis && R * R * a * a > g.n) {
-    const double ran = R * a * g.n;
-    w = std::sqrt((std::cbrt(ran * ran) - g.n) / a);
-    for (double end : {g.sAxis - w, g.sAxis + w})
-      if (end > breaks[count - 1] && end < line.hi) breaks[count++] = end;
-  }
-  breaks[count++] = line.hi;
+  const int count = tube.breaks(line.lo, line.hi, breaks);
 
   int found = 0;
   double gLo = g(breaks[0]).first;
@@ -232,7 +315,7 @@ int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, bool firstO
   for (int i = 1; i < count; ++i) {
     const double lo = breaks[i - 1], hi = breaks[i];
     const double gHi = g(hi).first;
-    const double sign = std::abs(0.5 * (lo + hi) - g.sAxis) < w ? -1.0 : 1.0;
+    const double sign = tube.sign(lo, hi);
     const bool loPositive = sign * gLo > 0.0, hiPositive = sign * gHi > 0.0;
     gLo = gHi;
     if (!throughAxis && !loPositive && !hiPositive) continue;  // the piece holds no boundary
@@ -277,6 +360,62 @@ int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, bool firstO
   return found;
 }
 
+// g this far from 0 (in the conditioned units, where g is O(1), times
+// 1 + the ray's start's distance from the line's closest point) says which
+// side of the surface a point is on beyond doubt: far above the rounding
+// of g and of the point's t, so the boundaries found exactly (to a few ulps
+// of t after the polish) lie on the same side of it; far below what a
+// shadow ray's start off the surface gives (1e-9 of the scene's size along
+// the normal makes g about 2r times that in the torus's units).
+constexpr double kClearly = 1e-12;
+
+enum class Meets { Yes, No, Undecided };
+
+// Does the torus meet the open window (sMin, sMax) of the line? The answer
+// of the first boundary's search (Solid::meetsWindow), found with less:
+// only the window's part of the line is searched, with no polish, and the
+// search stops at a point surely inside. Yes at a point where g is clearly
+// negative; no where g is clearly positive at the ends of the window's
+// pieces and Newton's method proves each convex piece free of boundaries
+// (a concave one positive at its ends is positive throughout). Anything
+// nearer the surface (a window's end on it, a near-tangency) is undecided
+// and left to the search for the first boundary.
+Meets meetsOnWindow(const ConditionedLine& line, double sMin, double sMax) {
+  const double lo = std::max(line.lo, sMin), hi = std::min(line.hi, sMax);
+  if (!(lo < hi)) return Meets::No;
+  const double clearly = kClearly * (1.0 + std::abs(line.t0 / line.scale));
+  const TubeOnLine tube = tubeOnLine(line);
+  const TubeFactor& g = tube.g;
+  auto side = [&](double s) {
+    const double value = g(s).first;
+    return value < -clearly ? Meets::Yes : value > clearly ? Meets::No : Meets::Undecided;
+  };
+  // A ray through the tube's middle is inside where it crosses the plane
+  // of the core circle: one evaluation, no search.
+  if (line.u.z != 0.0) {
+    const double across = -line.b.z / line.u.z;
+    if (across > lo && across < hi && side(across) == Meets::Yes) return Meets::Yes;
+  }
+  if (tube.throughAxis) return Meets::Undecided;
+  double breaks[4];
+  const int count = tube.breaks(lo, hi, breaks);
+  for (int i = 0; i < count; ++i)
+    if (Meets at = side(breaks[i]); at != Meets::No) return at;
+  for (int i = 1; i < count; ++i) {
+    const double pieceLo = breaks[i - 1], pieceHi = breaks[i];
+    if (tube.sign(pieceLo, pieceHi) < 0.0) continue;
+    double entry;
+    const Search search = convexNewton(g, 1.0, pieceLo, pieceLo, pieceHi, entry);
+    if (search == Search::None) continue;
+    if (search == Search::Undecided) return Meets::Undecided;
+    // An entry: the window meets the torus if it is surely inside a little
+    // beyond (not a tangency).
+    const double beyond = entry + kFirstOnlyGap;
+    return beyond < pieceHi && side(beyond) == Meets::Yes ? Meets::Yes : Meets::Undecided;
+  }
+  return Meets::No;
+}
+
 }  // namespace
 
 Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minorRadius) {
@@ -287,6 +426,9 @@ Torus::Torus(double majorRadius, double minorRadius) : R_(majorRadius), r_(minor
     msg << "torus: R must be >= 0 (got " << majorRadius << ")";
     throw std::invalid_argument(msg.str());
   }
+  const double size = R_ + r_;
+  inUnits_ = {size, R_ / size, r_ / size, r_ / size * (1.0 + kMargin),
+              (R_ - r_) / size * (1.0 - kMargin)};
 }
 
 // The ray meets the surface where f(o + t·d) = 0, with
@@ -326,66 +468,38 @@ void Torus::objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
   spansOf(ray, true, out);
 }
 
+// A shadow ray asks only whether the torus meets its window: answered on
+// the window's part of the line (meetsOnWindow) where that is beyond
+// doubt, by the first boundary's spans otherwise. A shadow ray that starts
+// on a torus and leaves it searches only the line beyond its start, where
+// the whole search found the boundaries it starts from as well.
+bool Torus::objectMeetsWindow(const Ray& ray, SpanList& scratch) const {
+  ConditionedLine line;
+  if (!conditionedLine(ray, inUnits_, line)) return false;
+  const double sMin = (ray.tMin - line.t0) / line.scale;
+  const double sMax = (ray.tMax - line.t0) / line.scale;
+  switch (meetsOnWindow(line, sMin, sMax)) {
+    case Meets::Yes:
+      return true;
+    case Meets::No:
+      return false;
+    case Meets::Undecided:
+      break;
+  }
+  return Primitive::objectMeetsWindow(ray, scratch);
+}
+
 void Torus::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
+  // 1. The conditioned line, narrowed to the ring-shaped box.
+  ConditionedLine line;
+  if (!conditionedLine(ray, inUnits_, line)) return;
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
-  double dd = glm::dot(d, d);
-  if (!(dd > 0.0)) return;
-  // 1. The closest point to the centre, t = t0; a second pass removes what
-  // rounding left of its component along d.
-  double t0 = -glm::dot(o, d) / dd;
-  dvec3 closest = o + t0 * d;
-  double again = glm::dot(closest, d) / dd;
-  t0 -= again;
-  closest -= again * d;
-  double size = R_ + r_;
-  double len = std::sqrt(dd);
-  dvec3 b = closest / size;  // the origin of s, in units of the bounding radius
-  dvec3 u = d / len;         // unit direction
-  double R = R_ / size, r = r_ / size;
-  double c = glm::dot(b, b);
-  if (!(c < 1.0)) return;  // misses the bounding sphere (or touches it on the equator)
-  double reach = std::sqrt((1.0 + kMargin) * (1.0 + kMargin) - c);
-  double scale = size / len;  // t = t0 + s·scale
-  if (t0 + reach * scale < ray.tMin || t0 - reach * scale > ray.tMax) return;
-  // The chord of the bounding sphere narrowed to where the ray is in the
-  // slab |z| <= r and in the cylinder ρ <= R + r (each grown by the
-  // margin, so the ends stay outside the torus): a ray that misses this
-  // ring-shaped box, or crosses it only inside the hole (ρ < R − r at both
-  // ends of the piece: ρ² is convex along a line), misses the torus
-  // without a quartic; one that meets it solves on a shorter piece.
-  double lo = -reach, hi = reach;
-  {
-    const double slab = r_ / size * (1.0 + kMargin);
-    if (u.z != 0.0) {
-      double a0 = (-slab - b.z) / u.z, a1 = (slab - b.z) / u.z;
-      if (a0 > a1) std::swap(a0, a1);
-      lo = std::max(lo, a0), hi = std::min(hi, a1);
-    } else if (std::abs(b.z) > slab) {
-      return;
-    }
-    // ρ²(s) = a·s² + 2h·s + g against (1 + margin)².
-    const double a = u.x * u.x + u.y * u.y, h = b.x * u.x + b.y * u.y, g = b.x * b.x + b.y * b.y;
-    const double outer = (1.0 + kMargin) * (1.0 + kMargin);
-    if (a > 0.0) {
-      const double disc = h * h - a * (g - outer);
-      if (!(disc > 0.0)) return;
-      const double root = std::sqrt(disc);
-      lo = std::max(lo, (-h - root) / a), hi = std::min(hi, (-h + root) / a);
-    } else if (g > outer) {
-      return;
-    }
-    if (!(lo < hi)) return;
-    const double hole = (R_ - r_) / size * (1.0 - kMargin);
-    auto rho2 = [&](double s) { return (a * s + 2.0 * h) * s + g; };
-    if (hole > 0.0 && rho2(lo) < hole * hole && rho2(hi) < hole * hole) return;
-    if (t0 + hi * scale < ray.tMin || t0 + lo * scale > ray.tMax) return;
-  }
+  const double t0 = line.t0, scale = line.scale, hi = line.hi;
 
   // 2. The boundaries, each with the piece it lies in: on the pieces where
   // the tube's own factor is convex or concave when that settles them, by
   // the isolation of the quartic's roots otherwise.
-  const ConditionedLine line{b, u, R, r, lo, hi, t0, scale};
   Root roots[4];
   int found = boundariesOnConvexPieces(line, R_ >= r_, firstOnly, ray.tMin, roots);
   if (found < 0) return;  // cannot happen: the chord's ends are outside

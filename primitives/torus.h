@@ -10,6 +10,15 @@
 
 namespace csgray::detail {
 
+// A torus's sizes in units of its bounding radius, as the conditioning of
+// every ray (torus.cpp) uses them: divided once, not per ray.
+struct TorusInUnits {
+  double size;  // R + r, the bounding sphere's radius
+  double R, r;  // the radii in units of size
+  double slab;  // the half-height r, grown by the solver's margin
+  double hole;  // the hole's radius R − r, shrunk by the margin
+};
+
 class Torus : public PrimitiveShape<Torus> {
  public:
   Torus(double majorRadius, double minorRadius);
@@ -20,6 +29,7 @@ class Torus : public PrimitiveShape<Torus> {
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool objectMeetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
@@ -30,6 +40,7 @@ class Torus : public PrimitiveShape<Torus> {
   void spansOf(const Ray& ray, bool firstOnly, SpanList& out) const;
 
   double R_, r_;
+  TorusInUnits inUnits_;
 };
 
 }  // namespace csgray::detail

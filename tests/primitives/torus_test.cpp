@@ -317,6 +317,92 @@ TEST(TorusPrimitive, FirstBoundaryAgreesWithTheWholeSpans) {
   }
 }
 
+// A shadow ray asks only whether the torus meets its window, which the
+// torus answers without finding its boundaries exactly where it can
+// (Torus::objectMeetsWindow): the answer is the one of the first
+// boundary's spans, on rays from around it and from within its box, over
+// windows that start and end anywhere.
+TEST(TorusPrimitive, MeetsAWindowWhereItsFirstBoundaryLies) {
+  for (const auto& [name, solid] : assortedTori()) {
+    SCOPED_TRACE(name);
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const Bounds box = solid->bounds();
+    const dvec3 pad = 0.5 * box.size();
+    const double reach = glm::length(box.size());
+    int met = 0, missed = 0;
+    SpanList first, scratch;
+    for (int i = 0; i < 4000; ++i) {
+      const dvec3 from = test::randomPoint(rng, Bounds{box.lo - pad, box.hi + pad});
+      Ray ray(from, test::randomPoint(rng, box) - from);
+      if (i % 2) ray = Ray(test::randomPoint(rng, box), reach * randomDirection(rng));
+      ray.tMin = i % 3 == 1 ? u(rng) : 0.0;
+      ray.tMax = i % 5 == 2 ? ray.tMin + u(rng) : kInfinity;
+      if (i % 7 == 4) {
+        // A window that starts or ends on the surface, where the answer
+        // cannot be had without the boundaries.
+        solid->spans(ray, first);
+        if (!first.empty()) (i % 2 ? ray.tMin : ray.tMax) = first.front().in.t;
+      }
+      solid->spansToFirstBoundary(ray, first);
+      const bool expected = first.meetsOpenWindow(ray.tMin, ray.tMax);
+      EXPECT_EQ(solid->meetsWindow(ray, scratch), expected) << "ray " << i;
+      (expected ? met : missed)++;
+    }
+    EXPECT_GT(met, 800);
+    EXPECT_GT(missed, 800);
+  }
+  // Lines that graze the top of the tube or run along the axis.
+  auto ring = torus(3.0, 1.0), spindle = torus(0.5, 1.0);
+  SpanList first, scratch;
+  for (double z : {1.0 - 1e-12, 1.0, 1.0 + 1e-14}) {
+    for (const auto& solid : {ring, spindle}) {
+      for (Ray ray : {Ray(dvec3(-10, 0, z), dvec3(1, 0, 0)), Ray(dvec3(0, 0, -5), dvec3(0, 0, 1)),
+                      Ray(dvec3(0, 1e-300, -5), dvec3(0, 0, 1), 4.0, 7.0)}) {
+        solid->spansToFirstBoundary(ray, first);
+        EXPECT_EQ(solid->meetsWindow(ray, scratch), first.meetsOpenWindow(ray.tMin, ray.tMax))
+            << "z " << z << " dir " << ray.dir.x;
+      }
+    }
+  }
+}
+
+// Shadow rays as the renderer casts them: from a point of the surface,
+// moved off it along the normal by a little (as little as 1e-9 of the
+// size), towards a light on the outer side, some of them grazing. Many
+// leave the torus for good, many cross the hole and meet the tube again,
+// and rays that start inside (moved the other way) meet it at once. The
+// answer is the one of the first boundary's spans.
+TEST(TorusPrimitive, ShadowRaysFromTheSurfaceMeetItWhereItsSpansSay) {
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (auto [R, r] :
+       {std::pair{3.0, 1.0}, std::pair{1.0, 0.9}, std::pair{10.0, 0.1}, std::pair{2.0, 0.5}}) {
+    auto t = torus(R, r);
+    const double size = R + r;
+    int met = 0, missed = 0;
+    SpanList first, scratch;
+    for (int i = 0; i < 4000; ++i) {
+      const double theta = 2 * kPi * u(rng), phi = 2 * kPi * u(rng);
+      const dvec3 radial(std::cos(theta), std::sin(theta), 0.0);
+      const dvec3 n = std::cos(phi) * radial + dvec3(0, 0, std::sin(phi));
+      const dvec3 p = R * radial + r * n;
+      dvec3 dir = randomDirection(rng);
+      if (glm::dot(dir, n) < 0.0) dir = -dir;
+      if (i % 4 == 1) dir = glm::normalize(dir - glm::dot(dir, n) * n + 1e-6 * n);  // grazing
+      const double off = std::pow(10.0, -9.0 + 4.0 * u(rng)) * size;
+      const dvec3 from = p + (i % 7 == 3 ? -off : off) * n;
+      Ray ray(from, (0.5 + 3.0 * u(rng)) * size * dir, 0.0, 1.0);
+      t->spansToFirstBoundary(ray, first);
+      const bool expected = first.meetsOpenWindow(ray.tMin, ray.tMax);
+      EXPECT_EQ(t->meetsWindow(ray, scratch), expected) << "R=" << R << " r=" << r << " ray " << i;
+      (expected ? met : missed)++;
+    }
+    EXPECT_GT(met, 600) << "R=" << R << " r=" << r;
+    EXPECT_GT(missed, 1500) << "R=" << R << " r=" << r;
+  }
+}
+
 // Unit outward normals: against the ray where it enters, along it where it
 // leaves.
 TEST(TorusPrimitive, NormalsFaceOutward) {
