@@ -4,6 +4,7 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
@@ -66,11 +67,17 @@ class DoubleBoolean {
 
   std::optional<ExactMesh> run(Boolean::Op op) {
     findCrossings();
-    for (int s = 0; s < 2; ++s) {
+    // Once the crossings are found, each operand is cut and classified
+    // from its own state (its edges' points, faces, pieces; the other's
+    // point test, built by this operand only) and the shared points and
+    // segments are only read: the two run at once, and what each makes
+    // does not depend on the other's progress.
+    auto cutAndClassify = [this](int s) {
       sortEdgePoints(s);
       cutFaces(s);
       classify(s);
-    }
+    };
+    tbb::parallel_invoke([&] { cutAndClassify(0); }, [&] { cutAndClassify(1); });
     return assemble(op);
   }
 
