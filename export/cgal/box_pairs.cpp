@@ -22,16 +22,18 @@ struct Traits {
   static double max_coord(const FaceBox& b, int d) { return b.hi[d]; }
   static std::size_t id(const FaceBox& b) { return std::size_t(b.mesh) << 32 | b.face; }
 };
-// CGAL's cutoff below which a range is scanned rather than split; 2000 is
-// what its own self-intersection test uses, and did best of 10 to 10⁶ for
-// the export's check when it gave CGAL all the boxes at once.
-constexpr std::ptrdiff_t kCutoff = 2000;
-// Fewer boxes than this go to CGAL whole. Splitting down to a few thousand
-// boxes pays on one thread too: a mesh's faces are small against the part,
-// so few straddle a split, and CGAL's segment tree over all 174 220 faces
-// of plate(16) took three times the instructions of the split (2.45 G
-// against 0.80 G to 0.86 G with leaves of 1000 to 4000 boxes, callgrind).
-constexpr std::size_t kSmallestSplit = 3000;
+// Fewer boxes than kSmallestSplit go to CGAL whole, which scans ranges of
+// fewer than kCutoff rather than split them. Splitting down to about a
+// thousand boxes pays on one thread too: a mesh's faces are small against
+// the part, so few straddle a split. Instructions for the pairs of
+// plate(16)'s 174 220 faces and their tests, both checks of an imported
+// mesh (callgrind): CGAL alone over all boxes, cutoff 2000 (its own
+// self-intersection test's, which did best of 10 to 10⁶ there), 2.45 G
+// without the tests; split to leaves of 3000 with that cutoff, 1.58 G
+// with them; leaves of 1000 and a cutoff of 100, 1.35 G (cutoffs of 10,
+// 30, 500 and 2000, leaves of 300 to 3000: 1.37 G to 1.60 G).
+constexpr std::ptrdiff_t kCutoff = 100;
+constexpr std::size_t kSmallestSplit = 1000;
 
 using Report = std::function<void(std::uint32_t, std::uint32_t)>;
 
