@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <initializer_list>
 
 namespace csgray::detail {
 
@@ -68,22 +69,50 @@ bool edgeSeparates(const dvec3 t[3], const dvec3 other[3], int drop) {
   return false;
 }
 
+// Triangles t and other share corner t[0] == other[0]: one of t's edges at
+// that corner has other's two far corners strictly on the side away from
+// t's third corner, in the projection that drops coordinate `drop`. Then
+// the shadows meet only at the shared corner's shadow, and since t's
+// shadow is a proper triangle (its turn is not 0), t has one point there,
+// the corner itself: the triangles meet only at it. (Faces in one plane,
+// a flat cap's fan, are the pairs this answers.)
+bool cornerEdgeSeparates(const dvec3 t[3], const dvec3 other[3], int drop) {
+  const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+  const int turn = orientation(t[0][u], t[0][v], t[1][u], t[1][v], t[2][u], t[2][v]);
+  if (turn == 0) return false;
+  // The edges t0 → t1 and t2 → t0, each with t's third corner on side turn.
+  for (int k : {0, 2}) {
+    const dvec3 &p = t[k], &q = t[(k + 1) % 3];
+    if (orientation(p[u], p[v], q[u], q[v], other[1][u], other[1][v]) == -turn &&
+        orientation(p[u], p[v], q[u], q[v], other[2][u], other[2][v]) == -turn)
+      return true;
+  }
+  return false;
+}
+
+// The coordinate along which t's normal is largest: dropping it keeps t's
+// shadow from being thin.
+int dominantAxis(const dvec3 t[3]) {
+  const dvec3 m = glm::abs(glm::cross(t[1] - t[0], t[2] - t[0]));
+  return m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+}
+
 }  // namespace
 
 bool certainlyApart(const dvec3 a[3], const dvec3 b[3]) {
   if (strictlyOnOneSide(a, b, 3) || strictlyOnOneSide(b, a, 3)) return true;
   // Shadows on the coordinate plane most nearly parallel to a (any
-  // projection would do; this one keeps a's shadow from being thin).
-  const dvec3 n = glm::cross(a[1] - a[0], a[2] - a[0]);
-  const dvec3 m = glm::abs(n);
-  const int drop = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+  // projection would do).
+  const int drop = dominantAxis(a);
   return edgeSeparates(a, b, drop) || edgeSeparates(b, a, drop);
 }
 
 bool certainlyMeetOnlyAtCorner(const dvec3 a[3], const dvec3 b[3]) {
   // If b's far corners are strictly on one side of a's plane, b meets that
   // plane only at the shared corner, and so meets a only there.
-  return strictlyOnOneSide(a, b + 1, 2) || strictlyOnOneSide(b, a + 1, 2);
+  if (strictlyOnOneSide(a, b + 1, 2) || strictlyOnOneSide(b, a + 1, 2)) return true;
+  const int drop = dominantAxis(a);
+  return cornerEdgeSeparates(a, b, drop) || cornerEdgeSeparates(b, a, drop);
 }
 
 bool certainlyNotFolded(const dvec3 a[3], const dvec3 b[3]) {

@@ -18,7 +18,8 @@ bool certainlyApart(const dvec3 a[3], const dvec3 b[3]);
 
 // Triangles a and b share corner a[0] == b[0]: true when they certainly
 // meet only there (the far corners of one lie strictly on one side of the
-// other's plane).
+// other's plane, or, for faces in one plane, of an edge line of the other
+// through the shared corner).
 bool certainlyMeetOnlyAtCorner(const dvec3 a[3], const dvec3 b[3]);
 
 // Triangles a = (u, w, p) and b = (w, u, q) share the edge u–w, run along

@@ -1,11 +1,10 @@
 #include "export/cgal/double_boolean.h"
 
-#include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/box_intersection_d.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
@@ -14,6 +13,8 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
+
+#include "export/cgal/box_pairs.h"
 
 namespace csgray::detail {
 
@@ -66,11 +67,17 @@ class DoubleBoolean {
 
   std::optional<ExactMesh> run(Boolean::Op op) {
     findCrossings();
-    for (int s = 0; s < 2; ++s) {
+    // Once the crossings are found, each operand is cut and classified
+    // from its own state (its edges' points, faces, pieces; the other's
+    // point test, built by this operand only) and the shared points and
+    // segments are only read: the two run at once, and what each makes
+    // does not depend on the other's progress.
+    auto cutAndClassify = [this](int s) {
       sortEdgePoints(s);
       cutFaces(s);
       classify(s);
-    }
+    };
+    tbb::parallel_invoke([&] { cutAndClassify(0); }, [&] { cutAndClassify(1); });
     return assemble(op);
   }
 
@@ -112,19 +119,19 @@ class DoubleBoolean {
 
   const Point& at(Id id) const { return points_[id]; }
 
-  // The pairs of faces whose boxes meet, each tested.
+  // The pairs of faces whose boxes meet, each tested, in an order that
+  // depends only on the operands (the new points are numbered in it).
   void findCrossings() {
-    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
-    std::vector<Box> boxes[2];
+    std::vector<FaceBox> boxes[2];
     for (int s = 0; s < 2; ++s) {
       boxes[s].reserve(ops_[s].faces.size());
       for (std::uint32_t f : ops_[s].faces) {
         const Triangle& t = ops_[s].corners[f];
-        boxes[s].emplace_back(at(t[0]).bbox() + at(t[1]).bbox() + at(t[2]).bbox(), f);
+        boxes[s].push_back(faceBox(at(t[0]), at(t[1]), at(t[2]), f, std::uint32_t(s)));
       }
     }
-    CGAL::box_intersection_d(boxes[0].begin(), boxes[0].end(), boxes[1].begin(), boxes[1].end(),
-                             [&](const Box& a, const Box& b) { facePair(a.info(), b.info()); });
+    forEachMeetingPair(boxes[0], boxes[1],
+                       [&](std::uint32_t fa, std::uint32_t fb) { facePair(fa, fb); });
   }
 
   // The predicates below are exact, and where one is zero the operands

@@ -4,7 +4,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -18,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "export/cgal/box_pairs.h"
 #include "export/triangle_filters.h"
 #include "tessellation/mesh_edges.h"
 
@@ -208,11 +208,14 @@ bool facesCross(const TriangleMesh& mesh, std::uint32_t f, std::uint32_t g) {
   };
   dvec3 ca[3], cb[3];
   auto p = [&](std::uint32_t v) { return point(mesh.points[v]); };
-  const Kernel::Triangle_3 ta(p(a[0]), p(a[1]), p(a[2])), tb(p(b[0]), p(b[1]), p(b[2]));
+  // (Made only for the few pairs the filters leave to CGAL.)
+  auto triangle = [&](const TriangleMesh::Triangle& t) {
+    return Kernel::Triangle_3(p(t[0]), p(t[1]), p(t[2]));
+  };
   switch (shared) {
     case 0:
       corners(a, 0, ca), corners(b, 0, cb);
-      return !certainlyApart(ca, cb) && CGAL::do_intersect(ta, tb);
+      return !certainlyApart(ca, cb) && CGAL::do_intersect(triangle(a), triangle(b));
     case 1: {
       // av, bv: where the shared corner is in each; the edges opposite it.
       int av = 0, bv = 0;
@@ -222,7 +225,7 @@ bool facesCross(const TriangleMesh& mesh, std::uint32_t f, std::uint32_t g) {
       if (certainlyMeetOnlyAtCorner(ca, cb)) return false;
       const Kernel::Segment_3 aFar(p(a[(av + 1) % 3]), p(a[(av + 2) % 3]));
       const Kernel::Segment_3 bFar(p(b[(bv + 1) % 3]), p(b[(bv + 2) % 3]));
-      return CGAL::do_intersect(aFar, tb) || CGAL::do_intersect(bFar, ta);
+      return CGAL::do_intersect(aFar, triangle(b)) || CGAL::do_intersect(bFar, triangle(a));
     }
     case 2: {
       corners(a, 0, ca), corners(b, 0, cb);
@@ -238,45 +241,32 @@ bool facesCross(const TriangleMesh& mesh, std::uint32_t f, std::uint32_t g) {
 }
 
 // The crossing pair of faces with the lowest indices, if any: faces whose
-// boxes overlap are found with CGAL's box intersection (in parallel where
-// TBB is), then tested exactly. Several threads may find crossings; the
-// lowest pair keeps the message the same whatever the threads did. (PMP's
-// self_intersections does the same with a general test of each pair; this
-// one knows the mesh is a closed 2-manifold, which took plate(8)'s check
-// from 0.23 to 0.16 s. A BVH of the boxes took longer to build than
-// CGAL's box intersection took in all; its cutoff of 2000 boxes, CGAL's
-// own for this, did best of 10 to 10⁶.)
+// boxes meet are found by CGAL's box intersection, split across the
+// threads (box_pairs.h), then tested exactly. Several threads may find
+// crossings; the lowest pair keeps the message the same whatever the
+// threads did. (PMP's self_intersections does the same with a general
+// test of each pair; this one knows the mesh is a closed 2-manifold,
+// which took plate(8)'s check from 0.23 to 0.16 s. A BVH of the boxes
+// took longer to build than CGAL's box intersection took in all.)
 std::optional<std::pair<std::uint32_t, std::uint32_t>> firstCrossing(const TriangleMesh& mesh) {
-  using Box =
-      CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t,
-                                                CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
-  std::vector<Box> boxes;
+  std::vector<FaceBox> boxes;
   boxes.reserve(mesh.triangles.size());
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
-    CGAL::Bbox_3 box = point(mesh.points[t[0]]).bbox() + point(mesh.points[t[1]]).bbox() +
-                       point(mesh.points[t[2]]).bbox();
-    boxes.emplace_back(box, f);
+    boxes.push_back(faceBox(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], f));
   }
-  constexpr std::ptrdiff_t kCutoff = 2000;
-  std::vector<const Box*> pointers;
-  pointers.reserve(boxes.size());
-  for (const Box& b : boxes) pointers.push_back(&b);
-
   std::mutex lock;
   std::optional<std::pair<std::uint32_t, std::uint32_t>> first;
   std::atomic<std::size_t> found = 0;
-  auto test = [&](const Box* x, const Box* y) {
+  forEachMeetingPair(boxes, [&](std::uint32_t x, std::uint32_t y) {
     // A broken mesh may cross itself millions of times: some are enough.
     if (found.load(std::memory_order_relaxed) > 64) return;
-    const std::uint32_t f = std::min(x->info(), y->info()), g = std::max(x->info(), y->info());
+    const std::uint32_t f = std::min(x, y), g = std::max(x, y);
     if (!facesCross(mesh, f, g)) return;
     ++found;
     std::lock_guard guard(lock);
     if (!first || std::pair(f, g) < *first) first = std::pair(f, g);
-  };
-  CGAL::box_self_intersection_d<CGAL::Parallel_if_available_tag>(pointers.begin(), pointers.end(),
-                                                                 test, kCutoff);
+  });
   return first;
 }
 

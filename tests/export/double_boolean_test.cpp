@@ -7,6 +7,7 @@
 #include "export/cgal/double_boolean.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <numbers>
@@ -185,6 +186,37 @@ TEST(DoubleBoolean, SmallPlateExportsInDoublesWithCgalsVolume) {
   EXPECT_EQ(exact.inDoubles, 0u);
   EXPECT_EQ(meshDefect(inDoubles.mesh).text, "");
   EXPECT_NEAR(inDoubles.mesh.volume(), byCgal.mesh.volume(), 1e-9 * byCgal.mesh.volume());
+}
+
+TEST(DoubleBoolean, TheSameMeshOnOneThreadAndOnFour) {
+  // Each operand is cut and classified on a thread of its own, and the
+  // check's pairs of boxes are shared out: the part must not depend on
+  // how many threads did it. (plate(8): two booleans in doubles with
+  // hundreds of cut faces, and enough faces that the check splits.)
+  const SolidPtr solid = part(R"(
+    local n, p = 8, 100 / 8
+    local spheres, holes = {}, {}
+    for i = 0, n - 1 do
+      for j = 0, n - 1 do
+        local x, y = p / 2 + i * p, p / 2 + j * p
+        spheres[#spheres + 1] = sphere{r=0.32 * p}:translate(x, y, 10)
+        holes[#holes + 1] = cylinder{r=0.2 * p, h=20}:translate(x, y, -1)
+      end
+    end
+    return difference(union(box{size={100, 100, 10}}, union(spheres)), union(holes)))");
+  auto meshOn = [&](int threads) {
+    MeshBooleanStats stats;
+    PartMesh part;
+    tbb::task_arena(threads).execute(
+        [&] { part = meshOfSolid(*solid, kTolerance, nullptr, &stats); });
+    EXPECT_EQ(stats.inDoubles, 2u);
+    return part;
+  };
+  const PartMesh one = meshOn(1), four = meshOn(4);
+  ASSERT_GT(one.mesh.triangles.size(), 20000u);
+  EXPECT_EQ(one.mesh.points, four.mesh.points);
+  EXPECT_EQ(one.mesh.triangles, four.mesh.triangles);
+  EXPECT_EQ(one.material, four.material);
 }
 
 }  // namespace

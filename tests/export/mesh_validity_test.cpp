@@ -87,5 +87,30 @@ TEST(MeshValidity, CrossingsAgreeWithCgalOnRandomlyCrumpledSpheres) {
   EXPECT_GT(clean, 50);
 }
 
+TEST(MeshValidity, CrossingsAgreeWithCgalOnAFineSphereWithAFewVerticesMoved) {
+  // Enough faces that the search for pairs of boxes splits them (more
+  // than a few thousand, box_pairs.cpp); a few vertices moved far enough
+  // to fold faces over or through others, or not quite.
+  const TriangleMesh sphere =
+      Primitive::create<Sphere>(1.0)->tessellate(0.0005, Bounds::everything());
+  ASSERT_GT(sphere.triangles.size(), 5000u);
+  EXPECT_EQ(meshDefect(sphere).text, "");
+  std::mt19937 random(20261126);
+  int crossing = 0, clean = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    TriangleMesh m = sphere;
+    std::uniform_int_distribution<std::size_t> vertex(0, m.points.size() - 1);
+    const double amplitude = trial % 2 ? 0.05 : 2.0;
+    std::uniform_real_distribution<double> move(-amplitude, amplitude);
+    for (int k = 0; k < 3; ++k)
+      m.points[vertex(random)] += dvec3(move(random), move(random), move(random));
+    const bool expected = cgalSaysItCrosses(m);
+    ASSERT_EQ(crosses(m), expected) << "trial " << trial << ": " << meshDefect(m).text;
+    (expected ? crossing : clean)++;
+  }
+  EXPECT_GT(crossing, 3);
+  EXPECT_GT(clean, 3);
+}
+
 }  // namespace
 }  // namespace csgray::detail

@@ -1,0 +1,99 @@
+// The split box intersection reports exactly the pairs of closed boxes that
+// meet, each once, against a test of every pair: boxes on a coarse grid
+// (so that many touch, share a lower side or straddle a split), enough of
+// them to be split several times, within one set and between two.
+#include "export/cgal/box_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <mutex>
+#include <random>
+#include <set>
+#include <utility>
+
+namespace csgray::detail {
+namespace {
+
+// n boxes with corners on a grid of `cells` per side, each at most `reach`
+// cells long (long ones straddle every split).
+std::vector<FaceBox> randomBoxes(std::size_t n, int cells, int reach, std::uint32_t mesh,
+                                 std::mt19937& random) {
+  std::uniform_int_distribution<int> corner(0, cells), length(0, reach);
+  std::vector<FaceBox> boxes;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    FaceBox box{{}, {}, f, mesh};
+    for (int d = 0; d < 3; ++d) {
+      box.lo[d] = corner(random);
+      box.hi[d] = box.lo[d] + (f % 97 == 0 ? 10 * reach : length(random));
+    }
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+bool meet(const FaceBox& a, const FaceBox& b) {
+  for (int d = 0; d < 3; ++d)
+    if (a.hi[d] < b.lo[d] || b.hi[d] < a.lo[d]) return false;
+  return true;
+}
+
+using Pairs = std::multiset<std::pair<std::uint32_t, std::uint32_t>>;
+
+TEST(BoxPairs, WithinOneSetEveryPairThatMeetsOnce) {
+  std::mt19937 random(20261126);
+  for (int reach : {1, 4}) {
+    const std::vector<FaceBox> boxes = randomBoxes(9000, 60, reach, 0, random);
+    Pairs expected;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        if (meet(boxes[i], boxes[j])) expected.emplace(boxes[i].face, boxes[j].face);
+    std::vector<FaceBox> work = boxes;
+    Pairs found;
+    std::mutex lock;
+    forEachMeetingPair(work, [&](std::uint32_t f, std::uint32_t g) {
+      std::lock_guard guard(lock);
+      found.emplace(std::min(f, g), std::max(f, g));
+    });
+    EXPECT_GT(expected.size(), 1000u);
+    EXPECT_EQ(found, expected) << "reach " << reach;
+  }
+}
+
+TEST(BoxPairs, BetweenTwoSetsEveryPairThatMeetsOnceInOrder) {
+  std::mt19937 random(20261127);
+  const std::vector<FaceBox> a = randomBoxes(5000, 60, 3, 0, random);
+  const std::vector<FaceBox> b = randomBoxes(4000, 60, 3, 1, random);
+  Pairs expected;
+  for (const FaceBox& x : a)
+    for (const FaceBox& y : b)
+      if (meet(x, y)) expected.emplace(x.face, y.face);
+  std::vector<FaceBox> workA = a, workB = b;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> order;
+  forEachMeetingPair(workA, workB,
+                     [&](std::uint32_t f, std::uint32_t g) { order.emplace_back(f, g); });
+  EXPECT_GT(expected.size(), a.size());
+  EXPECT_EQ(Pairs(order.begin(), order.end()), expected);
+  // The same boxes again: the same pairs in the same order (the double
+  // boolean numbers its new points in it).
+  std::vector<FaceBox> againA = a, againB = b;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> again;
+  forEachMeetingPair(againA, againB,
+                     [&](std::uint32_t f, std::uint32_t g) { again.emplace_back(f, g); });
+  EXPECT_EQ(again, order);
+}
+
+TEST(BoxPairs, BoxesThatShareOneLowerSideAreNotSplitForever) {
+  // Every box starts at x = 0: no median splits them.
+  std::vector<FaceBox> boxes;
+  for (std::uint32_t f = 0; f < 5000; ++f) boxes.push_back({{0, 0, 0}, {1, 1, 1}, f, 0});
+  std::size_t count = 0;
+  std::mutex lock;
+  forEachMeetingPair(boxes, [&](std::uint32_t, std::uint32_t) {
+    std::lock_guard guard(lock);
+    ++count;
+  });
+  EXPECT_EQ(count, 5000u * 4999u / 2);
+}
+
+}  // namespace
+}  // namespace csgray::detail
