@@ -125,7 +125,9 @@ TEST(Instance, AnswersAsTheCopiedTree) {
     shared->spansToFirstBoundary(ray, fa);
     copy->spansToFirstBoundary(ray, fb);
     ASSERT_EQ(fa.empty(), fb.empty());
-    if (!fa.empty()) EXPECT_NEAR(fa[0].in.t, fb[0].in.t, 1e-9 * (1 + std::abs(fb[0].in.t)));
+    if (!fa.empty()) {
+      EXPECT_NEAR(fa[0].in.t, fb[0].in.t, 1e-9 * (1 + std::abs(fb[0].in.t)));
+    }
     const dvec3 p = test::randomPoint(rng, bc);
     EXPECT_EQ(shared->contains(p), copy->contains(p)) << p.x << " " << p.y << " " << p.z;
   }

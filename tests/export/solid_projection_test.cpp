@@ -31,7 +31,7 @@ SolidPtr octahedron() {
       for (int sz : {4, 5}) {
         // Counterclockwise seen from outside: the corners' order flips
         // with each negative axis.
-        const bool odd = (sx == 1) != (sy == 3) != (sz == 5);
+        const bool odd = ((sx == 1) != (sy == 3)) != (sz == 5);
         faces.push_back(odd ? std::vector<std::int64_t>{sx, sz, sy}
                             : std::vector<std::int64_t>{sx, sy, sz});
       }

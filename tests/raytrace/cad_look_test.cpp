@@ -77,8 +77,9 @@ TEST(CadLook, BackgroundIsLightAndSoft) {
   EXPECT_GT(bottom, top);
   // No band: neighbouring rows of the background differ by little.
   for (int y = 1; y < 120; ++y)
-    if (missed(r, 0, y) && missed(r, 0, y - 1))
+    if (missed(r, 0, y) && missed(r, 0, y - 1)) {
       EXPECT_LT(std::abs(luminance(r.color.at(0, y)) - luminance(r.color.at(0, y - 1))), 0.01);
+    }
 }
 
 // The faces a box turns to the camera (top, front, right) differ in shade.
@@ -158,7 +159,9 @@ TEST(CadLook, GroundShadowOnlyDarkens) {
       const dvec3 background = look.background(camera.ray(x + 0.5, y + 0.5));
       const dvec3 c = r.color.at(x, y);
       EXPECT_LE(c.x, background.x + 1e-6);
-      if (y < 10) EXPECT_NEAR(c.x, background.x, 1e-6);
+      if (y < 10) {
+        EXPECT_NEAR(c.x, background.x, 1e-6);
+      }
       shadowed += c.x < 0.9 * background.x;
       // At most the darkness of full shadow.
       EXPECT_GE(c.x, (1.0 - CadLook::kShadowDarkness) * background.x - 1e-6);

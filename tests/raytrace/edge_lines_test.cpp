@@ -147,7 +147,9 @@ TEST(EdgeLines, OnABoxAlongItsOutlineAndCreases) {
           otherFace = true;
       }
       if (offNext) {
-        if (hit(x, y)) EXPECT_TRUE(changed) << x << "," << y;
+        if (hit(x, y)) {
+          EXPECT_TRUE(changed) << x << "," << y;
+        }
         outline += changed;
       } else if (!otherFace) {
         EXPECT_FALSE(changed) << x << "," << y;
