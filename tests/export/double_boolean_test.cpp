@@ -162,11 +162,10 @@ TEST(DoubleBoolean, DeclinesACornerOnAFace) {
   madeInDoubles(box, pyramid(9), Op::Union);
 }
 
-TEST(DoubleBoolean, SmallPlateExportsInDoublesWithCgalsVolume) {
-  // bench/plate.lua at n = 6: a box united with a grid of balls, less a
-  // grid of holes; both booleans made in doubles.
-  const std::string source = R"(
-    local n, p = 6, 100 / 6
+// bench/plate.lua at n: a box united with an n × n grid of balls, less a
+// grid of holes on the same centres.
+SolidPtr plate(int n) {
+  return part("local n, p = " + std::to_string(n) + ", 100 / " + std::to_string(n) + R"(
     local spheres, holes = {}, {}
     for i = 0, n - 1 do
       for j = 0, n - 1 do
@@ -175,8 +174,12 @@ TEST(DoubleBoolean, SmallPlateExportsInDoublesWithCgalsVolume) {
         holes[#holes + 1] = cylinder{r=0.2 * p, h=20}:translate(x, y, -1)
       end
     end
-    return difference(union(box{size={100, 100, 10}}, union(spheres)), union(holes)))";
-  const SolidPtr solid = part(source);
+    return difference(union(box{size={100, 100, 10}}, union(spheres)), union(holes)))");
+}
+
+TEST(DoubleBoolean, SmallPlateExportsInDoublesWithCgalsVolume) {
+  // plate(6): both booleans made in doubles.
+  const SolidPtr solid = plate(6);
   MeshBooleanStats fast, exact;
   const PartMesh inDoubles = meshOfSolid(*solid, kTolerance, nullptr, &fast);
   const PartMesh byCgal = meshOfSolid(*solid, kTolerance, nullptr, &exact, false);
@@ -193,17 +196,7 @@ TEST(DoubleBoolean, TheSameMeshOnOneThreadAndOnFour) {
   // check's pairs of boxes are shared out: the part must not depend on
   // how many threads did it. (plate(8): two booleans in doubles with
   // hundreds of cut faces, and enough faces that the check splits.)
-  const SolidPtr solid = part(R"(
-    local n, p = 8, 100 / 8
-    local spheres, holes = {}, {}
-    for i = 0, n - 1 do
-      for j = 0, n - 1 do
-        local x, y = p / 2 + i * p, p / 2 + j * p
-        spheres[#spheres + 1] = sphere{r=0.32 * p}:translate(x, y, 10)
-        holes[#holes + 1] = cylinder{r=0.2 * p, h=20}:translate(x, y, -1)
-      end
-    end
-    return difference(union(box{size={100, 100, 10}}, union(spheres)), union(holes)))");
+  const SolidPtr solid = plate(8);
   auto meshOn = [&](int threads) {
     MeshBooleanStats stats;
     PartMesh part;
