@@ -1086,7 +1086,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // refused for such a corner in both orders is then made as it comes.
   // The error reported is the first one that is not such a refusal.
   // When every order fails, a few shuffled orders, going ahead, meet the
-  // contacts in yet other sequences (3 of the 300 parts above export only
+  // contacts in yet other sequences (7 of 600 such random parts export only
   // so; a part that cannot be made takes that much longer to say so).
   constexpr unsigned kShuffledOrders = 4;
   const bool ordered = hasOrderedOperands(solid);
