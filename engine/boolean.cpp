@@ -54,6 +54,11 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
       break;
     case Op::Difference:
       bounds_ = operands_[0]->bounds();
+      // An intersection's spans() tests its box, this one's, before
+      // anything else (a difference's first operand is never a difference:
+      // the chain is flat).
+      if (const Boolean* first = operands_[0]->asBoolean())
+        firstTestsThisBox_ = first->op_ == Op::Intersection;
       break;
   }
 }
@@ -96,8 +101,9 @@ std::string Boolean::kind() const {
 
 void Boolean::spans(const Ray& ray, SpanList& out) const {
   out.clear();
-  // (A union with a BVH tests its box as the BVH's root.)
-  if ((op_ != Op::Union || bvh().empty()) && !bounds_.hitBy(ray)) return;
+  // (A union with a BVH tests its box as the BVH's root; a difference whose
+  // first operand tests this same box first leaves the test to it.)
+  if ((op_ != Op::Union || bvh().empty()) && !firstTestsThisBox_ && !bounds_.hitBy(ray)) return;
   // The result so far is *result; each operand's spans are merged into the
   // other list and the two swap roles, so nothing is copied per operand.
   SpanList operand, spare;
@@ -149,8 +155,11 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
   // its first boundary to its last (a window that shrinks as the result
   // does), and the fold stops once the result is empty.
   // (A difference's box is its first operand's, tested above.)
+  // (The first operand's box is not tested: an intersection's box lies
+  // within it, and the slab test of a box within another, on the same
+  // ray, rounds to a stretch within the other's, so the test above has
+  // answered it.)
   const Solid& first = *operands_[0];
-  if (op_ == Op::Intersection && !first.bounds().hitBy(ray)) return;
   first.spans(ray, out);
   Ray window = ray;
   auto narrow = [&] {
@@ -203,7 +212,7 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
     return;
   }
   out.clear();
-  if (!bounds_.hitBy(ray)) return;
+  if (!firstTestsThisBox_ && !bounds_.hitBy(ray)) return;
   operands_[0]->spans(ray, out);
   SpanList operand, spare;
   SpanList* result = &out;

@@ -77,6 +77,10 @@ class Boolean : public Solid {
   // spansToFirstBoundary takes each hole's spans beyond the point it asks
   // about as they come, so they must lie inside the hole there (solid.h).
   bool holesInsideBeyondWindow_ = true;
+  // A difference whose first operand's spans() begins with the test of
+  // this node's box (the same box, on the same ray): no need to test it
+  // twice (a lens's shadow rays, 2 % of lens_field).
+  bool firstTestsThisBox_ = false;
   // Built on first use (or by prepare), so that the intermediate nodes of a
   // script that adds operands one at a time never build one.
   const Bvh& bvh() const;

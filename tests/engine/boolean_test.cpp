@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/instance.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
 #include "primitives/half_space.h"
@@ -149,6 +150,111 @@ TEST(BooleanBounds, DifferenceIsFirstOperandsBox) {
   SolidPtr unbounded =
       differenceOf({Primitive::create<HalfSpace>(dvec3(1, 1, 0), 0.0), sphereAt(1.0, dvec3(0.0))});
   EXPECT_FALSE(unbounded->bounds().finite());
+}
+
+// An intersection's spans() leaves its first operand's box untested, and a
+// difference of an intersection its own box, because the slab test of a box
+// within another, on the same ray, passes only if the other's does:
+// nearer planes give nearer distances however they round. Random boxes,
+// each an intersection's box within its operands' (as Boolean builds it),
+// and rays from random points, from points on the inner box's planes, and
+// along the axes (1/dir infinite, 0 times infinity on a plane), with random
+// windows.
+TEST(BooleanBounds, SlabTestOfABoxWithinAnotherPassesForTheOther) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto randomBox = [&] {
+    dvec3 a(unit(rng), unit(rng), unit(rng)), b(unit(rng), unit(rng), unit(rng));
+    return Bounds{glm::min(a, b), glm::max(a, b)};
+  };
+  int innerHits = 0, outerOnly = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const Bounds outer = randomBox();
+    // Mostly towards a point of the outer box, reached at t = 1, which the
+    // inner box (the outer one cut by a box about that point) holds.
+    const dvec3 towards =
+        glm::mix(outer.lo, outer.hi, 0.5 * dvec3(unit(rng), unit(rng), unit(rng)) + 0.5);
+    const dvec3 half = 0.5 * glm::abs(dvec3(unit(rng), unit(rng), unit(rng)));
+    const Bounds inner = outer.intersected(Bounds{towards - half, towards + 0.5 * half});
+    dvec3 origin = 3.0 * dvec3(unit(rng), unit(rng), unit(rng));
+    dvec3 dir = trial % 7 == 0 ? randomDirection(rng) : towards - origin;
+    const int axis = trial % 3;
+    switch (trial % 5) {
+      case 1:  // from a plane of the inner box
+        origin[axis] = inner.lo[axis];
+        break;
+      case 2:  // along an axis, in a plane of the inner box
+        dir = dvec3(0.0);
+        dir[(axis + 1) % 3] = unit(rng) < 0.0 ? -1.0 : 1.0;
+        origin[axis] = inner.hi[axis];
+        break;
+      case 3:  // along an axis
+        dir = dvec3(0.0);
+        dir[axis] = unit(rng) < 0.0 ? -1.0 : 1.0;
+        break;
+      default:
+        break;
+    }
+    const double t0 = unit(rng), t1 = t0 + 2.0 * std::abs(unit(rng));
+    const Ray ray(origin, dir, t0, t1);
+    const bool innerHit = !inner.empty() && inner.hitBy(ray);
+    const bool outerHit = outer.hitBy(ray);
+    if (innerHit) {
+      ++innerHits;
+      ASSERT_TRUE(outerHit) << "trial " << trial;
+    } else if (outerHit) {
+      ++outerOnly;
+    }
+  }
+  // Both kinds of ray are common: the premise was tested, not assumed.
+  EXPECT_GT(innerHits, 10000);
+  EXPECT_GT(outerOnly, 2000);
+}
+
+// A difference whose first operand is an intersection (a lens: two balls
+// and a cylinder less a ball) leaves the test of its box to that operand:
+// the same spans, first boundaries and shadow answers as the tree whose
+// first operand, moved by the identity, is an instance (which tests the
+// box itself), on random rays and windows.
+TEST(BooleanSpans, DifferenceOfAnIntersectionTestsItsBoxOnce) {
+  SolidPtr cylinder =
+      Primitive::create<Cylinder>(2.0, 2.0, 4.0)->transformed(Affine::translation(dvec3(0, 0, -2)));
+  SolidPtr lens =
+      intersectionOf({sphereAt(3.0, dvec3(0, 0, -2)), sphereAt(3.0, dvec3(0, 0, 2)), cylinder});
+  SolidPtr hole = sphereAt(0.8, dvec3(0.3, 0, 0));
+  SolidPtr part = differenceOf({lens, hole});
+  SolidPtr reference = differenceOf({std::make_shared<Instance>(lens, Affine()), hole});
+  expectSpansAgreeWithContainsOnRandomLines(*part);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto same = [](const SpanList& a, const SpanList& b) {
+    if (a.size() != b.size()) return false;
+    for (std::uint32_t i = 0; i < a.size(); ++i) {
+      const Span &x = a[i], &y = b[i];
+      if (x.in.t != y.in.t || x.out.t != y.out.t || x.in.primitive != y.in.primitive ||
+          x.out.primitive != y.out.primitive || x.in.flip != y.in.flip || x.out.flip != y.out.flip)
+        return false;
+    }
+    return true;
+  };
+  int met = 0;
+  SpanList a, b;
+  for (int i = 0; i < 20000; ++i) {
+    const dvec3 origin = 4.0 * dvec3(unit(rng), unit(rng), unit(rng));
+    const dvec3 towards = 2.2 * dvec3(unit(rng), unit(rng), 0.5 * unit(rng));
+    const double t0 = 0.5 * unit(rng), t1 = t0 + 2.0 * std::abs(unit(rng));
+    const Ray ray(origin, towards - origin, t0, t1);
+    part->spans(ray, a);
+    reference->spans(ray, b);
+    ASSERT_TRUE(same(a, b)) << "spans, ray " << i;
+    part->spansToFirstBoundary(ray, a);
+    reference->spansToFirstBoundary(ray, b);
+    ASSERT_TRUE(same(a, b)) << "first boundary, ray " << i;
+    const bool meets = part->meetsWindow(ray, a);
+    ASSERT_EQ(meets, reference->meetsWindow(ray, b)) << "shadow, ray " << i;
+    met += meets;
+  }
+  EXPECT_GT(met, 2000);
 }
 
 // ---------------------------------------------------------------- contains
