@@ -177,7 +177,7 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
         return;
       }
       s.spans(window, operand);
-      fold(operand);
+      if (!intersectSingleSpansInPlace(*result, operand)) fold(operand);
       if (!narrow()) break;
     }
     finish();

@@ -79,7 +79,7 @@ class Boolean : public Solid {
   bool holesInsideBeyondWindow_ = true;
   // A difference whose first operand's spans() begins with the test of
   // this node's box (the same box, on the same ray): no need to test it
-  // twice (a lens's shadow rays, 2 % of lens_field).
+  // twice (a lens's shadow and camera rays: 1.5 % of lens_field).
   bool firstTestsThisBox_ = false;
   // Built on first use (or by prepare), so that the intermediate nodes of a
   // script that adds operands one at a time never build one.

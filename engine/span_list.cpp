@@ -124,28 +124,21 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
   }
 }
 
-// Is y after x by more than the distance at which merge groups boundaries
-// into one point? False for NaN, and for x = −∞ or y = x = +∞.
-bool clearlyBefore(double x, double y) { return y > x + kSameT * std::abs(x); }
-
 // merge's result for two single spans, the common case of booleans of
 // convex solids (a lens: two balls and a cylinder, less an ellipsoid), when
-// no two of the four boundaries are within that distance: then no group
-// holds more than one boundary, and the sweep comes down to comparisons.
+// no two of the four boundaries are within that distance (apartSingleSpans).
 // Returns false, leaving out alone, when they are not so far apart.
 bool mergeApartSingleSpans(Op op, const Span& a, const Span& b, SpanList& out) {
-  auto apart = [](double x, double y) { return x < y ? clearlyBefore(x, y) : clearlyBefore(y, x); };
-  if (!(clearlyBefore(a.in.t, a.out.t) && clearlyBefore(b.in.t, b.out.t) && apart(a.in.t, b.in.t) &&
-        apart(a.out.t, b.out.t) && apart(a.in.t, b.out.t) && apart(a.out.t, b.in.t)))
-    return false;
-  out.clear();
   if (op == Op::Intersection) {
-    // From the later entry to the earlier exit, if that comes after it.
-    const Boundary& in = a.in.t < b.in.t ? b.in : a.in;
-    const Boundary& exit = a.out.t < b.out.t ? a.out : b.out;
-    if (in.t < exit.t) out.push_back(in, exit);
+    Span both;
+    const ApartIntersection result = intersectApartSingleSpans(a, b, both);
+    if (result == ApartIntersection::NotApart) return false;
+    out.clear();
+    if (result == ApartIntersection::One) out.push_back(both);
     return true;
   }
+  if (!apartSingleSpans(a, b)) return false;
+  out.clear();
   // Difference: a where b is not, b's boundaries facing the other way.
   if (b.out.t < a.in.t || a.out.t < b.in.t) {
     out.push_back(a);

@@ -230,7 +230,8 @@ TEST(SpanList, BooleansMatchBruteForceOnRandomLists) {
 // same two spans with a far span added to a (which the shortcut does not
 // take, and which meets nothing of b). Ends on a grid of 8 points, each
 // moved by 0, ±kSameT/2 or ±2·kSameT relative, so that boundaries coincide,
-// are one point to the sweep, or are just apart.
+// are one point to the sweep, or are just apart. The intersection written
+// over a gives the same where it answers.
 TEST(SpanList, SingleSpansGiveWhatTheSweepGives) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> grid(0, 7), nudge(0, 4), coin(0, 1);
@@ -249,7 +250,7 @@ TEST(SpanList, SingleSpansGiveWhatTheSweepGives) {
     for (std::uint32_t i = 0; i + 1 < list.size(); ++i) near.push_back(list[i]);
     return near;
   };
-  int apart = 0, close = 0;
+  int apart = 0, close = 0, inPlaceAnswers = 0;
   for (int i = 0; i < 20000; ++i) {
     int cells[4];
     double t[4];
@@ -271,6 +272,15 @@ TEST(SpanList, SingleSpansGiveWhatTheSweepGives) {
     intersect(aAndFar, b, sweep);
     ASSERT_TRUE(sameSpans(fast, sweep))
         << "[" << t[0] << ", " << t[1] << "] ∩ [" << t[2] << ", " << t[3] << "]";
+    // Written over a (Boolean's intersections): the same, where it answers.
+    SpanList inPlace = a;
+    if (intersectSingleSpansInPlace(inPlace, b)) {
+      ++inPlaceAnswers;
+      ASSERT_TRUE(sameSpans(inPlace, sweep))
+          << "in place: [" << t[0] << ", " << t[1] << "] ∩ [" << t[2] << ", " << t[3] << "]";
+    } else {
+      ASSERT_TRUE(sameSpans(inPlace, a)) << "left alone";
+    }
     subtract(a, b, fast);
     subtract(aAndFar, b, sweep);
     ASSERT_TRUE(sameSpans(fast, withoutLast(sweep)))
@@ -279,6 +289,7 @@ TEST(SpanList, SingleSpansGiveWhatTheSweepGives) {
   // Both kinds are common: four ends in different cells are clearly apart.
   EXPECT_GT(apart, 2000);
   EXPECT_GT(close, 2000);
+  EXPECT_GT(inPlaceAnswers, 2000);
 }
 
 TEST(SpanList, BooleansWithEmptyOperands) {
