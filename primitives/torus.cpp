@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "engine/solvers/ferrari.h"
 #include "engine/solvers/quartic.h"
 #include "primitives/check.h"
 
@@ -361,43 +360,6 @@ int boundariesOnConvexPieces(const ConditionedLine& line, bool ring, bool firstO
   return found;
 }
 
-// A ring torus's first boundary after tMin by the closed form, when it is
-// an entry and clearly conditioned: the quartic in s (as in
-// boundariesByIsolation) solved by Ferrari's method, each root checked by
-// one Newton correction on the quartic (it must move the root by less than
-// kBracket) and kept apart from its neighbours by more than kFirstOnlyGap
-// (a near-double root, a grazing ray, is left to the search). False when
-// it does not settle the entry.
-bool entryByClosedForm(const ConditionedLine& line, double tMin, Root& entry) {
-  const dvec3 &b = line.b, &u = line.u;
-  const double R = line.R, r = line.r;
-  const double e = glm::dot(b, u);
-  const double k = glm::dot(b, b) + R * R - r * r;
-  const double a = u.x * u.x + u.y * u.y;
-  const double h = b.x * u.x + b.y * u.y;
-  const double quartic[5] = {k * k - 4.0 * R * R * (b.x * b.x + b.y * b.y),
-                             4.0 * e * k - 8.0 * R * R * h, 4.0 * e * e + 2.0 * k - 4.0 * R * R * a,
-                             4.0 * e, 1.0};
-  double roots[4];
-  const int n = ferrariRoots(quartic[3], quartic[2], quartic[1], quartic[0], roots);
-  const double sMin = (tMin - line.t0) / line.scale;
-  for (int i = 0; i < n; ++i) {
-    if (!(roots[i] > sMin)) continue;
-    if (i % 2 != 0) return false;  // starts inside: the search decides
-    const double s = roots[i];
-    if (!(s > line.lo && s < line.hi)) return false;
-    const double slope = polynomialSlope(quartic, 4, s);
-    if (!(slope < 0.0)) return false;
-    if (std::abs(polynomialValue(quartic, 4, s) / slope) > kBracket) return false;
-    const double before = i > 0 ? roots[i - 1] : line.lo, after = roots[i + 1];
-    if (!(s - before > kFirstOnlyGap && after - s > kFirstOnlyGap)) return false;
-    if (!(line.t0 + (s - 0.5 * kFirstOnlyGap) * line.scale > tMin)) return false;
-    entry = {s, s - 0.5 * kFirstOnlyGap, s + 0.5 * kFirstOnlyGap};
-    return true;
-  }
-  return false;
-}
-
 // g this far from 0 (in the conditioned units, where g is O(1), times
 // 1 + the ray's start's distance from the line's closest point) says which
 // side of the surface a point is on beyond doubt: far above the rounding
@@ -539,9 +501,7 @@ void Torus::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   // the tube's own factor is convex or concave when that settles them, by
   // the isolation of the quartic's roots otherwise.
   Root roots[4];
-  int found = firstOnly && R_ >= r_ && entryByClosedForm(line, ray.tMin, roots[0])
-                  ? 1
-                  : boundariesOnConvexPieces(line, R_ >= r_, firstOnly, ray.tMin, roots);
+  int found = boundariesOnConvexPieces(line, R_ >= r_, firstOnly, ray.tMin, roots);
   if (found < 0) return;  // cannot happen: the chord's ends are outside
 
   // 3. Polish on f(o + t·d) = first factor · second factor, with its
