@@ -751,9 +751,9 @@ class Evaluator {
   std::optional<Mesh> perturbedInDoubles(const Piece& a, const Piece& b, Boolean::Op op) const {
     const double delta = kContactOffset * tolerance_;
     const double outward = op == Boolean::Op::Intersection ? -delta : delta;
-    // The boxes' bits, hashed (FNV-1a, 64 bits), seed the standard's fully
-    // specified engine: the same shift on every platform, and so the same
-    // file.
+    // The boxes' bits, hashed a word at a time in the manner of FNV-1a
+    // (its 64-bit offset and prime), seed the standard's fully specified
+    // engine: the same shift on every platform, and so the same file.
     std::uint64_t hash = 14695981039346656037u;
     for (const Bounds* box : {&a.box, &b.box})
       for (double x : {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z})
