@@ -116,13 +116,14 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
     std::fprintf(
         stderr,
         "csgray: stages: script %.3f s, mesh %.3f s, check %.3f s, write %.3f s\n"
-        "csgray: %zu primitives tessellated, %zu booleans (%zu in doubles, %zu by CGAL%s), %zu "
+        "csgray: %zu primitives tessellated, %zu booleans (%zu in doubles, %zu of them perturbed, "
+        "%zu by CGAL%s), %zu "
         "joined without one, %zu "
         "glued face to face, %zu rounding repair%s, %zu contact%s resolved, %zu stray shell%s "
         "removed%s\n",
         scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
         secs(evaluated, written), counts.primitives, counts.corefinements, counts.inDoubles,
-        counts.corefinements - counts.inDoubles,
+        counts.perturbed, counts.corefinements - counts.inDoubles,
         counts.redoneByCgal ? "; the part made again by CGAL alone after a check failed" : "",
         counts.merges, counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s",
         counts.contacts, counts.contacts == 1 ? "" : "s", counts.strayShells,

@@ -26,8 +26,11 @@ using Id = std::uint32_t;  // a vertex: the operands' points, then the crossings
 using Triangle = std::array<Id, 3>;
 
 // Thrown where the operands are not in general position or a step finds
-// something inconsistent; doubleBoolean then declines.
-struct Declined {};
+// something inconsistent (or, with NotInDoubles, where an operand is not
+// one it can take); doubleBoolean then declines.
+struct Declined {
+  DoubleDecline why = DoubleDecline::NotInGeneralPosition;
+};
 
 std::uint64_t pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
@@ -93,7 +96,7 @@ class DoubleBoolean {
       std::array<double, 3> xyz;
       for (int k = 0; k < 3; ++k) {
         const auto range = CGAL::to_interval(p[k]);
-        if (range.first != range.second) throw Declined{};
+        if (range.first != range.second) throw Declined{DoubleDecline::NotInDoubles};
         xyz[k] = range.first;
       }
       points_[op.base + v] = Point(xyz[0], xyz[1], xyz[2]);
@@ -109,7 +112,7 @@ class DoubleBoolean {
         op.corners[f][k] = op.base + Id(mesh.source(h));
         op.edges[f][k] = std::uint32_t(mesh.edge(h));
       }
-      if (h != mesh.halfedge(f)) throw Declined{};  // not a triangle
+      if (h != mesh.halfedge(f)) throw Declined{DoubleDecline::NotInDoubles};  // not a triangle
       op.tags[f] = tags ? tags[f] : 0;
       op.faces.push_back(std::uint32_t(f));
     }
@@ -647,12 +650,35 @@ class DoubleBoolean {
 
 }  // namespace
 
-std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op) {
+std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op,
+                                       DoubleDecline* why) {
   try {
     return DoubleBoolean(a, b).run(op);
-  } catch (const Declined&) {
+  } catch (const Declined& declined) {
+    if (why != nullptr) *why = declined.why;
     return std::nullopt;
   }
+}
+
+MeshTopology topologyOf(const ExactMesh& mesh) {
+  MeshTopology topology;
+  topology.euler = static_cast<long long>(mesh.number_of_vertices()) -
+                   static_cast<long long>(mesh.number_of_edges()) +
+                   static_cast<long long>(mesh.number_of_faces());
+  // The shells: the faces joined across their edges (union-find).
+  std::vector<std::uint32_t> parent(mesh.number_of_faces() + mesh.number_of_removed_faces());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::uint32_t(i);
+  auto root = [&](std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (auto e : mesh.edges()) {
+    const auto f = mesh.face(mesh.halfedge(e, 0)), g = mesh.face(mesh.halfedge(e, 1));
+    if (f == ExactMesh::null_face() || g == ExactMesh::null_face()) continue;
+    parent[root(std::uint32_t(f))] = root(std::uint32_t(g));
+  }
+  for (auto f : mesh.faces()) topology.shells += root(std::uint32_t(f)) == std::uint32_t(f);
+  return topology;
 }
 
 }  // namespace csgray::detail

@@ -9,12 +9,19 @@
 // Library"), doubles with exact predicates; the code is csgray's own.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 
 #include "engine/boolean.h"
 #include "export/cgal/exact_mesh.h"
 
 namespace csgray::detail {
+
+// Why doubleBoolean made nothing: an operand it cannot take (a point that
+// is not a double, a face that is not a triangle), or operands that are
+// not in general position (or whose rounded points left something it
+// built inconsistent), which a small move of one may put right.
+enum class DoubleDecline { NotInDoubles, NotInGeneralPosition };
 
 // a op b, its faces tagged with the materials of the faces they came
 // from, its points doubles (so that a chain of such booleans stays
@@ -23,6 +30,17 @@ namespace csgray::detail {
 // and is checked to be closed and consistently oriented before it is
 // returned. Declined at once when a coordinate of an operand is not a
 // double (CGAL::to_interval is not a point: a corefinement made it).
-std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op);
+// When it declines, `why` (if given) says why.
+std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op,
+                                       DoubleDecline* why = nullptr);
+
+// The topology of a closed mesh: its shells (connected components) and its
+// Euler characteristic V − E + F (2 for each sphere, 0 for each torus).
+struct MeshTopology {
+  std::size_t shells = 0;
+  long long euler = 0;
+  bool operator==(const MeshTopology&) const = default;
+};
+MeshTopology topologyOf(const ExactMesh& mesh);
 
 }  // namespace csgray::detail

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -52,6 +53,18 @@ constexpr double kBlameReach = 10.0;
 // between them.
 constexpr double kRepairReach = 0.05;
 constexpr int kSliverRounds = 3;
+// How far a boolean made in doubles with one operand moved off the other
+// (perturbedInDoubles) may have moved its faces, in contact offsets: the
+// growth, and a shift of up to a quarter of it on each axis (√3/4 < 1/2).
+constexpr double kPerturbedReach = 1.5;
+// Below this many faces in both operands a boolean that is not in general
+// position is left to CGAL, which then costs a few milliseconds (two
+// boxes on one floor: 2 ms) and keeps the result exact; above it CGAL's
+// exact constructions on such operands cost tenths of seconds (the last
+// union of examples/rounded_box.lua, 6576 + 4100 faces: 0.41 s). A result
+// of CGAL's with fewer faces is rounded to doubles where it stays valid
+// (roundIfValid), a check that then costs little.
+constexpr std::size_t kPerturbedFaces = 500;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
@@ -158,13 +171,14 @@ dvec3 vertexOffset(const Mesh& mesh, typename Mesh::Vertex_index v, double delta
 // (vertexOffset) where they come within `near` (the other operand's box):
 // a contact is resolved where it is, and the rest of the mesh keeps its
 // exact points, so that a later cut flush with a face far from the
-// contact takes all of it instead of leaving a sheet delta thick.
+// contact takes all of it instead of leaving a sheet delta thick. Those
+// points are also moved by `shift`.
 template <class Mesh>
-void offsetMesh(Mesh& mesh, double delta, const Bounds& near) {
+void offsetMesh(Mesh& mesh, double delta, const Bounds& near, const dvec3& shift = dvec3(0.0)) {
   std::vector<std::pair<typename Mesh::Vertex_index, dvec3>> moved;
   for (auto v : mesh.vertices()) {
     const dvec3 p = pointOf(mesh, v);
-    if (near.contains(p)) moved.emplace_back(v, p + vertexOffset(mesh, v, delta));
+    if (near.contains(p)) moved.emplace_back(v, p + vertexOffset(mesh, v, delta) + shift);
   }
   for (const auto& [v, q] : moved) mesh.point(v) = typename Mesh::Point(q.x, q.y, q.z);
 }
@@ -272,6 +286,9 @@ struct EvaluationOrder {
   // Not 0: each union's operands, and a difference's cutters, in an order
   // shuffled by this seed (after `reversed`), for a last try.
   unsigned shuffle = 0;
+  // A boolean in doubles that declines for want of general position tried
+  // again with one operand moved off the other (perturbedInDoubles).
+  bool perturb = true;
 
   template <class T>
   void arrange(std::vector<T>& items) const {
@@ -630,13 +647,24 @@ class Evaluator {
     setBooleanInProgress(booleanText(a, b, op));
     // In doubles where the operands allow it: several times faster than
     // CGAL's exact corefinement, which takes over where it declines.
-    if (order_.doubles)
-      if (std::optional<Mesh> made = doubleBoolean(a.mesh, b.mesh, op)) {
+    if (order_.doubles) {
+      DoubleDecline why{};
+      if (std::optional<Mesh> made = doubleBoolean(a.mesh, b.mesh, op, &why)) {
         ++stats_.inDoubles;
         a.mesh = std::move(*made);
         a.grown = std::max(a.grown, b.grown);
         return boxAfter(a);
       }
+      if (why == DoubleDecline::NotInGeneralPosition && order_.perturb &&
+          a.mesh.number_of_faces() + b.mesh.number_of_faces() >= kPerturbedFaces)
+        if (std::optional<Mesh> made = perturbedInDoubles(a, b, op)) {
+          ++stats_.inDoubles;
+          ++stats_.perturbed;
+          a.mesh = std::move(*made);
+          a.grown = std::max(a.grown, b.grown) + kPerturbedReach * kContactOffset * tolerance_;
+          return boxAfter(a);
+        }
+    }
     // An operand that touches itself (solids that met at a corner, united
     // before: CGAL gave each a vertex of its own there, at one place) must
     // not go into a corefinement whose other operand's surface runs through
@@ -662,7 +690,10 @@ class Evaluator {
     const Mesh keptA = a.mesh, keptB = b.mesh;
     const double grown = std::max(a.grown, b.grown);
     a.grown = grown;
-    if (attempt(a, b, op)) return boxAfter(a);
+    if (attempt(a, b, op)) {
+      if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces) roundIfValid(a.mesh);
+      return boxAfter(a);
+    }
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
     // in a pattern of them), or CGAL stopped half way (two coplanar edges
     // that overlap). The contact is resolved as a perturbation would: a
@@ -701,6 +732,71 @@ class Evaluator {
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);
+  }
+
+  // A boolean in doubles that declined for want of general position (the
+  // tangent parts of a rounded box: a box's faces in the plane of
+  // another's, a cylinder's generators in a box's faces and in another
+  // cylinder's cap), made again with b moved off a, as a contact is
+  // resolved: grown by a hundredth of the tolerance for a union or a cut,
+  // shrunk for an intersection (docs/cli.md, "Contacts"), and shifted by
+  // up to a quarter of that on each axis, in a direction taken from the
+  // operands' boxes, so that a piece moved so before (now part of a) and
+  // b are not moved alike and do not meet in the same place again. It is
+  // taken only when b moved the other way gives a result of the same
+  // topology (shells and Euler characteristic): the degeneracy was then
+  // not a contact, whose resolution is left to CGAL's path (a point
+  // contact stays a split, docs/cli.md), and the two differ only by the
+  // move. Nothing when either declines or they differ.
+  std::optional<Mesh> perturbedInDoubles(const Piece& a, const Piece& b, Boolean::Op op) const {
+    const double delta = kContactOffset * tolerance_;
+    const double outward = op == Boolean::Op::Intersection ? -delta : delta;
+    // The boxes' bits, hashed a word at a time in the manner of FNV-1a
+    // (its 64-bit offset and prime), seed the standard's fully specified
+    // engine: the same shift on every platform, and so the same file.
+    std::uint64_t hash = 14695981039346656037u;
+    for (const Bounds* box : {&a.box, &b.box})
+      for (double x : {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z})
+        hash = (hash ^ std::bit_cast<std::uint64_t>(x)) * 1099511628211u;
+    std::mt19937 random(std::uint32_t(hash ^ hash >> 32));
+    dvec3 shift;
+    for (int k = 0; k < 3; ++k) shift[k] = delta * (double(random()) / 0x1p32 - 0.5) / 2.0;
+    auto moved = [&](double by) {
+      Mesh mesh = b.mesh;
+      offsetMesh(mesh, by, Bounds::everything(), shift);
+      return mesh;
+    };
+    std::optional<Mesh> made = doubleBoolean(a.mesh, moved(outward), op);
+    if (!made) return std::nullopt;
+    const std::optional<Mesh> other = doubleBoolean(a.mesh, moved(-outward), op);
+    if (!other || topologyOf(*made) != topologyOf(*other)) return std::nullopt;
+    return made;
+  }
+
+  // A small result of CGAL's corefinement with its points rounded to
+  // doubles, where it stays a valid mesh so (meshDefect): the booleans it
+  // goes on to may then be made in doubles, which decline a point that is
+  // not a double (the union of a rounded box's boxes, whose coplanar
+  // faces' diagonals cross at such points, and every boolean after it).
+  // The rounding moves a point by half a unit in the last place; the
+  // booleans in doubles round each new point so too.
+  static void roundIfValid(Mesh& mesh) {
+    TriangleMesh rounded;
+    std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+    for (auto v : mesh.vertices()) {
+      index[v] = std::uint32_t(rounded.points.size());
+      rounded.points.push_back(pointOf(mesh, v));
+    }
+    for (auto f : mesh.faces()) {
+      auto h = mesh.halfedge(f);
+      rounded.triangles.push_back(
+          {index[mesh.source(h)], index[mesh.target(h)], index[mesh.target(mesh.next(h))]});
+    }
+    if (!meshDefect(rounded).valid()) return;
+    for (auto v : mesh.vertices()) {
+      const dvec3& p = rounded.points[index[v]];
+      mesh.point(v) = typename K::Point_3(p.x, p.y, p.z);
+    }
   }
 
   // Solids placed to meet at a corner (a Sierpinski tetrahedron's) meet
@@ -955,7 +1051,14 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
                      MeshBooleanStats& counts, const EvaluationOrder& order, bool& refusedPinch) {
   const EvaluationFrame frame(solid);
   const Bounds box = frame.evalBounds(solid.bounds());
-  Evaluator evaluator(tolerance, frame, counts, order);
+  // Not for a file that keeps fewer digits than a float near 1 (3MF's six
+  // decimals, which lib3mf prints by rules that storedAs follows only
+  // nearly): the slivers a perturbation leaves, a fraction of a hundredth
+  // of the tolerance wide, were found folded in such a file read back
+  // (examples/dxf_flange.lua, 4 of 8 shifts) though not in the check.
+  EvaluationOrder evaluationOrder = order;
+  evaluationOrder.perturb = storedAs(stored, 1.0 + 0x1p-21) != 1.0;
+  Evaluator evaluator(tolerance, frame, counts, evaluationOrder);
   auto piece = [&] {
     try {
       return evaluator.evaluate(solid, box);

@@ -19,6 +19,7 @@ struct MeshBooleanStats {
   std::size_t primitives = 0;     // primitives tessellated
   std::size_t corefinements = 0;  // boolean operations on meshes
   std::size_t inDoubles = 0;      // of them, made in doubles (double_boolean.h), not by CGAL
+  std::size_t perturbed = 0;      // of those, one operand moved off the other (perturbedInDoubles)
   bool redoneByCgal = false;      // the part failed its check with booleans in doubles
   std::size_t merges = 0;         // operands joined without one (boxes apart)
   std::size_t glued = 0;          // unions of solids stacked on the same faces

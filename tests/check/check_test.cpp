@@ -188,7 +188,12 @@ TEST(Check, AnAssemblyOfInstancesChecksAsItsCopy) {
   ASSERT_TRUE(b.ok()) << checkReportText(b, "copy");
   EXPECT_EQ(a.triangles, b.triangles);
   EXPECT_NEAR(a.meshVolume, b.meshVolume, 1e-9 * b.meshVolume);
-  EXPECT_NEAR(a.meshVolume, 3 * one.meshVolume, 1e-6 * b.meshVolume);
+  // The turned copies' booleans round differently (a millionth), and where
+  // a turn leaves their operands out of general position a boolean is made
+  // with one of them moved off the other, by 1.5 % of the tolerance at
+  // most (docs/cli.md, "Contacts"): over the area, the volume by as much.
+  EXPECT_NEAR(a.meshVolume, 3 * one.meshVolume,
+              1e-6 * b.meshVolume + 0.015 * quick().tolerance * a.meshArea);
   EXPECT_NEAR(a.exactVolume, 3 * one.exactVolume, 0.01 * a.exactVolume);
   EXPECT_EQ(a.modelPieces, 3u);
 }

@@ -495,11 +495,38 @@ TEST(ContactExport, TheRoundedBoxOfTangentParts) {
   const Scene scene = runScriptFile(std::string(CSGRAY_SOURCE_DIR) + "/examples/rounded_box.lua",
                                     test::exampleOptions());
   const SolidPtr solid = scene.objects[0];
-  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance).mesh;
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
   EXPECT_EQ(meshDefect(mesh).text, "");
   EXPECT_NEAR(mesh.volume(), exact, kTolerance * 2 * (40 * 30 + 30 * 20 + 40 * 20));
   EXPECT_EQ(meshShells(mesh).count, 1u);
   EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  // Its parts are not in general position (a box's faces in another's
+  // planes, a cylinder's generators in the boxes' faces and in the other
+  // cylinders' caps): the large booleans are made in doubles with one
+  // operand moved off the other, and only the first, of two boxes, by
+  // CGAL (its result rounded to doubles for the next).
+  EXPECT_GE(stats.perturbed, 1u);
+  EXPECT_LE(stats.corefinements - stats.inDoubles, 1u);
+  EXPECT_FALSE(stats.redoneByCgal);
+}
+
+TEST(ContactExport, AContactOfLargeMeshesIsNotMovedApartOrTogether) {
+  // Two boxes with a ball on top, the boxes corner to corner at (10, 10,
+  // 10): each boolean has hundreds of faces and the corner is not in
+  // general position, but moving one operand off the other would join the
+  // boxes there (grown) or not (shrunk): a contact, left to CGAL, and
+  // split there as two boxes corner to corner are.
+  const double ball = 4.0 / 3.0 * kPi * 27.0;
+  MeshBooleanStats stats;
+  const std::string source =
+      "return union(box(10), sphere(3):translate(5, 5, 10), box(10):translate(10, 10, 10), "
+      "sphere(3):translate(15, 15, 20))";
+  const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_NEAR(mesh.volume(), 2000.0 + ball, kTolerance * 4 * kPi * 9.0 * 2);
+  EXPECT_EQ(meshShells(mesh).count, 2u);
+  EXPECT_EQ(stats.perturbed, 0u);
 }
 
 TEST(ContactExport, FortyFrustumsStackedOnSharedRims) {

@@ -147,6 +147,34 @@ TEST(DoubleBoolean, DeclinesCoplanarFaces) {
   EXPECT_EQ(stats.inDoubles, 0u);
 }
 
+TEST(DoubleBoolean, SaysWhyItDeclines) {
+  // Coplanar faces: not in general position, which a move may put right.
+  const ExactMesh a = meshOf("return box(10)");
+  DoubleDecline why = DoubleDecline::NotInDoubles;
+  EXPECT_FALSE(doubleBoolean(a, meshOf("return box(10):translate(5, 5, 0)"), Op::Union, &why));
+  EXPECT_EQ(why, DoubleDecline::NotInGeneralPosition);
+  // A point of CGAL's that is no double (a ball's faces cut by a box's):
+  // an operand it cannot take.
+  ExactMesh ball = meshOf("return sphere(4):translate(10, 10, 10)"), box = a;
+  ASSERT_TRUE(exactBoolean(box, ball, Op::Union));
+  why = DoubleDecline::NotInGeneralPosition;
+  EXPECT_FALSE(doubleBoolean(box, meshOf("return sphere(1):translate(0, 0, 10)"), Op::Union, &why));
+  EXPECT_EQ(why, DoubleDecline::NotInDoubles);
+}
+
+TEST(DoubleBoolean, TopologyCountsShellsAndHandles) {
+  // Two balls apart: two spheres (χ = 2 each). A box less a rod through
+  // it: a torus (χ = 0).
+  const ExactMesh ball = meshOf("return sphere(2)");
+  ExactMesh two = ball;
+  two.join(meshOf("return sphere(2):translate(10, 0, 0)"));
+  EXPECT_EQ(topologyOf(two), (MeshTopology{2, 4}));
+  ExactMesh ring = meshOf("return box(10)"),
+            rod = meshOf("return cylinder{r=2, h=20}:translate(5, 5, -5)");
+  ASSERT_TRUE(exactBoolean(ring, rod, Op::Difference));
+  EXPECT_EQ(topologyOf(ring), (MeshTopology{1, 0}));
+}
+
 TEST(DoubleBoolean, DeclinesACornerOnAFace) {
   // A pyramid whose apex touches the box's top face from above, inside
   // it; then pushed into the box, its apex strictly inside: made.
