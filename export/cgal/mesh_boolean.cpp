@@ -3,11 +3,13 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <random>
@@ -340,8 +342,7 @@ class Evaluator {
     std::span<const SolidPtr> operands = node->children();
     switch (node->op()) {
       case Boolean::Op::Union: {
-        std::vector<Piece> pieces;
-        for (const SolidPtr& s : operands) pieces.push_back(evaluate(*s, region));
+        std::vector<Piece> pieces = evaluateAll(operands, region);
         order_.arrange(pieces);
         return unite(std::move(pieces));
       }
@@ -363,8 +364,7 @@ class Evaluator {
         if (minuend.empty()) return minuend;
         // Whatever is cut away is cut from the minuend's mesh, which may
         // reach past the region: the cutters are meshed over all of it.
-        std::vector<Piece> cutters;
-        for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
+        std::vector<Piece> cutters = evaluateAll(operands.subspan(1), minuend.box);
         order_.arrange(cutters);
         Piece cut = unite(std::move(cutters));
         if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
@@ -396,15 +396,75 @@ class Evaluator {
 
   Piece leaf(const Primitive& primitive, const Bounds& region) {
     ++stats_.primitives;
-    TriangleMesh triangles = frame_.identity
-                                 ? primitive.tessellate(tolerance_, region)
-                                 : std::dynamic_pointer_cast<const Primitive>(
-                                       primitive.withFrame(frame_.evalFrame(primitive.frame())))
-                                       ->tessellate(tolerance_, region);
-    // Each primitive keeps within its limit; the whole part within
-    // kMaxExportTriangles, checked as each is added (before its exact
-    // copy, several times the size, is made).
-    triangles_ += triangles.size();
+    const TriangleMesh triangles = tessellation(primitive, region);
+    countTriangles(triangles.size());
+    return pieceOf(triangles, tagOf(primitive.material()), primitive.kind());
+  }
+
+  // The operands' pieces, in their order, as evaluate makes them one by
+  // one. The primitives among them are tessellated on all threads, and
+  // their exact meshes made so too (a union of a thousand balls: each is
+  // apart from the others); what the evaluation counts and names (the
+  // primitives, the triangles against the limit, the materials' tags, the
+  // first error) is done here in the operands' order, so that the result
+  // does not depend on the threads.
+  std::vector<Piece> evaluateAll(std::span<const SolidPtr> operands, const Bounds& region) {
+    const std::size_t n = operands.size();
+    std::vector<const Primitive*> primitives(n, nullptr);
+    std::vector<Bounds> regions(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (auto* primitive = dynamic_cast<const Primitive*>(operands[i].get())) {
+        primitives[i] = primitive;
+        regions[i] = region.intersected(frame_.evalBounds(primitive->bounds()));
+      }
+    auto tessellated = [&](std::size_t i) { return primitives[i] && !regions[i].empty(); };
+    std::vector<TriangleMesh> triangles(n);
+    std::vector<std::exception_ptr> failed(n);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      if (!tessellated(i)) return;
+      try {
+        triangles[i] = tessellation(*primitives[i], regions[i]);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    });
+    std::vector<Piece> pieces(n);
+    std::vector<std::uint32_t> tags(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!primitives[i]) pieces[i] = evaluate(*operands[i], region);
+      if (!tessellated(i)) continue;
+      if (failed[i]) std::rethrow_exception(failed[i]);
+      ++stats_.primitives;
+      countTriangles(triangles[i].size());
+      tags[i] = tagOf(primitives[i]->material());
+    }
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      if (!tessellated(i)) return;
+      try {
+        pieces[i] = pieceOf(triangles[i], tags[i], primitives[i]->kind());
+        pieces[i].origin = primitives[i];
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    });
+    for (const std::exception_ptr& failure : failed)
+      if (failure) std::rethrow_exception(failure);
+    return pieces;
+  }
+
+  // The primitive's triangles within the region, in the evaluation's frame.
+  TriangleMesh tessellation(const Primitive& primitive, const Bounds& region) const {
+    if (frame_.identity) return primitive.tessellate(tolerance_, region);
+    return std::dynamic_pointer_cast<const Primitive>(
+               primitive.withFrame(frame_.evalFrame(primitive.frame())))
+        ->tessellate(tolerance_, region);
+  }
+
+  // Each primitive keeps within its limit; the whole part within
+  // kMaxExportTriangles, checked as each primitive's count is added
+  // (before its exact copy, several times the size, is made).
+  void countTriangles(std::size_t count) {
+    triangles_ += count;
     if (triangles_ > kMaxExportTriangles) {
       char text[200];
       std::snprintf(text, sizeof text,
@@ -413,19 +473,17 @@ class Evaluator {
                     kMaxExportTriangles, tolerance_);
       throw std::invalid_argument(text);
     }
-    return pieceOf(triangles, primitive.material(), primitive.kind());
   }
 
-  // The exact mesh of triangles, its faces tagged with one material.
-  Piece pieceOf(const TriangleMesh& triangles, const MaterialPtr& material,
-                const std::string& kind) {
+  // The exact mesh of triangles, its faces tagged with one material's
+  // tag. (Safe on several threads at once: it reads only its arguments.)
+  static Piece pieceOf(const TriangleMesh& triangles, std::uint32_t tag, const std::string& kind) {
     Piece piece;
     if (triangles.empty()) return piece;
     Mesh& mesh = piece.mesh;
     mesh.reserve(triangles.points.size(), triangles.size() * 3 / 2, triangles.size());
     for (const dvec3& p : triangles.points) mesh.add_vertex(typename K::Point_3(p.x, p.y, p.z));
     auto tags = tagsOf(mesh);
-    const std::uint32_t tag = tagOf(material);
     for (const TriangleMesh::Triangle& t : triangles.triangles) {
       Face f = mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2]));
       if (f == Mesh::null_face())
@@ -461,7 +519,7 @@ class Evaluator {
     stats_.primitives += operands.size();
     const TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
     triangles_ += triangles.size();
-    return pieceOf(triangles, *material, "intersection");
+    return pieceOf(triangles, tagOf(*material), "intersection");
   }
 
   // Adds b's shells to a: their boxes are apart, so no face of one meets
