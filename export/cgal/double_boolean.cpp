@@ -77,7 +77,14 @@ struct EdgeThrough {
 class DoubleBoolean {
  public:
   DoubleBoolean(const ExactMesh& a, const ExactMesh& b) : meshes_{&a, &b} {
-    for (int s = 0; s < 2; ++s) load(s);
+    // Each operand's points have a range of ids of their own (the first
+    // operand's, then the second's), so the two load at once.
+    const auto slots = [&](int s) {
+      return meshes_[s]->number_of_vertices() + meshes_[s]->number_of_removed_vertices();
+    };
+    ops_[1].base = Id(slots(0));
+    points_.resize(slots(0) + slots(1));
+    tbb::parallel_invoke([&] { load(0); }, [&] { load(1); });
   }
 
   std::optional<ExactMesh> run(Boolean::Op op) {
@@ -101,8 +108,6 @@ class DoubleBoolean {
   void load(int s) {
     const ExactMesh& mesh = *meshes_[s];
     Operand& op = ops_[s];
-    op.base = Id(points_.size());
-    points_.resize(points_.size() + mesh.number_of_vertices() + mesh.number_of_removed_vertices());
     for (auto v : mesh.vertices()) {
       const auto& p = mesh.point(v);
       std::array<double, 3> xyz;

@@ -4,6 +4,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -909,20 +910,24 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
   // Points that rounding to the file's precision put in one place are
   // ordered by their exact places (to_double of a lazy exact number is
   // not a canonical rounding: it depends on what was computed before).
+  // (The points are rounded, and both sorts made, on all threads: each
+  // order is total, the last tie broken by the index, so it is the same
+  // whatever the threads.)
   std::vector<dvec3> points(exact.number_of_vertices() + exact.number_of_removed_vertices());
-  std::vector<typename Mesh::Vertex_index> byPlace;
-  byPlace.reserve(exact.number_of_vertices());
-  for (auto v : exact.vertices()) {
+  std::vector<typename Mesh::Vertex_index> byPlace(exact.vertices().begin(),
+                                                   exact.vertices().end());
+  tbb::parallel_for(std::size_t(0), byPlace.size(), [&](std::size_t i) {
+    const auto v = byPlace[i];
     const auto& p = exact.point(v);
     dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!frame.identity) q = frame.worldFromEval * q;
     points[v] = dvec3(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
-    byPlace.push_back(v);
-  }
-  std::stable_sort(byPlace.begin(), byPlace.end(), [&](auto a, auto b) {
+  });
+  tbb::parallel_sort(byPlace.begin(), byPlace.end(), [&](auto a, auto b) {
     const dvec3 &p = points[a], &q = points[b];
     if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-    return CGAL::compare_xyz(exact.point(a), exact.point(b)) == CGAL::SMALLER;
+    const CGAL::Comparison_result exactly = CGAL::compare_xyz(exact.point(a), exact.point(b));
+    return exactly != CGAL::EQUAL ? exactly == CGAL::SMALLER : a < b;
   });
   // The vertices in that order: vertex[v] is where exact's v goes.
   std::vector<RoundedMesh::Vertex_index> vertex(points.size());
@@ -972,8 +977,9 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     return rounded;
   };
   std::vector<Face> sorted = faces;
-  std::sort(sorted.begin(), sorted.end(),
-            [](const Face& a, const Face& b) { return a.corners < b.corners; });
+  tbb::parallel_sort(sorted.begin(), sorted.end(), [](const Face& a, const Face& b) {
+    return a.corners != b.corners ? a.corners < b.corners : a.from < b.from;
+  });
   if (auto rounded = build(sorted)) return std::move(*rounded);
   if (auto rounded = build(faces)) return std::move(*rounded);
   throw std::runtime_error(
