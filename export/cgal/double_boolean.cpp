@@ -674,6 +674,9 @@ class DoubleBoolean {
     std::vector<bool> used(points_.size(), false);
     for (const Triangle& t : kept)
       for (Id id : t) used[id] = true;
+    // A closed mesh of f triangles has 3f/2 edges; the arrays are sized
+    // once rather than grown.
+    out.reserve(Id(std::count(used.begin(), used.end(), true)), kept.size() * 3 / 2, kept.size());
     for (Id id = 0; id < points_.size(); ++id)
       if (used[id]) {
         const Point& p = points_[id];
