@@ -423,14 +423,21 @@ class Evaluator {
     auto tessellated = [&](std::size_t i) { return primitives[i] && !regions[i].empty(); };
     std::vector<TriangleMesh> triangles(n);
     std::vector<std::exception_ptr> failed(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    auto tessellate = [&](std::size_t i) {
       if (!tessellated(i)) return;
       try {
         triangles[i] = tessellation(*primitives[i], regions[i]);
       } catch (...) {
         failed[i] = std::current_exception();
       }
-    });
+    };
+    // A few primitives are tessellated here: starting TBB's scheduler
+    // (about half a millisecond, as in roundedCopy) would cost more.
+    constexpr std::size_t kFewOperands = 8;
+    if (n < kFewOperands)
+      for (std::size_t i = 0; i < n; ++i) tessellate(i);
+    else
+      tbb::parallel_for(std::size_t(0), n, tessellate);
     std::vector<Piece> pieces(n);
     for (std::size_t i = 0; i < n; ++i) {
       if (!primitives[i]) pieces[i] = evaluate(*operands[i], region);
@@ -908,19 +915,29 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
   std::vector<dvec3> points(exact.number_of_vertices() + exact.number_of_removed_vertices());
   std::vector<typename Mesh::Vertex_index> byPlace(exact.vertices().begin(),
                                                    exact.vertices().end());
-  tbb::parallel_for(std::size_t(0), byPlace.size(), [&](std::size_t i) {
+  // Small meshes stay on this thread: starting TBB's scheduler costs
+  // about half a millisecond (two frustums glued: 5 % of their export).
+  const bool threaded = byPlace.size() >= 10000;
+  auto roundPoint = [&](std::size_t i) {
     const auto v = byPlace[i];
     const auto& p = exact.point(v);
     dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!frame.identity) q = frame.worldFromEval * q;
     points[v] = dvec3(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
-  });
-  tbb::parallel_sort(byPlace.begin(), byPlace.end(), [&](auto a, auto b) {
+  };
+  auto placeOrder = [&](auto a, auto b) {
     const dvec3 &p = points[a], &q = points[b];
     if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
     const CGAL::Comparison_result exactly = CGAL::compare_xyz(exact.point(a), exact.point(b));
     return exactly != CGAL::EQUAL ? exactly == CGAL::SMALLER : a < b;
-  });
+  };
+  if (threaded) {
+    tbb::parallel_for(std::size_t(0), byPlace.size(), roundPoint);
+    tbb::parallel_sort(byPlace.begin(), byPlace.end(), placeOrder);
+  } else {
+    for (std::size_t i = 0; i < byPlace.size(); ++i) roundPoint(i);
+    std::sort(byPlace.begin(), byPlace.end(), placeOrder);
+  }
   // The vertices in that order: vertex[v] is where exact's v goes.
   std::vector<RoundedMesh::Vertex_index> vertex(points.size());
   for (std::size_t i = 0; i < byPlace.size(); ++i)
@@ -969,9 +986,13 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     return rounded;
   };
   std::vector<Face> sorted = faces;
-  tbb::parallel_sort(sorted.begin(), sorted.end(), [](const Face& a, const Face& b) {
+  auto cornerOrder = [](const Face& a, const Face& b) {
     return a.corners != b.corners ? a.corners < b.corners : a.from < b.from;
-  });
+  };
+  if (threaded)
+    tbb::parallel_sort(sorted.begin(), sorted.end(), cornerOrder);
+  else
+    std::sort(sorted.begin(), sorted.end(), cornerOrder);
   if (auto rounded = build(sorted)) return std::move(*rounded);
   if (auto rounded = build(faces)) return std::move(*rounded);
   throw std::runtime_error(
