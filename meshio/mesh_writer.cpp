@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.h"
 #include "io/srgb.h"
+#include "meshio/binary_stl_writer.h"
 
 namespace csgray::detail {
 
@@ -241,6 +242,8 @@ void writeMeshFile(const std::string& path, const PartMesh& part, bool ascii) {
   AtomicFile file(path);
   if (format == MeshFormat::ThreeMf)
     write3mf(path, file.tempPath(), part);
+  else if (format == MeshFormat::Stl && !ascii)
+    writeBinaryStl(path, file.tempPath(), part.mesh);
   else
     writeWithOpenMesh(path, file.tempPath(), format, part.mesh, ascii);
   file.commit();

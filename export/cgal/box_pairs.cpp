@@ -120,12 +120,15 @@ void pairsSplit(std::span<FaceBox> boxes, const Report& report) {
                        [&] { crossPairs(reaching, reached, report); });
 }
 
-// The same between two sets, on one thread: split both at one plane, the
-// pairs are those between a's and b's boxes below it, between those above
-// it, and between the straddlers of either below and the other's above.
-void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, const Report& report) {
+// The same between two sets, appended to `pairs`: split both at one plane,
+// the pairs are those between the straddlers of either below it and the
+// other's above, then those between a's and b's boxes below it, then
+// above it. The two halves are split on threads of their own, each into a
+// vector of its own, so the order is the same whatever the threads.
+void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, std::vector<FacePair>& pairs) {
+  const Report append = [&pairs](std::uint32_t f, std::uint32_t g) { pairs.emplace_back(f, g); };
   const std::size_t n = a.size() + b.size();
-  if (n < kSmallestSplit || a.empty() || b.empty()) return crossPairs(a, b, report);
+  if (n < kSmallestSplit || a.empty() || b.empty()) return crossPairs(a, b, append);
   const int axis = widestAxis(a, b);
   std::vector<double> sides;
   sides.reserve(n);
@@ -136,15 +139,17 @@ void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, const Report& report
   const auto aSecond = splitAt(a, axis, m), bSecond = splitAt(b, axis, m);
   const std::span<FaceBox> aBelow(a.begin(), aSecond), aAbove(aSecond, a.end());
   const std::span<FaceBox> bBelow(b.begin(), bSecond), bAbove(bSecond, b.end());
-  if (!balanced(aBelow.size() + bBelow.size(), n)) return crossPairs(a, b, report);
+  if (!balanced(aBelow.size() + bBelow.size(), n)) return crossPairs(a, b, append);
   std::vector<FaceBox> reaching, reached;
   straddlers(aBelow, bAbove, axis, m, reaching, reached);
-  crossPairs(reaching, reached, report);
+  crossPairs(reaching, reached, append);
   reaching.clear(), reached.clear();
   straddlers(bBelow, aAbove, axis, m, reaching, reached);
-  crossPairs(reaching, reached, report, true);
-  pairsSplit(aBelow, bBelow, report);
-  pairsSplit(aAbove, bAbove, report);
+  crossPairs(reaching, reached, append, true);
+  std::vector<FacePair> above;
+  tbb::parallel_invoke([&] { pairsSplit(aBelow, bBelow, pairs); },
+                       [&] { pairsSplit(aAbove, bAbove, above); });
+  pairs.insert(pairs.end(), above.begin(), above.end());
 }
 
 }  // namespace
@@ -153,8 +158,10 @@ void forEachMeetingPair(std::vector<FaceBox>& boxes, const Report& report) {
   pairsSplit(boxes, report);
 }
 
-void forEachMeetingPair(std::vector<FaceBox>& a, std::vector<FaceBox>& b, const Report& report) {
-  pairsSplit(a, b, report);
+std::vector<FacePair> meetingPairs(std::vector<FaceBox>& a, std::vector<FaceBox>& b) {
+  std::vector<FacePair> pairs;
+  pairsSplit(a, b, pairs);
+  return pairs;
 }
 
 }  // namespace csgray::detail

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace csgray::detail {
@@ -37,11 +38,13 @@ FaceBox faceBox(const Point& p, const Point& q, const Point& r, std::uint32_t fa
 void forEachMeetingPair(std::vector<FaceBox>& boxes,
                         const std::function<void(std::uint32_t, std::uint32_t)>& report);
 
-// Calls report(f, g) once for each pair of a box of a (mesh 0) and a box
-// of b (mesh 1) that meet, f from a and g from b, on the calling thread,
-// in an order fixed by the boxes given (the same vectors give the same
-// order). The boxes are reordered.
-void forEachMeetingPair(std::vector<FaceBox>& a, std::vector<FaceBox>& b,
-                        const std::function<void(std::uint32_t, std::uint32_t)>& report);
+// A face of mesh 0 and a face of mesh 1.
+using FacePair = std::pair<std::uint32_t, std::uint32_t>;
+
+// The pairs (f, g) of a box of a (mesh 0, face f) and a box of b (mesh 1,
+// face g) that meet, each once, found on several threads but in an order
+// fixed by the boxes given (the same vectors give the same order, however
+// many threads). The boxes are reordered.
+std::vector<FacePair> meetingPairs(std::vector<FaceBox>& a, std::vector<FaceBox>& b);
 
 }  // namespace csgray::detail

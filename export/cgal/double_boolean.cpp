@@ -4,12 +4,14 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -60,12 +62,32 @@ struct Crossing {
   bool fromInside;
 };
 
+// An edge k of a face of operand `side` that passes through the face of
+// the other operand it is paired with (pairs[pair] of findCrossings): its
+// start on side fromSide of that face's plane, the crossing at `ratio` of
+// the way along it, through edge onEdge of the other face (unperturbed)
+// or, at -1, through its inside.
+struct EdgeThrough {
+  std::uint32_t pair;
+  std::uint8_t side, k;
+  std::int8_t onEdge;
+  CGAL::Orientation fromSide;
+  double ratio;
+};
+
 // The boolean's working state: the points, the crossings found, and what
 // each face of each operand is to be cut along.
 class DoubleBoolean {
  public:
   DoubleBoolean(const ExactMesh& a, const ExactMesh& b) : meshes_{&a, &b} {
-    for (int s = 0; s < 2; ++s) load(s);
+    // Each operand's points have a range of ids of their own (the first
+    // operand's, then the second's), so the two load at once.
+    const auto slots = [&](int s) {
+      return meshes_[s]->number_of_vertices() + meshes_[s]->number_of_removed_vertices();
+    };
+    ops_[1].base = Id(slots(0));
+    points_.resize(slots(0) + slots(1));
+    tbb::parallel_invoke([&] { load(0); }, [&] { load(1); });
   }
 
   std::optional<ExactMesh> run(Boolean::Op op) {
@@ -89,8 +111,6 @@ class DoubleBoolean {
   void load(int s) {
     const ExactMesh& mesh = *meshes_[s];
     Operand& op = ops_[s];
-    op.base = Id(points_.size());
-    points_.resize(points_.size() + mesh.number_of_vertices() + mesh.number_of_removed_vertices());
     for (auto v : mesh.vertices()) {
       const auto& p = mesh.point(v);
       std::array<double, 3> xyz;
@@ -122,8 +142,11 @@ class DoubleBoolean {
 
   const Point& at(Id id) const { return points_[id]; }
 
-  // The pairs of faces whose boxes meet, each tested, in an order that
-  // depends only on the operands (the new points are numbered in it).
+  // The pairs of faces whose boxes meet, each tested. The tests (exact
+  // predicates that only read the operands) run on all threads, in blocks
+  // of pairs; the crossings they find are then numbered on this thread,
+  // in the pairs' order, which depends only on the operands: so the new
+  // points' ids do not depend on the threads.
   void findCrossings() {
     std::vector<FaceBox> boxes[2];
     for (int s = 0; s < 2; ++s) {
@@ -133,8 +156,21 @@ class DoubleBoolean {
         boxes[s].push_back(faceBox(at(t[0]), at(t[1]), at(t[2]), f, std::uint32_t(s)));
       }
     }
-    forEachMeetingPair(boxes[0], boxes[1],
-                       [&](std::uint32_t fa, std::uint32_t fb) { facePair(fa, fb); });
+    const std::vector<FacePair> pairs = meetingPairs(boxes[0], boxes[1]);
+    // Blocks of a fixed size, so that the blocks do not depend on the threads either.
+    constexpr std::size_t kBlock = 4096;
+    std::vector<std::vector<EdgeThrough>> found((pairs.size() + kBlock - 1) / kBlock);
+    tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+      const std::size_t end = std::min(pairs.size(), (block + 1) * kBlock);
+      for (std::size_t i = block * kBlock; i < end; ++i) edgesThrough(pairs[i], i, found[block]);
+    });
+    for (const std::vector<EdgeThrough>& block : found)
+      for (std::size_t i = 0; i < block.size();) {
+        std::size_t end = i + 1;
+        while (end < block.size() && block[end].pair == block[i].pair) ++end;
+        cutAlong(pairs[block[i].pair], std::span(block).subspan(i, end - i));
+        i = end;
+      }
   }
 
   // The predicates below are exact, and where one is zero the operands
@@ -204,23 +240,37 @@ class DoubleBoolean {
 
   // Faces fa of the first operand and fb of the second: in general
   // position they meet along one segment, between two points where an
-  // edge of one crosses the other.
-  void facePair(std::uint32_t fa, std::uint32_t fb) {
+  // edge of one crosses the other. The edges of either face that pass
+  // through the other are appended to `out`, in the order cutAlong
+  // numbers them, with the pair's index.
+  void edgesThrough(const FacePair& pair, std::size_t index, std::vector<EdgeThrough>& out) const {
+    const auto [fa, fb] = pair;
     const Triangle& ta = ops_[0].corners[fa];
     const Triangle& tb = ops_[1].corners[fb];
     const auto oa = sides(ta, 1, tb);
     if (!across(oa)) return;
     const auto ob = sides(tb, 0, ta);
     if (!across(ob)) return;
+    for (int s = 0; s < 2; ++s) {
+      const auto& o = s == 0 ? oa : ob;
+      for (int k = 0; k < 3; ++k)
+        if (o[k] != o[(k + 1) % 3])
+          if (auto through = edgeThrough(s, s == 0 ? fa : fb, k, s == 0 ? fb : fa)) {
+            through->pair = std::uint32_t(index);
+            through->fromSide = o[k];
+            out.push_back(*through);
+          }
+    }
+  }
+
+  // The pair's segment, between the points where its edges cross the
+  // other face (edgesThrough), numbered as they come.
+  void cutAlong(const FacePair& pair, std::span<const EdgeThrough> through) {
+    const auto [fa, fb] = pair;
     Id found[6];
     int n = 0;
-    for (int k = 0; k < 3; ++k)
-      if (oa[k] != oa[(k + 1) % 3])
-        if (auto id = crossing(0, fa, k, fb, oa[k])) found[n++] = *id;
-    for (int k = 0; k < 3; ++k)
-      if (ob[k] != ob[(k + 1) % 3])
-        if (auto id = crossing(1, fb, k, fa, ob[k])) found[n++] = *id;
-    if (n == 0) return;
+    for (const EdgeThrough& e : through)
+      found[n++] = crossing(e, e.side == 0 ? fa : fb, e.side == 0 ? fb : fa);
     // Where an edge of each crosses the other's (in the input, before the
     // perturbation) the segment between their crossings is infinitesimal:
     // both are one point (crossing), and the segment is left out.
@@ -231,10 +281,9 @@ class DoubleBoolean {
     segments_.insert(pairKey(found[0], found[1]));
   }
 
-  // The point where edge k of face f of operand s crosses face g of the
-  // other, if it does; its start is on side `fromSide` of g's plane.
-  std::optional<Id> crossing(int s, std::uint32_t f, int k, std::uint32_t g,
-                             CGAL::Orientation fromSide) {
+  // Whether edge k of face f of operand s passes through face g of the
+  // other, and where: the fraction of the way along it.
+  std::optional<EdgeThrough> edgeThrough(int s, std::uint32_t f, int k, std::uint32_t g) const {
     const Triangle& t = ops_[s].corners[f];
     const Triangle& other = ops_[1 - s].corners[g];
     const Id p = t[k], q = t[(k + 1) % 3];
@@ -253,6 +302,28 @@ class DoubleBoolean {
       }
     }
     if (turn[0] != turn[1] || turn[1] != turn[2]) return std::nullopt;  // passes outside
+    // The point on pq at the plane: signed distances dp, dq of its ends
+    // (up to the normal's length), pq cut at dp / (dp − dq).
+    const Point &a = at(other[0]), &b = at(other[1]), &c = at(other[2]);
+    const auto normal = CGAL::cross_product(b - a, c - a);
+    const double dp = normal * (at(p) - a), dq = normal * (at(q) - a);
+    // (dp = dq = 0: pq in g's plane, which only the perturbation parts.)
+    EdgeThrough through;
+    through.side = std::uint8_t(s);
+    through.k = std::uint8_t(k);
+    through.onEdge = std::int8_t(onEdge);
+    through.ratio = dp / (dp - dq);
+    return through;
+  }
+
+  // The id of the point where an edge crosses face g of the other operand
+  // (edgeThrough), f the edge's face: new, or the one the same crossing
+  // got from a face before.
+  Id crossing(const EdgeThrough& e, std::uint32_t f, std::uint32_t g) {
+    const int s = e.side, k = e.k, onEdge = e.onEdge;
+    const Triangle& t = ops_[s].corners[f];
+    const Triangle& other = ops_[1 - s].corners[g];
+    const Id p = t[k], q = t[(k + 1) % 3];
     const std::uint32_t edge = ops_[s].edges[f][k];
     // A crossing of pq and an edge of g, shared by the faces on both sides
     // of each: one point, keyed by the two edges (the first operand's
@@ -266,15 +337,8 @@ class DoubleBoolean {
     auto& ids = onEdge == -1 ? crossingIds_ : edgeCrossingIds_;
     auto [it, added] = ids.try_emplace(key, Id(points_.size()));
     if (!added) return it->second;
-    // The point on pq at the plane: signed distances dp, dq of its ends
-    // (up to the normal's length), pq cut at dp / (dp − dq).
-    const Point &a = at(other[0]), &b = at(other[1]), &c = at(other[2]);
-    const auto normal = CGAL::cross_product(b - a, c - a);
-    const double dp = normal * (at(p) - a), dq = normal * (at(q) - a);
-    // (dp = dq = 0: pq in g's plane, which only the perturbation parts.)
-    const double ratio = dp / (dp - dq);
-    if (!(ratio >= 0.0 && ratio <= 1.0)) throw Declined{};
-    const double u = ratio;
+    const double u = e.ratio;
+    if (!(u >= 0.0 && u <= 1.0)) throw Declined{};
     points_.push_back(at(p) + u * (at(q) - at(p)));
     const Id id = it->second;
     // Along the edge from its lower id to its higher one.
@@ -289,7 +353,7 @@ class DoubleBoolean {
           std::clamp(((points_.back() - at(a)) * along) / along.squared_length(), 0.0, 1.0);
       edgePoints_[1 - s][otherEdge].push_back({w, id});
     }
-    crossings_[s].push_back({id, p, edge, fromSide == CGAL::NEGATIVE});
+    crossings_[s].push_back({id, p, edge, e.fromSide == CGAL::NEGATIVE});
     return id;
   }
 
@@ -613,6 +677,9 @@ class DoubleBoolean {
     std::vector<bool> used(points_.size(), false);
     for (const Triangle& t : kept)
       for (Id id : t) used[id] = true;
+    // A closed mesh of f triangles has 3f/2 edges; the arrays are sized
+    // once rather than grown.
+    out.reserve(Id(std::count(used.begin(), used.end(), true)), kept.size() * 3 / 2, kept.size());
     for (Id id = 0; id < points_.size(); ++id)
       if (used[id]) {
         const Point& p = points_[id];

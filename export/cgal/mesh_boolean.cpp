@@ -3,12 +3,15 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <random>
@@ -357,8 +360,7 @@ class Evaluator {
     std::span<const SolidPtr> operands = node->children();
     switch (node->op()) {
       case Boolean::Op::Union: {
-        std::vector<Piece> pieces;
-        for (const SolidPtr& s : operands) pieces.push_back(evaluate(*s, region));
+        std::vector<Piece> pieces = evaluateAll(operands, region);
         order_.arrange(pieces);
         return unite(std::move(pieces));
       }
@@ -380,8 +382,7 @@ class Evaluator {
         if (minuend.empty()) return minuend;
         // Whatever is cut away is cut from the minuend's mesh, which may
         // reach past the region: the cutters are meshed over all of it.
-        std::vector<Piece> cutters;
-        for (const SolidPtr& s : operands.subspan(1)) cutters.push_back(evaluate(*s, minuend.box));
+        std::vector<Piece> cutters = evaluateAll(operands.subspan(1), minuend.box);
         order_.arrange(cutters);
         Piece cut = unite(std::move(cutters));
         if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
@@ -413,15 +414,74 @@ class Evaluator {
 
   Piece leaf(const Primitive& primitive, const Bounds& region) {
     ++stats_.primitives;
-    TriangleMesh triangles = frame_.identity
-                                 ? primitive.tessellate(tolerance_, region)
-                                 : std::dynamic_pointer_cast<const Primitive>(
-                                       primitive.withFrame(frame_.evalFrame(primitive.frame())))
-                                       ->tessellate(tolerance_, region);
-    // Each primitive keeps within its limit; the whole part within
-    // kMaxExportTriangles, checked as each is added (before its exact
-    // copy, several times the size, is made).
-    triangles_ += triangles.size();
+    const TriangleMesh triangles = tessellation(primitive, region);
+    countTriangles(triangles.size());
+    return pieceOf(triangles, tagOf(primitive.material()), primitive.kind());
+  }
+
+  // The operands' pieces, in their order, as evaluate makes them one by
+  // one. The primitives among them are tessellated on all threads first
+  // (their triangles are plain doubles, each apart from the others); the
+  // rest is done here in the operands' order: what the evaluation counts
+  // and names (the primitives, the triangles against the limit, the
+  // materials' tags, the first error), so that the result does not depend
+  // on the threads, and the exact meshes. (Made on all threads too, those
+  // meshes' points lay scattered in memory: the Sierpinski tetrahedron's
+  // weld of 4096 pieces then took a fifth more time.)
+  std::vector<Piece> evaluateAll(std::span<const SolidPtr> operands, const Bounds& region) {
+    const std::size_t n = operands.size();
+    std::vector<const Primitive*> primitives(n, nullptr);
+    std::vector<Bounds> regions(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (auto* primitive = dynamic_cast<const Primitive*>(operands[i].get())) {
+        primitives[i] = primitive;
+        regions[i] = region.intersected(frame_.evalBounds(primitive->bounds()));
+      }
+    auto tessellated = [&](std::size_t i) { return primitives[i] && !regions[i].empty(); };
+    std::vector<TriangleMesh> triangles(n);
+    std::vector<std::exception_ptr> failed(n);
+    auto tessellate = [&](std::size_t i) {
+      if (!tessellated(i)) return;
+      try {
+        triangles[i] = tessellation(*primitives[i], regions[i]);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    };
+    // A few primitives are tessellated here: starting TBB's scheduler
+    // (about half a millisecond, as in roundedCopy) would cost more.
+    constexpr std::size_t kFewOperands = 8;
+    if (n < kFewOperands)
+      for (std::size_t i = 0; i < n; ++i) tessellate(i);
+    else
+      tbb::parallel_for(std::size_t(0), n, tessellate);
+    std::vector<Piece> pieces(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!primitives[i]) pieces[i] = evaluate(*operands[i], region);
+      if (!tessellated(i)) continue;
+      if (failed[i]) std::rethrow_exception(failed[i]);
+      ++stats_.primitives;
+      countTriangles(triangles[i].size());
+      pieces[i] = pieceOf(triangles[i], tagOf(primitives[i]->material()), primitives[i]->kind());
+      pieces[i].origin = primitives[i];
+      triangles[i] = {};
+    }
+    return pieces;
+  }
+
+  // The primitive's triangles within the region, in the evaluation's frame.
+  TriangleMesh tessellation(const Primitive& primitive, const Bounds& region) const {
+    if (frame_.identity) return primitive.tessellate(tolerance_, region);
+    return std::dynamic_pointer_cast<const Primitive>(
+               primitive.withFrame(frame_.evalFrame(primitive.frame())))
+        ->tessellate(tolerance_, region);
+  }
+
+  // Each primitive keeps within its limit; the whole part within
+  // kMaxExportTriangles, checked as each primitive's count is added
+  // (before its exact copy, several times the size, is made).
+  void countTriangles(std::size_t count) {
+    triangles_ += count;
     if (triangles_ > kMaxExportTriangles) {
       char text[200];
       std::snprintf(text, sizeof text,
@@ -430,19 +490,17 @@ class Evaluator {
                     kMaxExportTriangles, tolerance_);
       throw std::invalid_argument(text);
     }
-    return pieceOf(triangles, primitive.material(), primitive.kind());
   }
 
-  // The exact mesh of triangles, its faces tagged with one material.
-  Piece pieceOf(const TriangleMesh& triangles, const MaterialPtr& material,
-                const std::string& kind) {
+  // The exact mesh of triangles, its faces tagged with one material's
+  // tag. (Safe on several threads at once: it reads only its arguments.)
+  static Piece pieceOf(const TriangleMesh& triangles, std::uint32_t tag, const std::string& kind) {
     Piece piece;
     if (triangles.empty()) return piece;
     Mesh& mesh = piece.mesh;
     mesh.reserve(triangles.points.size(), triangles.size() * 3 / 2, triangles.size());
     for (const dvec3& p : triangles.points) mesh.add_vertex(typename K::Point_3(p.x, p.y, p.z));
     auto tags = tagsOf(mesh);
-    const std::uint32_t tag = tagOf(material);
     for (const TriangleMesh::Triangle& t : triangles.triangles) {
       Face f = mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2]));
       if (f == Mesh::null_face())
@@ -478,7 +536,7 @@ class Evaluator {
     stats_.primitives += operands.size();
     const TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
     triangles_ += triangles.size();
-    return pieceOf(triangles, *material, "intersection");
+    return pieceOf(triangles, tagOf(*material), "intersection");
   }
 
   // Adds b's shells to a: their boxes are apart, so no face of one meets
@@ -947,21 +1005,35 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
   // Points that rounding to the file's precision put in one place are
   // ordered by their exact places (to_double of a lazy exact number is
   // not a canonical rounding: it depends on what was computed before).
+  // (The points are rounded, and both sorts made, on all threads: each
+  // order is total, the last tie broken by the index, so it is the same
+  // whatever the threads.)
   std::vector<dvec3> points(exact.number_of_vertices() + exact.number_of_removed_vertices());
-  std::vector<typename Mesh::Vertex_index> byPlace;
-  byPlace.reserve(exact.number_of_vertices());
-  for (auto v : exact.vertices()) {
+  std::vector<typename Mesh::Vertex_index> byPlace(exact.vertices().begin(),
+                                                   exact.vertices().end());
+  // Small meshes stay on this thread: starting TBB's scheduler costs
+  // about half a millisecond (two frustums glued: 5 % of their export).
+  const bool threaded = byPlace.size() >= 10000;
+  auto roundPoint = [&](std::size_t i) {
+    const auto v = byPlace[i];
     const auto& p = exact.point(v);
     dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!frame.identity) q = frame.worldFromEval * q;
     points[v] = dvec3(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
-    byPlace.push_back(v);
-  }
-  std::stable_sort(byPlace.begin(), byPlace.end(), [&](auto a, auto b) {
+  };
+  auto placeOrder = [&](auto a, auto b) {
     const dvec3 &p = points[a], &q = points[b];
     if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-    return CGAL::compare_xyz(exact.point(a), exact.point(b)) == CGAL::SMALLER;
-  });
+    const CGAL::Comparison_result exactly = CGAL::compare_xyz(exact.point(a), exact.point(b));
+    return exactly != CGAL::EQUAL ? exactly == CGAL::SMALLER : a < b;
+  };
+  if (threaded) {
+    tbb::parallel_for(std::size_t(0), byPlace.size(), roundPoint);
+    tbb::parallel_sort(byPlace.begin(), byPlace.end(), placeOrder);
+  } else {
+    for (std::size_t i = 0; i < byPlace.size(); ++i) roundPoint(i);
+    std::sort(byPlace.begin(), byPlace.end(), placeOrder);
+  }
   // The vertices in that order: vertex[v] is where exact's v goes.
   std::vector<RoundedMesh::Vertex_index> vertex(points.size());
   for (std::size_t i = 0; i < byPlace.size(); ++i)
@@ -1010,8 +1082,13 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     return rounded;
   };
   std::vector<Face> sorted = faces;
-  std::sort(sorted.begin(), sorted.end(),
-            [](const Face& a, const Face& b) { return a.corners < b.corners; });
+  auto cornerOrder = [](const Face& a, const Face& b) {
+    return a.corners != b.corners ? a.corners < b.corners : a.from < b.from;
+  };
+  if (threaded)
+    tbb::parallel_sort(sorted.begin(), sorted.end(), cornerOrder);
+  else
+    std::sort(sorted.begin(), sorted.end(), cornerOrder);
   if (auto rounded = build(sorted)) return std::move(*rounded);
   if (auto rounded = build(faces)) return std::move(*rounded);
   throw std::runtime_error(

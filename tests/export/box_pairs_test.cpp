@@ -5,6 +5,7 @@
 #include "export/cgal/box_pairs.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <mutex>
 #include <random>
@@ -68,18 +69,17 @@ TEST(BoxPairs, BetweenTwoSetsEveryPairThatMeetsOnceInOrder) {
     for (const FaceBox& y : b)
       if (meet(x, y)) expected.emplace(x.face, y.face);
   std::vector<FaceBox> workA = a, workB = b;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> order;
-  forEachMeetingPair(workA, workB,
-                     [&](std::uint32_t f, std::uint32_t g) { order.emplace_back(f, g); });
+  const std::vector<FacePair> order = meetingPairs(workA, workB);
   EXPECT_GT(expected.size(), a.size());
   EXPECT_EQ(Pairs(order.begin(), order.end()), expected);
-  // The same boxes again: the same pairs in the same order (the double
-  // boolean numbers its new points in it).
-  std::vector<FaceBox> againA = a, againB = b;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> again;
-  forEachMeetingPair(againA, againB,
-                     [&](std::uint32_t f, std::uint32_t g) { again.emplace_back(f, g); });
-  EXPECT_EQ(again, order);
+  // The same boxes again, on one thread and on four: the same pairs in the
+  // same order (the double boolean numbers its new points in it).
+  for (int threads : {1, 4}) {
+    std::vector<FaceBox> againA = a, againB = b;
+    std::vector<FacePair> again;
+    tbb::task_arena(threads).execute([&] { again = meetingPairs(againA, againB); });
+    EXPECT_EQ(again, order) << threads << " threads";
+  }
 }
 
 TEST(BoxPairs, BoxesThatShareOneLowerSideAreNotSplitForever) {

@@ -220,10 +220,12 @@ TEST(DoubleBoolean, SmallPlateExportsInDoublesWithCgalsVolume) {
 }
 
 TEST(DoubleBoolean, TheSameMeshOnOneThreadAndOnFour) {
-  // Each operand is cut and classified on a thread of its own, and the
-  // check's pairs of boxes are shared out: the part must not depend on
-  // how many threads did it. (plate(8): two booleans in doubles with
-  // hundreds of cut faces, and enough faces that the check splits.)
+  // The union's balls are tessellated on all threads, the pairs of faces
+  // are found and tested on all threads, each operand is cut and
+  // classified on a thread of its own, and the check's pairs of boxes are
+  // shared out: the part must not depend on how many threads did it.
+  // (plate(8): two booleans in doubles with hundreds of cut faces, and
+  // enough faces that the check splits.)
   const SolidPtr solid = plate(8);
   auto meshOn = [&](int threads) {
     MeshBooleanStats stats;

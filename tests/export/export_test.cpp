@@ -5,8 +5,11 @@
 #include <Model/COM/NMR_DLLInterfaces.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
@@ -267,6 +270,86 @@ TEST(Export, ThreeMfKeepsEachPrimitivesColour) {
   }
   EXPECT_GT(red, 0);
   EXPECT_GT(blue, 0);
+}
+
+// A union's primitives are tessellated on all threads: the materials are
+// still numbered in the order the script gives them, and every triangle
+// keeps its ball's, whatever the threads. Balls that overlap their
+// neighbours, so that the union also takes booleans.
+TEST(Export, MaterialsTaggedInTheScriptsOrderOnAnyThreads) {
+  constexpr int kBalls = 40;
+  const SolidPtr part = partOfScript("local balls = {}\nfor i = 0, " + std::to_string(kBalls - 1) +
+                                     R"( do
+      balls[#balls + 1] = sphere{r=0.6}:translate(i, 0, 0):material{color={i / 40, 0, 1}}
+    end
+    return union(balls))");
+  auto meshOn = [&](int threads) {
+    PartMesh mesh;
+    tbb::task_arena(threads).execute([&] { mesh = meshOfSolid(*part, 0.01); });
+    return mesh;
+  };
+  const PartMesh one = meshOn(1), four = meshOn(4);
+  ASSERT_EQ(one.materials.size(), std::size_t(kBalls));
+  for (int k = 0; k < kBalls; ++k) EXPECT_EQ(one.materials[k]->color.r, k / 40.0) << k;
+  EXPECT_EQ(four.materials, one.materials);
+  EXPECT_EQ(one.mesh.points, four.mesh.points);
+  EXPECT_EQ(one.mesh.triangles, four.mesh.triangles);
+  EXPECT_EQ(one.material, four.material);
+  // Each triangle has the material of the ball its centre is nearest to.
+  for (std::size_t i = 0; i < one.mesh.size(); ++i) {
+    dvec3 centre(0.0);
+    for (auto v : one.mesh.triangles[i]) centre += one.mesh.points[v] / 3.0;
+    const long ball = std::clamp(std::lround(centre.x), 0L, long(kBalls - 1));
+    EXPECT_EQ(one.material[i], std::uint32_t(ball)) << "triangle " << i;
+  }
+}
+
+// ---- Files -------------------------------------------------------------------------
+
+// Binary STL is written without a library: the 80-byte header, the count,
+// then per triangle its unit normal and corners as little-endian floats
+// and two zero bytes (3D Systems' StereoLithography Interface
+// Specification, 1988), read here byte by byte.
+TEST(Export, BinaryStlHoldsEachTriangleAsLittleEndianFloats) {
+  TempFolder folder;
+  PartMesh part;
+  part.mesh.points = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 0.5}};
+  part.mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const std::string path = (folder.path / "part.stl").string();
+  writeMeshFile(path, part, false);
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_EQ(bytes.size(), 84u + 50u * 4u);
+  auto word = [&](std::size_t at) {
+    std::uint32_t x = 0;
+    for (int k = 3; k >= 0; --k) x = x << 8 | std::uint8_t(bytes[at + std::size_t(k)]);
+    return x;
+  };
+  auto number = [&](std::size_t at) { return std::bit_cast<float>(word(at)); };
+  EXPECT_EQ(word(80), 4u);
+  // The first face lies in z = 0, facing down; the last faces away from
+  // the origin, along (3, 2, 12) (the plane x/2 + y/3 + 2z = 1).
+  const dvec3 slanted = glm::normalize(dvec3(3, 2, 12));
+  const float normals[4][3] = {
+      {0, 0, -1}, {0, -1, 0}, {-1, 0, 0}, {float(slanted.x), float(slanted.y), float(slanted.z)}};
+  for (std::size_t f = 0; f < 4; ++f) {
+    const std::size_t at = 84 + 50 * f;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(number(at + 4 * std::size_t(k)), normals[f][k], 1e-7) << f << " " << k;
+      for (int corner = 0; corner < 3; ++corner) {
+        const dvec3& p = part.mesh.points[part.mesh.triangles[f][std::size_t(corner)]];
+        EXPECT_EQ(number(at + 12 + 12 * std::size_t(corner) + 4 * std::size_t(k)), float(p[k]));
+      }
+    }
+    EXPECT_EQ(bytes[at + 48], 0);
+    EXPECT_EQ(bytes[at + 49], 0);
+  }
+  // And the reader takes the same triangles back.
+  const TriangleMesh back = readMeshFile(path);
+  ASSERT_EQ(back.size(), part.mesh.size());
+  for (std::size_t f = 0; f < back.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(back.points[back.triangles[f][k]], part.mesh.points[part.mesh.triangles[f][k]]);
 }
 
 // A part turned or mirrored as a whole has the turn rounded into every
