@@ -10,6 +10,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cstdint>
+#include <vector>
+
+#include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
 
@@ -58,6 +61,35 @@ auto tagsOf(const Mesh& mesh) {
   return const_cast<Mesh&>(mesh)
       .template property_map<typename Mesh::Face_index, std::uint32_t>(kMaterialTag)
       .first;
+}
+
+// A vertex's point, rounded to doubles.
+template <class Mesh>
+dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
+  const auto& p = mesh.point(v);
+  return dvec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// The mesh as plain triangles: its points rounded to doubles, in the
+// order of its vertices, and its faces, each from the target of its
+// halfedge on.
+template <class Mesh>
+TriangleMesh trianglesOf(const Mesh& mesh) {
+  TriangleMesh out;
+  std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  out.points.reserve(mesh.number_of_vertices());
+  for (auto v : mesh.vertices()) {
+    index[v] = std::uint32_t(out.points.size());
+    out.points.push_back(pointOf(mesh, v));
+  }
+  out.triangles.reserve(mesh.number_of_faces());
+  for (auto f : mesh.faces()) {
+    TriangleMesh::Triangle t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++ % 3] = index[v];
+    out.triangles.push_back(t);
+  }
+  return out;
 }
 
 }  // namespace csgray::detail

@@ -130,13 +130,6 @@ struct EvaluationFrame {
 // A coordinate as the file stores it (doubles when `stored` is null).
 double storedAs(StoredCoordinate stored, double d) { return stored ? stored(d) : d; }
 
-// A vertex's point, rounded to doubles.
-template <class Mesh>
-dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
-  const auto& p = mesh.point(v);
-  return dvec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
 // How a vertex moves so that each of its faces moves by `delta` along its
 // normal (outwards for delta > 0): the displacement v solves n·v = delta
 // for the unit normals n of its faces in the least-squares sense,
@@ -535,7 +528,7 @@ class Evaluator {
     if (material == nullptr || !region.finite()) return std::nullopt;
     stats_.primitives += operands.size();
     const TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
-    triangles_ += triangles.size();
+    countTriangles(triangles.size());
     return pieceOf(triangles, tagOf(*material), "intersection");
   }
 
@@ -839,20 +832,11 @@ class Evaluator {
   // The rounding moves a point by half a unit in the last place; the
   // booleans in doubles round each new point so too.
   static void roundIfValid(Mesh& mesh) {
-    TriangleMesh rounded;
-    std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
-    for (auto v : mesh.vertices()) {
-      index[v] = std::uint32_t(rounded.points.size());
-      rounded.points.push_back(pointOf(mesh, v));
-    }
-    for (auto f : mesh.faces()) {
-      auto h = mesh.halfedge(f);
-      rounded.triangles.push_back(
-          {index[mesh.source(h)], index[mesh.target(h)], index[mesh.target(mesh.next(h))]});
-    }
+    const TriangleMesh rounded = trianglesOf(mesh);
     if (!meshDefect(rounded).valid()) return;
+    std::size_t i = 0;
     for (auto v : mesh.vertices()) {
-      const dvec3& p = rounded.points[index[v]];
+      const dvec3& p = rounded.points[i++];
       mesh.point(v) = typename K::Point_3(p.x, p.y, p.z);
     }
   }
@@ -1100,25 +1084,10 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
 PartMesh partOf(const RoundedMesh& rounded, std::vector<MaterialPtr> materials) {
   PartMesh out;
   out.materials = std::move(materials);
-  std::vector<std::uint32_t> index(rounded.number_of_vertices() +
-                                   rounded.number_of_removed_vertices());
-  out.mesh.points.reserve(rounded.number_of_vertices());
-  for (RoundedMesh::Vertex_index v : rounded.vertices()) {
-    index[v] = std::uint32_t(out.mesh.points.size());
-    const auto& p = rounded.point(v);
-    out.mesh.points.emplace_back(p.x(), p.y(), p.z());
-  }
+  out.mesh = trianglesOf(rounded);
   auto tags = tagsOf(rounded);
-  out.mesh.triangles.reserve(rounded.number_of_faces());
   out.material.reserve(rounded.number_of_faces());
-  for (RoundedMesh::Face_index f : rounded.faces()) {
-    TriangleMesh::Triangle t{};
-    int k = 0;
-    for (RoundedMesh::Vertex_index v : CGAL::vertices_around_face(rounded.halfedge(f), rounded))
-      t[k++ % 3] = index[v];
-    out.mesh.triangles.push_back(t);
-    out.material.push_back(tags[f]);
-  }
+  for (RoundedMesh::Face_index f : rounded.faces()) out.material.push_back(tags[f]);
   return out;
 }
 

@@ -52,23 +52,6 @@ ExactMesh meshOf(const std::string& source) {
   return exactOf(primitive->tessellate(kTolerance, solid->bounds()));
 }
 
-TriangleMesh trianglesOf(const ExactMesh& mesh) {
-  TriangleMesh out;
-  std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
-  for (auto v : mesh.vertices()) {
-    index[v] = std::uint32_t(out.points.size());
-    const auto& p = mesh.point(v);
-    out.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-  for (auto f : mesh.faces()) {
-    TriangleMesh::Triangle t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++ % 3] = index[v];
-    out.triangles.push_back(t);
-  }
-  return out;
-}
-
 // a op b in doubles, expected to be made and valid, with CGAL's volume to
 // 1e-9 relative; returns its volume.
 double madeInDoubles(const ExactMesh& a, const ExactMesh& b, Op op) {
