@@ -1,6 +1,7 @@
 // Mesh files out: binary STL directly (binary_stl_writer.h), ASCII STL,
-// OBJ, OFF and PLY through OpenMesh, and 3MF through lib3mf with each triangle's colour from its
-// material. Every write is atomic (io/atomic_file.h).
+// OBJ, OFF and PLY through OpenMesh, and 3MF through lib3mf with each
+// triangle's colour from its material. Every write is atomic
+// (io/atomic_file.h).
 #pragma once
 
 #include <string>
