@@ -34,16 +34,30 @@ struct Declined {
   DoubleDecline why = DoubleDecline::NotInGeneralPosition;
 };
 
-std::uint64_t pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+// An edge: its ends' ids, the lower first. (The two operands' ids differ,
+// so it also says whose edge it is.)
+using EdgeKey = std::uint64_t;
+EdgeKey pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
-// One operand: its faces by Surface_mesh index (removed ones left empty),
-// their corners as global ids, the mesh edge under each side.
+// A key of two words, for the maps of crossings.
+using TwoKeys = std::pair<std::uint64_t, std::uint64_t>;
+struct TwoKeysHash {
+  std::size_t operator()(const TwoKeys& k) const {
+    return std::hash<std::uint64_t>{}(k.first * 0x9E3779B97F4A7C15u ^ k.second);
+  }
+};
+
+// One operand: its faces, their corners as global ids.
 struct Operand {
   Id base = 0;  // the global id of its vertex 0
+  Id size = 0;  // its number of points
   std::vector<Triangle> corners;
-  std::vector<std::array<std::uint32_t, 3>> edges;  // edge k runs corners k → k+1
   std::vector<std::uint32_t> tags;
-  std::vector<std::uint32_t> faces;  // the live ones
+  std::vector<std::uint32_t> faces;  // 0, 1, ...: each face's index
+
+  EdgeKey edge(std::uint32_t f, int k) const {
+    return pairKey(corners[f][k], corners[f][(k + 1) % 3]);
+  }
 };
 
 // A piece of a face after the cut: a triangle of global ids.
@@ -58,7 +72,7 @@ struct Piece {
 struct Crossing {
   Id point;
   Id from;
-  std::uint32_t edge;
+  EdgeKey edge;
   bool fromInside;
 };
 
@@ -79,18 +93,17 @@ struct EdgeThrough {
 // each face of each operand is to be cut along.
 class DoubleBoolean {
  public:
-  DoubleBoolean(const ExactMesh& a, const ExactMesh& b) : meshes_{&a, &b} {
+  DoubleBoolean(const DoubleMesh& a, const DoubleMesh& b) : meshes_{&a, &b} {
     // Each operand's points have a range of ids of their own (the first
     // operand's, then the second's), so the two load at once.
-    const auto slots = [&](int s) {
-      return meshes_[s]->number_of_vertices() + meshes_[s]->number_of_removed_vertices();
-    };
-    ops_[1].base = Id(slots(0));
-    points_.resize(slots(0) + slots(1));
+    ops_[0].size = Id(a.mesh.points.size());
+    ops_[1].size = Id(b.mesh.points.size());
+    ops_[1].base = ops_[0].size;
+    points_.resize(a.mesh.points.size() + b.mesh.points.size());
     tbb::parallel_invoke([&] { load(0); }, [&] { load(1); });
   }
 
-  std::optional<ExactMesh> run(Boolean::Op op) {
+  std::optional<DoubleMesh> run(Boolean::Op op) {
     findCrossings();
     // Once the crossings are found, each operand is cut and classified
     // from its own state (its edges' points, faces, pieces; the other's
@@ -107,37 +120,29 @@ class DoubleBoolean {
   }
 
  private:
-  // The operand's points (exact doubles, or Declined) and faces.
+  // The operand's points and faces. Each face (a, b, c) is read from c
+  // on, as (c, a, b): where CGAL's mesh was made from it (add_face(a, b,
+  // c)), that is where the face's halfedge starts, which is how these
+  // booleans read CGAL's meshes before they took doubles; the points it
+  // makes are numbered in that order, and so stay as they were.
   void load(int s) {
-    const ExactMesh& mesh = *meshes_[s];
+    const TriangleMesh& mesh = meshes_[s]->mesh;
     Operand& op = ops_[s];
-    for (auto v : mesh.vertices()) {
-      const auto& p = mesh.point(v);
-      std::array<double, 3> xyz;
-      for (int k = 0; k < 3; ++k) {
-        const auto range = CGAL::to_interval(p[k]);
-        if (range.first != range.second) throw Declined{DoubleDecline::NotInDoubles};
-        xyz[k] = range.first;
-      }
-      points_[op.base + v] = Point(xyz[0], xyz[1], xyz[2]);
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+      const dvec3& p = mesh.points[v];
+      points_[op.base + v] = Point(p.x, p.y, p.z);
     }
-    const std::size_t slots = mesh.number_of_faces() + mesh.number_of_removed_faces();
-    op.corners.resize(slots);
-    op.edges.resize(slots);
-    op.tags.resize(slots);
-    auto tags = tagsOf(mesh);
-    for (auto f : mesh.faces()) {
-      auto h = mesh.halfedge(f);
-      for (int k = 0; k < 3; ++k, h = mesh.next(h)) {
-        op.corners[f][k] = op.base + Id(mesh.source(h));
-        op.edges[f][k] = std::uint32_t(mesh.edge(h));
-      }
-      if (h != mesh.halfedge(f)) throw Declined{DoubleDecline::NotInDoubles};  // not a triangle
-      op.tags[f] = tags ? tags[f] : 0;
-      op.faces.push_back(std::uint32_t(f));
+    const std::size_t count = mesh.triangles.size();
+    op.corners.resize(count);
+    op.faces.resize(count);
+    for (std::size_t f = 0; f < count; ++f) {
+      const auto& t = mesh.triangles[f];
+      op.corners[f] = {op.base + t[2], op.base + t[0], op.base + t[1]};
+      op.faces[f] = std::uint32_t(f);
     }
-    faceSegments_[s].resize(slots);
-    facePoints_[s].resize(slots);
+    op.tags = meshes_[s]->tags;
+    faceSegments_[s].resize(count);
+    facePoints_[s].resize(count);
   }
 
   const Point& at(Id id) const { return points_[id]; }
@@ -324,15 +329,15 @@ class DoubleBoolean {
     const Triangle& t = ops_[s].corners[f];
     const Triangle& other = ops_[1 - s].corners[g];
     const Id p = t[k], q = t[(k + 1) % 3];
-    const std::uint32_t edge = ops_[s].edges[f][k];
+    const EdgeKey edge = pairKey(p, q);
     // A crossing of pq and an edge of g, shared by the faces on both sides
     // of each: one point, keyed by the two edges (the first operand's
     // first), on both edges.
-    std::uint32_t otherEdge = 0;
-    std::uint64_t key = std::uint64_t(s) << 63 | std::uint64_t(edge) << 32 | g;
+    EdgeKey otherEdge = 0;
+    TwoKeys key{edge, g};
     if (onEdge != -1) {
-      otherEdge = ops_[1 - s].edges[g][onEdge];
-      key = std::uint64_t(s == 0 ? edge : otherEdge) << 32 | (s == 0 ? otherEdge : edge);
+      otherEdge = ops_[1 - s].edge(g, onEdge);
+      key = s == 0 ? TwoKeys{edge, otherEdge} : TwoKeys{otherEdge, edge};
     }
     auto& ids = onEdge == -1 ? crossingIds_ : edgeCrossingIds_;
     auto [it, added] = ids.try_emplace(key, Id(points_.size()));
@@ -375,7 +380,7 @@ class DoubleBoolean {
     for (int k = 0; k < 3; ++k) {
       const Id p = op.corners[f][k], q = op.corners[f][(k + 1) % 3];
       ring.push_back(p);
-      auto it = edgePoints_[s].find(op.edges[f][k]);
+      auto it = edgePoints_[s].find(op.edge(f, k));
       if (it == edgePoints_[s].end()) continue;
       if (p < q)
         for (const auto& [u, id] : it->second) ring.push_back(id);
@@ -600,7 +605,7 @@ class DoubleBoolean {
       const auto& list = edgePoints_[s].at(c.edge);
       std::size_t i = 0;
       while (list[i].second != c.point) ++i;
-      const bool towardsLow = c.from < otherEnd(s, c);
+      const bool towardsLow = c.from < otherEnd(c);
       Id next = c.from;
       if (towardsLow && i > 0) next = list[i - 1].second;
       if (!towardsLow && i + 1 < list.size()) next = list[i + 1].second;
@@ -611,9 +616,7 @@ class DoubleBoolean {
       const std::uint32_t patch = root(std::uint32_t(i));
       if (side[patch] != -1) continue;
       const Id corner = pieces[i].corners[0];
-      if (corner >= ops_[s].base + meshes_[s]->number_of_vertices() +
-                        meshes_[s]->number_of_removed_vertices() ||
-          corner < ops_[s].base)
+      if (corner >= ops_[s].base + ops_[s].size || corner < ops_[s].base)
         continue;  // a crossing: some other piece of the patch has a corner
       const CGAL::Bounded_side where = placeIn(1 - s, at(corner));
       if (where == CGAL::ON_BOUNDARY) throw Declined{};
@@ -629,10 +632,8 @@ class DoubleBoolean {
   }
 
   // The other end of a crossing's edge.
-  Id otherEnd(int s, const Crossing& c) const {
-    const ExactMesh& mesh = *meshes_[s];
-    const auto h = mesh.halfedge(ExactMesh::Edge_index(c.edge));
-    const Id a = ops_[s].base + Id(mesh.source(h)), b = ops_[s].base + Id(mesh.target(h));
+  static Id otherEnd(const Crossing& c) {
+    const Id a = Id(c.edge >> 32), b = Id(c.edge);
     return a == c.from ? b : a;
   }
 
@@ -641,10 +642,8 @@ class DoubleBoolean {
     using Mesh = CGAL::Surface_mesh<Point>;
     if (!sideTests_[s]) {
       auto mesh = std::make_shared<Mesh>();
-      const ExactMesh& exact = *meshes_[s];
-      std::vector<Mesh::Vertex_index> vertex(exact.number_of_vertices() +
-                                             exact.number_of_removed_vertices());
-      for (auto v : exact.vertices()) vertex[v] = mesh->add_vertex(at(ops_[s].base + Id(v)));
+      std::vector<Mesh::Vertex_index> vertex(ops_[s].size);
+      for (Id v = 0; v < ops_[s].size; ++v) vertex[v] = mesh->add_vertex(at(ops_[s].base + v));
       for (std::uint32_t f : ops_[s].faces) {
         const Triangle& t = ops_[s].corners[f];
         if (mesh->add_face(vertex[t[0] - ops_[s].base], vertex[t[1] - ops_[s].base],
@@ -659,7 +658,7 @@ class DoubleBoolean {
 
   // The pieces the operation keeps, as a closed, consistently oriented
   // mesh (each directed edge once, and its reverse once), or Declined.
-  std::optional<ExactMesh> assemble(Boolean::Op op) {
+  std::optional<DoubleMesh> assemble(Boolean::Op op) {
     const bool keepInside[2] = {op == Boolean::Op::Intersection, op != Boolean::Op::Union};
     const bool reverse[2] = {false, op == Boolean::Op::Difference};
     std::vector<Triangle> kept;
@@ -672,39 +671,32 @@ class DoubleBoolean {
         kept.push_back(t);
         keptTags.push_back(ops_[s].tags[pieces_[s][i].face]);
       }
-    ExactMesh out;
-    std::vector<ExactMesh::Vertex_index> vertex(points_.size());
-    std::vector<bool> used(points_.size(), false);
+    // The points the kept pieces use, in the order of their ids.
+    constexpr Id kUnused = ~Id(0);
+    std::vector<Id> vertex(points_.size(), kUnused);
     for (const Triangle& t : kept)
-      for (Id id : t) used[id] = true;
-    // A closed mesh of f triangles has 3f/2 edges; the arrays are sized
-    // once rather than grown.
-    out.reserve(Id(std::count(used.begin(), used.end(), true)), kept.size() * 3 / 2, kept.size());
+      for (Id id : t) vertex[id] = 0;
+    DoubleMesh out;
     for (Id id = 0; id < points_.size(); ++id)
-      if (used[id]) {
+      if (vertex[id] != kUnused) {
+        vertex[id] = Id(out.mesh.points.size());
         const Point& p = points_[id];
-        vertex[id] = out.add_vertex(CGAL::Epeck::Point_3(p.x(), p.y(), p.z()));
+        out.mesh.points.emplace_back(p.x(), p.y(), p.z());
       }
-    auto tags = tagsOf(out);
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      const Triangle& t = kept[i];
-      const auto f = out.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
-      if (f == ExactMesh::null_face()) throw Declined{};
-      tags[f] = keptTags[i];
-    }
-    // add_face refuses an edge used twice the same way; an edge used
-    // once is left on the border.
-    for (auto h : out.halfedges())
-      if (out.is_border(h)) throw Declined{};
+    out.mesh.triangles.reserve(kept.size());
+    for (const Triangle& t : kept)
+      out.mesh.triangles.push_back({vertex[t[0]], vertex[t[1]], vertex[t[2]]});
+    out.tags = std::move(keptTags);
+    if (!closedManifold(out.mesh)) throw Declined{};
     return out;
   }
 
-  const ExactMesh* meshes_[2];
+  const DoubleMesh* meshes_[2];
   Operand ops_[2];
   std::vector<Point> points_;
-  std::unordered_map<std::uint64_t, Id> crossingIds_;      // (operand, edge, face)
-  std::unordered_map<std::uint64_t, Id> edgeCrossingIds_;  // (edge, edge)
-  std::unordered_map<std::uint32_t, std::vector<std::pair<double, Id>>> edgePoints_[2];
+  std::unordered_map<TwoKeys, Id, TwoKeysHash> crossingIds_;      // (edge, face)
+  std::unordered_map<TwoKeys, Id, TwoKeysHash> edgeCrossingIds_;  // (edge, edge)
+  std::unordered_map<EdgeKey, std::vector<std::pair<double, Id>>> edgePoints_[2];
   std::vector<std::vector<std::pair<Id, Id>>> faceSegments_[2];
   std::vector<std::vector<Id>> facePoints_[2];
   std::unordered_set<std::uint64_t> segments_;
@@ -717,8 +709,8 @@ class DoubleBoolean {
 
 }  // namespace
 
-std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op,
-                                       DoubleDecline* why) {
+std::optional<DoubleMesh> doubleBoolean(const DoubleMesh& a, const DoubleMesh& b, Boolean::Op op,
+                                        DoubleDecline* why) {
   try {
     return DoubleBoolean(a, b).run(op);
   } catch (const Declined& declined) {
@@ -727,24 +719,23 @@ std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, B
   }
 }
 
-MeshTopology topologyOf(const ExactMesh& mesh) {
+MeshTopology topologyOf(const DoubleMesh& doubles) {
+  // A closed mesh of f triangles has 3f/2 edges; every point is used.
+  const TriangleMesh& mesh = doubles.mesh;
   MeshTopology topology;
-  topology.euler = static_cast<long long>(mesh.number_of_vertices()) -
-                   static_cast<long long>(mesh.number_of_edges()) +
-                   static_cast<long long>(mesh.number_of_faces());
-  // The shells: the faces joined across their edges (union-find).
-  std::vector<std::uint32_t> parent(mesh.number_of_faces() + mesh.number_of_removed_faces());
+  topology.euler = static_cast<long long>(mesh.points.size()) -
+                   static_cast<long long>(mesh.triangles.size()) / 2;
+  // The shells: the points joined along the faces' sides (union-find); a
+  // 2-manifold's faces around a point are joined across their edges.
+  std::vector<std::uint32_t> parent(mesh.points.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::uint32_t(i);
   auto root = [&](std::uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (auto e : mesh.edges()) {
-    const auto f = mesh.face(mesh.halfedge(e, 0)), g = mesh.face(mesh.halfedge(e, 1));
-    if (f == ExactMesh::null_face() || g == ExactMesh::null_face()) continue;
-    parent[root(std::uint32_t(f))] = root(std::uint32_t(g));
-  }
-  for (auto f : mesh.faces()) topology.shells += root(std::uint32_t(f)) == std::uint32_t(f);
+  for (const auto& t : mesh.triangles)
+    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
+  for (std::uint32_t v = 0; v < parent.size(); ++v) topology.shells += root(v) == v;
   return topology;
 }
 
