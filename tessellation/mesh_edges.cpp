@@ -1,9 +1,13 @@
 #include "tessellation/mesh_edges.h"
 
+#include <tbb/parallel_sort.h>
+
 namespace csgray::detail {
 
 void sortEdgeUses(std::vector<EdgeUse>& uses) {
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+  // On all threads: the order is total (each side once), so the same
+  // whatever the threads.
+  tbb::parallel_sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
     return x.edge != y.edge ? x.edge < y.edge : x.side < y.side;
   });
 }

@@ -6,6 +6,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -169,6 +170,12 @@ class DoubleBoolean {
       const std::size_t end = std::min(pairs.size(), (block + 1) * kBlock);
       for (std::size_t i = block * kBlock; i < end; ++i) edgesThrough(pairs[i], i, found[block]);
     });
+    // The maps sized for what is found (each crossing is found by about
+    // two pairs), not grown and rehashed as they fill.
+    std::size_t through = 0;
+    for (const std::vector<EdgeThrough>& block : found) through += block.size();
+    crossingIds_.reserve(through / 2);
+    segments_.reserve(through / 2);
     for (const std::vector<EdgeThrough>& block : found)
       for (std::size_t i = 0; i < block.size();) {
         std::size_t end = i + 1;
@@ -548,7 +555,11 @@ class DoubleBoolean {
     struct EdgeUse {
       std::uint64_t key;
       std::uint32_t piece;
-      bool operator<(const EdgeUse& other) const { return key < other.key; }
+      // (The piece breaks ties: an order that parallel_sort makes the
+      // same on any number of threads.)
+      bool operator<(const EdgeUse& other) const {
+        return key != other.key ? key < other.key : piece < other.piece;
+      }
     };
     std::vector<EdgeUse> uses;
     uses.reserve(3 * count);
@@ -556,14 +567,16 @@ class DoubleBoolean {
       for (int k = 0; k < 3; ++k)
         uses.push_back(
             {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]), std::uint32_t(i)});
-    std::sort(uses.begin(), uses.end());
+    tbb::parallel_sort(uses.begin(), uses.end());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> across;
     for (std::size_t i = 0; i < uses.size(); i += 2) {
       const std::uint64_t key = uses[i].key;
       if (i + 1 == uses.size() || uses[i + 1].key != key ||
           (i + 2 < uses.size() && uses[i + 2].key == key))
         throw Declined{};
-      if (segments_.count(key)) {
+      // (A segment runs between two crossings, whose ids follow the
+      // operands' points.)
+      if (Id(key >> 32) >= ops_[1].base + ops_[1].size && segments_.count(key)) {
         across.emplace_back(uses[i].piece, uses[i + 1].piece);
       } else {
         const std::uint32_t a = root(uses[i].piece), b = root(uses[i + 1].piece);
