@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -40,13 +41,11 @@ struct Declined {
 using EdgeKey = std::uint64_t;
 EdgeKey pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
-// A key of two words, for the maps of crossings.
-using TwoKeys = std::pair<std::uint64_t, std::uint64_t>;
-struct TwoKeysHash {
-  std::size_t operator()(const TwoKeys& k) const {
-    return std::hash<std::uint64_t>{}(k.first * 0x9E3779B97F4A7C15u ^ k.second);
-  }
-};
+// A crossing: the edge and the other operand's face it passes through,
+// or the two edges (the first operand's first) where it is on an edge of
+// that face. (An edge's key is at least 2³² since the second operand's
+// ids start after the first's, so the two kinds never meet.)
+using CrossingKey = std::pair<std::uint64_t, std::uint64_t>;
 
 // One operand: its faces, their corners as global ids.
 struct Operand {
@@ -88,6 +87,7 @@ struct EdgeThrough {
   std::int8_t onEdge;
   CGAL::Orientation fromSide;
   double ratio;
+  CrossingKey key;  // the crossing's, which the other pairs that find it share
 };
 
 // The boolean's working state: the points, the crossings found, and what
@@ -150,9 +150,9 @@ class DoubleBoolean {
 
   // The pairs of faces whose boxes meet, each tested. The tests (exact
   // predicates that only read the operands) run on all threads, in blocks
-  // of pairs; the crossings they find are then numbered on this thread,
-  // in the pairs' order, which depends only on the operands: so the new
-  // points' ids do not depend on the threads.
+  // of pairs; the crossings they find are then numbered in the pairs'
+  // order, which depends only on the operands (numberCrossings): so the
+  // new points' ids do not depend on the threads.
   void findCrossings() {
     std::vector<FaceBox> boxes[2];
     for (int s = 0; s < 2; ++s) {
@@ -170,19 +170,121 @@ class DoubleBoolean {
       const std::size_t end = std::min(pairs.size(), (block + 1) * kBlock);
       for (std::size_t i = block * kBlock; i < end; ++i) edgesThrough(pairs[i], i, found[block]);
     });
-    // The maps sized for what is found (each crossing is found by about
-    // two pairs), not grown and rehashed as they fill.
-    std::size_t through = 0;
-    for (const std::vector<EdgeThrough>& block : found) through += block.size();
-    crossingIds_.reserve(through / 2);
-    segments_.reserve(through / 2);
-    for (const std::vector<EdgeThrough>& block : found)
-      for (std::size_t i = 0; i < block.size();) {
-        std::size_t end = i + 1;
-        while (end < block.size() && block[end].pair == block[i].pair) ++end;
-        cutAlong(pairs[block[i].pair], std::span(block).subspan(i, end - i));
-        i = end;
+    std::vector<std::size_t> offset(found.size() + 1, 0);
+    for (std::size_t block = 0; block < found.size(); ++block)
+      offset[block + 1] = offset[block] + found[block].size();
+    std::vector<EdgeThrough> all(offset.back());
+    tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+      std::copy(found[block].begin(), found[block].end(), all.begin() + offset[block]);
+    });
+    found = {};
+    numberCrossings(pairs, all);
+  }
+
+  // Each crossing found (by two pairs of faces or more) made one point,
+  // numbered in the order the pairs first find them, which depends on the
+  // operands only; then the points each face and edge holds, and each
+  // pair's segment. The crossings that one crossing's finds share are
+  // told by sorting their keys; the points are made, and each operand's
+  // lists filled, on all threads, each list in that order.
+  void numberCrossings(const std::vector<FacePair>& pairs, const std::vector<EdgeThrough>& all) {
+    const std::size_t total = all.size();
+    struct Keyed {
+      CrossingKey key;
+      std::uint32_t at;
+      bool operator<(const Keyed& other) const {
+        return key != other.key ? key < other.key : at < other.at;
       }
+    };
+    std::vector<Keyed> keyed(total);
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t i) {
+      keyed[i] = {all[i].key, std::uint32_t(i)};
+    });
+    tbb::parallel_sort(keyed.begin(), keyed.end());
+    // first[i]: the first find of the crossing that find i finds.
+    std::vector<std::uint32_t> first(total);
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t j) {
+      if (j > 0 && keyed[j - 1].key == keyed[j].key) return;
+      for (std::size_t k = j; k < total && keyed[k].key == keyed[j].key; ++k)
+        first[keyed[k].at] = keyed[j].at;
+    });
+    keyed = {};
+    std::vector<Id> ids(total);
+    Id next = Id(points_.size());
+    for (std::size_t i = 0; i < total; ++i) ids[i] = first[i] == i ? next++ : ids[first[i]];
+    points_.resize(next);
+    std::atomic<bool> outside = false;
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t i) {
+      if (first[i] != i) return;
+      const EdgeThrough& e = all[i];
+      const double u = e.ratio;
+      if (!(u >= 0.0 && u <= 1.0)) {
+        outside = true;
+        return;
+      }
+      const auto [p, q] = edgeEnds(e, pairs[e.pair]);
+      points_[ids[i]] = at(p) + u * (at(q) - at(p));
+    });
+    if (outside) throw Declined{};
+    segments_.reserve(total / 2);
+    tbb::parallel_invoke([&] { recordCrossings(0, pairs, all, first, ids); },
+                         [&] { recordCrossings(1, pairs, all, first, ids); });
+  }
+
+  // The ends of the edge that passes through the other face.
+  std::pair<Id, Id> edgeEnds(const EdgeThrough& e, const FacePair& pair) const {
+    const Triangle& t = ops_[e.side].corners[e.side == 0 ? pair.first : pair.second];
+    return {t[e.k], t[(e.k + 1) % 3]};
+  }
+
+  // What operand s holds of the crossings numbered: the points on its
+  // edges and inside its faces, the crossings of its edges, its faces'
+  // segments; in the order of the finds, as they would be numbered one by
+  // one. (Each operand's lists are its own: the two are filled at once.)
+  void recordCrossings(int s, const std::vector<FacePair>& pairs,
+                       const std::vector<EdgeThrough>& all, const std::vector<std::uint32_t>& first,
+                       const std::vector<Id>& ids) {
+    for (std::size_t i = 0; i < all.size();) {
+      std::size_t end = i + 1;
+      while (end < all.size() && all[end].pair == all[i].pair) ++end;
+      const FacePair& pair = pairs[all[i].pair];
+      for (std::size_t j = i; j < end; ++j) {
+        if (first[j] != j) continue;
+        const EdgeThrough& e = all[j];
+        const Id id = ids[j];
+        const auto [p, q] = edgeEnds(e, pair);
+        if (e.side == s) {
+          // Along the edge from its lower id to its higher one.
+          const EdgeKey edge = pairKey(p, q);
+          edgePoints_[s][edge].push_back({p < q ? e.ratio : 1.0 - e.ratio, id});
+          crossings_[s].push_back({id, p, edge, e.fromSide == CGAL::NEGATIVE});
+          continue;
+        }
+        const std::uint32_t g = s == 0 ? pair.first : pair.second;
+        if (e.onEdge == -1) {
+          facePoints_[s][g].push_back(id);
+          continue;
+        }
+        const Triangle& t = ops_[s].corners[g];
+        const Id a = std::min(t[e.onEdge], t[(e.onEdge + 1) % 3]),
+                 b = std::max(t[e.onEdge], t[(e.onEdge + 1) % 3]);
+        const auto along = at(b) - at(a);
+        const double w =
+            std::clamp(((points_[id] - at(a)) * along) / along.squared_length(), 0.0, 1.0);
+        edgePoints_[s][pairKey(a, b)].push_back({w, id});
+      }
+      // The pair's segment, between the points where its edges cross the
+      // other face. Where an edge of each crosses the other's (in the
+      // input, before the perturbation) the segment is infinitesimal:
+      // both are one point, and the segment is left out.
+      const std::size_t n = end - i;
+      const Id from = ids[i], to = ids[i + 1 < end ? i + 1 : i];
+      i = end;
+      if (n == 2 && from == to) continue;
+      if (n != 2) throw Declined{};
+      faceSegments_[s][s == 0 ? pair.first : pair.second].push_back({from, to});
+      if (s == 0) segments_.insert(pairKey(from, to));
+    }
   }
 
   // The predicates below are exact, and where one is zero the operands
@@ -270,27 +372,20 @@ class DoubleBoolean {
           if (auto through = edgeThrough(s, s == 0 ? fa : fb, k, s == 0 ? fb : fa)) {
             through->pair = std::uint32_t(index);
             through->fromSide = o[k];
+            through->key = crossingKey(*through, pair);
             out.push_back(*through);
           }
     }
   }
 
-  // The pair's segment, between the points where its edges cross the
-  // other face (edgesThrough), numbered as they come.
-  void cutAlong(const FacePair& pair, std::span<const EdgeThrough> through) {
-    const auto [fa, fb] = pair;
-    Id found[6];
-    int n = 0;
-    for (const EdgeThrough& e : through)
-      found[n++] = crossing(e, e.side == 0 ? fa : fb, e.side == 0 ? fb : fa);
-    // Where an edge of each crosses the other's (in the input, before the
-    // perturbation) the segment between their crossings is infinitesimal:
-    // both are one point (crossing), and the segment is left out.
-    if (n == 2 && found[0] == found[1]) return;
-    if (n != 2) throw Declined{};
-    faceSegments_[0][fa].push_back({found[0], found[1]});
-    faceSegments_[1][fb].push_back({found[0], found[1]});
-    segments_.insert(pairKey(found[0], found[1]));
+  // The key of the crossing an edge makes (EdgeThrough::key).
+  CrossingKey crossingKey(const EdgeThrough& e, const FacePair& pair) const {
+    const auto [p, q] = edgeEnds(e, pair);
+    const std::uint32_t g = e.side == 0 ? pair.second : pair.first;
+    if (e.onEdge == -1) return {pairKey(p, q), g};
+    const EdgeKey otherEdge = ops_[1 - e.side].edge(g, e.onEdge);
+    return e.side == 0 ? CrossingKey{pairKey(p, q), otherEdge}
+                       : CrossingKey{otherEdge, pairKey(p, q)};
   }
 
   // Whether edge k of face f of operand s passes through face g of the
@@ -326,47 +421,6 @@ class DoubleBoolean {
     through.onEdge = std::int8_t(onEdge);
     through.ratio = dp / (dp - dq);
     return through;
-  }
-
-  // The id of the point where an edge crosses face g of the other operand
-  // (edgeThrough), f the edge's face: new, or the one the same crossing
-  // got from a face before.
-  Id crossing(const EdgeThrough& e, std::uint32_t f, std::uint32_t g) {
-    const int s = e.side, k = e.k, onEdge = e.onEdge;
-    const Triangle& t = ops_[s].corners[f];
-    const Triangle& other = ops_[1 - s].corners[g];
-    const Id p = t[k], q = t[(k + 1) % 3];
-    const EdgeKey edge = pairKey(p, q);
-    // A crossing of pq and an edge of g, shared by the faces on both sides
-    // of each: one point, keyed by the two edges (the first operand's
-    // first), on both edges.
-    EdgeKey otherEdge = 0;
-    TwoKeys key{edge, g};
-    if (onEdge != -1) {
-      otherEdge = ops_[1 - s].edge(g, onEdge);
-      key = s == 0 ? TwoKeys{edge, otherEdge} : TwoKeys{otherEdge, edge};
-    }
-    auto& ids = onEdge == -1 ? crossingIds_ : edgeCrossingIds_;
-    auto [it, added] = ids.try_emplace(key, Id(points_.size()));
-    if (!added) return it->second;
-    const double u = e.ratio;
-    if (!(u >= 0.0 && u <= 1.0)) throw Declined{};
-    points_.push_back(at(p) + u * (at(q) - at(p)));
-    const Id id = it->second;
-    // Along the edge from its lower id to its higher one.
-    edgePoints_[s][edge].push_back({p < q ? u : 1.0 - u, id});
-    if (onEdge == -1) {
-      facePoints_[1 - s][g].push_back(id);
-    } else {
-      const Id a = std::min(other[onEdge], other[(onEdge + 1) % 3]),
-               b = std::max(other[onEdge], other[(onEdge + 1) % 3]);
-      const auto along = at(b) - at(a);
-      const double w =
-          std::clamp(((points_.back() - at(a)) * along) / along.squared_length(), 0.0, 1.0);
-      edgePoints_[1 - s][otherEdge].push_back({w, id});
-    }
-    crossings_[s].push_back({id, p, edge, e.fromSide == CGAL::NEGATIVE});
-    return id;
   }
 
   // Each cut edge's points in order from its lower id; two at one place:
@@ -707,8 +761,6 @@ class DoubleBoolean {
   const DoubleMesh* meshes_[2];
   Operand ops_[2];
   std::vector<Point> points_;
-  std::unordered_map<TwoKeys, Id, TwoKeysHash> crossingIds_;      // (edge, face)
-  std::unordered_map<TwoKeys, Id, TwoKeysHash> edgeCrossingIds_;  // (edge, edge)
   std::unordered_map<EdgeKey, std::vector<std::pair<double, Id>>> edgePoints_[2];
   std::vector<std::vector<std::pair<Id, Id>>> faceSegments_[2];
   std::vector<std::vector<Id>> facePoints_[2];
