@@ -615,12 +615,12 @@ class DoubleBoolean {
         return key != other.key ? key < other.key : piece < other.piece;
       }
     };
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * count);
-    for (std::size_t i = 0; i < count; ++i)
+    std::vector<EdgeUse> uses(3 * count);
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) {
       for (int k = 0; k < 3; ++k)
-        uses.push_back(
-            {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]), std::uint32_t(i)});
+        uses[3 * i + k] = {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]),
+                           std::uint32_t(i)};
+    });
     tbb::parallel_sort(uses.begin(), uses.end());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> across;
     for (std::size_t i = 0; i < uses.size(); i += 2) {
@@ -643,14 +643,19 @@ class DoubleBoolean {
       if (it == uses.end() || it->key != probe.key) throw Declined{};
       return it->piece;
     };
-    // The patches' graph across segments.
-    std::vector<std::vector<std::uint32_t>> neighbours(count);
-    for (auto [a, b] : across) {
-      const std::uint32_t ra = root(a), rb = root(b);
-      if (ra == rb) throw Declined{};
-      neighbours[ra].push_back(rb);
-      neighbours[rb].push_back(ra);
+    // The patches' graph across segments: each patch's neighbours in the
+    // order of the segments, all in one array (from start[patch] on), not
+    // a vector for each of the hundreds of thousands of pieces.
+    std::vector<std::uint32_t> start(count + 1, 0);
+    for (auto& [a, b] : across) {
+      a = root(a), b = root(b);
+      if (a == b) throw Declined{};
+      ++start[a + 1], ++start[b + 1];
     }
+    for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> neighbours(start[count]);
+    std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
+    for (auto [a, b] : across) neighbours[filled[a]++] = b, neighbours[filled[b]++] = a;
     std::vector<signed char> side(count, -1);  // of each patch's root: 1 inside
     std::vector<std::uint32_t> pending;
     auto label = [&](std::uint32_t patch, bool in) {
@@ -665,7 +670,8 @@ class DoubleBoolean {
       while (!pending.empty()) {
         const std::uint32_t patch = pending.back();
         pending.pop_back();
-        for (std::uint32_t next : neighbours[patch]) label(next, !side[patch]);
+        for (std::uint32_t k = start[patch]; k < start[patch + 1]; ++k)
+          label(neighbours[k], !side[patch]);
       }
     };
     for (const Crossing& c : crossings_[s]) {
