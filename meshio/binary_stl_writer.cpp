@@ -1,5 +1,7 @@
 #include "meshio/binary_stl_writer.h"
 
+#include <tbb/parallel_for.h>
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -46,12 +48,20 @@ void writeBinaryStl(const std::string& path, const std::string& file, const Tria
   // The header is free text; this is the one the files always had.
   std::memset(bytes.data(), ' ', 79);
   std::memcpy(bytes.data(), "binary stl file", 15);
-  char* at = put(bytes.data() + 80, std::uint32_t(mesh.size()));
-  for (const TriangleMesh::Triangle& t : mesh.triangles) {
+  put(bytes.data() + 80, std::uint32_t(mesh.size()));
+  // Each triangle's 50 bytes in their place (the last two, the attribute
+  // byte count, 0), on all threads for a large mesh; a small one stays on
+  // this thread, where starting TBB's scheduler would cost more.
+  auto encode = [&](std::size_t i) {
+    const TriangleMesh::Triangle& t = mesh.triangles[i];
     const dvec3 &p = mesh.points[t[0]], &q = mesh.points[t[1]], &r = mesh.points[t[2]];
+    char* at = bytes.data() + 84 + 50 * i;
     for (const dvec3& v : {unitNormal(p, q, r), p, q, r}) at = put(at, v);
-    at += 2;  // the attribute byte count, 0
-  }
+  };
+  if (mesh.size() < 10000)
+    for (std::size_t i = 0; i < mesh.size(); ++i) encode(i);
+  else
+    tbb::parallel_for(std::size_t(0), mesh.size(), encode);
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   if (!out) throw std::runtime_error("cannot write " + path + ": cannot create a file there");
   out.write(bytes.data(), std::streamsize(bytes.size()));

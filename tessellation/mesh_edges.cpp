@@ -1,11 +1,21 @@
 #include "tessellation/mesh_edges.h"
 
+#include <tbb/parallel_sort.h>
+
 namespace csgray::detail {
 
 void sortEdgeUses(std::vector<EdgeUse>& uses) {
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+  auto order = [](const EdgeUse& x, const EdgeUse& y) {
     return x.edge != y.edge ? x.edge < y.edge : x.side < y.side;
-  });
+  };
+  // A large mesh's on all threads: the order is total (each side once), so
+  // the same whatever the threads. A small one's stays on this thread,
+  // where starting TBB's scheduler would cost more (two frustums glued:
+  // 1.1 times the export's CPU time).
+  if (uses.size() < 30000)
+    std::sort(uses.begin(), uses.end(), order);
+  else
+    tbb::parallel_sort(uses.begin(), uses.end(), order);
 }
 
 std::span<const EdgeUse> usesOfEdge(const std::vector<EdgeUse>& uses, std::size_t first) {

@@ -1,6 +1,7 @@
 #include "export/cgal/box_pairs.h"
 
 #include <CGAL/box_intersection_d.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -152,6 +153,34 @@ void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, std::vector<FacePair
   pairs.insert(pairs.end(), above.begin(), above.end());
 }
 
+// Few boxes on one side (a box's twelve faces against a grid of balls'
+// hundreds of thousands): each box of a tested against each of b, in
+// blocks of a on all threads, the pairs in a's order and then b's. Split,
+// the few boxes would straddle every plane, and each level would copy the
+// many that they reach (plate(32)'s union: 0.1 s, against 0.01 s so).
+constexpr std::size_t kFewBoxes = 32;
+
+bool meet(const FaceBox& x, const FaceBox& y) {
+  for (int d = 0; d < 3; ++d)
+    if (x.hi[d] < y.lo[d] || y.hi[d] < x.lo[d]) return false;
+  return true;
+}
+
+std::vector<FacePair> fewAgainstMany(const std::vector<FaceBox>& a, const std::vector<FaceBox>& b) {
+  constexpr std::size_t kBlock = 4096;
+  std::vector<std::vector<FacePair>> found((a.size() + kBlock - 1) / kBlock);
+  tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+    const std::size_t end = std::min(a.size(), (block + 1) * kBlock);
+    for (std::size_t i = block * kBlock; i < end; ++i)
+      for (const FaceBox& y : b)
+        if (meet(a[i], y)) found[block].emplace_back(a[i].face, y.face);
+  });
+  std::vector<FacePair> pairs;
+  for (const std::vector<FacePair>& block : found)
+    pairs.insert(pairs.end(), block.begin(), block.end());
+  return pairs;
+}
+
 }  // namespace
 
 void forEachMeetingPair(std::vector<FaceBox>& boxes, const Report& report) {
@@ -159,6 +188,7 @@ void forEachMeetingPair(std::vector<FaceBox>& boxes, const Report& report) {
 }
 
 std::vector<FacePair> meetingPairs(std::vector<FaceBox>& a, std::vector<FaceBox>& b) {
+  if (std::min(a.size(), b.size()) <= kFewBoxes) return fewAgainstMany(a, b);
   std::vector<FacePair> pairs;
   pairsSplit(a, b, pairs);
   return pairs;

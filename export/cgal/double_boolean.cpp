@@ -6,9 +6,11 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -34,16 +36,28 @@ struct Declined {
   DoubleDecline why = DoubleDecline::NotInGeneralPosition;
 };
 
-std::uint64_t pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+// An edge: its ends' ids, the lower first. (The two operands' ids differ,
+// so it also says whose edge it is.)
+using EdgeKey = std::uint64_t;
+EdgeKey pairKey(Id a, Id b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
-// One operand: its faces by Surface_mesh index (removed ones left empty),
-// their corners as global ids, the mesh edge under each side.
+// A crossing: the edge and the other operand's face it passes through,
+// or the two edges (the first operand's first) where it is on an edge of
+// that face. (An edge's key is at least 2³² since the second operand's
+// ids start after the first's, so the two kinds never meet.)
+using CrossingKey = std::pair<std::uint64_t, std::uint64_t>;
+
+// One operand: its faces, their corners as global ids.
 struct Operand {
   Id base = 0;  // the global id of its vertex 0
+  Id size = 0;  // its number of points
   std::vector<Triangle> corners;
-  std::vector<std::array<std::uint32_t, 3>> edges;  // edge k runs corners k → k+1
   std::vector<std::uint32_t> tags;
-  std::vector<std::uint32_t> faces;  // the live ones
+  std::vector<std::uint32_t> faces;  // 0, 1, ...: each face's index
+
+  EdgeKey edge(std::uint32_t f, int k) const {
+    return pairKey(corners[f][k], corners[f][(k + 1) % 3]);
+  }
 };
 
 // A piece of a face after the cut: a triangle of global ids.
@@ -58,7 +72,7 @@ struct Piece {
 struct Crossing {
   Id point;
   Id from;
-  std::uint32_t edge;
+  EdgeKey edge;
   bool fromInside;
 };
 
@@ -73,24 +87,24 @@ struct EdgeThrough {
   std::int8_t onEdge;
   CGAL::Orientation fromSide;
   double ratio;
+  CrossingKey key;  // the crossing's, which the other pairs that find it share
 };
 
 // The boolean's working state: the points, the crossings found, and what
 // each face of each operand is to be cut along.
 class DoubleBoolean {
  public:
-  DoubleBoolean(const ExactMesh& a, const ExactMesh& b) : meshes_{&a, &b} {
+  DoubleBoolean(const DoubleMesh& a, const DoubleMesh& b) : meshes_{&a, &b} {
     // Each operand's points have a range of ids of their own (the first
     // operand's, then the second's), so the two load at once.
-    const auto slots = [&](int s) {
-      return meshes_[s]->number_of_vertices() + meshes_[s]->number_of_removed_vertices();
-    };
-    ops_[1].base = Id(slots(0));
-    points_.resize(slots(0) + slots(1));
+    ops_[0].size = Id(a.mesh.points.size());
+    ops_[1].size = Id(b.mesh.points.size());
+    ops_[1].base = ops_[0].size;
+    points_.resize(a.mesh.points.size() + b.mesh.points.size());
     tbb::parallel_invoke([&] { load(0); }, [&] { load(1); });
   }
 
-  std::optional<ExactMesh> run(Boolean::Op op) {
+  std::optional<DoubleMesh> run(Boolean::Op op) {
     findCrossings();
     // Once the crossings are found, each operand is cut and classified
     // from its own state (its edges' points, faces, pieces; the other's
@@ -107,46 +121,38 @@ class DoubleBoolean {
   }
 
  private:
-  // The operand's points (exact doubles, or Declined) and faces.
+  // The operand's points and faces. Each face (a, b, c) is read from c
+  // on, as (c, a, b): where CGAL's mesh was made from it (add_face(a, b,
+  // c)), that is where the face's halfedge starts, which is how these
+  // booleans read CGAL's meshes before they took doubles; the points it
+  // makes are numbered in that order, and so stay as they were.
   void load(int s) {
-    const ExactMesh& mesh = *meshes_[s];
+    const TriangleMesh& mesh = meshes_[s]->mesh;
     Operand& op = ops_[s];
-    for (auto v : mesh.vertices()) {
-      const auto& p = mesh.point(v);
-      std::array<double, 3> xyz;
-      for (int k = 0; k < 3; ++k) {
-        const auto range = CGAL::to_interval(p[k]);
-        if (range.first != range.second) throw Declined{DoubleDecline::NotInDoubles};
-        xyz[k] = range.first;
-      }
-      points_[op.base + v] = Point(xyz[0], xyz[1], xyz[2]);
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+      const dvec3& p = mesh.points[v];
+      points_[op.base + v] = Point(p.x, p.y, p.z);
     }
-    const std::size_t slots = mesh.number_of_faces() + mesh.number_of_removed_faces();
-    op.corners.resize(slots);
-    op.edges.resize(slots);
-    op.tags.resize(slots);
-    auto tags = tagsOf(mesh);
-    for (auto f : mesh.faces()) {
-      auto h = mesh.halfedge(f);
-      for (int k = 0; k < 3; ++k, h = mesh.next(h)) {
-        op.corners[f][k] = op.base + Id(mesh.source(h));
-        op.edges[f][k] = std::uint32_t(mesh.edge(h));
-      }
-      if (h != mesh.halfedge(f)) throw Declined{DoubleDecline::NotInDoubles};  // not a triangle
-      op.tags[f] = tags ? tags[f] : 0;
-      op.faces.push_back(std::uint32_t(f));
+    const std::size_t count = mesh.triangles.size();
+    op.corners.resize(count);
+    op.faces.resize(count);
+    for (std::size_t f = 0; f < count; ++f) {
+      const auto& t = mesh.triangles[f];
+      op.corners[f] = {op.base + t[2], op.base + t[0], op.base + t[1]};
+      op.faces[f] = std::uint32_t(f);
     }
-    faceSegments_[s].resize(slots);
-    facePoints_[s].resize(slots);
+    op.tags = meshes_[s]->tags;
+    faceSegments_[s].resize(count);
+    facePoints_[s].resize(count);
   }
 
   const Point& at(Id id) const { return points_[id]; }
 
   // The pairs of faces whose boxes meet, each tested. The tests (exact
   // predicates that only read the operands) run on all threads, in blocks
-  // of pairs; the crossings they find are then numbered on this thread,
-  // in the pairs' order, which depends only on the operands: so the new
-  // points' ids do not depend on the threads.
+  // of pairs; the crossings they find are then numbered in the pairs'
+  // order, which depends only on the operands (numberCrossings): so the
+  // new points' ids do not depend on the threads.
   void findCrossings() {
     std::vector<FaceBox> boxes[2];
     for (int s = 0; s < 2; ++s) {
@@ -164,13 +170,121 @@ class DoubleBoolean {
       const std::size_t end = std::min(pairs.size(), (block + 1) * kBlock);
       for (std::size_t i = block * kBlock; i < end; ++i) edgesThrough(pairs[i], i, found[block]);
     });
-    for (const std::vector<EdgeThrough>& block : found)
-      for (std::size_t i = 0; i < block.size();) {
-        std::size_t end = i + 1;
-        while (end < block.size() && block[end].pair == block[i].pair) ++end;
-        cutAlong(pairs[block[i].pair], std::span(block).subspan(i, end - i));
-        i = end;
+    std::vector<std::size_t> offset(found.size() + 1, 0);
+    for (std::size_t block = 0; block < found.size(); ++block)
+      offset[block + 1] = offset[block] + found[block].size();
+    std::vector<EdgeThrough> all(offset.back());
+    tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+      std::copy(found[block].begin(), found[block].end(), all.begin() + offset[block]);
+    });
+    found = {};
+    numberCrossings(pairs, all);
+  }
+
+  // Each crossing found (by two pairs of faces or more) made one point,
+  // numbered in the order the pairs first find them, which depends on the
+  // operands only; then the points each face and edge holds, and each
+  // pair's segment. The crossings that one crossing's finds share are
+  // told by sorting their keys; the points are made, and each operand's
+  // lists filled, on all threads, each list in that order.
+  void numberCrossings(const std::vector<FacePair>& pairs, const std::vector<EdgeThrough>& all) {
+    const std::size_t total = all.size();
+    struct Keyed {
+      CrossingKey key;
+      std::uint32_t at;
+      bool operator<(const Keyed& other) const {
+        return key != other.key ? key < other.key : at < other.at;
       }
+    };
+    std::vector<Keyed> keyed(total);
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t i) {
+      keyed[i] = {all[i].key, std::uint32_t(i)};
+    });
+    tbb::parallel_sort(keyed.begin(), keyed.end());
+    // first[i]: the first find of the crossing that find i finds.
+    std::vector<std::uint32_t> first(total);
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t j) {
+      if (j > 0 && keyed[j - 1].key == keyed[j].key) return;
+      for (std::size_t k = j; k < total && keyed[k].key == keyed[j].key; ++k)
+        first[keyed[k].at] = keyed[j].at;
+    });
+    keyed = {};
+    std::vector<Id> ids(total);
+    Id next = Id(points_.size());
+    for (std::size_t i = 0; i < total; ++i) ids[i] = first[i] == i ? next++ : ids[first[i]];
+    points_.resize(next);
+    std::atomic<bool> outside = false;
+    tbb::parallel_for(std::size_t(0), total, [&](std::size_t i) {
+      if (first[i] != i) return;
+      const EdgeThrough& e = all[i];
+      const double u = e.ratio;
+      if (!(u >= 0.0 && u <= 1.0)) {
+        outside = true;
+        return;
+      }
+      const auto [p, q] = edgeEnds(e, pairs[e.pair]);
+      points_[ids[i]] = at(p) + u * (at(q) - at(p));
+    });
+    if (outside) throw Declined{};
+    segments_.reserve(total / 2);
+    tbb::parallel_invoke([&] { recordCrossings(0, pairs, all, first, ids); },
+                         [&] { recordCrossings(1, pairs, all, first, ids); });
+  }
+
+  // The ends of the edge that passes through the other face.
+  std::pair<Id, Id> edgeEnds(const EdgeThrough& e, const FacePair& pair) const {
+    const Triangle& t = ops_[e.side].corners[e.side == 0 ? pair.first : pair.second];
+    return {t[e.k], t[(e.k + 1) % 3]};
+  }
+
+  // What operand s holds of the crossings numbered: the points on its
+  // edges and inside its faces, the crossings of its edges, its faces'
+  // segments; in the order of the finds, as they would be numbered one by
+  // one. (Each operand's lists are its own: the two are filled at once.)
+  void recordCrossings(int s, const std::vector<FacePair>& pairs,
+                       const std::vector<EdgeThrough>& all, const std::vector<std::uint32_t>& first,
+                       const std::vector<Id>& ids) {
+    for (std::size_t i = 0; i < all.size();) {
+      std::size_t end = i + 1;
+      while (end < all.size() && all[end].pair == all[i].pair) ++end;
+      const FacePair& pair = pairs[all[i].pair];
+      for (std::size_t j = i; j < end; ++j) {
+        if (first[j] != j) continue;
+        const EdgeThrough& e = all[j];
+        const Id id = ids[j];
+        const auto [p, q] = edgeEnds(e, pair);
+        if (e.side == s) {
+          // Along the edge from its lower id to its higher one.
+          const EdgeKey edge = pairKey(p, q);
+          edgePoints_[s][edge].push_back({p < q ? e.ratio : 1.0 - e.ratio, id});
+          crossings_[s].push_back({id, p, edge, e.fromSide == CGAL::NEGATIVE});
+          continue;
+        }
+        const std::uint32_t g = s == 0 ? pair.first : pair.second;
+        if (e.onEdge == -1) {
+          facePoints_[s][g].push_back(id);
+          continue;
+        }
+        const Triangle& t = ops_[s].corners[g];
+        const Id a = std::min(t[e.onEdge], t[(e.onEdge + 1) % 3]),
+                 b = std::max(t[e.onEdge], t[(e.onEdge + 1) % 3]);
+        const auto along = at(b) - at(a);
+        const double w =
+            std::clamp(((points_[id] - at(a)) * along) / along.squared_length(), 0.0, 1.0);
+        edgePoints_[s][pairKey(a, b)].push_back({w, id});
+      }
+      // The pair's segment, between the points where its edges cross the
+      // other face. Where an edge of each crosses the other's (in the
+      // input, before the perturbation) the segment is infinitesimal:
+      // both are one point, and the segment is left out.
+      const std::size_t n = end - i;
+      const Id from = ids[i], to = ids[i + 1 < end ? i + 1 : i];
+      i = end;
+      if (n == 2 && from == to) continue;
+      if (n != 2) throw Declined{};
+      faceSegments_[s][s == 0 ? pair.first : pair.second].push_back({from, to});
+      if (s == 0) segments_.insert(pairKey(from, to));
+    }
   }
 
   // The predicates below are exact, and where one is zero the operands
@@ -258,27 +372,20 @@ class DoubleBoolean {
           if (auto through = edgeThrough(s, s == 0 ? fa : fb, k, s == 0 ? fb : fa)) {
             through->pair = std::uint32_t(index);
             through->fromSide = o[k];
+            through->key = crossingKey(*through, pair);
             out.push_back(*through);
           }
     }
   }
 
-  // The pair's segment, between the points where its edges cross the
-  // other face (edgesThrough), numbered as they come.
-  void cutAlong(const FacePair& pair, std::span<const EdgeThrough> through) {
-    const auto [fa, fb] = pair;
-    Id found[6];
-    int n = 0;
-    for (const EdgeThrough& e : through)
-      found[n++] = crossing(e, e.side == 0 ? fa : fb, e.side == 0 ? fb : fa);
-    // Where an edge of each crosses the other's (in the input, before the
-    // perturbation) the segment between their crossings is infinitesimal:
-    // both are one point (crossing), and the segment is left out.
-    if (n == 2 && found[0] == found[1]) return;
-    if (n != 2) throw Declined{};
-    faceSegments_[0][fa].push_back({found[0], found[1]});
-    faceSegments_[1][fb].push_back({found[0], found[1]});
-    segments_.insert(pairKey(found[0], found[1]));
+  // The key of the crossing an edge makes (EdgeThrough::key).
+  CrossingKey crossingKey(const EdgeThrough& e, const FacePair& pair) const {
+    const auto [p, q] = edgeEnds(e, pair);
+    const std::uint32_t g = e.side == 0 ? pair.second : pair.first;
+    if (e.onEdge == -1) return {pairKey(p, q), g};
+    const EdgeKey otherEdge = ops_[1 - e.side].edge(g, e.onEdge);
+    return e.side == 0 ? CrossingKey{pairKey(p, q), otherEdge}
+                       : CrossingKey{otherEdge, pairKey(p, q)};
   }
 
   // Whether edge k of face f of operand s passes through face g of the
@@ -316,47 +423,6 @@ class DoubleBoolean {
     return through;
   }
 
-  // The id of the point where an edge crosses face g of the other operand
-  // (edgeThrough), f the edge's face: new, or the one the same crossing
-  // got from a face before.
-  Id crossing(const EdgeThrough& e, std::uint32_t f, std::uint32_t g) {
-    const int s = e.side, k = e.k, onEdge = e.onEdge;
-    const Triangle& t = ops_[s].corners[f];
-    const Triangle& other = ops_[1 - s].corners[g];
-    const Id p = t[k], q = t[(k + 1) % 3];
-    const std::uint32_t edge = ops_[s].edges[f][k];
-    // A crossing of pq and an edge of g, shared by the faces on both sides
-    // of each: one point, keyed by the two edges (the first operand's
-    // first), on both edges.
-    std::uint32_t otherEdge = 0;
-    std::uint64_t key = std::uint64_t(s) << 63 | std::uint64_t(edge) << 32 | g;
-    if (onEdge != -1) {
-      otherEdge = ops_[1 - s].edges[g][onEdge];
-      key = std::uint64_t(s == 0 ? edge : otherEdge) << 32 | (s == 0 ? otherEdge : edge);
-    }
-    auto& ids = onEdge == -1 ? crossingIds_ : edgeCrossingIds_;
-    auto [it, added] = ids.try_emplace(key, Id(points_.size()));
-    if (!added) return it->second;
-    const double u = e.ratio;
-    if (!(u >= 0.0 && u <= 1.0)) throw Declined{};
-    points_.push_back(at(p) + u * (at(q) - at(p)));
-    const Id id = it->second;
-    // Along the edge from its lower id to its higher one.
-    edgePoints_[s][edge].push_back({p < q ? u : 1.0 - u, id});
-    if (onEdge == -1) {
-      facePoints_[1 - s][g].push_back(id);
-    } else {
-      const Id a = std::min(other[onEdge], other[(onEdge + 1) % 3]),
-               b = std::max(other[onEdge], other[(onEdge + 1) % 3]);
-      const auto along = at(b) - at(a);
-      const double w =
-          std::clamp(((points_.back() - at(a)) * along) / along.squared_length(), 0.0, 1.0);
-      edgePoints_[1 - s][otherEdge].push_back({w, id});
-    }
-    crossings_[s].push_back({id, p, edge, e.fromSide == CGAL::NEGATIVE});
-    return id;
-  }
-
   // Each cut edge's points in order from its lower id; two at one place:
   // Declined.
   void sortEdgePoints(int s) {
@@ -375,7 +441,7 @@ class DoubleBoolean {
     for (int k = 0; k < 3; ++k) {
       const Id p = op.corners[f][k], q = op.corners[f][(k + 1) % 3];
       ring.push_back(p);
-      auto it = edgePoints_[s].find(op.edges[f][k]);
+      auto it = edgePoints_[s].find(op.edge(f, k));
       if (it == edgePoints_[s].end()) continue;
       if (p < q)
         for (const auto& [u, id] : it->second) ring.push_back(id);
@@ -543,22 +609,28 @@ class DoubleBoolean {
     struct EdgeUse {
       std::uint64_t key;
       std::uint32_t piece;
-      bool operator<(const EdgeUse& other) const { return key < other.key; }
+      // (The piece breaks ties: an order that parallel_sort makes the
+      // same on any number of threads.)
+      bool operator<(const EdgeUse& other) const {
+        return key != other.key ? key < other.key : piece < other.piece;
+      }
     };
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * count);
-    for (std::size_t i = 0; i < count; ++i)
+    std::vector<EdgeUse> uses(3 * count);
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) {
       for (int k = 0; k < 3; ++k)
-        uses.push_back(
-            {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]), std::uint32_t(i)});
-    std::sort(uses.begin(), uses.end());
+        uses[3 * i + k] = {pairKey(pieces[i].corners[k], pieces[i].corners[(k + 1) % 3]),
+                           std::uint32_t(i)};
+    });
+    tbb::parallel_sort(uses.begin(), uses.end());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> across;
     for (std::size_t i = 0; i < uses.size(); i += 2) {
       const std::uint64_t key = uses[i].key;
       if (i + 1 == uses.size() || uses[i + 1].key != key ||
           (i + 2 < uses.size() && uses[i + 2].key == key))
         throw Declined{};
-      if (segments_.count(key)) {
+      // (A segment runs between two crossings, whose ids follow the
+      // operands' points.)
+      if (Id(key >> 32) >= ops_[1].base + ops_[1].size && segments_.count(key)) {
         across.emplace_back(uses[i].piece, uses[i + 1].piece);
       } else {
         const std::uint32_t a = root(uses[i].piece), b = root(uses[i + 1].piece);
@@ -571,14 +643,19 @@ class DoubleBoolean {
       if (it == uses.end() || it->key != probe.key) throw Declined{};
       return it->piece;
     };
-    // The patches' graph across segments.
-    std::vector<std::vector<std::uint32_t>> neighbours(count);
-    for (auto [a, b] : across) {
-      const std::uint32_t ra = root(a), rb = root(b);
-      if (ra == rb) throw Declined{};
-      neighbours[ra].push_back(rb);
-      neighbours[rb].push_back(ra);
+    // The patches' graph across segments: each patch's neighbours in the
+    // order of the segments, all in one array (from start[patch] on), not
+    // a vector for each of the hundreds of thousands of pieces.
+    std::vector<std::uint32_t> start(count + 1, 0);
+    for (auto& [a, b] : across) {
+      a = root(a), b = root(b);
+      if (a == b) throw Declined{};
+      ++start[a + 1], ++start[b + 1];
     }
+    for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> neighbours(start[count]);
+    std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
+    for (auto [a, b] : across) neighbours[filled[a]++] = b, neighbours[filled[b]++] = a;
     std::vector<signed char> side(count, -1);  // of each patch's root: 1 inside
     std::vector<std::uint32_t> pending;
     auto label = [&](std::uint32_t patch, bool in) {
@@ -593,14 +670,15 @@ class DoubleBoolean {
       while (!pending.empty()) {
         const std::uint32_t patch = pending.back();
         pending.pop_back();
-        for (std::uint32_t next : neighbours[patch]) label(next, !side[patch]);
+        for (std::uint32_t k = start[patch]; k < start[patch + 1]; ++k)
+          label(neighbours[k], !side[patch]);
       }
     };
     for (const Crossing& c : crossings_[s]) {
       const auto& list = edgePoints_[s].at(c.edge);
       std::size_t i = 0;
       while (list[i].second != c.point) ++i;
-      const bool towardsLow = c.from < otherEnd(s, c);
+      const bool towardsLow = c.from < otherEnd(c);
       Id next = c.from;
       if (towardsLow && i > 0) next = list[i - 1].second;
       if (!towardsLow && i + 1 < list.size()) next = list[i + 1].second;
@@ -611,9 +689,7 @@ class DoubleBoolean {
       const std::uint32_t patch = root(std::uint32_t(i));
       if (side[patch] != -1) continue;
       const Id corner = pieces[i].corners[0];
-      if (corner >= ops_[s].base + meshes_[s]->number_of_vertices() +
-                        meshes_[s]->number_of_removed_vertices() ||
-          corner < ops_[s].base)
+      if (corner >= ops_[s].base + ops_[s].size || corner < ops_[s].base)
         continue;  // a crossing: some other piece of the patch has a corner
       const CGAL::Bounded_side where = placeIn(1 - s, at(corner));
       if (where == CGAL::ON_BOUNDARY) throw Declined{};
@@ -629,10 +705,8 @@ class DoubleBoolean {
   }
 
   // The other end of a crossing's edge.
-  Id otherEnd(int s, const Crossing& c) const {
-    const ExactMesh& mesh = *meshes_[s];
-    const auto h = mesh.halfedge(ExactMesh::Edge_index(c.edge));
-    const Id a = ops_[s].base + Id(mesh.source(h)), b = ops_[s].base + Id(mesh.target(h));
+  static Id otherEnd(const Crossing& c) {
+    const Id a = Id(c.edge >> 32), b = Id(c.edge);
     return a == c.from ? b : a;
   }
 
@@ -641,10 +715,8 @@ class DoubleBoolean {
     using Mesh = CGAL::Surface_mesh<Point>;
     if (!sideTests_[s]) {
       auto mesh = std::make_shared<Mesh>();
-      const ExactMesh& exact = *meshes_[s];
-      std::vector<Mesh::Vertex_index> vertex(exact.number_of_vertices() +
-                                             exact.number_of_removed_vertices());
-      for (auto v : exact.vertices()) vertex[v] = mesh->add_vertex(at(ops_[s].base + Id(v)));
+      std::vector<Mesh::Vertex_index> vertex(ops_[s].size);
+      for (Id v = 0; v < ops_[s].size; ++v) vertex[v] = mesh->add_vertex(at(ops_[s].base + v));
       for (std::uint32_t f : ops_[s].faces) {
         const Triangle& t = ops_[s].corners[f];
         if (mesh->add_face(vertex[t[0] - ops_[s].base], vertex[t[1] - ops_[s].base],
@@ -659,7 +731,7 @@ class DoubleBoolean {
 
   // The pieces the operation keeps, as a closed, consistently oriented
   // mesh (each directed edge once, and its reverse once), or Declined.
-  std::optional<ExactMesh> assemble(Boolean::Op op) {
+  std::optional<DoubleMesh> assemble(Boolean::Op op) {
     const bool keepInside[2] = {op == Boolean::Op::Intersection, op != Boolean::Op::Union};
     const bool reverse[2] = {false, op == Boolean::Op::Difference};
     std::vector<Triangle> kept;
@@ -672,39 +744,30 @@ class DoubleBoolean {
         kept.push_back(t);
         keptTags.push_back(ops_[s].tags[pieces_[s][i].face]);
       }
-    ExactMesh out;
-    std::vector<ExactMesh::Vertex_index> vertex(points_.size());
-    std::vector<bool> used(points_.size(), false);
+    // The points the kept pieces use, in the order of their ids.
+    constexpr Id kUnused = ~Id(0);
+    std::vector<Id> vertex(points_.size(), kUnused);
     for (const Triangle& t : kept)
-      for (Id id : t) used[id] = true;
-    // A closed mesh of f triangles has 3f/2 edges; the arrays are sized
-    // once rather than grown.
-    out.reserve(Id(std::count(used.begin(), used.end(), true)), kept.size() * 3 / 2, kept.size());
+      for (Id id : t) vertex[id] = 0;
+    DoubleMesh out;
     for (Id id = 0; id < points_.size(); ++id)
-      if (used[id]) {
+      if (vertex[id] != kUnused) {
+        vertex[id] = Id(out.mesh.points.size());
         const Point& p = points_[id];
-        vertex[id] = out.add_vertex(CGAL::Epeck::Point_3(p.x(), p.y(), p.z()));
+        out.mesh.points.emplace_back(p.x(), p.y(), p.z());
       }
-    auto tags = tagsOf(out);
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      const Triangle& t = kept[i];
-      const auto f = out.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
-      if (f == ExactMesh::null_face()) throw Declined{};
-      tags[f] = keptTags[i];
-    }
-    // add_face refuses an edge used twice the same way; an edge used
-    // once is left on the border.
-    for (auto h : out.halfedges())
-      if (out.is_border(h)) throw Declined{};
+    out.mesh.triangles.reserve(kept.size());
+    for (const Triangle& t : kept)
+      out.mesh.triangles.push_back({vertex[t[0]], vertex[t[1]], vertex[t[2]]});
+    out.tags = std::move(keptTags);
+    if (!closedManifold(out.mesh)) throw Declined{};
     return out;
   }
 
-  const ExactMesh* meshes_[2];
+  const DoubleMesh* meshes_[2];
   Operand ops_[2];
   std::vector<Point> points_;
-  std::unordered_map<std::uint64_t, Id> crossingIds_;      // (operand, edge, face)
-  std::unordered_map<std::uint64_t, Id> edgeCrossingIds_;  // (edge, edge)
-  std::unordered_map<std::uint32_t, std::vector<std::pair<double, Id>>> edgePoints_[2];
+  std::unordered_map<EdgeKey, std::vector<std::pair<double, Id>>> edgePoints_[2];
   std::vector<std::vector<std::pair<Id, Id>>> faceSegments_[2];
   std::vector<std::vector<Id>> facePoints_[2];
   std::unordered_set<std::uint64_t> segments_;
@@ -717,8 +780,8 @@ class DoubleBoolean {
 
 }  // namespace
 
-std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op,
-                                       DoubleDecline* why) {
+std::optional<DoubleMesh> doubleBoolean(const DoubleMesh& a, const DoubleMesh& b, Boolean::Op op,
+                                        DoubleDecline* why) {
   try {
     return DoubleBoolean(a, b).run(op);
   } catch (const Declined& declined) {
@@ -727,24 +790,23 @@ std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, B
   }
 }
 
-MeshTopology topologyOf(const ExactMesh& mesh) {
+MeshTopology topologyOf(const DoubleMesh& doubles) {
+  // A closed mesh of f triangles has 3f/2 edges; every point is used.
+  const TriangleMesh& mesh = doubles.mesh;
   MeshTopology topology;
-  topology.euler = static_cast<long long>(mesh.number_of_vertices()) -
-                   static_cast<long long>(mesh.number_of_edges()) +
-                   static_cast<long long>(mesh.number_of_faces());
-  // The shells: the faces joined across their edges (union-find).
-  std::vector<std::uint32_t> parent(mesh.number_of_faces() + mesh.number_of_removed_faces());
+  topology.euler = static_cast<long long>(mesh.points.size()) -
+                   static_cast<long long>(mesh.triangles.size()) / 2;
+  // The shells: the points joined along the faces' sides (union-find); a
+  // 2-manifold's faces around a point are joined across their edges.
+  std::vector<std::uint32_t> parent(mesh.points.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::uint32_t(i);
   auto root = [&](std::uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (auto e : mesh.edges()) {
-    const auto f = mesh.face(mesh.halfedge(e, 0)), g = mesh.face(mesh.halfedge(e, 1));
-    if (f == ExactMesh::null_face() || g == ExactMesh::null_face()) continue;
-    parent[root(std::uint32_t(f))] = root(std::uint32_t(g));
-  }
-  for (auto f : mesh.faces()) topology.shells += root(std::uint32_t(f)) == std::uint32_t(f);
+  for (const auto& t : mesh.triangles)
+    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
+  for (std::uint32_t v = 0; v < parent.size(); ++v) topology.shells += root(v) == v;
   return topology;
 }
 

@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "engine/boolean.h"
-#include "export/cgal/exact_mesh.h"
+#include "export/cgal/double_mesh.h"
 
 namespace csgray::detail {
 
@@ -27,12 +27,12 @@ enum class DoubleDecline { NotInDoubles, NotInGeneralPosition };
 // from, its points doubles (so that a chain of such booleans stays
 // eligible); nothing when declined. The operands must be closed,
 // 2-manifold and outward: the result then is too, in general position,
-// and is checked to be closed and consistently oriented before it is
-// returned. Declined at once when a coordinate of an operand is not a
-// double (CGAL::to_interval is not a point: a corefinement made it).
-// When it declines, `why` (if given) says why.
-std::optional<ExactMesh> doubleBoolean(const ExactMesh& a, const ExactMesh& b, Boolean::Op op,
-                                       DoubleDecline* why = nullptr);
+// and is checked to be closed and 2-manifold (closedManifold) before it
+// is returned. (An exact operand whose points are not all doubles is
+// declined before, NotInDoubles, by doublesOf.) When it declines, `why`
+// (if given) says why.
+std::optional<DoubleMesh> doubleBoolean(const DoubleMesh& a, const DoubleMesh& b, Boolean::Op op,
+                                        DoubleDecline* why = nullptr);
 
 // The topology of a closed mesh: its shells (connected components) and its
 // Euler characteristic V − E + F (2 for each sphere, 0 for each torus).
@@ -41,6 +41,6 @@ struct MeshTopology {
   long long euler = 0;
   bool operator==(const MeshTopology&) const = default;
 };
-MeshTopology topologyOf(const ExactMesh& mesh);
+MeshTopology topologyOf(const DoubleMesh& mesh);
 
 }  // namespace csgray::detail

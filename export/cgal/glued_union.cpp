@@ -116,6 +116,10 @@ std::optional<PlaneFaces> facesInPlane(const ExactMesh& mesh, const ContactPlane
 
 }  // namespace
 
+bool meetInPlane(const Bounds& boxA, const Bounds& boxB) {
+  return contactPlane(boxA, boxB).has_value();
+}
+
 bool glueAcrossPlane(ExactMesh& a, const ExactMesh& b, const Bounds& boxA, const Bounds& boxB) {
   const std::optional<ContactPlane> plane = contactPlane(boxA, boxB);
   if (!plane) return false;

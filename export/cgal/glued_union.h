@@ -21,4 +21,9 @@ namespace csgray::detail {
 // 2-manifold; the caller then corefines. Faces keep their material tags.
 bool glueAcrossPlane(ExactMesh& a, const ExactMesh& b, const Bounds& boxA, const Bounds& boxB);
 
+// Do the boxes meet in one axis-aligned plane and nowhere else? The first
+// thing glueAcrossPlane asks, and all it asks of the boxes: false, and it
+// would return false.
+bool meetInPlane(const Bounds& boxA, const Bounds& boxB);
+
 }  // namespace csgray::detail

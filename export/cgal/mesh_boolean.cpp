@@ -303,6 +303,9 @@ struct EvaluationOrder {
 // inexact constructions a chained result may self-intersect, and CGAL's
 // face triangulation may then crash). Measured on plate(8), Epick was no
 // faster: CGAL computes the intersection points exactly either way.
+// Pieces made in doubles (primitives, booleans in doubles) stay in doubles
+// (double_mesh.h) until CGAL needs them: building CGAL's mesh face by face
+// cost plate(32) more than its booleans in doubles.
 class Evaluator {
  public:
   using Mesh = ExactMesh;
@@ -310,16 +313,23 @@ class Evaluator {
   using Face = typename Mesh::Face_index;
   using Vertex = typename Mesh::Vertex_index;
 
-  // Part of the tree, evaluated: a mesh and the box of its points.
+  // Part of the tree, evaluated: a mesh and the box of its points. The
+  // mesh is held in doubles while every step that made it was made so (a
+  // primitive's tessellation, booleans in doubles, joins of such pieces),
+  // else as CGAL's exact mesh; exact() makes the one from the other.
   struct Piece {
-    Mesh mesh;
+    std::optional<DoubleMesh> doubles;
+    Mesh mesh;  // when doubles holds nothing
     Bounds box;
     const Solid* origin = nullptr;  // the primitive or boolean it was made by
     std::size_t shape = 0;  // of a primitive's mesh: a hash of its points; 0 after a boolean
     // How far a contact's offset (corefine) moved some of its faces, at
     // most: 0 while every face is where the model puts it.
     double grown = 0.0;
-    bool empty() const { return mesh.number_of_faces() == 0; }
+    std::size_t faces() const {
+      return doubles ? doubles->mesh.size() : std::size_t(mesh.number_of_faces());
+    }
+    bool empty() const { return faces() == 0; }
   };
 
   // order: the order it meets operands in, and whether it refuses to cut
@@ -385,7 +395,7 @@ class Evaluator {
         // that thickness, so the cutter grows past it.
         if (minuend.grown > 0.0) {
           const dvec3 reach(tolerance_);
-          offsetMesh(cut.mesh, minuend.grown + kContactOffset * tolerance_,
+          offsetMesh(exact(cut), minuend.grown + kContactOffset * tolerance_,
                      {minuend.box.lo - reach, minuend.box.hi + reach});
           cut.shape = 0;
         }
@@ -407,9 +417,9 @@ class Evaluator {
 
   Piece leaf(const Primitive& primitive, const Bounds& region) {
     ++stats_.primitives;
-    const TriangleMesh triangles = tessellation(primitive, region);
+    TriangleMesh triangles = tessellation(primitive, region);
     countTriangles(triangles.size());
-    return pieceOf(triangles, tagOf(primitive.material()), primitive.kind());
+    return pieceOf(std::move(triangles), tagOf(primitive.material()), primitive.kind());
   }
 
   // The operands' pieces, in their order, as evaluate makes them one by
@@ -442,7 +452,7 @@ class Evaluator {
       }
     };
     // A few primitives are tessellated here: starting TBB's scheduler
-    // (about half a millisecond, as in roundedCopy) would cost more.
+    // (about half a millisecond, as in roundedFaces) would cost more.
     constexpr std::size_t kFewOperands = 8;
     if (n < kFewOperands)
       for (std::size_t i = 0; i < n; ++i) tessellate(i);
@@ -455,9 +465,9 @@ class Evaluator {
       if (failed[i]) std::rethrow_exception(failed[i]);
       ++stats_.primitives;
       countTriangles(triangles[i].size());
-      pieces[i] = pieceOf(triangles[i], tagOf(primitives[i]->material()), primitives[i]->kind());
+      pieces[i] =
+          pieceOf(std::move(triangles[i]), tagOf(primitives[i]->material()), primitives[i]->kind());
       pieces[i].origin = primitives[i];
-      triangles[i] = {};
     }
     return pieces;
   }
@@ -485,26 +495,31 @@ class Evaluator {
     }
   }
 
-  // The exact mesh of triangles, its faces tagged with one material's
-  // tag. (Safe on several threads at once: it reads only its arguments.)
-  static Piece pieceOf(const TriangleMesh& triangles, std::uint32_t tag, const std::string& kind) {
+  // The piece of triangles, in doubles, its faces tagged with one
+  // material's tag.
+  static Piece pieceOf(TriangleMesh triangles, std::uint32_t tag, const std::string& kind) {
     Piece piece;
     if (triangles.empty()) return piece;
-    Mesh& mesh = piece.mesh;
-    mesh.reserve(triangles.points.size(), triangles.size() * 3 / 2, triangles.size());
-    for (const dvec3& p : triangles.points) mesh.add_vertex(typename K::Point_3(p.x, p.y, p.z));
-    auto tags = tagsOf(mesh);
-    for (const TriangleMesh::Triangle& t : triangles.triangles) {
-      Face f = mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2]));
-      if (f == Mesh::null_face())
-        throw std::logic_error(kind + ": its tessellation is not a 2-manifold");
-      tags[f] = tag;
-    }
+    if (!closedManifold(triangles))
+      throw std::logic_error(kind + ": its tessellation is not a 2-manifold");
     piece.box = triangles.bounds();
     for (const dvec3& p : triangles.points)
       for (double x : {p.x, p.y, p.z})
         piece.shape = piece.shape * 1099511628211u ^ std::hash<double>{}(x);
+    piece.doubles.emplace();
+    piece.doubles->tags.assign(triangles.size(), tag);
+    piece.doubles->mesh = std::move(triangles);
     return piece;
+  }
+
+  // The piece's exact mesh, made from its doubles the first time it is
+  // needed (and then kept instead of them).
+  static Mesh& exact(Piece& piece) {
+    if (piece.doubles) {
+      piece.mesh = exactOf(*piece.doubles);
+      piece.doubles.reset();
+    }
+    return piece.mesh;
   }
 
   // An intersection of convex primitives of one material (a box cut by a
@@ -527,16 +542,20 @@ class Evaluator {
     }
     if (material == nullptr || !region.finite()) return std::nullopt;
     stats_.primitives += operands.size();
-    const TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
+    TriangleMesh triangles = convexPolytopeMesh(planes, regionWithMargin(region, tolerance_));
     countTriangles(triangles.size());
-    return pieceOf(triangles, tagOf(*material), "intersection");
+    return pieceOf(std::move(triangles), tagOf(*material), "intersection");
   }
 
   // Adds b's shells to a: their boxes are apart, so no face of one meets
   // the other.
   void join(Piece& a, Piece& b) {
-    tagsOf(b.mesh);
-    a.mesh.join(b.mesh);
+    if (a.doubles && b.doubles) {
+      a.doubles->append(*b.doubles);
+    } else {
+      tagsOf(exact(b));
+      exact(a).join(b.mesh);
+    }
     a.box.include(b.box);
     a.shape = 0;
     a.grown = std::max(a.grown, b.grown);
@@ -566,7 +585,7 @@ class Evaluator {
         // Boxes apart by a hair: corners a hair apart are made one place,
         // which the end resolves as a contact (separateCoincidentVertices).
         for (const Bounds& member : members[g])
-          weldNearVertices(groups[g].mesh, piece.mesh, hairApart(member, piece.box));
+          weldNearVertices(groups[g], piece, hairApart(member, piece.box));
         members[g].push_back(piece.box);
         join(groups[g], piece);
       }
@@ -605,8 +624,7 @@ class Evaluator {
               continue;
             ++tries[i];
             ++tries[j];
-            if (!glueAcrossPlane(pieces[i].mesh, pieces[j].mesh, pieces[i].box, pieces[j].box))
-              continue;
+            if (!glue(pieces[i], pieces[j])) continue;
             ++stats_.glued;
             pieces[i].box.include(pieces[j].box);
             pieces[i].shape = 0;
@@ -629,7 +647,7 @@ class Evaluator {
         Piece& b = pieces[i + 1];
         if (!a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
-          weldNearVertices(a.mesh, b.mesh, hairApart(a.box, b.box));
+          weldNearVertices(a, b, hairApart(a.box, b.box));
           join(a, b);
         } else {
           corefine(a, b, op);
@@ -643,6 +661,18 @@ class Evaluator {
     return std::move(pieces[0]);
   }
 
+  // Solids stacked face to face (glueAcrossPlane), their exact meshes made
+  // only where their boxes meet in a plane.
+  static bool glue(Piece& a, Piece& b) {
+    if (!meetInPlane(a.box, b.box)) return false;
+    return glueAcrossPlane(exact(a), exact(b), a.box, b.box);
+  }
+
+  // A piece's exact mesh, made anew from its doubles if it holds them.
+  static Mesh asExact(const Piece& piece) {
+    return piece.doubles ? exactOf(*piece.doubles) : piece.mesh;
+  }
+
   // A union or intersection of a primitive with itself is that primitive,
   // but CGAL's corefinement of two equal meshes handles every pair of
   // coincident triangles (two equal spheres: 0.4 s for 320 triangles; a
@@ -653,11 +683,19 @@ class Evaluator {
     for (Piece& piece : pieces) {
       const bool repeat =
           piece.shape != 0 && std::any_of(kept.begin(), kept.end(), [&](const Piece& k) {
-            return k.shape == piece.shape && sameMesh(k.mesh, piece.mesh);
+            return k.shape == piece.shape && sameMesh(k, piece);
           });
       if (!repeat) kept.push_back(std::move(piece));
     }
     pieces = std::move(kept);
+  }
+
+  static bool sameMesh(const Piece& p, const Piece& q) {
+    if (p.doubles && q.doubles)
+      return p.doubles->mesh.points == q.doubles->mesh.points &&
+             p.doubles->mesh.triangles == q.doubles->mesh.triangles;
+    if (p.doubles || q.doubles) return sameMesh(asExact(p), asExact(q));
+    return sameMesh(p.mesh, q.mesh);
   }
 
   static bool sameMesh(const Mesh& a, const Mesh& b) {
@@ -682,12 +720,11 @@ class Evaluator {
     // where they are, the other's are copied. A union or intersection is
     // symmetric, so the larger mesh takes that place (a box united with a
     // grid of spheres copies the box's faces, not the spheres').
-    if (op != Boolean::Op::Difference && b.mesh.number_of_faces() > a.mesh.number_of_faces())
-      std::swap(a, b);
-    if (weldNearVertices(a.mesh, b.mesh, hairApart(a.box, b.box))) b.shape = 0;
+    if (op != Boolean::Op::Difference && b.faces() > a.faces()) std::swap(a, b);
+    if (weldNearVertices(a, b, hairApart(a.box, b.box))) b.shape = 0;
     // Solids stacked face to face on the same triangles need no
     // corefinement (a frustum on the one below it).
-    if (op == Boolean::Op::Union && glueAcrossPlane(a.mesh, b.mesh, a.box, b.box)) {
+    if (op == Boolean::Op::Union && glue(a, b)) {
       ++stats_.glued;
       a.box.include(b.box);
       a.shape = 0;
@@ -698,24 +735,36 @@ class Evaluator {
     setBooleanInProgress(booleanText(a, b, op));
     // In doubles where the operands allow it: several times faster than
     // CGAL's exact corefinement, which takes over where it declines.
+    // (The result stays in doubles, for the next boolean and the end.)
     if (order_.doubles) {
-      DoubleDecline why{};
-      if (std::optional<Mesh> made = doubleBoolean(a.mesh, b.mesh, op, &why)) {
+      DoubleDecline why = DoubleDecline::NotInDoubles;
+      std::optional<DoubleMesh> madeA, madeB;  // an exact operand's doubles
+      const DoubleMesh* da = a.doubles                     ? &*a.doubles
+                             : (madeA = doublesOf(a.mesh)) ? &*madeA
+                                                           : nullptr;
+      const DoubleMesh* db = b.doubles                     ? &*b.doubles
+                             : (madeB = doublesOf(b.mesh)) ? &*madeB
+                                                           : nullptr;
+      std::optional<DoubleMesh> made;
+      if (da && db) made = doubleBoolean(*da, *db, op, &why);
+      bool perturbed = false;
+      if (!made && why == DoubleDecline::NotInGeneralPosition && order_.perturb &&
+          a.faces() + b.faces() >= kPerturbedFaces) {
+        made = perturbedInDoubles(*da, a.box, b, op);
+        perturbed = made.has_value();
+      }
+      if (made) {
         ++stats_.inDoubles;
-        a.mesh = std::move(*made);
-        a.grown = std::max(a.grown, b.grown);
+        stats_.perturbed += perturbed;
+        a.doubles = std::move(made);
+        a.mesh = Mesh();
+        a.grown = std::max(a.grown, b.grown) +
+                  (perturbed ? kPerturbedReach * kContactOffset * tolerance_ : 0.0);
         return boxAfter(a);
       }
-      if (why == DoubleDecline::NotInGeneralPosition && order_.perturb &&
-          a.mesh.number_of_faces() + b.mesh.number_of_faces() >= kPerturbedFaces)
-        if (std::optional<Mesh> made = perturbedInDoubles(a, b, op)) {
-          ++stats_.inDoubles;
-          ++stats_.perturbed;
-          a.mesh = std::move(*made);
-          a.grown = std::max(a.grown, b.grown) + kPerturbedReach * kContactOffset * tolerance_;
-          return boxAfter(a);
-        }
     }
+    exact(a);
+    exact(b);
     // An operand that touches itself (solids that met at a corner, united
     // before: CGAL gave each a vertex of its own there, at one place) must
     // not go into a corefinement whose other operand's surface runs through
@@ -799,27 +848,29 @@ class Evaluator {
   // not a contact, whose resolution is left to CGAL's path (a point
   // contact stays a split, docs/cli.md), and the two differ only by the
   // move. Nothing when either declines or they differ.
-  std::optional<Mesh> perturbedInDoubles(const Piece& a, const Piece& b, Boolean::Op op) const {
+  std::optional<DoubleMesh> perturbedInDoubles(const DoubleMesh& a, const Bounds& boxA,
+                                               const Piece& b, Boolean::Op op) const {
     const double delta = kContactOffset * tolerance_;
     const double outward = op == Boolean::Op::Intersection ? -delta : delta;
     // The boxes' bits, hashed a word at a time in the manner of FNV-1a
     // (its 64-bit offset and prime), seed the standard's fully specified
     // engine: the same shift on every platform, and so the same file.
     std::uint64_t hash = 14695981039346656037u;
-    for (const Bounds* box : {&a.box, &b.box})
+    for (const Bounds* box : {&boxA, &b.box})
       for (double x : {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z})
         hash = (hash ^ std::bit_cast<std::uint64_t>(x)) * 1099511628211u;
     std::mt19937 random(std::uint32_t(hash ^ hash >> 32));
     dvec3 shift;
     for (int k = 0; k < 3; ++k) shift[k] = delta * (double(random()) / 0x1p32 - 0.5) / 2.0;
+    const Mesh exactB = asExact(b);
     auto moved = [&](double by) {
-      Mesh mesh = b.mesh;
+      Mesh mesh = exactB;
       offsetMesh(mesh, by, Bounds::everything(), shift);
-      return mesh;
+      return doublesOf(mesh).value();  // its points made doubles
     };
-    std::optional<Mesh> made = doubleBoolean(a.mesh, moved(outward), op);
+    std::optional<DoubleMesh> made = doubleBoolean(a, moved(outward), op);
     if (!made) return std::nullopt;
-    const std::optional<Mesh> other = doubleBoolean(a.mesh, moved(-outward), op);
+    const std::optional<DoubleMesh> other = doubleBoolean(a, moved(-outward), op);
     if (!other || topologyOf(*made) != topologyOf(*other)) return std::nullopt;
     return made;
   }
@@ -862,7 +913,7 @@ class Evaluator {
   // within a hair of a vertex of a, in the region (hairApart), takes a's
   // point, so that the solids meet exactly and the boolean resolves a
   // plain contact. Returns whether any vertex moved.
-  static bool weldNearVertices(const Mesh& a, Mesh& b, const Bounds& region) {
+  static bool weldNearVertices(Piece& pieceA, Piece& pieceB, const Bounds& region) {
     if (region.empty()) return false;
     const double reach = hair(region);
     struct Corner {
@@ -871,10 +922,18 @@ class Evaluator {
       bool ofB;
     };
     std::vector<Corner> corners;
-    for (const Mesh* mesh : std::array<const Mesh*, 2>{&a, &b})
-      for (Vertex v : mesh->vertices())
-        if (const dvec3 p = pointOf(*mesh, v); region.contains(p))
-          corners.push_back({p, v, mesh == &b});
+    for (const Piece* piece : {&pieceA, &pieceB}) {
+      const bool ofB = piece == &pieceB;
+      if (piece->doubles) {
+        const std::vector<dvec3>& points = piece->doubles->mesh.points;
+        for (std::size_t i = 0; i < points.size(); ++i)
+          if (region.contains(points[i])) corners.push_back({points[i], Vertex(i), ofB});
+      } else {
+        for (Vertex v : piece->mesh.vertices())
+          if (const dvec3 p = pointOf(piece->mesh, v); region.contains(p))
+            corners.push_back({p, v, ofB});
+      }
+    }
     std::sort(corners.begin(), corners.end(),
               [](const Corner& l, const Corner& r) { return l.p.x < r.p.x; });
     std::vector<std::pair<Vertex, Vertex>> pairs;  // (of a, of b)
@@ -888,6 +947,9 @@ class Evaluator {
           pairs.emplace_back(u.v, w.v);
       }
     if (pairs.empty()) return false;
+    // (exactOf keeps the vertices' numbers.)
+    const Mesh& a = exact(pieceA);
+    Mesh& b = exact(pieceB);
     // Only where the solids meet at the corner alone: every edge from it
     // leads outside the other solid (its midpoint is outside; its far end
     // may be another contact). Where they overlap around it (the centres
@@ -946,6 +1008,10 @@ class Evaluator {
 
   void boxAfter(Piece& a) {
     a.shape = 0;
+    if (a.doubles) {
+      a.box = a.doubles->mesh.bounds();
+      return;
+    }
     CGAL::Bbox_3 box = PMP::bbox(a.mesh);
     a.box = a.empty() ? Bounds{}
                       : Bounds{dvec3(box.xmin(), box.ymin(), box.zmin()),
@@ -977,38 +1043,100 @@ class Evaluator {
 };
 
 // The evaluated mesh with its points rounded to doubles (or floats), tags
-// kept.
-template <class Mesh>
-RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredCoordinate stored) {
-  // The corefinement returns the same triangles in an order that varies
-  // from run to run, and the repairs that may follow (removeSlivers,
-  // removeCrossings) collapse and fill in the mesh's order: so the copy
-  // takes a canonical order, the points sorted by their coordinates and
-  // the faces by their corners, and the same part always gives the same
-  // file.
+// kept, in a canonical order. The corefinement returns the same triangles
+// in an order that varies from run to run, and the repairs that may follow
+// (removeSlivers, removeCrossings) collapse and fill in the mesh's order:
+// so the copy takes a canonical order, the points sorted by their
+// coordinates and the faces by their corners, and the same part always
+// gives the same file.
+struct RoundedFaces {
+  struct Face {
+    std::array<std::uint32_t, 3> corners;  // turned to start at the lowest
+    std::uint32_t tag;
+    std::uint32_t from;  // its place in the evaluated mesh
+  };
+  std::vector<dvec3> points;  // sorted
+  std::vector<Face> faces;    // sorted by corners
+};
+
+// The evaluated mesh as roundedFaces reads it, exact or in doubles: its
+// vertex slots, the live ones, each one's point in doubles, the exact
+// order of two points, and its faces (corners by slot).
+struct ExactSource {
+  const ExactMesh& mesh;
+  std::size_t slots() const {
+    return mesh.number_of_vertices() + mesh.number_of_removed_vertices();
+  }
+  std::vector<std::uint32_t> vertices() const {
+    return {mesh.vertices().begin(), mesh.vertices().end()};
+  }
+  dvec3 point(std::uint32_t v) const { return pointOf(mesh, ExactMesh::Vertex_index(v)); }
+  CGAL::Comparison_result compare(std::uint32_t a, std::uint32_t b) const {
+    return CGAL::compare_xyz(mesh.point(ExactMesh::Vertex_index(a)),
+                             mesh.point(ExactMesh::Vertex_index(b)));
+  }
+  std::vector<RoundedFaces::Face> faces() const {
+    std::vector<RoundedFaces::Face> out;
+    out.reserve(mesh.number_of_faces());
+    auto tags = tagsOf(mesh);
+    for (auto f : mesh.faces()) {
+      RoundedFaces::Face face{{}, tags[f], std::uint32_t(f)};
+      int k = 0;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+        if (k == 3) throw std::logic_error("meshOfSolid: a face of the result is not a triangle");
+        face.corners[k++] = std::uint32_t(v);
+      }
+      out.push_back(face);
+    }
+    return out;
+  }
+};
+struct DoubleSource {
+  const DoubleMesh& doubles;
+  std::size_t slots() const { return doubles.mesh.points.size(); }
+  std::vector<std::uint32_t> vertices() const {
+    std::vector<std::uint32_t> all(slots());
+    for (std::size_t v = 0; v < all.size(); ++v) all[v] = std::uint32_t(v);
+    return all;
+  }
+  dvec3 point(std::uint32_t v) const { return doubles.mesh.points[v]; }
+  CGAL::Comparison_result compare(std::uint32_t a, std::uint32_t b) const {
+    const dvec3 &p = doubles.mesh.points[a], &q = doubles.mesh.points[b];
+    if (p == q) return CGAL::EQUAL;
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z) ? CGAL::SMALLER : CGAL::LARGER;
+  }
+  std::vector<RoundedFaces::Face> faces() const {
+    std::vector<RoundedFaces::Face> out(doubles.mesh.size());
+    for (std::size_t f = 0; f < out.size(); ++f)
+      out[f] = {doubles.mesh.triangles[f], doubles.tags[f], std::uint32_t(f)};
+    return out;
+  }
+};
+
+template <class Source>
+RoundedFaces roundedFaces(const Source& source, const EvaluationFrame& frame,
+                          StoredCoordinate stored) {
   // Points that rounding to the file's precision put in one place are
   // ordered by their exact places (to_double of a lazy exact number is
   // not a canonical rounding: it depends on what was computed before).
   // (The points are rounded, and both sorts made, on all threads: each
   // order is total, the last tie broken by the index, so it is the same
   // whatever the threads.)
-  std::vector<dvec3> points(exact.number_of_vertices() + exact.number_of_removed_vertices());
-  std::vector<typename Mesh::Vertex_index> byPlace(exact.vertices().begin(),
-                                                   exact.vertices().end());
+  std::vector<dvec3> points(source.slots());
+  std::vector<std::uint32_t> byPlace = source.vertices();
   // Small meshes stay on this thread: starting TBB's scheduler costs
   // about half a millisecond (two frustums glued: 5 % of their export).
   const bool threaded = byPlace.size() >= 10000;
   auto roundPoint = [&](std::size_t i) {
-    const auto v = byPlace[i];
-    const auto& p = exact.point(v);
-    dvec3 q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const std::uint32_t v = byPlace[i];
+    dvec3 q = source.point(v);
     if (!frame.identity) q = frame.worldFromEval * q;
     points[v] = dvec3(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));
   };
-  auto placeOrder = [&](auto a, auto b) {
+  auto placeOrder = [&](std::uint32_t a, std::uint32_t b) {
     const dvec3 &p = points[a], &q = points[b];
     if (p != q) return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-    const CGAL::Comparison_result exactly = CGAL::compare_xyz(exact.point(a), exact.point(b));
+    const CGAL::Comparison_result exactly = source.compare(a, b);
     return exactly != CGAL::EQUAL ? exactly == CGAL::SMALLER : a < b;
   };
   if (threaded) {
@@ -1018,66 +1146,92 @@ RoundedMesh roundedCopy(const Mesh& exact, const EvaluationFrame& frame, StoredC
     for (std::size_t i = 0; i < byPlace.size(); ++i) roundPoint(i);
     std::sort(byPlace.begin(), byPlace.end(), placeOrder);
   }
-  // The vertices in that order: vertex[v] is where exact's v goes.
-  std::vector<RoundedMesh::Vertex_index> vertex(points.size());
-  for (std::size_t i = 0; i < byPlace.size(); ++i)
-    vertex[byPlace[i]] = RoundedMesh::Vertex_index(std::uint32_t(i));
+  RoundedFaces out;
+  // The vertices in that order: vertex[v] is where the mesh's v goes.
+  std::vector<std::uint32_t> vertex(points.size());
+  out.points.reserve(byPlace.size());
+  for (std::size_t i = 0; i < byPlace.size(); ++i) {
+    vertex[byPlace[i]] = std::uint32_t(i);
+    out.points.push_back(points[byPlace[i]]);
+  }
   // A mirror turns the faces inside out on the way back.
   const bool flip = !frame.identity && glm::determinant(frame.worldFromEval) < 0.0;
-  struct Face {
-    std::array<RoundedMesh::Vertex_index, 3> corners;
-    typename Mesh::Face_index from;
-  };
-  std::vector<Face> faces;
-  faces.reserve(exact.number_of_faces());
-  for (auto f : exact.faces()) {
-    Face face{{}, f};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(exact.halfedge(f), exact)) {
-      if (k == 3) throw std::logic_error("meshOfSolid: a face of the result is not a triangle");
-      face.corners[k++] = vertex[v];
-    }
-    if (flip) std::swap(face.corners[1], face.corners[2]);
-    // Turned to start at its lowest corner: the same face, one way to write it.
+  out.faces = source.faces();
+  for (RoundedFaces::Face& face : out.faces) {
     auto& c = face.corners;
+    for (std::uint32_t& corner : c) corner = vertex[corner];
+    if (flip) std::swap(c[1], c[2]);
+    // Turned to start at its lowest corner: the same face, one way to write it.
     std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-    faces.push_back(face);
   }
-  // The mesh with the faces added in an order; none when an add fails.
-  // Adding faces one by one can fail in some orders where the finished
-  // mesh is fine (a vertex whose fans meet only once all are there), so
-  // the sorted order, when it fails, gives way to the corefinement's,
-  // which always succeeded before.
-  auto exactTags = tagsOf(exact);
-  auto build = [&](const std::vector<Face>& order) -> std::optional<RoundedMesh> {
-    RoundedMesh rounded;
-    rounded.reserve(exact.number_of_vertices(), exact.number_of_edges(), exact.number_of_faces());
-    for (auto v : byPlace) {
-      const dvec3& q = points[v];
-      rounded.add_vertex({q.x, q.y, q.z});
-    }
-    auto tags = tagsOf(rounded);
-    for (const Face& face : order) {
-      const auto& t = face.corners;
-      RoundedMesh::Face_index g = rounded.add_face(t[0], t[1], t[2]);
-      if (g == RoundedMesh::null_face()) return std::nullopt;
-      tags[g] = exactTags[face.from];
-    }
-    return rounded;
-  };
-  std::vector<Face> sorted = faces;
-  auto cornerOrder = [](const Face& a, const Face& b) {
+  auto cornerOrder = [](const RoundedFaces::Face& a, const RoundedFaces::Face& b) {
     return a.corners != b.corners ? a.corners < b.corners : a.from < b.from;
   };
   if (threaded)
-    tbb::parallel_sort(sorted.begin(), sorted.end(), cornerOrder);
+    tbb::parallel_sort(out.faces.begin(), out.faces.end(), cornerOrder);
   else
-    std::sort(sorted.begin(), sorted.end(), cornerOrder);
-  if (auto rounded = build(sorted)) return std::move(*rounded);
-  if (auto rounded = build(faces)) return std::move(*rounded);
+    std::sort(out.faces.begin(), out.faces.end(), cornerOrder);
+  return out;
+}
+
+// Is there nothing for the repairs after rounding to do? No two points in
+// one place (separateCoincidentVertices), no face without area
+// (removeDegenerateFaces, which finds them by CGAL's exact collinear
+// test, as here). Then the rounded mesh is a 2-manifold as the evaluated
+// one was: rounding changed no face's corners.
+bool needsNoRepair(const RoundedFaces& rounded) {
+  for (std::size_t i = 1; i < rounded.points.size(); ++i)
+    if (rounded.points[i - 1] == rounded.points[i]) return false;
+  auto point = [&](std::uint32_t v) {
+    const dvec3& p = rounded.points[v];
+    return CGAL::Epick::Point_3(p.x, p.y, p.z);
+  };
+  return std::none_of(rounded.faces.begin(), rounded.faces.end(), [&](const auto& face) {
+    const auto& c = face.corners;
+    return CGAL::collinear(point(c[0]), point(c[1]), point(c[2]));
+  });
+}
+
+// The rounded faces as CGAL's mesh, for the repairs. Adding faces one by
+// one can fail in some orders where the finished mesh is fine (a vertex
+// whose fans meet only once all are there), so the sorted order, when it
+// fails, gives way to the evaluation's, which always succeeded before.
+RoundedMesh roundedMeshOf(const RoundedFaces& rounded) {
+  auto build = [&](const std::vector<RoundedFaces::Face>& order) -> std::optional<RoundedMesh> {
+    RoundedMesh mesh;
+    mesh.reserve(rounded.points.size(), order.size() * 3 / 2, order.size());
+    for (const dvec3& q : rounded.points) mesh.add_vertex({q.x, q.y, q.z});
+    auto tags = tagsOf(mesh);
+    using V = RoundedMesh::Vertex_index;
+    for (const RoundedFaces::Face& face : order) {
+      const auto& t = face.corners;
+      RoundedMesh::Face_index g = mesh.add_face(V(t[0]), V(t[1]), V(t[2]));
+      if (g == RoundedMesh::null_face()) return std::nullopt;
+      tags[g] = face.tag;
+    }
+    return mesh;
+  };
+  if (auto mesh = build(rounded.faces)) return std::move(*mesh);
+  std::vector<RoundedFaces::Face> made = rounded.faces;
+  std::sort(made.begin(), made.end(), [](const auto& a, const auto& b) { return a.from < b.from; });
+  if (auto mesh = build(made)) return std::move(*mesh);
   throw std::runtime_error(
       "the result is not a 2-manifold once rounded to the file's precision (faces meet at "
       "a hair's breadth)");
+}
+
+// The rounded faces as a PartMesh, as partOf makes it of their CGAL mesh.
+PartMesh partOf(const RoundedFaces& rounded, std::vector<MaterialPtr> materials) {
+  PartMesh out;
+  out.materials = std::move(materials);
+  out.mesh.points = rounded.points;
+  out.mesh.triangles.reserve(rounded.faces.size());
+  out.material.reserve(rounded.faces.size());
+  for (const RoundedFaces::Face& face : rounded.faces) {
+    out.mesh.triangles.push_back(face.corners);
+    out.material.push_back(face.tag);
+  }
+  return out;
 }
 
 // The rounded mesh as a PartMesh.
@@ -1115,21 +1269,36 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
   }();
   if (piece.empty()) return PartMesh{{}, {}, std::move(evaluator.materials)};
 
-  RoundedMesh rounded = roundedCopy(piece.mesh, frame, stored);
-  // Rounding moves a point that a corefinement put a hair's breadth from
-  // another onto it, or onto the line through two others: the faces between
-  // them lose their area. CGAL collapses such edges and flips such faces
-  // away without moving any other point.
-  removeDegenerateFaces(rounded);
-  counts.contacts += separateCoincidentVertices(rounded, kContactOffset * tolerance, stored) > 0;
+  const RoundedFaces faces = piece.doubles
+                                 ? roundedFaces(DoubleSource{*piece.doubles}, frame, stored)
+                                 : roundedFaces(ExactSource{piece.mesh}, frame, stored);
+  piece = {};
   // The part's mesh from the rounded one, without the slivers a cut left
   // of solids it should have taken whole (removeStrayShells).
-  auto partFrom = [&](const RoundedMesh& mesh) {
+  auto partFrom = [&](const auto& mesh) {
     PartMesh made = partOf(mesh, evaluator.materials);
     counts.strayShells = removeStrayShells(made, solid, tolerance);
     return made;
   };
-  PartMesh part = partFrom(rounded);
+  // CGAL's mesh of the rounded faces, made where a repair needs it.
+  std::optional<RoundedMesh> rounded;
+  auto roundedMesh = [&]() -> RoundedMesh& {
+    if (!rounded) rounded = roundedMeshOf(faces);
+    return *rounded;
+  };
+  PartMesh part;
+  if (needsNoRepair(faces)) {
+    part = partFrom(faces);
+  } else {
+    // Rounding moves a point that a corefinement put a hair's breadth from
+    // another onto it, or onto the line through two others: the faces
+    // between them lose their area. CGAL collapses such edges and flips
+    // such faces away without moving any other point.
+    removeDegenerateFaces(roundedMesh());
+    counts.contacts +=
+        separateCoincidentVertices(roundedMesh(), kContactOffset * tolerance, stored) > 0;
+    part = partFrom(roundedMesh());
+  }
 
   const auto start = std::chrono::steady_clock::now();
   MeshDefect defect = meshDefect(part.mesh);
@@ -1147,16 +1316,16 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
     ++counts.repairs;
     const double reach = kRepairReach * tolerance;
     for (int round = 0; round < kSliverRounds && !defect.valid(); ++round) {
-      removeSlivers(rounded, reach);
-      part = partFrom(rounded);
+      removeSlivers(roundedMesh(), reach);
+      part = partFrom(roundedMesh());
       defect = meshDefect(part.mesh);
     }
     // A mesh made with booleans in doubles whose slivers were not all
     // is made again with CGAL's instead (meshTryingDoubles): CGAL's hole
     // filling met NaNs on one (OpenSCAD's example001).
     if (!defect.valid() && counts.inDoubles == 0) {
-      removeCrossings(rounded, reach);
-      part = partFrom(rounded);
+      removeCrossings(roundedMesh(), reach);
+      part = partFrom(roundedMesh());
       defect = meshDefect(part.mesh);
     }
   }

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <random>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace csgray::detail {
@@ -62,23 +63,28 @@ TEST(BoxPairs, WithinOneSetEveryPairThatMeetsOnce) {
 
 TEST(BoxPairs, BetweenTwoSetsEveryPairThatMeetsOnceInOrder) {
   std::mt19937 random(20261127);
-  const std::vector<FaceBox> a = randomBoxes(5000, 60, 3, 0, random);
-  const std::vector<FaceBox> b = randomBoxes(4000, 60, 3, 1, random);
-  Pairs expected;
-  for (const FaceBox& x : a)
-    for (const FaceBox& y : b)
-      if (meet(x, y)) expected.emplace(x.face, y.face);
-  std::vector<FaceBox> workA = a, workB = b;
-  const std::vector<FacePair> order = meetingPairs(workA, workB);
-  EXPECT_GT(expected.size(), a.size());
-  EXPECT_EQ(Pairs(order.begin(), order.end()), expected);
-  // The same boxes again, on one thread and on four: the same pairs in the
-  // same order (the double boolean numbers its new points in it).
-  for (int threads : {1, 4}) {
-    std::vector<FaceBox> againA = a, againB = b;
-    std::vector<FacePair> again;
-    tbb::task_arena(threads).execute([&] { again = meetingPairs(againA, againB); });
-    EXPECT_EQ(again, order) << threads << " threads";
+  // Two sets that are split; a few long boxes against many, each way
+  // round, which are not.
+  for (auto [na, nb, reachB] :
+       {std::tuple(5000, 4000, 3), std::tuple(20000, 12, 40), std::tuple(12, 20000, 3)}) {
+    const std::vector<FaceBox> a = randomBoxes(std::size_t(na), 60, na < nb ? 40 : 3, 0, random);
+    const std::vector<FaceBox> b = randomBoxes(std::size_t(nb), 60, reachB, 1, random);
+    Pairs expected;
+    for (const FaceBox& x : a)
+      for (const FaceBox& y : b)
+        if (meet(x, y)) expected.emplace(x.face, y.face);
+    std::vector<FaceBox> workA = a, workB = b;
+    const std::vector<FacePair> order = meetingPairs(workA, workB);
+    EXPECT_GT(expected.size(), std::size_t(std::min(na, nb)));
+    EXPECT_EQ(Pairs(order.begin(), order.end()), expected) << na << " against " << nb;
+    // The same boxes again, on one thread and on four: the same pairs in
+    // the same order (the double boolean numbers its new points in it).
+    for (int threads : {1, 4}) {
+      std::vector<FaceBox> againA = a, againB = b;
+      std::vector<FacePair> again;
+      tbb::task_arena(threads).execute([&] { again = meetingPairs(againA, againB); });
+      EXPECT_EQ(again, order) << threads << " threads, " << na << " against " << nb;
+    }
   }
 }
 

@@ -34,33 +34,30 @@ SolidPtr part(const std::string& source) {
   return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
 }
 
-ExactMesh exactOf(const TriangleMesh& triangles) {
-  ExactMesh mesh;
-  for (const dvec3& p : triangles.points) mesh.add_vertex(CGAL::Epeck::Point_3(p.x, p.y, p.z));
-  tagsOf(mesh);
-  for (const auto& t : triangles.triangles)
-    mesh.add_face(ExactMesh::Vertex_index(t[0]), ExactMesh::Vertex_index(t[1]),
-                  ExactMesh::Vertex_index(t[2]));
+DoubleMesh tagged(TriangleMesh triangles) {
+  DoubleMesh mesh;
+  mesh.tags.assign(triangles.size(), 0);
+  mesh.mesh = std::move(triangles);
   return mesh;
 }
 
-// The exact mesh of a script's primitive, tessellated at kTolerance.
-ExactMesh meshOf(const std::string& source) {
+// The mesh of a script's primitive, tessellated at kTolerance.
+DoubleMesh meshOf(const std::string& source) {
   const SolidPtr solid = part(source);
   auto* primitive = dynamic_cast<const Primitive*>(solid.get());
   EXPECT_NE(primitive, nullptr) << source;
-  return exactOf(primitive->tessellate(kTolerance, solid->bounds()));
+  return tagged(primitive->tessellate(kTolerance, solid->bounds()));
 }
 
 // a op b in doubles, expected to be made and valid, with CGAL's volume to
 // 1e-9 relative; returns its volume.
-double madeInDoubles(const ExactMesh& a, const ExactMesh& b, Op op) {
-  const std::optional<ExactMesh> made = doubleBoolean(a, b, op);
+double madeInDoubles(const DoubleMesh& a, const DoubleMesh& b, Op op) {
+  const std::optional<DoubleMesh> made = doubleBoolean(a, b, op);
   EXPECT_TRUE(made.has_value()) << "declined";
   if (!made) return 0.0;
-  const TriangleMesh mesh = trianglesOf(*made);
+  const TriangleMesh& mesh = made->mesh;
   EXPECT_EQ(meshDefect(mesh).text, "");
-  ExactMesh exactA = a, exactB = b;
+  ExactMesh exactA = exactOf(a), exactB = exactOf(b);
   EXPECT_TRUE(exactBoolean(exactA, exactB, op));
   const double cgal = trianglesOf(exactA).volume();
   EXPECT_NEAR(mesh.volume(), cgal, 1e-9 * std::abs(cgal));
@@ -76,16 +73,16 @@ TEST(DoubleBoolean, TwoOverlappingSpheres) {
   const double ball = 4.0 / 3.0 * kPi * r * r * r;
   const double lens = kPi * (4 * r + d) * (2 * r - d) * (2 * r - d) / 12;
   const double slack = kTolerance * 2 * 4 * kPi * r * r;
-  const ExactMesh a = meshOf("return sphere{r=10}");
-  const ExactMesh b = meshOf("return sphere{r=10}:translate(12, 0, 0)");
+  const DoubleMesh a = meshOf("return sphere{r=10}");
+  const DoubleMesh b = meshOf("return sphere{r=10}:translate(12, 0, 0)");
   EXPECT_NEAR(madeInDoubles(a, b, Op::Union), 2 * ball - lens, slack);
   EXPECT_NEAR(madeInDoubles(a, b, Op::Intersection), lens, slack);
   EXPECT_NEAR(madeInDoubles(a, b, Op::Difference), ball - lens, slack);
 }
 
 TEST(DoubleBoolean, BoxMinusCylinder) {
-  const ExactMesh box = meshOf("return box(20)");
-  const ExactMesh hole = meshOf("return cylinder{r=5, h=40}:translate(10, 10, -10)");
+  const DoubleMesh box = meshOf("return box(20)");
+  const DoubleMesh hole = meshOf("return cylinder{r=5, h=40}:translate(10, 10, -10)");
   EXPECT_NEAR(madeInDoubles(box, hole, Op::Difference), 8000 - kPi * 25 * 20,
               kTolerance * 2 * kPi * 5 * 20);
 }
@@ -93,15 +90,12 @@ TEST(DoubleBoolean, BoxMinusCylinder) {
 TEST(DoubleBoolean, BoxUnitedWithAGridOfSpheres) {
   // Nine balls of radius 4 centred on the box's top face, apart: each
   // adds half of itself.
-  ExactMesh spheres;
+  DoubleMesh spheres;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      ExactMesh ball = meshOf("return sphere{r=4}:translate(" + std::to_string(6 + 12 * i) + ", " +
-                              std::to_string(6 + 12 * j) + ", 10)");
-      tagsOf(ball);
-      spheres.join(ball);
-    }
-  const ExactMesh box = meshOf("return box{size={36, 36, 10}}");
+    for (int j = 0; j < 3; ++j)
+      spheres.append(meshOf("return sphere{r=4}:translate(" + std::to_string(6 + 12 * i) + ", " +
+                            std::to_string(6 + 12 * j) + ", 10)"));
+  const DoubleMesh box = meshOf("return box{size={36, 36, 10}}");
   const double half = 2.0 / 3.0 * kPi * 64;
   EXPECT_NEAR(madeInDoubles(spheres, box, Op::Union), 36 * 36 * 10 + 9 * half,
               kTolerance * 9 * 4 * kPi * 16);
@@ -109,8 +103,8 @@ TEST(DoubleBoolean, BoxUnitedWithAGridOfSpheres) {
 
 TEST(DoubleBoolean, TwoTurnedBoxesIntersected) {
   // Polytopes: the tessellation is exact, and so is CGAL's volume.
-  const ExactMesh a = meshOf("return box(10):translate(-5, -5, -5):rotate(17, 23, 31)");
-  const ExactMesh b = meshOf("return box(10):translate(-5, -5, -5):rotate(-41, 13, 7)");
+  const DoubleMesh a = meshOf("return box(10):translate(-5, -5, -5):rotate(17, 23, 31)");
+  const DoubleMesh b = meshOf("return box(10):translate(-5, -5, -5):rotate(-41, 13, 7)");
   const double volume = madeInDoubles(a, b, Op::Intersection);
   EXPECT_GT(volume, 0.0);
   EXPECT_LT(volume, 1000.0);
@@ -118,8 +112,8 @@ TEST(DoubleBoolean, TwoTurnedBoxesIntersected) {
 
 TEST(DoubleBoolean, DeclinesCoplanarFaces) {
   // Boxes side by side on one floor: their bottoms lie in one plane.
-  const ExactMesh a = meshOf("return box(10)");
-  const ExactMesh b = meshOf("return box(10):translate(5, 5, 0)");
+  const DoubleMesh a = meshOf("return box(10)");
+  const DoubleMesh b = meshOf("return box(10):translate(5, 5, 0)");
   EXPECT_FALSE(doubleBoolean(a, b, Op::Union).has_value());
   MeshBooleanStats stats;
   const PartMesh made = meshOfSolid(*part("return box(10) + box(10):translate(5, 5, 0)"),
@@ -132,30 +126,28 @@ TEST(DoubleBoolean, DeclinesCoplanarFaces) {
 
 TEST(DoubleBoolean, SaysWhyItDeclines) {
   // Coplanar faces: not in general position, which a move may put right.
-  const ExactMesh a = meshOf("return box(10)");
+  const DoubleMesh a = meshOf("return box(10)");
   DoubleDecline why = DoubleDecline::NotInDoubles;
   EXPECT_FALSE(doubleBoolean(a, meshOf("return box(10):translate(5, 5, 0)"), Op::Union, &why));
   EXPECT_EQ(why, DoubleDecline::NotInGeneralPosition);
   // A point of CGAL's that is no double (a ball's faces cut by a box's):
-  // an operand it cannot take.
-  ExactMesh ball = meshOf("return sphere(4):translate(10, 10, 10)"), box = a;
+  // no operand in doubles, and so none it can take.
+  ExactMesh box = exactOf(a), ball = exactOf(meshOf("return sphere(4):translate(10, 10, 10)"));
   ASSERT_TRUE(exactBoolean(box, ball, Op::Union));
-  why = DoubleDecline::NotInGeneralPosition;
-  EXPECT_FALSE(doubleBoolean(box, meshOf("return sphere(1):translate(0, 0, 10)"), Op::Union, &why));
-  EXPECT_EQ(why, DoubleDecline::NotInDoubles);
+  EXPECT_FALSE(doublesOf(box).has_value());
 }
 
 TEST(DoubleBoolean, TopologyCountsShellsAndHandles) {
   // Two balls apart: two spheres (χ = 2 each). A box less a rod through
   // it: a torus (χ = 0).
-  const ExactMesh ball = meshOf("return sphere(2)");
-  ExactMesh two = ball;
-  two.join(meshOf("return sphere(2):translate(10, 0, 0)"));
+  DoubleMesh two = meshOf("return sphere(2)");
+  two.append(meshOf("return sphere(2):translate(10, 0, 0)"));
   EXPECT_EQ(topologyOf(two), (MeshTopology{2, 4}));
-  ExactMesh ring = meshOf("return box(10)"),
-            rod = meshOf("return cylinder{r=2, h=20}:translate(5, 5, -5)");
-  ASSERT_TRUE(exactBoolean(ring, rod, Op::Difference));
-  EXPECT_EQ(topologyOf(ring), (MeshTopology{1, 0}));
+  const std::optional<DoubleMesh> ring =
+      doubleBoolean(meshOf("return box(10)"),
+                    meshOf("return cylinder{r=2, h=20}:translate(4, 5.5, -5)"), Op::Difference);
+  ASSERT_TRUE(ring.has_value());
+  EXPECT_EQ(topologyOf(*ring), (MeshTopology{1, 0}));
 }
 
 TEST(DoubleBoolean, DeclinesACornerOnAFace) {
@@ -165,12 +157,60 @@ TEST(DoubleBoolean, DeclinesACornerOnAFace) {
     TriangleMesh t;
     t.points = {{5, 5, apex}, {2, 2, 15}, {8, 2, 15}, {8, 8, 15}, {2, 8, 15}};
     t.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 1, 4}, {1, 2, 3}, {1, 3, 4}};
-    return exactOf(t);
+    return tagged(t);
   };
-  const ExactMesh box = meshOf("return box(10)");
-  EXPECT_GT(trianglesOf(pyramid(10)).volume(), 0.0);
+  const DoubleMesh box = meshOf("return box(10)");
+  EXPECT_GT(pyramid(10).mesh.volume(), 0.0);
   EXPECT_FALSE(doubleBoolean(box, pyramid(10), Op::Union).has_value());
   madeInDoubles(box, pyramid(9), Op::Union);
+}
+
+// A tetrahedron, outward: the smallest closed 2-manifold.
+TriangleMesh tetrahedron(const dvec3& at) {
+  TriangleMesh t;
+  t.points = {at, at + dvec3(1, 0, 0), at + dvec3(0, 1, 0), at + dvec3(0, 0, 1)};
+  t.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return t;
+}
+
+TEST(DoubleMesh, ClosedManifoldAsCgalBuildsIt) {
+  TriangleMesh t = tetrahedron(dvec3(0));
+  EXPECT_TRUE(closedManifold(t));
+  TriangleMesh open = t;
+  open.triangles.pop_back();  // a hole
+  EXPECT_FALSE(closedManifold(open));
+  TriangleMesh flipped = t;
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);  // each edge twice one way
+  EXPECT_FALSE(closedManifold(flipped));
+  TriangleMesh twice = t;
+  twice.triangles[0] = {0, 0, 1};  // a corner twice
+  EXPECT_FALSE(closedManifold(twice));
+  // Two tetrahedra that share a corner: each edge fine, the corner two fans.
+  TriangleMesh pinched = t;
+  TriangleMesh other = tetrahedron(dvec3(0, 0, 1));
+  pinched.append(other);
+  for (auto& tri : pinched.triangles)
+    for (auto& v : tri)
+      if (v == 4) v = 3;  // other's first point is t's last
+  EXPECT_FALSE(closedManifold(pinched));
+  // Apart, they are two closed shells.
+  TriangleMesh two = t;
+  two.append(tetrahedron(dvec3(5, 0, 0)));
+  EXPECT_TRUE(closedManifold(two));
+}
+
+TEST(DoubleMesh, ExactAndBackKeepTheOrder) {
+  // Vertices and faces keep their numbers both ways, and a face its
+  // corners in the order add_face was given them.
+  DoubleMesh mesh = tagged(tetrahedron(dvec3(1, 2, 3)));
+  mesh.tags = {4, 5, 6, 7};
+  const ExactMesh exact = exactOf(mesh);
+  EXPECT_EQ(trianglesOf(exact).triangles, mesh.mesh.triangles);
+  const std::optional<DoubleMesh> back = doublesOf(exact);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->mesh.points, mesh.mesh.points);
+  EXPECT_EQ(back->mesh.triangles, mesh.mesh.triangles);
+  EXPECT_EQ(back->tags, mesh.tags);
 }
 
 // bench/plate.lua at n: a box united with an n × n grid of balls, less a
