@@ -30,6 +30,7 @@
 #include "export/cgal/mesh_validity.h"
 #include "export/cgal/rounded_repair.h"
 #include "export/cgal/stray_shells.h"
+#include "export/collinear_points.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -68,6 +69,12 @@ constexpr double kPerturbedReach = 1.5;
 // of CGAL's with fewer faces is rounded to doubles where it stays valid
 // (roundIfValid), a check that then costs little.
 constexpr std::size_t kPerturbedFaces = 500;
+// How far from its crease a point may lie, and its sides' faces from
+// their planes, for it to be dropped (dropCollinearPoints), in tolerances:
+// a boolean in doubles puts its new points within rounding (10⁻¹⁴ at
+// 100 mm) of where they belong, and a millionth of the tolerance is far
+// above that and far below anything a printer makes.
+constexpr double kCollinearReach = 1e-6;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
@@ -1269,6 +1276,11 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
   }();
   if (piece.empty()) return PartMesh{{}, {}, std::move(evaluator.materials)};
 
+  // A boolean in doubles leaves points on straight creases that hold no
+  // shape (collinear_points.h): they go before the mesh is rounded, while
+  // their sides are still flat to the last bits.
+  if (piece.doubles)
+    dropCollinearPoints(piece.doubles->mesh, piece.doubles->tags, kCollinearReach * tolerance);
   const RoundedFaces faces = piece.doubles
                                  ? roundedFaces(DoubleSource{*piece.doubles}, frame, stored)
                                  : roundedFaces(ExactSource{piece.mesh}, frame, stored);

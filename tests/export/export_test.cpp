@@ -377,6 +377,46 @@ TEST(Export, TurnedPartsWithFlushFacesExport) {
 
 // ---- Errors ------------------------------------------------------------------------
 
+TEST(Export, AHolesOutlineHasOnlyTheCylindersCorners) {
+  // A hole through a block: where the cylinder's flat sides (each two
+  // triangles split by a diagonal) cross the block's faces, the outline
+  // has a corner at each of the cylinder's edges and nothing between them
+  // (the points where the diagonals cross are dropped): the block's 8
+  // corners and the cylinder's n edges at each face, so that the mesh (a
+  // torus: V = F / 2) has 2 (8 + 2n) triangles, and its volume is the
+  // block's less the n-gon's prism (the shoelace formula for its area).
+  const std::string hole = "cylinder{r=0.625, h=20}:translate(0, 0, -1)";
+  const TriangleMesh cylinder = meshOfSolid(*partOfScript("return " + hole), 0.01).mesh;
+  std::vector<dvec3> rim;
+  for (const dvec3& p : cylinder.points)
+    if (p.z == -1.0 && glm::length(dvec2(p)) > 0.6) rim.push_back(p);
+  const std::size_t n = rim.size();
+  ASSERT_GE(n, 8u);
+
+  const TriangleMesh mesh =
+      meshOfSolid(*partOfScript("return box{size={4, 4, 10}}:translate(-2, -2, 0) - " + hole), 0.01)
+          .mesh;
+  EXPECT_TRUE(meshDefect(mesh).valid()) << meshDefect(mesh).text;
+  EXPECT_EQ(mesh.points.size(), 8 + 2 * n);
+  EXPECT_EQ(mesh.triangles.size(), 2 * (8 + 2 * n));
+  for (const dvec3& p : mesh.points) {
+    if (std::abs(p.x) == 2.0 && std::abs(p.y) == 2.0) continue;  // the block's corners
+    EXPECT_TRUE(p.z == 0.0 || p.z == 10.0);
+    const bool onAnEdge = std::any_of(rim.begin(), rim.end(), [&](const dvec3& q) {
+      return glm::length(dvec2(p) - dvec2(q)) < 1e-12;
+    });
+    EXPECT_TRUE(onAnEdge) << p.x << ", " << p.y << ", " << p.z;
+  }
+  // The n-gon's area by the shoelace formula, its corners in turn.
+  std::sort(rim.begin(), rim.end(), [](const dvec3& a, const dvec3& b) {
+    return std::atan2(a.y, a.x) < std::atan2(b.y, b.x);
+  });
+  double polygon = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    polygon += 0.5 * (rim[i].x * rim[(i + 1) % n].y - rim[(i + 1) % n].x * rim[i].y);
+  EXPECT_NEAR(mesh.volume(), 160.0 - 10.0 * polygon, 1e-9);
+}
+
 TEST(Export, RefusesWhatCannotBePrinted) {
   // An unbounded part, a double cone's apex and a horn torus. (Boxes that
   // share only an edge export: contact_export_test.)
