@@ -21,6 +21,9 @@ class Instance : public Solid {
   // The ray in the child's frame, with the same t (and 1/dir, which the
   // child's boxes need).
   Ray rayToChild(const Ray& ray) const;
+  // The child's box under the composed frames (a turned lens keeps the
+  // box its balls and cylinder give, not its turned box's corners').
+  Bounds boundsUnder(const Affine& outer) const override;
 
   const Bounds& bounds() const override { return bounds_; }
   void spans(const Ray& ray, SpanList& out) const override;
