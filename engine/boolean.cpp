@@ -74,7 +74,7 @@ const Bvh& Boolean::bvh() const {
       std::vector<Bounds> boxes;
       boxes.reserve(operands_.size() - firstInBvh());
       for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
-        boxes.push_back(operands_[i]->bounds());
+        boxes.push_back(operands_[i]->rayBox());
       bvh_ = Bvh(boxes);
     }
     bvhReady_.store(true, std::memory_order_release);

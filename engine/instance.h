@@ -26,6 +26,7 @@ class Instance : public Solid {
   Bounds boundsUnder(const Affine& outer) const override;
 
   const Bounds& bounds() const override { return bounds_; }
+  const Bounds& rayBox() const override { return rayBox_; }
   void spans(const Ray& ray, SpanList& out) const override;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
@@ -43,6 +44,7 @@ class Instance : public Solid {
   SolidPtr child_;
   Affine worldFromChild_;
   Bounds bounds_;
+  Bounds rayBox_;  // within bounds_
 };
 
 // The same solid with every instance replaced by a copy of its child in

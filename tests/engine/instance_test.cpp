@@ -105,7 +105,9 @@ TEST(Instance, TurnedBoxIsMadeFromTheParts) {
                                .then(Affine::scaling({1.0, 0.5 + unit(rng), 1.5}))
                                .then(Affine::translation({7, -3, 2}));
       const Instance moved(part, frame);
-      const Bounds box = moved.bounds(), corners = movedBox(part->bounds(), frame);
+      const Bounds box = moved.rayBox(), corners = movedBox(part->bounds(), frame);
+      EXPECT_EQ(moved.bounds().lo, corners.lo);  // (a scene is framed as before)
+      EXPECT_EQ(moved.bounds().hi, corners.hi);
       for (int a = 0; a < 3; ++a) {
         EXPECT_GE(box.lo[a], corners.lo[a]);
         EXPECT_LE(box.hi[a], corners.hi[a]);
@@ -137,8 +139,8 @@ TEST(Instance, TurnedBoxIsMadeFromTheParts) {
     // over a boolean node, as a script's turned part is.)
     const Instance moved(unionOf({ball(2.5, 0), ball(1e-3, 0)}), frame);
     for (int a = 0; a < 3; ++a) {
-      EXPECT_NEAR(moved.bounds().lo[a], centre[a] - 2.5, 1e-9);
-      EXPECT_NEAR(moved.bounds().hi[a], centre[a] + 2.5, 1e-9);
+      EXPECT_NEAR(moved.rayBox().lo[a], centre[a] - 2.5, 1e-9);
+      EXPECT_NEAR(moved.rayBox().hi[a], centre[a] + 2.5, 1e-9);
     }
   }
 }
@@ -166,18 +168,13 @@ TEST(Instance, AnswersAsTheCopiedTree) {
   SolidPtr shared = instanced(), copy = copied();
   shared->prepare();
   copy->prepare();
-  // Bounds: the instance's box lies within the copy's (it is made from
-  // the turned parts, not from turned boxes) and holds every point of it.
+  // Bounds: the instance's box holds the copy's.
   const Bounds bs = shared->bounds(), bc = copy->bounds();
   for (int a = 0; a < 3; ++a) {
-    EXPECT_GE(bs.lo[a], bc.lo[a] - 1e-9);
-    EXPECT_LE(bs.hi[a], bc.hi[a] + 1e-9);
+    EXPECT_LE(bs.lo[a], bc.lo[a] + 1e-9);
+    EXPECT_GE(bs.hi[a], bc.hi[a] - 1e-9);
   }
   std::mt19937_64 rng(7);
-  for (int i = 0; i < 20000; ++i) {
-    const dvec3 p = test::randomPoint(rng, bc);
-    if (copy->contains(p)) ASSERT_TRUE(bs.contains(p)) << i;
-  }
   int met = 0;
   for (int i = 0; i < 4000; ++i) {
     const Ray ray = randomRayThrough(rng, *copy);
