@@ -74,12 +74,27 @@ const Bvh& Boolean::bvh() const {
       std::vector<Bounds> boxes;
       boxes.reserve(operands_.size() - firstInBvh());
       for (std::size_t i = firstInBvh(); i < operands_.size(); ++i)
-        boxes.push_back(operands_[i]->bounds());
+        boxes.push_back(operands_[i]->rayBox());
       bvh_ = Bvh(boxes);
     }
     bvhReady_.store(true, std::memory_order_release);
   });
   return bvh_;
+}
+
+Bounds Boolean::boundsUnder(const Affine& outer) const {
+  if (outer.isTranslation() || primitiveCount() > kTightPrimitives || !bounds_.finite())
+    return Solid::boundsUnder(outer);
+  Bounds box = operands_[0]->boundsUnder(outer);
+  for (std::size_t i = 1; i < operands_.size() && op_ != Op::Difference; ++i) {
+    const Bounds b = operands_[i]->boundsUnder(outer);
+    if (op_ == Op::Union)
+      box.include(b);
+    else
+      box = box.intersected(b);
+  }
+  // Each is a box of the solid: the smaller of the two on each axis.
+  return box.intersected(Solid::boundsUnder(outer));
 }
 
 void Boolean::prepare() const {

@@ -40,6 +40,11 @@ class Boolean : public Solid {
 
   Op op() const { return op_; }
   const Bounds& bounds() const override { return bounds_; }
+  // From the operands' boxes under outer, by the rules of bounds_, for a
+  // node of at most kTightPrimitives primitives; moved corners otherwise (a
+  // shared subtree is not walked once per use).
+  Bounds boundsUnder(const Affine& outer) const override;
+  static constexpr std::size_t kTightPrimitives = 16;
   void spans(const Ray& ray, SpanList& out) const override;
   // For a difference: the first operand's spans, cut only by the holes that
   // cover the point where the result would start, again from where a cut

@@ -16,6 +16,16 @@ Instance::Instance(SolidPtr child, const Affine& worldFromChild)
   if (local.empty()) return;
   // An unbounded child may reach anywhere once moved.
   bounds_ = local.finite() ? movedBox(local, worldFromChild_) : Bounds::everything();
+  // A turned child's box made from its parts where they are few
+  // (Solid::boundsUnder): a ray that misses it meets no part, so the
+  // union's BVH above leaves it out without taking the ray into the
+  // child's frame.
+  rayBox_ = local.finite() ? child_->boundsUnder(worldFromChild_).intersected(bounds_) : bounds_;
+}
+
+Bounds Instance::boundsUnder(const Affine& outer) const {
+  if (outer.isTranslation() || !bounds_.finite()) return Solid::boundsUnder(outer);
+  return child_->boundsUnder(worldFromChild_.then(outer));
 }
 
 Ray Instance::rayToChild(const Ray& ray) const {

@@ -21,8 +21,12 @@ class Instance : public Solid {
   // The ray in the child's frame, with the same t (and 1/dir, which the
   // child's boxes need).
   Ray rayToChild(const Ray& ray) const;
+  // The child's box under the composed frames (a turned lens keeps the
+  // box its balls and cylinder give, not its turned box's corners').
+  Bounds boundsUnder(const Affine& outer) const override;
 
   const Bounds& bounds() const override { return bounds_; }
+  const Bounds& rayBox() const override { return rayBox_; }
   void spans(const Ray& ray, SpanList& out) const override;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
@@ -40,6 +44,7 @@ class Instance : public Solid {
   SolidPtr child_;
   Affine worldFromChild_;
   Bounds bounds_;
+  Bounds rayBox_;  // within bounds_
 };
 
 // The same solid with every instance replaced by a copy of its child in

@@ -1,5 +1,7 @@
 #include "engine/moved_box.h"
 
+#include <cmath>
+
 namespace csgray::detail {
 
 Bounds movedBox(const Bounds& objectBox, const Affine& worldFromObject) {
@@ -10,6 +12,34 @@ Bounds movedBox(const Bounds& objectBox, const Affine& worldFromObject) {
     world.include(worldFromObject.pointToWorld(corner));
   }
   return world;
+}
+
+namespace {
+
+// columns: how many columns of the linear part span the shape (3 or 2).
+Bounds movedRound(const dvec3& centre, double r, const Affine& worldFromObject, int columns) {
+  const glm::dmat4& m = worldFromObject.worldFromObject();  // m[column][row]
+  const dvec3 c = worldFromObject.pointToWorld(centre);
+  Bounds box;
+  for (int i = 0; i < 3; ++i) {
+    double row = 0.0;
+    for (int j = 0; j < columns; ++j) row += m[j][i] * m[j][i];
+    const double reach = r * std::sqrt(row);
+    const double pad = 1e-12 * (std::abs(c[i]) + reach);
+    box.lo[i] = c[i] - reach - pad;
+    box.hi[i] = c[i] + reach + pad;
+  }
+  return box;
+}
+
+}  // namespace
+
+Bounds movedBall(const dvec3& centre, double r, const Affine& worldFromObject) {
+  return movedRound(centre, r, worldFromObject, 3);
+}
+
+Bounds movedDisc(const dvec3& centre, double r, const Affine& worldFromObject) {
+  return movedRound(centre, r, worldFromObject, 2);
 }
 
 }  // namespace csgray::detail

@@ -46,6 +46,19 @@ bool Primitive::objectMeetsWindow(const Ray& ray, SpanList& scratch) const {
   return scratch.meetsOpenWindow(ray.tMin, ray.tMax);
 }
 
+Bounds Primitive::boundsUnder(const Affine& outer) const {
+  // A translation moves the box as it is; only a turn or a stretch can
+  // make the parts' boxes tighter than the moved corners.
+  if (outer.isTranslation()) return Solid::boundsUnder(outer);
+  const Bounds local = objectBounds();
+  if (local.empty() || !local.finite()) return Solid::boundsUnder(outer);
+  return objectBoundsUnder(frame_.then(outer));
+}
+
+Bounds Primitive::objectBoundsUnder(const Affine& worldFromObject) const {
+  return movedBox(objectBounds(), worldFromObject);
+}
+
 bool Primitive::contains(const dvec3& p) const {
   return objectContains(frame_.isIdentity() ? p : frame_.pointToObject(p));
 }

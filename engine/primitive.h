@@ -26,6 +26,7 @@ class Primitive : public Solid {
   }
 
   const Bounds& bounds() const final { return bounds_; }
+  Bounds boundsUnder(const Affine& outer) const final;
   void spans(const Ray& ray, SpanList& out) const final;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const final;
   bool meetsWindow(const Ray& ray, SpanList& scratch) const final;
@@ -77,6 +78,10 @@ class Primitive : public Solid {
   // Outward normal (any length) at an object-space point on the face.
   virtual dvec3 objectNormal(const dvec3& p, int face) const = 0;
   virtual Bounds objectBounds() const = 0;
+  // A box that holds the shape under worldFromObject, not a translation:
+  // the moved corners of objectBounds() by default; a shape whose box under
+  // a rotation is cheap to make tighter (a ball, a cylinder) makes it so.
+  virtual Bounds objectBoundsUnder(const Affine& worldFromObject) const;
   virtual std::shared_ptr<Primitive> clone() const = 0;
   // tessellate() in object space: the tolerance divided by the frame's
   // largest stretch, and the box of the region's corners in the frame.

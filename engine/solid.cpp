@@ -4,6 +4,7 @@
 
 #include "engine/boolean.h"
 #include "engine/instance.h"
+#include "engine/moved_box.h"
 #include "engine/primitive.h"
 
 namespace csgray::detail {
@@ -22,6 +23,13 @@ SolidPtr Solid::transformed(const Affine& worldFromObject) const {
   }
   return mapPrimitives(
       [&](const Primitive& p) { return p.withFrame(p.frame().then(worldFromObject)); });
+}
+
+Bounds Solid::boundsUnder(const Affine& outer) const {
+  const Bounds& b = bounds();
+  if (b.empty()) return b;
+  // An unbounded solid may reach anywhere once moved.
+  return b.finite() ? movedBox(b, outer) : Bounds::everything();
 }
 
 bool Solid::meetsWindow(const Ray& ray, SpanList& scratch) const {

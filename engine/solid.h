@@ -48,6 +48,16 @@ class Solid : public std::enable_shared_from_this<Solid> {
 
   // World-space box that holds the whole solid (conservative).
   virtual const Bounds& bounds() const = 0;
+  // A box that holds the solid moved by outer (after its own frames), for
+  // an instance's box (engine/instance.h). By default the box of bounds()'s
+  // corners moved; primitives and small boolean nodes make it from their
+  // parts, which under a rotation is tighter: a ball's box stays a ball's,
+  // where the moved corners of its cube reach up to √3 times as far.
+  virtual Bounds boundsUnder(const Affine& outer) const;
+  // The box a BVH over operands holds this solid by: bounds() by default,
+  // an instance's from boundsUnder. Apart from bounds(), which frames a
+  // scene without a camera, so that such a scene is framed as before.
+  virtual const Bounds& rayBox() const { return bounds(); }
   // Spans of the ray inside the solid, written to out (cleared first).
   // They are exact within [ray.tMin, ray.tMax]; outside it a span may be
   // left out, or end at a boundary other than the solid's (a union whose

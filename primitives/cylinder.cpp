@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "engine/moved_box.h"
 #include "engine/solvers/quadratic.h"
 #include "primitives/check.h"
 
@@ -68,6 +69,13 @@ dvec3 Cylinder::objectNormal(const dvec3& p, int face) const {
 Bounds Cylinder::objectBounds() const {
   double r = std::max(r1_, r2_);
   return {dvec3(-r, -r, 0.0), dvec3(r, r, height_)};
+}
+
+Bounds Cylinder::objectBoundsUnder(const Affine& worldFromObject) const {
+  // A cone's frustum is the convex hull of its two end discs.
+  Bounds box = movedDisc(dvec3(0.0), r1_, worldFromObject);
+  box.include(movedDisc(dvec3(0.0, 0.0, height_), r2_, worldFromObject));
+  return box.intersected(movedBox(objectBounds(), worldFromObject));
 }
 
 }  // namespace csgray::detail

@@ -21,6 +21,7 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
+  Bounds objectBoundsUnder(const Affine& worldFromObject) const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
 
  private:

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "engine/moved_box.h"
 #include "primitives/check.h"
 
 namespace csgray::detail {
@@ -35,5 +36,10 @@ bool Sphere::objectContains(const dvec3& p) const { return glm::dot(p, p) <= rad
 dvec3 Sphere::objectNormal(const dvec3& p, int) const { return p; }
 
 Bounds Sphere::objectBounds() const { return {dvec3(-radius_), dvec3(radius_)}; }
+
+Bounds Sphere::objectBoundsUnder(const Affine& worldFromObject) const {
+  return movedBall(dvec3(0.0), radius_, worldFromObject)
+      .intersected(movedBox(objectBounds(), worldFromObject));
+}
 
 }  // namespace csgray::detail

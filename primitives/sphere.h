@@ -17,6 +17,7 @@ class Sphere : public PrimitiveShape<Sphere> {
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
+  Bounds objectBoundsUnder(const Affine& worldFromObject) const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
 
  private:

@@ -15,6 +15,7 @@
 
 #include "engine/boolean.h"
 #include "engine/instance_surface.h"
+#include "engine/moved_box.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
 #include "primitives/sphere.h"
@@ -76,6 +77,72 @@ Ray randomRayThrough(std::mt19937_64& rng, const Solid& solid) {
     while (!solid.contains(p)) p = test::randomPoint(rng, solid.bounds());
   const dvec3 d = test::randomDirection(rng);
   return Ray(p - 200.0 * d, d);
+}
+
+// A turned, stretched use of a part of balls and cylinders (a lens less a
+// hole, a cone's frustum less a ball): its box holds every point of the
+// part and every boundary a ray finds on it, lies within the box of the
+// turned corners of the part's box, and is the analytic one where that is
+// known: a ball of radius r turned about any axis reaches r from its
+// centre on every axis, where the turned corners of its cube reach up to
+// r·√3.
+TEST(Instance, TurnedBoxIsMadeFromTheParts) {
+  auto ball = [](double r, double z) {
+    return Primitive::create<Sphere>(r)->transformed(Affine::translation({0, 0, z}));
+  };
+  const SolidPtr lens =
+      differenceOf({intersectionOf({ball(3, -2), ball(3, 2),
+                                    Primitive::create<Cylinder>(2.0, 2.0, 4.0)
+                                        ->transformed(Affine::translation({0, 0, -2}))}),
+                    Primitive::create<Sphere>(0.8)->transformed(Affine::scaling({1, 1, 1.9}))});
+  const SolidPtr cone = differenceOf({Primitive::create<Cylinder>(2.0, 0.5, 3.0), ball(0.4, 3)});
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int points = 0, boundaries = 0;
+  for (const SolidPtr& part : {lens, cone}) {
+    for (int f = 0; f < 40; ++f) {
+      const Affine frame = Affine::rotation(6.0 * unit(rng), test::randomDirection(rng))
+                               .then(Affine::scaling({1.0, 0.5 + unit(rng), 1.5}))
+                               .then(Affine::translation({7, -3, 2}));
+      const Instance moved(part, frame);
+      const Bounds box = moved.rayBox(), corners = movedBox(part->bounds(), frame);
+      EXPECT_EQ(moved.bounds().lo, corners.lo);  // (a scene is framed as before)
+      EXPECT_EQ(moved.bounds().hi, corners.hi);
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_GE(box.lo[a], corners.lo[a]);
+        EXPECT_LE(box.hi[a], corners.hi[a]);
+      }
+      for (int i = 0; i < 2000; ++i) {
+        const dvec3 p = test::randomPoint(rng, corners);
+        if (!moved.contains(p)) continue;
+        ++points;
+        ASSERT_TRUE(box.contains(p)) << f << " " << i;
+      }
+      for (int i = 0; i < 200; ++i) {
+        const Ray line(test::randomPoint(rng, corners), test::randomDirection(rng), -kInfinity,
+                       kInfinity);
+        for (const Span& s : test::spansOf(moved, line))
+          for (double t : {s.in.t, s.out.t}) {
+            ++boundaries;
+            ASSERT_TRUE(box.contains(line.at(t))) << f << " " << i;
+          }
+      }
+    }
+  }
+  EXPECT_GT(points, 10000);
+  EXPECT_GT(boundaries, 2000);
+  for (int f = 0; f < 100; ++f) {
+    const dvec3 centre = test::randomPoint(rng, Bounds{dvec3(-50), dvec3(50)});
+    const Affine frame = Affine::rotation(6.0 * unit(rng), test::randomDirection(rng))
+                             .then(Affine::translation(centre));
+    // (A union of one ball and a point-sized ball inside it: an instance
+    // over a boolean node, as a script's turned part is.)
+    const Instance moved(unionOf({ball(2.5, 0), ball(1e-3, 0)}), frame);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(moved.rayBox().lo[a], centre[a] - 2.5, 1e-9);
+      EXPECT_NEAR(moved.rayBox().hi[a], centre[a] + 2.5, 1e-9);
+    }
+  }
 }
 
 TEST(Instance, TransformOfABooleanSharesItsTree) {
