@@ -70,7 +70,8 @@ bool fanAround(std::uint32_t v, std::span<const std::uint32_t> around,
     const std::uint32_t y = after[i][1];
     i = 0;
     while (i < k && after[i][0] != y) ++i;
-    if (i == k) return false;
+    // No next face, or back at the first too soon (two fans meet at v).
+    if (i == k || (i == 0 && step + 1 < k)) return false;
   }
   return i == 0;
 }
