@@ -20,18 +20,14 @@ using Triangle = TriangleMesh::Triangle;
 struct FacesAround {
   std::vector<std::uint32_t> first, faces;
 
-  FacesAround(const std::vector<Triangle>& triangles, const std::vector<bool>& alive,
-              std::size_t points)
-      : first(points + 1, 0) {
-    for (std::size_t f = 0; f < triangles.size(); ++f)
-      if (alive[f])
-        for (std::uint32_t v : triangles[f]) ++first[v + 1];
+  FacesAround(const std::vector<Triangle>& triangles, std::size_t points) : first(points + 1, 0) {
+    for (const Triangle& t : triangles)
+      for (std::uint32_t v : t) ++first[v + 1];
     for (std::size_t v = 0; v < points; ++v) first[v + 1] += first[v];
     faces.resize(first[points]);
     std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
     for (std::size_t f = 0; f < triangles.size(); ++f)
-      if (alive[f])
-        for (std::uint32_t v : triangles[f]) faces[next[v]++] = std::uint32_t(f);
+      for (std::uint32_t v : triangles[f]) faces[next[v]++] = std::uint32_t(f);
   }
   std::span<const std::uint32_t> of(std::uint32_t v) const {
     return {faces.data() + first[v], faces.data() + first[v + 1]};
@@ -83,7 +79,7 @@ class Collapser {
         tags_(tags),
         reach_(reach),
         alive_(mesh.triangles.size(), true),
-        around_(mesh.triangles, alive_, mesh.points.size()) {}
+        around_(mesh.triangles, mesh.points.size()) {}
 
   // Which points lie on a crease is asked of each on its own, on all
   // threads; the collapses are then made in the points' order, on one
