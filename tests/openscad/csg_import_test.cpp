@@ -745,6 +745,10 @@ const Example kExamples[] = {
     {"Old_example020", Example::Solid, 0.05, "", 200},
     {"Old_example022", Example::Solid, 6e-3},
     {"Old_example023", Example::Solid, 1e-4},
+    // A Menger sponge (a cube less 219 bars), turned, cut by a plane
+    // oblique to its bars: nothing round, so the exact import is
+    // OpenSCAD's part.
+    {"Old_example024", Example::Solid, 1e-4},
     // OpenSCAD's shadow and sections of an imported mesh, exact here too.
     {"Basics_projection", Example::Solid, 1e-5},
     // Sections of a ball with $fa = 30 (12-gons): the true ball's are larger.
