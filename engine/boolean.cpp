@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "engine/flat_union.h"
+
 namespace csgray::detail {
 
 Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
@@ -95,6 +97,15 @@ Bounds Boolean::boundsUnder(const Affine& outer) const {
   }
   // Each is a box of the solid: the smaller of the two on each axis.
   return box.intersected(Solid::boundsUnder(outer));
+}
+
+SolidPtr Boolean::forRays() const {
+  if (op_ != Op::Union) return shared_from_this();
+  std::call_once(flatMade_, [this] {
+    SolidPtr flat = flatUnion(shared_from_this());
+    if (flat.get() != this) flat_ = std::move(flat);
+  });
+  return flat_ ? flat_ : shared_from_this();
 }
 
 void Boolean::prepare() const {

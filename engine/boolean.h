@@ -66,6 +66,7 @@ class Boolean : public Solid {
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
   SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;
   void prepare() const override;
+  SolidPtr forRays() const override;
 
  private:
   // Operands from this index on are found through the BVH.
@@ -92,6 +93,9 @@ class Boolean : public Solid {
   mutable std::once_flag bvhBuilt_;
   mutable std::atomic<bool> bvhReady_{false};
   mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
+  // forRays()'s union when it is not this node (which it cannot hold).
+  mutable std::once_flag flatMade_;
+  mutable SolidPtr flat_;
 };
 
 template <class Visit>

@@ -1,5 +1,6 @@
 #include "engine/instance.h"
 
+#include "engine/flat_union.h"
 #include "engine/moved_box.h"
 #include "engine/primitive.h"
 
@@ -26,6 +27,14 @@ Instance::Instance(SolidPtr child, const Affine& worldFromChild)
 Bounds Instance::boundsUnder(const Affine& outer) const {
   if (outer.isTranslation() || !bounds_.finite()) return Solid::boundsUnder(outer);
   return child_->boundsUnder(worldFromChild_.then(outer));
+}
+
+SolidPtr Instance::forRays() const {
+  std::call_once(flatMade_, [this] {
+    SolidPtr flat = flatUnion(shared_from_this());
+    if (flat.get() != this) flat_ = std::move(flat);
+  });
+  return flat_ ? flat_ : shared_from_this();
 }
 
 Ray Instance::rayToChild(const Ray& ray) const {

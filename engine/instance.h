@@ -8,6 +8,8 @@
 // found with the instance frames on the way to it (engine/instance_surface.h).
 #pragma once
 
+#include <mutex>
+
 #include "engine/solid.h"
 
 namespace csgray::detail {
@@ -32,6 +34,7 @@ class Instance : public Solid {
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool contains(const dvec3& p) const override;
   void prepare() const override { child_->prepare(); }
+  SolidPtr forRays() const override;
   std::span<const SolidPtr> children() const override { return {&child_, 1}; }
   // What the user made and moved: "union", ...
   std::string kind() const override { return child_->kind(); }
@@ -45,6 +48,9 @@ class Instance : public Solid {
   Affine worldFromChild_;
   Bounds bounds_;
   Bounds rayBox_;  // within bounds_
+  // forRays()'s union when it is not this use (which it cannot hold).
+  mutable std::once_flag flatMade_;
+  mutable SolidPtr flat_;
 };
 
 // The same solid with every instance replaced by a copy of its child in

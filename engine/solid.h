@@ -87,6 +87,10 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // Builds what spans() would otherwise build on first use (a boolean
   // node's BVH), so that a renderer can do it before its threads start.
   virtual void prepare() const {}
+  // The same point set as rays walk it fastest: unions nested under
+  // transforms as one union of their leaves (engine/flat_union.h), made on
+  // first use and kept by the node; the solid itself otherwise.
+  virtual SolidPtr forRays() const { return shared_from_this(); }
 
   // Operands of a boolean node, the shared child of an instance (in the
   // instance's frame, engine/instance.h); none for a primitive.

@@ -76,6 +76,7 @@ CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
   return camera;
 }
 
+// The scene's objects and ghosts as rays walk them (Solid::forRays).
 // OpenSCAD's `%`: a ghost is drawn light grey and mostly see-through.
 std::vector<SolidPtr> objectsAndGhosts(const Scene& scene) {
   static const MaterialPtr ghost = [] {
@@ -86,11 +87,13 @@ std::vector<SolidPtr> objectsAndGhosts(const Scene& scene) {
     m->transparency = 0.75;
     return m;
   }();
-  std::vector<SolidPtr> objects = scene.objects;
+  std::vector<SolidPtr> objects;
+  for (const SolidPtr& s : scene.objects) objects.push_back(s->forRays());
   for (const SolidPtr& s : scene.ghosts) {
     Solid::SharedMap done;
     objects.push_back(
-        s->mapSharedPrimitives([&](const Primitive& p) { return p.withMaterial(ghost); }, done));
+        s->mapSharedPrimitives([&](const Primitive& p) { return p.withMaterial(ghost); }, done)
+            ->forRays());
   }
   return objects;
 }

@@ -99,6 +99,16 @@ inline dvec3 randomPoint(std::mt19937_64& rng, const Bounds& box) {
   return box.lo + dvec3(u(rng), u(rng), u(rng)) * box.size();
 }
 
+// A ray in a random direction through a random point of the solid (or,
+// one time in four, of its box), starting 200 units before that point.
+inline Ray randomRayThrough(std::mt19937_64& rng, const Solid& solid) {
+  dvec3 p = randomPoint(rng, solid.bounds());
+  if (rng() % 4 != 0)
+    while (!solid.contains(p)) p = randomPoint(rng, solid.bounds());
+  const dvec3 d = randomDirection(rng);
+  return Ray(p - 200.0 * d, d);
+}
+
 // The spans of the whole line through the ray must be a valid span list,
 // and contains() must agree with them: the middle of every span is inside,
 // the middle of every gap between spans is outside. A line (tMin = -inf)

@@ -69,16 +69,6 @@ SolidPtr instanced() {
 }
 SolidPtr copied() { return tree(piece(), copyMoved); }
 
-// A ray in a random direction through a random point of the solid (or,
-// one time in four, of its box).
-Ray randomRayThrough(std::mt19937_64& rng, const Solid& solid) {
-  dvec3 p = test::randomPoint(rng, solid.bounds());
-  if (rng() % 4 != 0)
-    while (!solid.contains(p)) p = test::randomPoint(rng, solid.bounds());
-  const dvec3 d = test::randomDirection(rng);
-  return Ray(p - 200.0 * d, d);
-}
-
 // A turned, stretched use of a part of balls and cylinders (a lens less a
 // hole, a cone's frustum less a ball): its box holds every point of the
 // part and every boundary a ray finds on it, lies within the box of the
@@ -177,7 +167,7 @@ TEST(Instance, AnswersAsTheCopiedTree) {
   std::mt19937_64 rng(7);
   int met = 0;
   for (int i = 0; i < 4000; ++i) {
-    const Ray ray = randomRayThrough(rng, *copy);
+    const Ray ray = test::randomRayThrough(rng, *copy);
     const SpanList a = test::spansOf(*shared, ray), b = test::spansOf(*copy, ray);
     ASSERT_EQ(a.size(), b.size()) << i;
     met += !a.empty();
@@ -217,7 +207,7 @@ int compareNormalsWithCopy(const SolidPtr& shared, const SolidPtr& copy, std::mt
                            int rays) {
   int compared = 0;
   for (int i = 0; i < rays; ++i) {
-    const Ray ray = randomRayThrough(rng, *copy);
+    const Ray ray = test::randomRayThrough(rng, *copy);
     const SpanList a = test::spansOf(*shared, ray), b = test::spansOf(*copy, ray);
     EXPECT_EQ(a.size(), b.size());
     if (a.size() != b.size()) return compared;
@@ -271,7 +261,7 @@ TEST(Instance, AHintGivesTheSearchsSurface) {
   UseHint hint;
   int compared = 0, hinted = 0;
   for (int i = 0; i < 1500; ++i) {
-    const Ray first = randomRayThrough(rng, *shared);
+    const Ray first = test::randomRayThrough(rng, *shared);
     for (int k = 0; k < 4; ++k) {
       const Ray ray(first.origin + dvec3(jitter(rng), jitter(rng), jitter(rng)), first.dir);
       for (const Span& s : test::spansOf(*shared, ray))
@@ -304,7 +294,7 @@ TEST(Instance, MeetsAWindowWhereItsSpansLie) {
   int met = 0, missed = 0;
   SpanList scratch;
   for (int i = 0; i < 4000; ++i) {
-    Ray ray = randomRayThrough(rng, *copy);
+    Ray ray = test::randomRayThrough(rng, *copy);
     ray.tMin = along(rng);
     ray.tMax = ray.tMin + 0.25 * along(rng) - 37.0;
     for (const SolidPtr& solid : {shared, copy, part}) {
@@ -336,7 +326,7 @@ TEST(Instance, AMaterialGivenToOneUseStaysWithIt) {
   std::mt19937_64 rng(3);
   int redHits = 0, plainHits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = randomRayThrough(rng, *both);
+    const Ray ray = test::randomRayThrough(rng, *both);
     for (const Span& s : test::spansOf(*both, ray)) {
       const bool inPainted = painted->contains(ray.at(0.5 * (s.in.t + s.out.t)));
       EXPECT_EQ(s.in.primitive->material(), inPainted ? red : nullptr);
