@@ -21,9 +21,11 @@ Scene sectioned(const Scene& scene, const SectionPlane& plane) {
   // One half-space for all the solids: a cut face names it, whatever it cuts.
   const SolidPtr keep =
       Primitive::create<HalfSpace>(plane.normal, plane.offset)->withMaterial(sectionMaterial());
+  // Each solid as rays walk it (Solid::forRays: nested unions as one,
+  // made once per solid), since the cut is made again for every frame.
   Scene cut = scene;
   for (auto* solids : {&cut.objects, &cut.ghosts, &cut.highlights})
-    for (SolidPtr& solid : *solids) solid = intersectionOf({solid, keep});
+    for (SolidPtr& solid : *solids) solid = intersectionOf({solid->forRays(), keep});
   return cut;
 }
 

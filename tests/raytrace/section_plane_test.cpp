@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/instance.h"
 #include "engine/primitive.h"
 #include "raytrace/renderer.h"
 #include "script/script.h"
@@ -79,6 +80,36 @@ TEST(SectionPlane, LeavesTheModelAndTheFramingAlone) {
                    5.0);
   options.section = SectionPlane{{0.0, 0.0, 1.0}, -6.0};
   EXPECT_FALSE(Renderer(scene, options).firstHit(Ray({0.0, 0.0, 10.0}, {0.0, 0.0, -1.0})));
+}
+
+// A part of nested uses (rows of uses of a union) is cut as its copy in
+// place is, and the cut holds it as rays walk it fastest: one union of
+// the copied primitives (Solid::forRays), made once for every frame.
+TEST(SectionPlane, CutsNestedUsesAsTheirCopies) {
+  Scene nested = runScript(
+      "local peg = cylinder{r=1, h=4} + sphere{r=1.5}:translate(0, 0, 4)\n"
+      "local row = union(peg, peg:translate(4, 0, 0), peg:translate(8, 0, 0))\n"
+      "return union(row, row:translate(0, 4, 0):rotate(0, 0, 10))\n",
+      "part.lua");
+  ASSERT_TRUE(nested.objects[0]->hasInstances());
+  Scene copied = nested;
+  copied.objects[0] = flattened(nested.objects[0]);
+  ASSERT_FALSE(copied.objects[0]->hasInstances());
+  const SectionPlane plane{{0.0, -1.0, 0.2}, 1.0};
+  const Scene cut = sectioned(nested, plane);
+  const SolidPtr held = cut.objects[0]->children()[0];
+  EXPECT_EQ(held, nested.objects[0]->forRays());
+  EXPECT_FALSE(held->hasInstances());
+  EXPECT_EQ(held->children().size(), 12u);
+  const RenderResult a = render(nested, plane), b = render(copied, plane);
+  int part = 0;
+  for (int y = 0; y < 101; ++y)
+    for (int x = 0; x < 101; ++x) {
+      ASSERT_EQ(a.depth.at(x, y), b.depth.at(x, y)) << x << " " << y;
+      ASSERT_EQ(a.color.at(x, y), b.color.at(x, y)) << x << " " << y;
+      part += std::isfinite(a.depth.at(x, y).x);
+    }
+  EXPECT_GT(part, 500);
 }
 
 }  // namespace
