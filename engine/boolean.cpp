@@ -101,11 +101,7 @@ Bounds Boolean::boundsUnder(const Affine& outer) const {
 
 SolidPtr Boolean::forRays() const {
   if (op_ != Op::Union) return shared_from_this();
-  std::call_once(flatMade_, [this] {
-    SolidPtr flat = flatUnion(shared_from_this());
-    if (flat.get() != this) flat_ = std::move(flat);
-  });
-  return flat_ ? flat_ : shared_from_this();
+  return keptFlatUnion(*this, flatMade_, flat_);
 }
 
 void Boolean::prepare() const {

@@ -93,7 +93,7 @@ class Boolean : public Solid {
   mutable std::once_flag bvhBuilt_;
   mutable std::atomic<bool> bvhReady_{false};
   mutable Bvh bvh_;  // empty for few operands, and for intersections (every operand counts)
-  // forRays()'s union when it is not this node (which it cannot hold).
+  // forRays()'s union (keptFlatUnion) when it is not this node (which it cannot hold).
   mutable std::once_flag flatMade_;
   mutable SolidPtr flat_;
 };

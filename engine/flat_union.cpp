@@ -60,4 +60,12 @@ SolidPtr flatUnion(const SolidPtr& solid, std::size_t maxLeaves) {
   return flat;
 }
 
+SolidPtr keptFlatUnion(const Solid& node, std::once_flag& made, SolidPtr& kept) {
+  std::call_once(made, [&] {
+    SolidPtr flat = flatUnion(node.shared_from_this());
+    if (flat.get() != &node) kept = std::move(flat);
+  });
+  return kept ? kept : node.shared_from_this();
+}
+
 }  // namespace csgray::detail

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <mutex>
 
 #include "engine/solid.h"
 
@@ -31,5 +32,10 @@ bool nestsMovedUnions(const Solid& solid);
 // The union of the nesting's leaves, each moved into place, when the solid
 // nests moved unions and uses at most maxLeaves primitives; else the solid.
 SolidPtr flatUnion(const SolidPtr& solid, std::size_t maxLeaves = kMaxFlatLeaves);
+
+// Solid::forRays() of a node that keeps its flat union: made once (under
+// `made`) and kept in `kept` when it is not the node itself, which the
+// node cannot hold.
+SolidPtr keptFlatUnion(const Solid& node, std::once_flag& made, SolidPtr& kept);
 
 }  // namespace csgray::detail

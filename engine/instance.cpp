@@ -29,13 +29,7 @@ Bounds Instance::boundsUnder(const Affine& outer) const {
   return child_->boundsUnder(worldFromChild_.then(outer));
 }
 
-SolidPtr Instance::forRays() const {
-  std::call_once(flatMade_, [this] {
-    SolidPtr flat = flatUnion(shared_from_this());
-    if (flat.get() != this) flat_ = std::move(flat);
-  });
-  return flat_ ? flat_ : shared_from_this();
-}
+SolidPtr Instance::forRays() const { return keptFlatUnion(*this, flatMade_, flat_); }
 
 Ray Instance::rayToChild(const Ray& ray) const {
   Ray r = worldFromChild_.rayToObject(ray);

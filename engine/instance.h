@@ -48,7 +48,7 @@ class Instance : public Solid {
   Affine worldFromChild_;
   Bounds bounds_;
   Bounds rayBox_;  // within bounds_
-  // forRays()'s union when it is not this use (which it cannot hold).
+  // forRays()'s union (keptFlatUnion) when it is not this use (which it cannot hold).
   mutable std::once_flag flatMade_;
   mutable SolidPtr flat_;
 };
