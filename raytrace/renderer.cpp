@@ -314,6 +314,10 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   if (scene_.indirect.samples == 0 && m.ambient > 0.0)
     color =
         m.ambient * sp.color * (scene_.ambientOcclusion.samples > 0 ? unoccluded(sp, ctx) : 1.0);
+  // A surface with neither term (a pure mirror, a self-coloured target)
+  // takes nothing from the lights, so it sends them no shadow rays: each
+  // would add radiance · pass · 0.
+  if (m.diffuse <= 0.0 && m.specular <= 0.0) return color;
   for (const Light& light : lights_) {
     for (int i = 0, n = light.sampleCount(); i < n; ++i) {
       double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers

@@ -532,6 +532,33 @@ TEST(Shading, TransparentSphereCastsALighterTintedShadow) {
   }
 }
 
+// A surface with no diffuse and no highlight term takes nothing from the
+// lights, so it asks them nothing: a pure mirror over which every
+// reflected ray leaves the scene sends no shadow rays, and shows the
+// background at its reflection; the same floor with a diffuse term sends
+// one per pixel to the light above it.
+TEST(Shading, APureMirrorSendsNoShadowRays) {
+  const dvec3 sky(0.2, 0.3, 0.4);
+  const int w = 6, h = 4;
+  auto render = [&](double diffuse) {
+    auto m = std::make_shared<Material>(*matte(dvec3(0.5), 0.0, diffuse));
+    m->reflection = 0.75;
+    Scene scene = floorScene(m);
+    scene.background = sky;
+    scene.lights.push_back(Light{Light::Kind::Point, dvec3(0.5, 0.5, 10)});
+    return Renderer(scene, {w, h, 1}).renderAll();
+  };
+  const RenderResult mirror = render(0.0);
+  EXPECT_EQ(mirror.rays.primary, std::uint64_t(w * h));
+  EXPECT_EQ(mirror.rays.secondary, std::uint64_t(w * h));
+  EXPECT_EQ(mirror.rays.shadow, 0u);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(mirror.color.at(x, y)[c], 0.75 * sky[c], 1e-6) << x << " " << y;
+  EXPECT_EQ(render(0.5).rays.shadow, std::uint64_t(w * h));
+}
+
 // An eye ray through a transparent solid (index 1) sees the solid's own
 // colour s by (1 − k) and what lies beyond by k·filter, once per stretch
 // inside the solid: the face where it leaves a stretch is not shaded. The
