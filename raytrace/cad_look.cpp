@@ -1,10 +1,13 @@
 #include "raytrace/cad_look.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "raytrace/sampler.h"
 #include "scene/color_names.h"
 
 namespace csgray::detail {
@@ -47,9 +50,8 @@ CadLook::CadLook(const CameraSpec& camera, double aspect, const Bounds& bounds)
   for (int i = 0; i < kSkyPoints; ++i) {
     const bool probe = i < kProbes;
     const int k = probe ? i : i - kProbes, n = probe ? kProbes : kSkyPoints - kProbes;
-    const double rho = radius * std::sqrt((k + 0.5) / n);
     const double phi = probe ? 0.5 * std::numbers::pi * k + 0.25 * std::numbers::pi : golden * k;
-    sky_[i] = centre + dvec3(rho * std::cos(phi), rho * std::sin(phi), 0.0);
+    spiral_[i] = {std::cos(phi), std::sin(phi), k, n};
   }
   bounds_ = bounds;
   skyCentre_ = centre;
@@ -106,6 +108,31 @@ std::optional<dvec3> CadLook::groundPoint(const Ray& ray) const {
       std::max(p.y, far.y + reach) < bounds_.lo.y || std::min(p.y, far.y - reach) > bounds_.hi.y)
     return std::nullopt;
   return p;
+}
+
+std::array<dvec3, CadLook::kSkyPoints> CadLook::skyPointsFor(const dvec3& p, bool drawn) const {
+  // Vogel's point k of n lies at radius √((k + ½)/n); moved out by a
+  // share u of its ring's spacing it lies at √((k + u)/n), and with u
+  // uniform over [0, 1) the n rings cover the disc's area evenly (a
+  // random shift of a lattice: Cranley and Patterson, "Randomization of
+  // number theoretic methods for multiple integration", SIAM J. Numer.
+  // Anal. 13, 1976). The turn keeps the spiral's spread.
+  auto fold = [](double v) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
+    return std::uint32_t(bits ^ (bits >> 32));
+  };
+  Sampler draw(fold(p.x), fold(p.y));
+  const double turn = drawn ? 2.0 * std::numbers::pi * draw.next() : 0.0;
+  const double shift = drawn ? draw.next() : 0.5;
+  const double c = std::cos(turn), s = std::sin(turn);
+  std::array<dvec3, kSkyPoints> points;
+  for (int i = 0; i < kSkyPoints; ++i) {
+    const SpiralPoint& q = spiral_[i];
+    const double rho = skyRadius_ * std::sqrt((q.ring + shift) / q.rings);
+    points[i] =
+        skyCentre_ + dvec3(rho * (q.cos * c - q.sin * s), rho * (q.sin * c + q.cos * s), 0.0);
+  }
+  return points;
 }
 
 bool CadLook::groundRegion(dvec3& lo, dvec3& hi) const {

@@ -46,12 +46,24 @@ class CadLook {
   double groundZ() const { return groundZ_; }
 
   // The sky light that casts the ground shadow: a disc high above the
-  // part, sampled at fixed points (Vogel's spiral) so the shadow is smooth
-  // and the same in every render. The first kProbes points are spread
-  // over the disc: when they all agree, the point is wholly lit or wholly
-  // in shadow and the others need not be traced.
+  // part, sampled at kSkyPoints points spread evenly over it (Vogel's
+  // spiral). The first kProbes points are spread over the disc: when they
+  // all agree, the point is wholly lit or wholly in shadow and the others
+  // need not be traced.
   static constexpr int kProbes = 4, kSkyPoints = 24;
-  const std::array<dvec3, kSkyPoints>& skyPoints() const { return sky_; }
+  // The sky points that ground point p's shadow rays go to: the spiral
+  // turned by an angle and its rings moved out by a share of their
+  // spacing, both drawn from p's coordinates. With the same points for
+  // every ground point, each point cast its own sharp shadow, and a wide
+  // penumbra showed as 24 nested rings a few levels of grey apart; drawn
+  // per point, the steps fall in different places at neighbouring points
+  // and the penumbra shades off smoothly, with a grain that the ground
+  // shadow's grid averages out (raytrace/ground_shadow_grid.h). The same
+  // point always gets the same sky, so a render is the same every time.
+  // Not drawn, the points are the spiral itself, the same for every
+  // point: for a pixel traced on its own beside a sharp step of the
+  // shadow, where no average would take the grain out.
+  std::array<dvec3, kSkyPoints> skyPointsFor(const dvec3& p, bool drawn = true) const;
   // The background times this where all the sky is hidden.
   static constexpr double kShadowDarkness = 0.45;
   // The colour of ground seen under the given share of hidden sky.
@@ -71,7 +83,13 @@ class CadLook {
   double skyRadius_ = 0.0;
   // The share of the way up to the sky at the top of the bounds.
   double topShare_ = 0.0;
-  std::array<dvec3, kSkyPoints> sky_{};
+  // The spiral's points on the unit disc before the turn: the direction
+  // of each (cos, sin), its ring and the number of rings on its spiral.
+  struct SpiralPoint {
+    double cos, sin;
+    int ring, rings;
+  };
+  std::array<SpiralPoint, kSkyPoints> spiral_{};
 };
 
 }  // namespace csgray::detail

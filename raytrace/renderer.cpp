@@ -126,7 +126,7 @@ SurfaceSample surfaceSample(const SurfaceHit& hit, dvec3 n, std::uintptr_t use, 
 
 // The ground shadow's grid (raytrace/ground_shadow_grid.h): cells of this
 // many pixels at the camera's target, and at most this many corners (4 MB).
-constexpr double kGroundCellPixels = 2.0;
+constexpr double kGroundCellPixels = 3.0;
 constexpr std::size_t kMaxGroundCorners = std::size_t(1) << 20;
 
 // Bisections that place an edge between two pixel centres: to 1/32 of a pixel.
@@ -404,9 +404,13 @@ double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
   if (ctx.skyHidden) return *ctx.skyHidden;
   std::optional<double> hidden;
   if (groundShadow_)
-    hidden = groundShadow_->at(ground, cadLook_->groundZ(),
-                               [&](const dvec3& corner) { return skyHiddenAt(corner, ctx); });
-  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, ctx);
+    hidden = groundShadow_->at(ground, cadLook_->groundZ(), [&](const dvec3& corner, bool all) {
+      return skyHiddenAt(corner, all, true, ctx);
+    });
+  // Where the grid holds the point but found a sharp step about it, the
+  // probes alone cannot be trusted: every sky point is traced.
+  const bool step = !hidden && groundShadow_ && groundShadow_->holds(ground);
+  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, step, false, ctx).hidden;
   return *ctx.skyHidden;
 }
 
@@ -418,22 +422,22 @@ double Renderer::footprint(double t) const {
   return width / options_.width;
 }
 
-double Renderer::skyHiddenAt(const dvec3& ground, TraceContext& ctx) const {
+GroundShadowGrid::Shade Renderer::skyHiddenAt(const dvec3& ground, bool allPoints, bool drawn,
+                                              TraceContext& ctx) const {
   const dvec3 origin = ground + dvec3(0.0, 0.0, 1e-9 * (scale_ + glm::length(ground)));
-  const auto& sky = cadLook_->skyPoints();
+  const auto sky = cadLook_->skyPointsFor(ground, drawn);
   auto hidden = [&](int i) {
     ++ctx.counts.shadow;
     const dvec3 pass = transmittance(origin, sky[i]);
     return 1.0 - (pass.x + pass.y + pass.z) / 3.0;
   };
-  // Wholly lit or wholly in shadow when the probes agree; else every point.
+  // Wholly lit or wholly in shadow when the probes agree (unless every
+  // point is asked for); else every point.
   double sum = 0.0;
   for (int i = 0; i < CadLook::kProbes; ++i) sum += hidden(i);
-  if (sum > 0.0 && sum < CadLook::kProbes) {
-    for (int i = CadLook::kProbes; i < CadLook::kSkyPoints; ++i) sum += hidden(i);
-    sum *= double(CadLook::kProbes) / CadLook::kSkyPoints;
-  }
-  return sum / CadLook::kProbes;
+  if (!allPoints && (sum == 0.0 || sum == CadLook::kProbes)) return {sum / CadLook::kProbes, true};
+  for (int i = CadLook::kProbes; i < CadLook::kSkyPoints; ++i) sum += hidden(i);
+  return {sum / CadLook::kSkyPoints, false};
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {

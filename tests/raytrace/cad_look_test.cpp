@@ -11,6 +11,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -167,6 +168,81 @@ TEST(CadLook, GroundShadowOnlyDarkens) {
       EXPECT_GE(c.x, (1.0 - CadLook::kShadowDarkness) * background.x - 1e-6);
     }
   EXPECT_GT(shadowed, 200);
+}
+
+// The sky light's points for a ground point lie on its disc, and drawn
+// anew for each point they cover the disc evenly: averaged over many
+// ground points, the share of them beyond a chord is the share of the
+// disc's area beyond it. Undrawn, they are Vogel's spiral, the same for
+// every point.
+TEST(CadLook, SkyPointsCoverTheDiscEvenly) {
+  // A part 4 wide and 2 high on the ground z = 0: the disc is 2 in
+  // radius, centred over the part at 2 + 3 · 4 = 14 (cad_look.cpp).
+  Bounds bounds;
+  bounds.include(dvec3(-2.0, -1.0, 0.0));
+  bounds.include(dvec3(2.0, 1.0, 2.0));
+  const CameraSpec camera{dvec3(10, -20, 10), dvec3(0), dvec3(0, 0, 1), 40.0};
+  const CadLook look(camera, 4.0 / 3.0, bounds);
+  const dvec3 centre(0.0, 0.0, 14.0);
+  const double radius = 2.0, d = 0.3;  // the chord x = centre.x + d · radius
+  double beyond = 0.0;
+  int n = 0;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) {
+      const dvec3 ground(0.13 * i - 4.0, 0.11 * j - 3.0, 0.0);
+      const auto points = look.skyPointsFor(ground);
+      EXPECT_EQ(points, look.skyPointsFor(ground));
+      for (const dvec3& q : points) {
+        EXPECT_DOUBLE_EQ(q.z, centre.z);
+        EXPECT_LE(glm::length(q - centre), radius * (1.0 + 1e-12));
+        beyond += q.x > centre.x + d * radius;
+        ++n;
+      }
+    }
+  const double segment = (std::acos(d) - d * std::sqrt(1.0 - d * d)) / std::numbers::pi;
+  EXPECT_NEAR(beyond / n, segment, 0.005);
+  EXPECT_NE(look.skyPointsFor(dvec3(0.0)), look.skyPointsFor(dvec3(0.5, 0.0, 0.0)));
+  // Undrawn: the spiral itself, the probes on four sides, half a ring in.
+  const auto spiral = look.skyPointsFor(dvec3(0.0), false);
+  EXPECT_EQ(spiral, look.skyPointsFor(dvec3(3.0, 1.0, 0.0), false));
+  for (int k = 0; k < CadLook::kProbes; ++k)
+    EXPECT_NEAR(glm::length(spiral[k] - centre), radius * std::sqrt((k + 0.5) / CadLook::kProbes),
+                1e-12);
+}
+
+// The shadow of a ball held over the ground shades off smoothly: along
+// each row of the ground, the shade's second difference stays small (a
+// slope, however steep, has none; a step of s shows as s). With the same
+// sky points for every ground point, the penumbra showed as nested rings
+// a few levels apart, and it stopped short with a step where the probes
+// first saw the ball: second differences of 0.17.
+TEST(CadLook, AWidePenumbraShadesOffSmoothly) {
+  Scene scene = sceneOf(
+      "return box{size = {1, 1, 0.01}}:translate(8, 8, 0) + "
+      "sphere{r = 1}:translate(0, 0, 3)");
+  const int w = 640, h = 480;
+  Renderer renderer(scene, RenderOptions(w, h, 2));
+  RenderOptions options(w, h, 2);
+  options.depthAov = true;
+  const RenderResult r = Renderer(scene, options).renderAll();
+  Camera camera(renderer.camera(), w, h);
+  CadLook look(renderer.camera(), double(w) / h, scene.bounds());
+  auto shade = [&](int x, int y) {
+    return r.color.at(x, y).x / look.background(camera.ray(x + 0.5, y + 0.5)).x;
+  };
+  double sharpest = 0.0;
+  int shaded = 0;
+  // The left half of the picture, where the ball and its shadow are (the
+  // plate that stands on the ground, on the right, has a sharp one).
+  for (int y = 0; y < h; ++y)
+    for (int x = 1; x + 1 < w / 2; ++x) {
+      if (!missed(r, x - 1, y) || !missed(r, x, y) || !missed(r, x + 1, y)) continue;
+      shaded += shade(x, y) < 0.99;
+      sharpest =
+          std::max(sharpest, std::abs(shade(x - 1, y) - 2.0 * shade(x, y) + shade(x + 1, y)));
+    }
+  EXPECT_GT(shaded, 2000);
+  EXPECT_LT(sharpest, 0.03);
 }
 
 TEST(CadLook, ScenesOfTheirOwnKeepTheirBackground) {
