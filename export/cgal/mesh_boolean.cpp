@@ -576,28 +576,35 @@ class Evaluator {
   Piece unite(std::vector<Piece> pieces) {
     dropRepeats(pieces);
     glueStacked(pieces);
-    std::vector<Piece> groups;
-    std::vector<std::vector<Bounds>> members;
+    std::vector<std::vector<Piece>> groups;
     for (Piece& piece : pieces) {
       if (piece.empty()) continue;
-      std::size_t g = 0;
-      while (g < groups.size() &&
-             std::any_of(members[g].begin(), members[g].end(),
-                         [&](const Bounds& b) { return b.overlaps(piece.box); }))
-        ++g;
-      if (g == groups.size()) {
-        groups.push_back(std::move(piece));
-        members.push_back({groups.back().box});
-      } else {
-        // Boxes apart by a hair: corners a hair apart are made one place,
-        // which the end resolves as a contact (separateCoincidentVertices).
-        for (const Bounds& member : members[g])
-          weldNearVertices(groups[g], piece, hairApart(member, piece.box));
-        members[g].push_back(piece.box);
-        join(groups[g], piece);
+      auto apart = [&](const std::vector<Piece>& members) {
+        return std::none_of(members.begin(), members.end(),
+                            [&](const Piece& m) { return m.box.overlaps(piece.box); });
+      };
+      auto group = std::find_if(groups.begin(), groups.end(), apart);
+      if (group == groups.end()) {
+        groups.emplace_back();
+        group = groups.end() - 1;
       }
+      // Boxes apart by a hair: corners a hair apart are made one place,
+      // which the end resolves as a contact (separateCoincidentVertices).
+      // Each member on its own, before the group is joined: no point of
+      // the piece lies in another member, whose box is apart from its box,
+      // and the inside tests then build their trees over one member's
+      // faces, not over all the group's so far (a Sierpinski tetrahedron's
+      // 4 096 parts, touching at corners, took 11 s in those trees).
+      for (Piece& member : *group)
+        weldNearVertices(member, piece, hairApart(member.box, piece.box));
+      group->push_back(std::move(piece));
     }
-    return balanced(std::move(groups), Boolean::Op::Union);
+    std::vector<Piece> joined;
+    for (std::vector<Piece>& members : groups) {
+      for (std::size_t i = 1; i < members.size(); ++i) join(members[0], members[i]);
+      joined.push_back(std::move(members[0]));
+    }
+    return balanced(std::move(joined), Boolean::Op::Union);
   }
 
   // Operands that stand on each other on the same faces are glued first
