@@ -3,7 +3,9 @@
 -- skips such entities). The spline stays an exact curve: csgray reads it
 -- as the cubic Bézier pieces it is made of, so the cam's face is smooth
 -- in the render and within the tolerance in the export. The layer "bore"
--- is a circle and "key" a keyway, both cut through.
+-- is a circle written as drawing programs write circles as splines (a
+-- rational quadratic of four quarter arcs), which csgray reads as the
+-- exact circle it is; "key" is a keyway; both are cut through.
 --   csgray render examples/dxf_cam.lua -o cam.png
 --   csgray export examples/dxf_cam.lua -o cam.stl
 local drawing = "drawings/cam.dxf"

@@ -360,19 +360,18 @@ class DxfReader {
            end - start, 2.0 * pi, out);
   }
 
-  // A SPLINE by its degree (group 71), knots (40, in order) and control
-  // points (10/20), as Bézier edges (profile/b_spline.h). Splines with
-  // weights that differ (rational: 41) have no exact Bézier form here, and
-  // a spline given by fit points alone (11/21) leaves its curve to the
-  // program that drew it: both are refused.
+  // A SPLINE by its degree (group 71), knots (40, in order), control
+  // points (10/20) and their weights (41, when they differ: a rational
+  // spline), as Bézier edges and arcs (profile/b_spline.h). A spline given
+  // by fit points alone (11/21) leaves its curve to the program that drew
+  // it: refused.
   void spline(const Record& r, std::vector<ProfileEdge>& out) const {
     BSpline s;
     s.degree = int(number(r, 71, 3.0));
-    std::vector<double> weights;
     bool fitPoints = false;
     for (const Group& g : r.groups) {
       if (g.code == 40) s.knots.push_back(number(g));
-      if (g.code == 41) weights.push_back(number(g));
+      if (g.code == 41) s.weights.push_back(number(g));
       if (g.code == 10) s.controls.push_back({number(g), 0.0});
       if (g.code == 20 && !s.controls.empty()) s.controls.back().y = number(g);
       fitPoints |= g.code == 11;
@@ -381,8 +380,6 @@ class DxfReader {
       fail(r.line, fitPoints ? "a SPLINE given by fit points only is not supported (give its "
                                "control points and knots)"
                              : "a SPLINE without control points");
-    if (std::adjacent_find(weights.begin(), weights.end(), std::not_equal_to<>()) != weights.end())
-      fail(r.line, "a rational SPLINE (control points of different weights) is not supported");
     try {
       out = bSplineEdges(s);
     } catch (const std::invalid_argument& e) {

@@ -196,11 +196,24 @@ TEST(DxfReader, SplinesAreExactCurves) {
   const std::string cubic = spline(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {0, 3}, {3, 3}, {3, 0}},
                                    {{41, "1"}, {41, "1"}, {41, "1"}, {41, "1"}});
   EXPECT_NEAR(areaOf(drawing(cubic + line(3, 0, 0, 0))), 162.0 / 30.0, 1e-8);
-  // Rational splines and splines by fit points only are refused.
+  // A circle of radius 2 as drawing programs write it: a rational
+  // quadratic of four quarter arcs (weights 1 and cos 45°), read as the
+  // arcs they are: the area of the circle, not of a polygon or a curve
+  // near it.
+  const std::vector<dvec2> corners = {{2, 0},   {2, 2},  {0, 2},  {-2, 2}, {-2, 0},
+                                      {-2, -2}, {0, -2}, {2, -2}, {2, 0}};
+  std::vector<std::pair<int, std::string>> weights;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    weights.push_back({41, i % 2 ? num(std::sqrt(0.5)) : "1"});
+  const std::string circle =
+      spline(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, corners, weights);
+  EXPECT_NEAR(areaOf(drawing(circle)), 4.0 * std::numbers::pi, 1e-9);
+  // A rational piece that is a hyperbola, and splines by fit points only,
+  // are refused.
   EXPECT_EQ(error(drawing(spline(2, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}},
-                                 {{41, "1"}, {41, "0.7071"}, {41, "1"}}))),
-            "part.dxf:7: a rational SPLINE (control points of different weights) is not "
-            "supported");
+                                 {{41, "1"}, {41, "2"}, {41, "1"}}))),
+            "part.dxf:7: SPLINE: a rational spline with a piece of a hyperbola (only arcs of "
+            "circles, ellipses and parabolas are read)");
   EXPECT_EQ(error(drawing(entity("SPLINE", {{8, "0"}, {71, "3"}, {11, "0"}, {21, "0"}}))),
             "part.dxf:7: a SPLINE given by fit points only is not supported (give its control "
             "points and knots)");
