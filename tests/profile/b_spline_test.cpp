@@ -37,9 +37,11 @@ dvec2 splinePoint(const BSpline& s, double u) {
   return p;
 }
 
-// Each edge is the spline over one span of distinct knots of its domain,
-// in order, and the edges join end to end.
-void expectSameCurve(const BSpline& s) {
+// The spline's edges, one for each span of distinct knots of its domain,
+// in order and joined end to end; check(edge, lo, hi, k) looks at the
+// edge over the span from knot lo to knot hi.
+template <class Check>
+void forEachSpanEdge(const BSpline& s, Check check) {
   const std::vector<ProfileEdge> edges = bSplineEdges(s);
   std::vector<std::pair<double, double>> spans;
   for (std::size_t i = std::size_t(s.degree); i < s.controls.size(); ++i)
@@ -49,15 +51,20 @@ void expectSameCurve(const BSpline& s) {
     if (k > 0) {
       EXPECT_EQ(edges[k - 1].to, edges[k].from);
     }
+    check(edges[k], spans[k].first, spans[k].second, k);
+  }
+}
+
+// Each edge is the spline over its span.
+void expectSameCurve(const BSpline& s) {
+  forEachSpanEdge(s, [&](const ProfileEdge& e, double lo, double hi, std::size_t k) {
     for (double t : {0.1, 0.3, 0.5, 0.7, 0.9}) {
-      const double u = spans[k].first + t * (spans[k].second - spans[k].first);
-      const dvec2 expected = splinePoint(s, u);
-      const dvec2 got =
-          s.degree == 1 ? glm::mix(edges[k].from, edges[k].to, t) : bezierPoint(edges[k], t);
+      const dvec2 expected = splinePoint(s, lo + t * (hi - lo));
+      const dvec2 got = s.degree == 1 ? glm::mix(e.from, e.to, t) : bezierPoint(e, t);
       EXPECT_NEAR(got.x, expected.x, 1e-12) << "edge " << k << " at " << t;
       EXPECT_NEAR(got.y, expected.y, 1e-12) << "edge " << k << " at " << t;
     }
-  }
+  });
 }
 
 const std::vector<dvec2> kControls = {{0, 0}, {1, 2}, {3, 3}, {4, 0}, {6, -1}, {7, 2}, {5, 4}};
@@ -139,31 +146,21 @@ std::pair<double, double> onArc(const ProfileEdge& arc, const dvec2& p) {
 }
 
 // The rational spline's points lie on its edges, each span's on its own
-// edge between the edge's ends, and the edges join end to end.
+// arc between the arc's ends.
 void expectSameRationalCurve(const BSpline& s) {
-  const std::vector<ProfileEdge> edges = bSplineEdges(s);
-  std::vector<std::pair<double, double>> spans;
-  for (std::size_t i = std::size_t(s.degree); i < s.controls.size(); ++i)
-    if (s.knots[i] < s.knots[i + 1]) spans.push_back({s.knots[i], s.knots[i + 1]});
-  ASSERT_EQ(edges.size(), spans.size());
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    if (k > 0) {
-      EXPECT_EQ(edges[k - 1].to, edges[k].from);
-    }
-    const ProfileEdge& e = edges[k];
-    EXPECT_NEAR(glm::distance(e.from, rationalPoint(s, spans[k].first)), 0.0, 1e-12);
-    EXPECT_NEAR(glm::distance(e.to, rationalPoint(s, spans[k].second - 1e-15)), 0.0, 1e-9);
+  forEachSpanEdge(s, [&](const ProfileEdge& e, double lo, double hi, std::size_t k) {
+    EXPECT_NEAR(glm::distance(e.from, rationalPoint(s, lo)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::distance(e.to, rationalPoint(s, hi - 1e-15)), 0.0, 1e-9);
     ASSERT_EQ(e.kind, ProfileEdge::Kind::Arc) << "edge " << k;
     EXPECT_NEAR(glm::distance(e.arcPoint(e.angle0), e.from), 0.0, 1e-12);
     EXPECT_NEAR(glm::distance(e.arcPoint(e.angle1), e.to), 0.0, 1e-12);
     for (double t : {0.1, 0.3, 0.5, 0.7, 0.9}) {
-      const dvec2 p = rationalPoint(s, spans[k].first + t * (spans[k].second - spans[k].first));
-      const auto [angle, off] = onArc(e, p);
+      const auto [angle, off] = onArc(e, rationalPoint(s, lo + t * (hi - lo)));
       EXPECT_NEAR(off, 0.0, 1e-12) << "edge " << k << " at " << t;
       EXPECT_GT(angle, std::min(e.angle0, e.angle1)) << "edge " << k << " at " << t;
       EXPECT_LT(angle, std::max(e.angle0, e.angle1)) << "edge " << k << " at " << t;
     }
-  }
+  });
 }
 
 // A circle as drawing programs write it: four quarter arcs, each a
