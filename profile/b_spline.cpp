@@ -97,13 +97,17 @@ std::vector<Point> spanBezier(const BSpline& s, const std::vector<Point>& points
 }
 
 // A rational quadratic Bézier curve from a to b pulled towards control
-// with weights 1, w, 1 (the standard form: Farin, "Curves and Surfaces for
-// CAGD", 5th ed., section 12.3): for w < 1 an arc of an ellipse, less than
-// half of it, from a to b; for w = 1 a parabola; for w > 1 a hyperbola.
-// The ellipse's centre is (m − w²·control) / (1 − w²), m the middle of a
-// and b (Farin, eq. 12.14). Its conjugate half-diameters are the one to a
-// and the one along the curve's tangent at a (towards control): with
-// those as axes, the arc runs from angle 0 to the angle of b.
+// with weights 1, w, 1 (the standard form, to which any end weights w₀, w₂
+// come with w = w₁ / √(w₀·w₂): Piegl and Tiller, "The NURBS Book", 2nd
+// ed., section 7.3): for w < 1 an arc of an ellipse, less than half of
+// it, from a to b; for w = 1 a parabola; for w > 1 a hyperbola. The
+// ellipse's centre c is (m − w²·control) / (1 − w²), m the middle of a and
+// b: for an arc of a circle of radius R and half-angle α, w = cos α (section
+// 7.5), and m and control lie on one ray from c at R·cos α and R / cos α,
+// so m − c = w²·(control − c); an ellipse is a circle under an affine map,
+// which keeps that ratio along the ray. Its conjugate half-diameters are
+// the one to a and the one along the curve's tangent at a (towards
+// control): with those as axes, the arc runs from angle 0 to the angle of b.
 ProfileEdge conicEdge(const dvec2& a, const dvec2& control, const dvec2& b, double w) {
   if (std::abs(w - 1.0) <= 1e-12) return ProfileEdge::quadratic(a, control, b);
   if (w > 1.0)
