@@ -61,8 +61,8 @@ class CadLook {
   // shadow's grid averages out (raytrace/ground_shadow_grid.h). The same
   // point always gets the same sky, so a render is the same every time.
   // Not drawn, the points are the spiral itself, the same for every
-  // point: for a pixel traced on its own beside a sharp step of the
-  // shadow, where no average would take the grain out.
+  // point: for a pixel traced on its own (beside a sharp step of the
+  // shadow, or off the grid), where no average would take the grain out.
   std::array<dvec3, kSkyPoints> skyPointsFor(const dvec3& p, bool drawn = true) const;
   // The background times this where all the sky is hidden.
   static constexpr double kShadowDarkness = 0.45;

@@ -49,10 +49,9 @@ class GroundShadowGrid {
   // where the probes first see it. Nothing when p lies outside the grid,
   // or when smoothing moves two of the cell's corners by more than
   // kSharpStep each (a sharp edge of the shadow, a step of more than 0.3
-  // beside them: the caller traces p itself, at every sky point).
+  // beside them: the caller traces p itself).
   static constexpr double kSharpStep = 0.1;
-  // Does the grid reach over ground point p (so that at() found a sharp
-  // step if it gave nothing)?
+  // Does the grid reach over ground point p?
   bool holds(const dvec3& p) const;
   std::optional<double> at(const dvec3& p, double groundZ, const TraceSky& trace) const;
 

@@ -407,10 +407,10 @@ double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
     hidden = groundShadow_->at(ground, cadLook_->groundZ(), [&](const dvec3& corner, bool all) {
       return skyHiddenAt(corner, all, true, ctx);
     });
-  // Where the grid holds the point but found a sharp step about it, the
-  // probes alone cannot be trusted: every sky point is traced.
-  const bool step = !hidden && groundShadow_ && groundShadow_->holds(ground);
-  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, step, false, ctx).hidden;
+  // A point the grid does not hold, or one beside a sharp step of the
+  // shadow: the spiral as it is, the probes first (nothing would average
+  // its grain).
+  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, false, false, ctx).hidden;
   return *ctx.skyHidden;
 }
 
