@@ -221,10 +221,10 @@ TEST(CadLook, AWidePenumbraShadesOffSmoothly) {
       "return box{size = {1, 1, 0.01}}:translate(8, 8, 0) + "
       "sphere{r = 1}:translate(0, 0, 3)");
   const int w = 640, h = 480;
-  Renderer renderer(scene, RenderOptions(w, h, 2));
   RenderOptions options(w, h, 2);
   options.depthAov = true;
-  const RenderResult r = Renderer(scene, options).renderAll();
+  const Renderer renderer(scene, options);
+  const RenderResult r = renderer.renderAll();
   Camera camera(renderer.camera(), w, h);
   CadLook look(renderer.camera(), double(w) / h, scene.bounds());
   auto shade = [&](int x, int y) {
