@@ -24,35 +24,27 @@ bool GroundShadowGrid::holds(const dvec3& p) const {
 }
 
 std::optional<double> GroundShadowGrid::at(const dvec3& p, double groundZ,
-                                           const TraceSky& trace) const {
+                                           const std::function<double(const dvec3&)>& trace) const {
   if (!holds(p)) return std::nullopt;
   const double u = (p.x - lo_.x) / cell_, v = (p.y - lo_.y) / cell_;
   const int i = int(u), j = int(v);
-  // A corner as stored (traced now if it was not yet). Two threads may
-  // trace one corner at once: they find the same value.
-  auto stored = [&](int ci, int cj, bool allPoints) {
+  auto corner = [&](int ci, int cj) {
     std::atomic<float>& slot = corners_[std::size_t(cj) * nx_ + ci];
     float value = slot.load(std::memory_order_relaxed);
-    if (value < 0.0f || (allPoints && value >= kProbesOnly)) {
-      const Shade shade = trace(dvec3(lo_.x + ci * cell_, lo_.y + cj * cell_, groundZ), allPoints);
-      value = float(shade.hidden) + (shade.probesOnly ? kProbesOnly : 0.0f);
+    if (value < 0.0f) {
+      // Two threads may trace one corner at once: they find the same value.
+      value = float(trace(dvec3(lo_.x + ci * cell_, lo_.y + cj * cell_, groundZ)));
       slot.store(value, std::memory_order_relaxed);
     }
-    return value;
+    return double(value);
   };
   // The corners the cell's smoothed corners are made of: the 4 × 4 block
   // about the cell, as far as the grid reaches.
   const int i0 = std::max(i - 1, 0), i1 = std::min(i + 2, nx_ - 1);
   const int j0 = std::max(j - 1, 0), j1 = std::min(j + 2, ny_ - 1);
-  float first = stored(i0, j0, false);
-  bool alike = first >= kProbesOnly;
-  for (int cj = j0; cj <= j1; ++cj)
-    for (int ci = i0; ci <= i1; ++ci) alike = alike && stored(ci, cj, false) == first;
-  // Wholly lit or wholly hidden about the cell, by the probes: so is p.
-  if (alike) return double(first - kProbesOnly);
   double block[4][4];
   for (int cj = j0; cj <= j1; ++cj)
-    for (int ci = i0; ci <= i1; ++ci) block[cj - j0][ci - i0] = stored(ci, cj, true);
+    for (int ci = i0; ci <= i1; ++ci) block[cj - j0][ci - i0] = corner(ci, cj);
   auto smoothed = [&](int ci, int cj) {
     double sum = 0.0;
     int n = 0;

@@ -27,41 +27,29 @@ class GroundShadowGrid {
 
   bool made() const { return corners_ != nullptr; }
 
-  // What a trace of the sky from a ground point found: the hidden share,
-  // and whether only the first few sky points were traced (they agreed,
-  // and the point was taken as wholly lit or wholly hidden).
-  struct Shade {
-    double hidden;
-    bool probesOnly;
-  };
-  // Traces the sky from a ground point; with allPoints, every sky point.
-  using TraceSky = std::function<Shade(const dvec3& p, bool allPoints)>;
-
   // The hidden share at ground point p, from the corners about its cell:
-  // each corner traced the first time it is asked for, then each of the
-  // cell's corners smoothed as the mean of the 3 × 3 corners about it, and
-  // those interpolated bilinearly. The mean takes the grain out of the
-  // traced shares (each a sum over a few sky points drawn per point,
-  // CadLook::skyPointsFor) and keeps a share that changes linearly across
-  // the ground. Where the corners about the cell are not all alike, the
-  // ones their probes alone decided are traced again at every sky point,
-  // so the shadow fades out smoothly where it ends rather than stopping
-  // where the probes first see it. Nothing when p lies outside the grid,
-  // or when smoothing moves two of the cell's corners by more than
+  // each corner traced (by `trace`, at every sky point) the first time it
+  // is asked for, then each of the cell's corners smoothed as the mean of
+  // the 3 × 3 corners about it, and those interpolated bilinearly. The
+  // mean takes the grain out of the traced shares (each a sum over a few
+  // sky points drawn per point, CadLook::skyPointsFor) and keeps a share
+  // that changes linearly across the ground. A corner has one share
+  // whichever pixel asks first, so the image does not depend on the order
+  // pixels come in, nor on the threads. Nothing when p lies outside the
+  // grid, or when smoothing moves two of the cell's corners by more than
   // kSharpStep each (a sharp edge of the shadow, a step of more than 0.3
   // beside them: the caller traces p itself).
   static constexpr double kSharpStep = 0.1;
   // Does the grid reach over ground point p?
   bool holds(const dvec3& p) const;
-  std::optional<double> at(const dvec3& p, double groundZ, const TraceSky& trace) const;
+  std::optional<double> at(const dvec3& p, double groundZ,
+                           const std::function<double(const dvec3&)>& trace) const;
 
  private:
   dvec2 lo_;
   double cell_;
   int nx_ = 0, ny_ = 0;  // corners along x and y
-  // Per corner: the hidden share; that plus kProbesOnly when its probes
-  // alone decided it; a negative number before it is traced.
-  static constexpr float kProbesOnly = 2.0f;
+  // Per corner: the hidden share, or a negative number before it is traced.
   std::unique_ptr<std::atomic<float>[]> corners_;
 };
 

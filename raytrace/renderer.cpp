@@ -404,13 +404,12 @@ double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
   if (ctx.skyHidden) return *ctx.skyHidden;
   std::optional<double> hidden;
   if (groundShadow_)
-    hidden = groundShadow_->at(ground, cadLook_->groundZ(), [&](const dvec3& corner, bool all) {
-      return skyHiddenAt(corner, all, true, ctx);
-    });
+    hidden = groundShadow_->at(ground, cadLook_->groundZ(),
+                               [&](const dvec3& corner) { return skyHiddenAt(corner, true, ctx); });
   // A point the grid does not hold, or one beside a sharp step of the
   // shadow: the spiral as it is, the probes first (nothing would average
   // its grain).
-  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, false, false, ctx).hidden;
+  ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, false, ctx);
   return *ctx.skyHidden;
 }
 
@@ -422,8 +421,7 @@ double Renderer::footprint(double t) const {
   return width / options_.width;
 }
 
-GroundShadowGrid::Shade Renderer::skyHiddenAt(const dvec3& ground, bool allPoints, bool drawn,
-                                              TraceContext& ctx) const {
+double Renderer::skyHiddenAt(const dvec3& ground, bool drawn, TraceContext& ctx) const {
   const dvec3 origin = ground + dvec3(0.0, 0.0, 1e-9 * (scale_ + glm::length(ground)));
   const auto sky = cadLook_->skyPointsFor(ground, drawn);
   auto hidden = [&](int i) {
@@ -431,13 +429,15 @@ GroundShadowGrid::Shade Renderer::skyHiddenAt(const dvec3& ground, bool allPoint
     const dvec3 pass = transmittance(origin, sky[i]);
     return 1.0 - (pass.x + pass.y + pass.z) / 3.0;
   };
-  // Wholly lit or wholly in shadow when the probes agree (unless every
-  // point is asked for); else every point.
+  // A grid corner's points drawn for it: every point, since the probes
+  // miss where the shadow fades out, and the grid averages the corner with
+  // its neighbours, which must agree with it. Not drawn: wholly lit or
+  // wholly in shadow when the probes agree, else every point.
   double sum = 0.0;
   for (int i = 0; i < CadLook::kProbes; ++i) sum += hidden(i);
-  if (!allPoints && (sum == 0.0 || sum == CadLook::kProbes)) return {sum / CadLook::kProbes, true};
+  if (!drawn && (sum == 0.0 || sum == CadLook::kProbes)) return sum / CadLook::kProbes;
   for (int i = CadLook::kProbes; i < CadLook::kSkyPoints; ++i) sum += hidden(i);
-  return {sum / CadLook::kSkyPoints, false};
+  return sum / CadLook::kSkyPoints;
 }
 
 dvec3 Renderer::trace(const Ray& ray) const {

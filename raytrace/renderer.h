@@ -167,11 +167,10 @@ class Renderer {
   // The share of the CAD look's sky that the scene hides from a ground point.
   // From the ground shadow's grid where it has the point, else traced.
   double skyHidden(const dvec3& ground, TraceContext& ctx) const;
-  // Traced: the sky points' shadow rays from the ground point (the probes
-  // alone where they agree, unless allPoints), to the points drawn for it
-  // or, unless drawn, to the spiral itself (CadLook::skyPointsFor).
-  GroundShadowGrid::Shade skyHiddenAt(const dvec3& ground, bool allPoints, bool drawn,
-                                      TraceContext& ctx) const;
+  // Traced: the sky points' shadow rays from the ground point, to the
+  // points drawn for it (a grid corner: every point) or, unless drawn, to
+  // the spiral itself, the probes first (CadLook::skyPointsFor).
+  double skyHiddenAt(const dvec3& ground, bool drawn, TraceContext& ctx) const;
   // The width of a pixel at distance t along a camera ray.
   double footprint(double t) const;
   // The colour a camera ray sees with the scene's highlighted solids laid

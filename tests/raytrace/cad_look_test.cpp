@@ -243,6 +243,14 @@ TEST(CadLook, AWidePenumbraShadesOffSmoothly) {
     }
   EXPECT_GT(shaded, 2000);
   EXPECT_LT(sharpest, 0.03);
+  // Each corner of the shadow's grid has one share, whichever pixel asks
+  // first: the image is the same on one thread, whose tiles come in
+  // another order.
+  RenderOptions one = options;
+  one.threads = 1;
+  const RenderResult single = Renderer(scene, one).renderAll();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) ASSERT_EQ(single.color.at(x, y), r.color.at(x, y)) << x << " " << y;
 }
 
 TEST(CadLook, ScenesOfTheirOwnKeepTheirBackground) {

@@ -1,8 +1,7 @@
 // The ground shadow's grid (raytrace/ground_shadow_grid.h): corners traced
 // once each, smoothed over their neighbours and interpolated bilinearly;
-// the probes' answer kept where a cell's whole neighbourhood agrees and
-// traced again in full where it does not; nothing outside the grid or
-// across a sharp step; no grid past its size limit.
+// nothing outside the grid or across a sharp step; no grid past its size
+// limit.
 #include "raytrace/ground_shadow_grid.h"
 
 #include <gtest/gtest.h>
@@ -14,8 +13,6 @@
 namespace csgray::detail {
 namespace {
 
-using Shade = GroundShadowGrid::Shade;
-
 TEST(GroundShadowGrid, SmoothsAndInterpolatesCornersTracedOnce) {
   // Cells of 0.5 over [0, 4] × [0, 2]: 9 × 5 corners.
   const GroundShadowGrid grid({0.0, 0.0}, {4.0, 2.0}, 0.5, 100);
@@ -24,10 +21,10 @@ TEST(GroundShadowGrid, SmoothsAndInterpolatesCornersTracedOnce) {
   // A slope gentle enough to interpolate: the mean over a symmetric
   // neighbourhood and bilinear interpolation both keep a bilinear function.
   auto share = [](const dvec3& p) { return 0.02 * p.x + 0.01 * p.y + 0.005 * p.x * p.y; };
-  auto trace = [&](const dvec3& p, bool) {
+  auto trace = [&](const dvec3& p) {
     EXPECT_EQ(p.z, -1.0);
     ++traced[{p.x, p.y}];
-    return Shade{share(p), false};
+    return share(p);
   };
   // Both in the cell from (1, 0.5) to (1.5, 1), whose smoothed corners
   // have all their neighbours in the grid.
@@ -59,9 +56,8 @@ TEST(GroundShadowGrid, SmoothingTakesTheGrainOut) {
   const GroundShadowGrid grid({0.0, 0.0}, {10.0, 10.0}, 0.25, 10'000);
   auto truth = [](const dvec3& p) { return 0.3 + 0.02 * p.x; };
   // Grain of ±0.05, the same at a corner whenever it is asked.
-  auto trace = [&](const dvec3& p, bool) {
-    const double grain = 0.05 * std::sin(12.9898 * p.x + 78.233 * p.y * p.y + 4.1 * p.x * p.y);
-    return Shade{truth(p) + grain, false};
+  auto trace = [&](const dvec3& p) {
+    return truth(p) + 0.05 * std::sin(12.9898 * p.x + 78.233 * p.y * p.y + 4.1 * p.x * p.y);
   };
   double squares = 0.0;
   int n = 0;
@@ -77,51 +73,19 @@ TEST(GroundShadowGrid, SmoothingTakesTheGrainOut) {
   EXPECT_LT(std::sqrt(squares / n), 0.015);
 }
 
-// Where every corner about the cell was decided by its probes alike, so is
-// the point, and nothing is traced in full; where they differ, the
-// corners their probes decided are traced again at every sky point.
-TEST(GroundShadowGrid, ProbesDecideOnlyWhereTheNeighbourhoodAgrees) {
-  const GroundShadowGrid lit({0.0, 0.0}, {4.0, 4.0}, 1.0, 100);
-  int full = 0;
-  auto uniform = [&](const dvec3&, bool all) {
-    full += all;
-    return Shade{0.0, !all};
-  };
-  EXPECT_EQ(lit.at({1.5, 1.5, 0.0}, 0.0, uniform), 0.0);
-  EXPECT_EQ(full, 0);
-
-  const GroundShadowGrid fringe({0.0, 0.0}, {4.0, 4.0}, 1.0, 100);
-  std::map<std::pair<double, double>, int> fullTraces;
-  // The probes of every corner but one see all the sky; the one at (3, 3)
-  // sees some of it hidden, and so do the others once all points are traced.
-  auto edge = [&](const dvec3& p, bool all) {
-    if (all) ++fullTraces[{p.x, p.y}];
-    if (p.x == 3.0 && p.y == 3.0) return Shade{0.1, false};
-    return all ? Shade{0.02, false} : Shade{0.0, true};
-  };
-  const std::optional<double> hidden = fringe.at({1.5, 1.5, 0.0}, 0.0, edge);
-  ASSERT_TRUE(hidden);
-  EXPECT_GT(*hidden, 0.02);
-  EXPECT_LT(*hidden, 0.1);
-  // The other 15 corners of the block, each traced in full once.
-  EXPECT_EQ(fullTraces.size(), 15u);
-  for (const auto& [corner, times] : fullTraces) EXPECT_EQ(times, 1);
-  EXPECT_EQ(fullTraces.count({3.0, 3.0}), 0u);
-}
-
 TEST(GroundShadowGrid, ASharpStepIsLeftToTheCaller) {
   const GroundShadowGrid grid({0.0, 0.0}, {4.0, 4.0}, 1.0, 100);
   // A step of 0.4 between two columns of corners, the cell's own right
   // side and the column beyond: smoothing moves the corners next to it by
   // 0.4 / 3.
-  auto step = [](const dvec3& p, bool) { return Shade{p.x < 2.5 ? 0.5 : 0.9, false}; };
+  auto step = [](const dvec3& p) { return p.x < 2.5 ? 0.5 : 0.9; };
   // A steep slope, 0.3 a cell, is interpolated: the mean keeps it.
-  auto steep = [](const dvec3& p, bool) { return Shade{0.3 * p.x - 0.1, false}; };
+  auto steep = [](const dvec3& p) { return 0.3 * p.x - 0.1; };
   const GroundShadowGrid sloped({0.0, 0.0}, {4.0, 4.0}, 1.0, 100);
   EXPECT_NEAR(*sloped.at({1.5, 1.5, 0.0}, 0.0, steep), 0.35, 1e-7);
   EXPECT_FALSE(grid.at({1.5, 1.5, 0.0}, 0.0, step));
   EXPECT_TRUE(grid.holds({1.5, 1.5, 0.0}));
-  auto gentle = [](const dvec3& p, bool) { return Shade{0.05 * p.x, false}; };
+  auto gentle = [](const dvec3& p) { return 0.05 * p.x; };
   const GroundShadowGrid other({0.0, 0.0}, {4.0, 4.0}, 1.0, 100);
   EXPECT_NEAR(*other.at({1.5, 1.5, 0.0}, 0.0, gentle), 0.075, 1e-7);
 }
