@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <glm/geometric.hpp>
 #include <map>
 #include <numbers>

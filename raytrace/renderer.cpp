@@ -407,8 +407,8 @@ double Renderer::skyHidden(const dvec3& ground, TraceContext& ctx) const {
     hidden = groundShadow_->at(ground, cadLook_->groundZ(),
                                [&](const dvec3& corner) { return skyHiddenAt(corner, true, ctx); });
   // A point the grid does not hold, or one beside a sharp step of the
-  // shadow: the spiral as it is, the probes first (nothing would average
-  // its grain).
+  // shadow: traced on its own, so to the spiral as it is (no neighbours
+  // average it, and drawn points would show their grain), the probes first.
   ctx.skyHidden = hidden ? *hidden : skyHiddenAt(ground, false, ctx);
   return *ctx.skyHidden;
 }
