@@ -157,7 +157,7 @@ SurfacePtr Surface::parallelogram(const dvec3& origin, const dvec3& u, const dve
                                    kind.empty() ? std::string("parallelogram") : kind);
 }
 
-std::optional<double> Surface::planeHit(const Ray& ray) const {
+double Surface::planeHit(const Ray& ray) const {
   // In the object frame the supporting plane is z = 0 with n = (0, 0, 1) and
   // t = 0, so λ = −n·w / n·r (docs/theory.md) is −o.z / d.z. The mapped
   // ray keeps its parameter, so λ is the world ray's parameter too. Only
@@ -170,10 +170,10 @@ std::optional<double> Surface::planeHit(const Ray& ray) const {
   };
   const dvec2 z = object(2, ray.origin, ray.dir);
   // Parallel to the plane, or lying in it: no hit.
-  if (z.y == 0.0) return std::nullopt;
+  if (z.y == 0.0) return kInfinity;
   double t = -z.x / z.y;
   // Also refuses NaN and an overflow to infinity.
-  if (!(t > ray.tMin && t < ray.tMax)) return std::nullopt;
+  if (!(t > ray.tMin && t < ray.tMax)) return kInfinity;
   // The linear factors (ϑ, φ) of the hit are its object (x, y) (Winkler, 17.3.2.3).
   const dvec2 ox = object(0, ray.origin, ray.dir), oy = object(1, ray.origin, ray.dir);
   double x = ox.x + t * ox.y, y = oy.x + t * oy.y;
@@ -198,7 +198,7 @@ std::optional<double> Surface::planeHit(const Ray& ray) const {
     case Shape::Mesh:  // meshHit's
       break;
   }
-  if (!inside) return std::nullopt;
+  if (!inside) return kInfinity;
   return t;
 }
 

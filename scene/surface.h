@@ -61,7 +61,9 @@ class Surface : public std::enable_shared_from_this<Surface> {
   std::optional<double> hit(const Ray& ray, int* face = nullptr) const {
     if (shape_ == Shape::Mesh) return meshHit(ray, face);
     if (face) *face = 0;
-    return planeHit(ray);
+    const double t = planeHit(ray);
+    if (t == kInfinity) return std::nullopt;
+    return t;
   }
   // A planar shape's unit normal in world space (the frame's z axis
   // through the normal matrix).
@@ -94,7 +96,8 @@ class Surface : public std::enable_shared_from_this<Surface> {
 
  private:
   void update();
-  std::optional<double> planeHit(const Ray& ray) const;
+  // The hit's λ, or +inf where there is none.
+  double planeHit(const Ray& ray) const;
   std::optional<double> meshHit(const Ray& ray, int* face) const;
   dvec3 meshNormalAt(const dvec3& worldPoint, int face) const;
 
