@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "engine/boolean.h"
 #include "engine/instance.h"
@@ -805,7 +806,7 @@ class Evaluator {
     const double grown = std::max(a.grown, b.grown);
     a.grown = grown;
     if (attempt(a, b, op)) {
-      if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces) roundIfValid(a.mesh);
+      if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces) roundIfValid(a);
       return boxAfter(a);
     }
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
@@ -896,14 +897,45 @@ class Evaluator {
   // faces' diagonals cross at such points, and every boolean after it).
   // The rounding moves a point by half a unit in the last place; the
   // booleans in doubles round each new point so too.
-  static void roundIfValid(Mesh& mesh) {
+  //
+  // Where rounding merges two points that the corefinement put a hair's
+  // breadth apart, the faces between them lose their area (the spokes of
+  // a wheel, boxes turned about one axis, whose end faces all pass through
+  // it: their crossings lie within 1e-16 of each other there). Those faces
+  // are collapsed and flipped away as the finished part's are
+  // (removeDegenerateFaces), which moves no other point, and the piece is
+  // kept in doubles if that leaves it valid; else it stays exact, and
+  // every boolean it goes into is CGAL's.
+  static void roundIfValid(Piece& piece) {
+    Mesh& mesh = piece.mesh;
     const TriangleMesh rounded = trianglesOf(mesh);
-    if (!meshDefect(rounded).valid()) return;
-    std::size_t i = 0;
-    for (auto v : mesh.vertices()) {
-      const dvec3& p = rounded.points[i++];
-      mesh.point(v) = typename K::Point_3(p.x, p.y, p.z);
+    const MeshDefect defect = meshDefect(rounded);
+    if (defect.valid()) {
+      std::size_t i = 0;
+      for (auto v : mesh.vertices()) {
+        const dvec3& p = rounded.points[i++];
+        mesh.point(v) = typename K::Point_3(p.x, p.y, p.z);
+      }
+      return;
     }
+    if (defect.kind != MeshDefect::Kind::Degenerate) return;
+    RoundedMesh repaired;
+    for (const dvec3& p : rounded.points) repaired.add_vertex({p.x, p.y, p.z});
+    auto tags = tagsOf(repaired);
+    const auto exactTags = tagsOf(std::as_const(mesh));
+    auto face = mesh.faces().begin();
+    using V = RoundedMesh::Vertex_index;
+    for (const auto& t : rounded.triangles) {
+      const RoundedMesh::Face_index f = repaired.add_face(V(t[0]), V(t[1]), V(t[2]));
+      if (f == RoundedMesh::null_face()) return;
+      tags[f] = exactTags[*face++];
+    }
+    removeDegenerateFaces(repaired);
+    DoubleMesh doubles{trianglesOf(repaired), {}};
+    for (auto f : repaired.faces()) doubles.tags.push_back(tags[f]);
+    if (!meshDefect(doubles.mesh).valid()) return;
+    piece.doubles = std::move(doubles);
+    mesh = Mesh();
   }
 
   // Solids placed to meet at a corner (a Sierpinski tetrahedron's) meet

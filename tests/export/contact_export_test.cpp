@@ -483,6 +483,28 @@ TEST(ContactExport, APrimitiveRepeatedIsExportedOnce) {
   }
 }
 
+TEST(ContactExport, SpokesTurnedAboutTheirCommonEdgeStayInDoubles) {
+  // Seven bars turned about the z axis, each end face through it (a
+  // candle stand's arms, a wheel's spokes): CGAL's union of two of them
+  // puts crossings a hair's breadth apart on the axis, which rounding to
+  // doubles merges. The faces between them are collapsed, and the union
+  // kept in doubles, so that the ball's union after it is made in doubles
+  // too (before, it stayed exact, and every boolean after it was CGAL's).
+  const SolidPtr solid = part(R"(
+    local spokes = {}
+    for k = 0, 6 do
+      spokes[#spokes + 1] = box{size={25, 3, 3}}:translate(0, -2, -1.5):rotate(0, 0, k * 360 / 7)
+    end
+    return union(spokes) + sphere{r=2}:translate(12.3, 0.4, 0.7))");
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  EXPECT_FALSE(stats.redoneByCgal);
+  EXPECT_GE(stats.inDoubles, 2u);
+}
+
 // ---- The parts of examples/ and bench/parts/ ---------------------------------------
 
 TEST(ContactExport, TheRoundedBoxOfTangentParts) {
