@@ -83,10 +83,10 @@ bool conditionedLine(const Ray& ray, const TorusInUnits& torus, ConditionedLine&
   if (!(dd > 0.0)) return false;
   // The closest point to the centre, t = t0; a second pass removes what
   // rounding left of its component along d.
-  // Reciprocals, multiplied, where a quotient was: a division waits about
-  // 13 cycles (four at once where it was twelve), and the frame may differ
-  // in the last bit, which the polish on the ray as given (kPolishSteps)
-  // takes out of the boundaries.
+  // Reciprocals are multiplied where quotients were: four divisions a ray
+  // instead of twelve, each about 13 cycles on the path. The frame may
+  // differ in its last bit; the polish on the ray as given (kPolishSteps)
+  // takes that out of the boundaries.
   const double invDd = 1.0 / dd;
   double t0 = -glm::dot(o, d) * invDd;
   dvec3 closest = o + t0 * d;
