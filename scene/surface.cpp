@@ -175,8 +175,7 @@ double Surface::planeHit(const Ray& ray) const {
   // t = −z.x / z.y > 0: z.x and z.y of opposite signs. Most shadow rays
   // leave the ground so, and are refused without the division, which
   // waits for the ray's own set-up (its direction's inverse).
-  if (ray.tMin >= 0.0 && !((z.x < 0.0 && z.y > 0.0) || (z.x > 0.0 && z.y < 0.0)))
-    return kInfinity;
+  if (ray.tMin >= 0.0 && !((z.x < 0.0 && z.y > 0.0) || (z.x > 0.0 && z.y < 0.0))) return kInfinity;
   double t = -z.x / z.y;
   // Also refuses NaN and an overflow to infinity.
   if (!(t > ray.tMin && t < ray.tMax)) return kInfinity;
