@@ -98,12 +98,15 @@ struct SweepEdge {
 };
 
 // A stretch of the curve, t0 <= t <= t1, whose image in the plane lies in
-// the box lo–hi; straight: it lies on the segment from–to.
+// the box lo–hi; straight: it lies on the segment from–to. Every field is
+// given where a piece is made, and none has a default: a twisted path's
+// array of 512 pieces is made for every ray, and filling it with defaults
+// took a tenth of a twisted gear's render.
 struct SweepPiece {
   double t0, t1;
   dvec2 lo, hi;
-  bool straight = false;
-  dvec2 from{0.0}, to{0.0};
+  bool straight;
+  dvec2 from, to;
 };
 
 // Where the curve meets an edge.
