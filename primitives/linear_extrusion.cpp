@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "engine/solvers/quartic.h"
+#include "engine/solvers/sine_cosine.h"
 #include "primitives/check.h"
 
 namespace csgray::detail {
@@ -17,7 +18,13 @@ namespace {
 // v turned by the angle whose cosine and sine are c and s.
 dvec2 turned(const dvec2& v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
-dvec2 rotated(const dvec2& v, double angle) { return turned(v, std::cos(angle), std::sin(angle)); }
+// (The twist's angles through sineCosine: a twisted path turns a point at
+// every step of its root search, and the C library's sine and cosine were a
+// third of a twisted gear's render.)
+dvec2 rotated(const dvec2& v, double angle) {
+  const SineCosine sc = sineCosine(angle);
+  return turned(v, sc.cos, sc.sin);
+}
 
 // The ray's coordinates in a normalised parameter: t = middle + half·s,
 // s ∈ [-1, 1] over the window, so that the polynomials' coefficients are
@@ -176,7 +183,8 @@ struct TwistedPath {
     // and cosine for the point and its velocity.
     auto f = [&](double t) {
       const double z = zeta(t), dz = d.z / h;
-      const double c = std::cos(tau * z), sn = std::sin(tau * z);
+      const SineCosine sc = sineCosine(tau * z);
+      const double c = sc.cos, sn = sc.sin;
       const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
       const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
       const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
