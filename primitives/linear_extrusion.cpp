@@ -127,7 +127,7 @@ struct ScaledPath {
 // With twist: u(t) = Rot(τ·ζ(t))·v(t), v = (x/σx, y/σy), τ the twist in
 // radians. The roots of an edge's implicit function f(t) = g(u(t)) are
 // isolated on bounded intervals: with bounds L1 on |f'| and L2 on |f''|
-// over the window, an interval of half-width w about m holds no root when
+// over the piece, an interval of half-width w about m holds no root when
 // |f(m)| > L1·w, and f is monotone on it when |f'(m)| > L2·w, so that a
 // change of sign brackets its only root; otherwise it is halved. Intervals
 // narrower than the resolution that may still hold roots are a grazing
@@ -144,9 +144,63 @@ struct TwistedPath {
   dvec3 o, d;
   double z0, h, tau;
   dvec2 scale;
-  // Bounds over the window: |u'| and |u''| (per unit t), |u|.
-  double speed, bend, reach;
   double resolution;  // in t
+
+  // Bounds over a stretch of the ray: |u| (reach), |u'| and |u''| per unit
+  // t (speed, bend). Those of the window serve every piece while σ stays
+  // within a factor of two over it; otherwise each piece gets its own: near
+  // the apex of a scale of 0, σ falls to 1e-12 and the window's bounds to
+  // nothing useful, so every edge was bisected down to the resolution in
+  // every piece (a cone twisted by a turn took 150 µs a ray).
+  struct Bounds {
+    double reach, speed, bend;
+  };
+  // The planar distance |xy(t)| is largest at an end, σ smallest at one.
+  Bounds boundsOver(double ta, double tb) const {
+    const dvec3 pa = o + ta * d, pb = o + tb * d;
+    const double far = std::max(glm::length(dvec2(pa)), glm::length(dvec2(pb)));
+    const double sigmaMin = std::max(1e-12, std::min({sigmaAt(pa, scale.x), sigmaAt(pb, scale.x),
+                                                      sigmaAt(pa, scale.y), sigmaAt(pb, scale.y)}));
+    const double dz = std::abs(d.z) / h;
+    const double sigmaRate = std::max(std::abs(scale.x - 1.0), std::abs(scale.y - 1.0)) * dz;
+    const double v = far / sigmaMin;
+    const double dv = (glm::length(dvec2(d)) + v * sigmaRate) / sigmaMin;
+    const double ddv = 2.0 * sigmaRate * dv / sigmaMin;
+    const double spin = std::abs(tau) * dz;
+    return {v, dv + spin * v, ddv + 2.0 * spin * dv + spin * spin * v};
+  }
+  // A lower bound on |u| over a stretch: |u| = |v| >= |xy| / max σ, with
+  // |xy| least at the point of the segment nearest the axis.
+  double nearestOver(double ta, double tb) const {
+    const dvec3 pa = o + ta * d, pb = o + tb * d;
+    const dvec2 a(pa), ab = dvec2(pb) - a;
+    const double l2 = glm::dot(ab, ab);
+    const double s = l2 > 0.0 ? std::clamp(-glm::dot(a, ab) / l2, 0.0, 1.0) : 0.0;
+    const double sigmaMax = std::max(
+        {sigmaAt(pa, scale.x), sigmaAt(pb, scale.x), sigmaAt(pa, scale.y), sigmaAt(pb, scale.y)});
+    return glm::length(a + s * ab) / sigmaMax;
+  }
+  double sigmaAt(const dvec3& p, double s) const { return 1.0 + (s - 1.0) * (p.z - z0) / h; }
+  // Does σ fall below half its largest over the window [t0, t1]?
+  bool sigmaVaries(double t0, double t1) const {
+    const dvec3 pa = o + t0 * d, pb = o + t1 * d;
+    const double a = std::min(sigmaAt(pa, scale.x), sigmaAt(pa, scale.y));
+    const double b = std::min(sigmaAt(pb, scale.x), sigmaAt(pb, scale.y));
+    return std::min(a, b) < 0.5 * std::max(a, b);
+  }
+  Bounds window;
+  bool perPiece = false;  // bounds per piece, not the window's
+  mutable struct {
+    double t0 = kInfinity, t1 = kInfinity;
+    Bounds bounds;
+  } lastBounds;
+  const Bounds& boundsFor(double t0, double t1) const {
+    if (!perPiece) return window;
+    // (The edges near a piece are solved one after another over the
+    // piece: its bounds are worked out once.)
+    if (t0 != lastBounds.t0 || t1 != lastBounds.t1) lastBounds = {t0, t1, boundsOver(t0, t1)};
+    return lastBounds.bounds;
+  }
 
   double zeta(double t) const { return (o.z + t * d.z - z0) / h; }
   bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
@@ -170,15 +224,16 @@ struct TwistedPath {
 
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
     // |∇g| and the norm of the Hessian of g over the curve's reach.
+    const Bounds& b = boundsFor(t0, t1);
     double grad = 1.0, hess = 0.0;
     if (e.arc) {
       const glm::dmat2 g = glm::transpose(e.toUnit) * e.toUnit;
       const double norm =
           std::sqrt(g[0][0] * g[0][0] + g[0][1] * g[0][1] + g[1][0] * g[1][0] + g[1][1] * g[1][1]);
-      grad = 2.0 * norm * (reach + glm::length(e.center));
+      grad = 2.0 * norm * (b.reach + glm::length(e.center));
       hess = 2.0 * norm;
     }
-    const double L1 = grad * speed, L2 = hess * speed * speed + grad * bend;
+    const double L1 = grad * b.speed, L2 = hess * b.speed * b.speed + grad * b.bend;
     // The implicit function and its slope along the curve, with one sine
     // and cosine for the point and its velocity.
     auto f = [&](double t) {
@@ -339,38 +394,49 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     path.h = height_;
     path.tau = twist_;
     path.scale = scale_;
-    // Bounds over the window: the planar distance |xy(t)| is largest at an
-    // end; σ is smallest at an end.
-    const dvec3 pa = o + t0 * d, pb = o + t1 * d;
-    const double far = std::max(glm::length(dvec2(pa)), glm::length(dvec2(pb)));
-    auto sigmaAt = [&](const dvec3& p, double s) {
-      return 1.0 + (s - 1.0) * (p.z - z0_) / height_;
-    };
-    const double sigmaMin =
-        std::max(1e-12, std::min({sigmaAt(pa, scale_.x), sigmaAt(pb, scale_.x),
-                                  sigmaAt(pa, scale_.y), sigmaAt(pb, scale_.y)}));
-    const double dz = std::abs(d.z) / height_;
-    const double sigmaRate = std::max(std::abs(scale_.x - 1.0), std::abs(scale_.y - 1.0)) * dz;
-    const double v = far / sigmaMin;
-    const double dv = (glm::length(dvec2(d)) + v * sigmaRate) / sigmaMin;
-    const double ddv = 2.0 * sigmaRate * dv / sigmaMin;
-    const double spin = std::abs(twist_) * dz;
-    path.reach = v;
-    path.speed = dv + spin * v;
-    path.bend = ddv + 2.0 * spin * dv + spin * spin * v;
     path.resolution = 1e-9 * swept_->size() / std::max(glm::length(d), 1e-300);
+    path.window = path.boundsOver(t0, t1);
+    path.perPiece = path.sigmaVaries(t0, t1);
     // Pieces short enough that each box is a small part of the region.
-    const double length = path.speed * (t1 - t0);
-    const int k =
-        std::clamp(int(std::ceil(length / (kTwistedPiece * swept_->size()))), 1, kMaxTwistedPieces);
+    const double length = path.window.speed * (t1 - t0);
+    // (Clamped as a double: near the apex of a scale of 0 the count passes
+    // what an int holds, and its conversion made one piece of the window.)
+    const int k = int(std::clamp(std::ceil(length / (kTwistedPiece * swept_->size())), 1.0,
+                                 double(kMaxTwistedPieces)));
+    // A piece whose points all lie farther from the axis than the region's
+    // corners cannot meet it, and is left out.
+    const ProfileBounds& region = swept_->bounds();
+    const double corner = glm::length(glm::max(glm::abs(region.lo), glm::abs(region.hi))) + pad;
     SweepPiece pieces[kMaxTwistedPieces];
-    for (int i = 0; i < k; ++i) {
-      const double ta = t0 + (t1 - t0) * i / k, tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
-      const dvec2 m = path.at(0.5 * (ta + tb));
-      const double r = path.speed * 0.5 * (tb - ta);
-      pieces[i] = {ta, tb, m - dvec2(r), m + dvec2(r), false, m, m};
+    int count = 0;
+    const auto piece = [&](int i, double& ta, double& tb) {
+      ta = t0 + (t1 - t0) * i / k;
+      tb = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
+    };
+    if (!path.perPiece) {
+      const double speed = path.window.speed;
+      for (int i = 0; i < k; ++i) {
+        double ta, tb;
+        piece(i, ta, tb);
+        const dvec2 m = path.at(0.5 * (ta + tb));
+        const double r = speed * 0.5 * (tb - ta);
+        pieces[count++] = {ta, tb, m - dvec2(r), m + dvec2(r), false, m, m};
+      }
+    } else {
+      for (int i = 0; i < k; ++i) {
+        double ta, tb;
+        piece(i, ta, tb);
+        if (path.nearestOver(ta, tb) > corner) continue;
+        // The square about the middle, within the disc of the reach.
+        const TwistedPath::Bounds& b = path.boundsFor(ta, tb);
+        const dvec2 m = path.at(0.5 * (ta + tb));
+        const double r = b.speed * 0.5 * (tb - ta);
+        const dvec2 lo = glm::max(m - dvec2(r), dvec2(-b.reach));
+        const dvec2 hi = glm::min(m + dvec2(r), dvec2(b.reach));
+        pieces[count++] = {ta, tb, lo, hi, false, m, m};
+      }
     }
-    swept_->spans(this, path, t0, t1, face0, face1, pieces, k, spans);
+    swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans);
   }
   for (const Span& s : spans)
     if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);

@@ -84,6 +84,12 @@ TEST(LinearExtrusion, PositiveTwistTurnsClockwise) {
   EXPECT_LT(spans[0].out.t, 5.0);
 }
 
+// A rectangle turned a whole turn as it shrinks to a point: near the apex
+// a ray's image in the profile plane runs out to infinity.
+SolidPtr twistedToAPoint() {
+  return extrude(test::rectangle({-10, -5}, {10, 5}), 40.0, -360.0, dvec2(0.0), true);
+}
+
 TEST(LinearExtrusion, PrismVolumeIsAreaTimesHeight) {
   expectVolume(extrude(squareWithHole(), 2.5), kSquareWithHoleArea * 2.5);
   const std::vector<dvec2> star = test::starPoints(40, 2.0, 1.4);
@@ -109,6 +115,9 @@ TEST(LinearExtrusion, TwistKeepsTheVolume) {
   expectVolume(extrude(test::rectangle({-1, -0.5}, {1.5, 0.5}), 2.0, 90.0), 2.5 * 2.0, 0.01);
   expectVolume(extrude(squareWithHole(), 2.0, -200.0, dvec2(0.7)),
                kSquareWithHoleArea * 2.0 * (1 + 0.7 + 0.49) / 3.0, 0.01);
+  // Twisted to a point (OpenSCAD's linear_extrude example): a pyramid's
+  // third of the base times the height, whatever the turn.
+  expectVolume(twistedToAPoint(), 20.0 * 10.0 * 40.0 / 3.0, 0.01);
 }
 
 TEST(LinearExtrusion, RegionBooleansCommuteWithTheExtrusion) {
@@ -136,6 +145,7 @@ std::vector<std::pair<std::string, SolidPtr>> assorted() {
       {"apex", extrude(test::circle({0.5, 0}, 1.0), 2.0, 0.0, dvec2(0.0))},
       {"non-uniform", extrude(squareWithHole(), 2.0, 0.0, dvec2(1.5, 0.3))},
       {"twisted", extrude(squareWithHole(), 2.0, 120.0, dvec2(0.8, 1.2), true)},
+      {"twisted to a point", twistedToAPoint()},
       {"difference", extrude(difference, 2.0)->transformed(skew)},
   };
 }
