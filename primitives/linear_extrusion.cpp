@@ -149,9 +149,9 @@ struct TwistedPath {
   // Bounds over a stretch of the ray: |u| (reach), |u'| and |u''| per unit
   // t (speed, bend). Those of the window serve every piece while σ stays
   // within a factor of two over it; otherwise each piece gets its own: near
-  // the apex of a scale of 0, σ falls to 1e-12 and the window's bounds to
-  // nothing useful, so every edge was bisected down to the resolution in
-  // every piece (a cone twisted by a turn took 150 µs a ray).
+  // the apex of a scale of 0, σ falls to 1e-12 and the window's bounds grow
+  // past 1e24, so that the root search refuses no interval and bisects
+  // every edge down to the resolution.
   struct Bounds {
     double reach, speed, bend;
   };

@@ -2,15 +2,15 @@
 // point at every step of a root search (a twisted extrusion: millions of
 // angles a render). The C library's sincos costs about 190 instructions a
 // call here, most of them saving and restoring the rounding mode; this
-// one about 40, within a few units in the last place of it.
+// one about 40, within one unit in the last place of the exact values.
 //
 // The angle is reduced to r = x − k·π/2, |r| <= π/4, with π/2 split in
 // three doubles (Cody and Waite, "Software Manual for the Elementary
 // Functions", 1980, ch. 8): the first product is exact under a fused
 // multiply-add, since x and k·P1 lie on a common grid of 2⁻⁵³ (or k is 0)
-// and their difference is below 1. On [−π/4, π/4] the Taylor series of sin to r¹⁷
-// and of cos to r¹⁸ are exact to 1e-19 (the first term left out bounds
-// the error: (π/4)¹⁹/19! and (π/4)²⁰/20!).
+// and their difference is below 1. On [−π/4, π/4] the Taylor series of
+// sin to r¹⁷ and of cos to r¹⁸ are exact to 1e-19 (the first term left
+// out bounds the error: (π/4)¹⁹/19! and (π/4)²⁰/20!).
 #pragma once
 
 #include <cmath>
