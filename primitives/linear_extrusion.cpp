@@ -159,8 +159,7 @@ struct TwistedPath {
   Bounds boundsOver(double ta, double tb) const {
     const dvec3 pa = o + ta * d, pb = o + tb * d;
     const double far = std::max(glm::length(dvec2(pa)), glm::length(dvec2(pb)));
-    const double sigmaMin = std::max(1e-12, std::min({sigmaAt(pa, scale.x), sigmaAt(pb, scale.x),
-                                                      sigmaAt(pa, scale.y), sigmaAt(pb, scale.y)}));
+    const double sigmaMin = std::max(1e-12, std::min(sigmaLeast(pa), sigmaLeast(pb)));
     const double dz = std::abs(d.z) / h;
     const double sigmaRate = std::max(std::abs(scale.x - 1.0), std::abs(scale.y - 1.0)) * dz;
     const double v = far / sigmaMin;
@@ -176,16 +175,20 @@ struct TwistedPath {
     const dvec2 a(pa), ab = dvec2(pb) - a;
     const double l2 = glm::dot(ab, ab);
     const double s = l2 > 0.0 ? std::clamp(-glm::dot(a, ab) / l2, 0.0, 1.0) : 0.0;
-    const double sigmaMax = std::max(
-        {sigmaAt(pa, scale.x), sigmaAt(pb, scale.x), sigmaAt(pa, scale.y), sigmaAt(pb, scale.y)});
+    const double sigmaMax = std::max(sigmaMost(pa), sigmaMost(pb));
     return glm::length(a + s * ab) / sigmaMax;
   }
+  // The scale σ of the two axes at a point's height: the lesser, the greater.
   double sigmaAt(const dvec3& p, double s) const { return 1.0 + (s - 1.0) * (p.z - z0) / h; }
+  double sigmaLeast(const dvec3& p) const {
+    return std::min(sigmaAt(p, scale.x), sigmaAt(p, scale.y));
+  }
+  double sigmaMost(const dvec3& p) const {
+    return std::max(sigmaAt(p, scale.x), sigmaAt(p, scale.y));
+  }
   // Does σ fall below half its largest over the window [t0, t1]?
   bool sigmaVaries(double t0, double t1) const {
-    const dvec3 pa = o + t0 * d, pb = o + t1 * d;
-    const double a = std::min(sigmaAt(pa, scale.x), sigmaAt(pa, scale.y));
-    const double b = std::min(sigmaAt(pb, scale.x), sigmaAt(pb, scale.y));
+    const double a = sigmaLeast(o + t0 * d), b = sigmaLeast(o + t1 * d);
     return std::min(a, b) < 0.5 * std::max(a, b);
   }
   Bounds window;
@@ -403,10 +406,6 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     // what an int holds, and its conversion made one piece of the window.)
     const int k = int(std::clamp(std::ceil(length / (kTwistedPiece * swept_->size())), 1.0,
                                  double(kMaxTwistedPieces)));
-    // A piece whose points all lie farther from the axis than the region's
-    // corners cannot meet it, and is left out.
-    const ProfileBounds& region = swept_->bounds();
-    const double corner = glm::length(glm::max(glm::abs(region.lo), glm::abs(region.hi))) + pad;
     SweepPiece pieces[kMaxTwistedPieces];
     int count = 0;
     const auto piece = [&](int i, double& ta, double& tb) {
@@ -423,6 +422,10 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
         pieces[count++] = {ta, tb, m - dvec2(r), m + dvec2(r), false, m, m};
       }
     } else {
+      // A piece whose points all lie farther from the axis than the
+      // region's corners cannot meet it, and is left out.
+      const ProfileBounds& region = swept_->bounds();
+      const double corner = glm::length(glm::max(glm::abs(region.lo), glm::abs(region.hi))) + pad;
       for (int i = 0; i < k; ++i) {
         double ta, tb;
         piece(i, ta, tb);
