@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/input_file.h"
+#include "io/png_reader.h"
 #include "io/srgb.h"
 
 namespace csgray::detail {
@@ -16,11 +17,6 @@ namespace {
 
 constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
 constexpr std::size_t kMaxRows = std::size_t{1} << 16;
-
-bool isPng(const std::string& bytes) {
-  static const char kSignature[] = "\x89PNG\r\n\x1a\n";
-  return bytes.compare(0, 8, kSignature, 8) == 0;
-}
 
 HeightMap heightMapOfImage(const TextureImage& image, bool invert) {
   HeightMap map;
@@ -96,7 +92,7 @@ HeightMap heightMapOfText(const std::string& text, const std::string& name) {
 HeightMap readHeightMap(const std::string& path, const std::string& name, bool invert,
                         const std::function<TextureImage(const std::string&)>& loadImage) {
   const std::string bytes = readInputFile(path, name, kMaxFileBytes);
-  if (!isPng(bytes)) return heightMapOfText(bytes, name);
+  if (!hasPngSignature(bytes)) return heightMapOfText(bytes, name);
   if (!loadImage) throw std::invalid_argument(name + ": this program cannot read images");
   try {
     return heightMapOfImage(loadImage(path), invert);

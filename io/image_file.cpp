@@ -15,6 +15,7 @@
 #include "io/image_formats.h"
 #include "io/input_file.h"
 #include "io/png_file.h"
+#include "io/png_reader.h"
 #include "io/srgb.h"
 
 namespace csgray::detail {
@@ -91,10 +92,33 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
 }
 
 TextureImage readTextureImage(const std::string& path) {
-  // Here, not in OpenImageIO, which would wait for ever on a FIFO.
-  if (std::string problem = inputFileProblem(path); !problem.empty())
-    throw std::runtime_error("cannot read texture image " + path + ": " + problem);
-  return imageFormats().read(path);
+  auto fail = [&](const std::string& why) {
+    return std::runtime_error("cannot read texture image " + path + ": " + why);
+  };
+  // Opened here, not in OpenImageIO, which would wait for ever on a FIFO.
+  InputFile file(path);
+  if (!file.problem().empty()) throw fail(file.problem());
+  // PNG files by their signature, whatever their name, without loading
+  // OpenImageIO (io/png_reader.h); the first bytes say which.
+  std::string bytes;
+  if (!file.readUpTo(bytes, 8)) throw fail(file.problem());
+  if (!hasPngSignature(bytes)) return imageFormats().read(path);
+  constexpr std::size_t kMaxPngBytes = std::size_t{256} << 20;
+  if (file.size() > kMaxPngBytes) throw fail("the file is larger than 256 MiB");
+  if (!file.readUpTo(bytes, std::size_t(file.size()))) throw fail(file.problem());
+  PngPixels png;
+  try {
+    png = decodePng(bytes, kMaxTexturePixels);
+  } catch (const std::runtime_error& e) {
+    throw fail(e.what());
+  }
+  TextureImage image;
+  image.width = png.width;
+  image.height = png.height;
+  image.rgb.resize(std::size_t(png.width) * png.height * 3);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i)
+    image.rgb[i] = decodeSrgb(png.values[png.grey ? i / 3 : i]);
+  return image;
 }
 
 }  // namespace csgray::detail

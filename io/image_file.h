@@ -1,4 +1,5 @@
-// Image files through OpenImageIO, format by extension.
+// Image files: PNG written and read by csgray itself (png_file.h,
+// png_reader.h), other formats through OpenImageIO (image_formats.h).
 #pragma once
 
 #include <string>
@@ -39,8 +40,10 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
 
 // Reads an image for a texture as linear RGB floats: grey is replicated,
 // alpha dropped; 8- and 16-bit integer formats are sRGB-decoded, float
-// formats (EXR, HDR) kept. Throws std::runtime_error naming the file if it
-// is missing, unreadable, not an image, empty or over 16384 pixels a side.
+// formats (EXR, HDR) kept. A file that begins with the PNG signature is
+// read as PNG, whatever its name, without OpenImageIO. Throws
+// std::runtime_error naming the file if it is missing, unreadable, not an
+// image, empty or of more pixels than kMaxTexturePixels.
 TextureImage readTextureImage(const std::string& path);
 
 }  // namespace csgray::detail

@@ -10,6 +10,11 @@
 
 namespace csgray::detail {
 
+// The most pixels a texture image may have, checked before its data are
+// read, so that a bad or hostile file cannot ask for gigabytes: 4096 ×
+// 4096 RGB floats are 192 MiB.
+constexpr long kMaxTexturePixels = 4096L * 4096;
+
 struct ImageFormats {
   // Why an image of this format cannot be written, or "".
   std::string (*outputProblem)(const std::string& path);

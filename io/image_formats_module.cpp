@@ -1,6 +1,6 @@
 // The part of csgray that reads and writes images through OpenImageIO,
 // built as a module that image_formats.cpp loads only when an image format
-// other than PNG is written, or a texture read: Debian's OpenImageIO pulls
+// other than PNG is written or read: Debian's OpenImageIO pulls
 // in about 260 shared libraries, whose loading would otherwise cost every
 // run ~0.2 s and ~100 MB before any work.
 #include <OpenImageIO/imageio.h>
@@ -137,13 +137,10 @@ TextureImage read(const std::string& path) {
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) throw fail(OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
-  // Bounded before anything is read, so that a bad or hostile file cannot
-  // ask for gigabytes: 4096 × 4096 RGB floats are 192 MiB.
-  constexpr long kMaxPixels = 4096L * 4096;
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw fail("the image is empty");
-  if (long(spec.width) * spec.height > kMaxPixels)
+  if (long(spec.width) * spec.height > kMaxTexturePixels)
     throw fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-               " pixels, more than a texture may have (" + std::to_string(kMaxPixels) + ")");
+               " pixels, more than a texture may have (" + std::to_string(kMaxTexturePixels) + ")");
   if (spec.depth > 1 || spec.deep) throw fail("volume and deep images are not textures");
   // Channels 0..2 as RGB, or channel 0 as grey (also for grey + alpha).
   int channels = spec.nchannels >= 3 ? 3 : 1;
