@@ -2,7 +2,7 @@
 #   make run   install what is missing, build, render and export the showcase
 #   make test  install what is missing, build, run every test
 #   make bench run the benchmarks (see docs/performance.md)
-#   make fuzz  build the mesh readers' libFuzzer targets with clang and run
+#   make fuzz  build the readers' libFuzzer targets (meshes, SVG, PNG) with clang and run
 #              each for FUZZ_SECONDS (default 60)
 
 BUILD      ?= build
@@ -99,8 +99,8 @@ fuzz: deps
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends clang libclang-rt-dev
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCSGRAY_FUZZ=ON -DCSGRAY_TESTS=OFF \
 	  -DCMAKE_CXX_COMPILER=clang++
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_stl fuzz_obj fuzz_off fuzz_ply fuzz_svg
-	for format in stl obj off ply svg; do \
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_stl fuzz_obj fuzz_off fuzz_ply fuzz_svg fuzz_png
+	for format in stl obj off ply svg png; do \
 	  mkdir -p $(FUZZ_BUILD)/corpus/$$format && \
 	  $(FUZZ_BUILD)/fuzz/fuzz_$$format -max_total_time=$(FUZZ_SECONDS) \
 	    $(FUZZ_BUILD)/corpus/$$format fuzz/corpus/$$format || exit 1; \
