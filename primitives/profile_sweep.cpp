@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -204,6 +205,7 @@ std::uint32_t SweptRegion::addTree(const Region& region, std::uint32_t& nextLeaf
   Leaf& leaf = leaves_[leafIndex];
   leaf.box = region.profile().bounds();
   buildIndex(leaf, std::move(mine));
+  buildCells(leaf);
   return index;
 }
 
@@ -263,23 +265,162 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
   }
 }
 
+void SweptRegion::buildCells(Leaf& leaf) const {
+  // About 64 cells an edge, square, at most 2¹⁶ in all: an edge's box then
+  // meets a few cells, and most of the box's area is in cells it meets
+  // none of.
+  const double width = leaf.box.hi.x - leaf.box.lo.x, height = leaf.box.hi.y - leaf.box.lo.y;
+  if (leaf.items.empty() || !(width > 0.0) || !(height > 0.0)) return;
+  const double cellCount = std::clamp(256.0 * double(leaf.items.size()), 4096.0, 65536.0);
+  const double side = std::sqrt(width * height / cellCount);
+  leaf.cellsPerUnit = 1.0 / side;
+  leaf.columns = int(std::clamp(std::ceil(width / side), 1.0, 1024.0));
+  leaf.rows = int(std::clamp(std::ceil(height / side), 1.0, 1024.0));
+  const auto at = [&](int column, int row) { return std::size_t(row) * leaf.columns + column; };
+  // A cell is the set of points that cellColumn and cellRow send to it.
+  // Both are monotonic, so a box meets no cells but those between the
+  // cells of its corners. Each edge is marked as pieces no longer than a
+  // cell, each in its box grown by pad_ (more than the rounding of its
+  // ends): a slanted edge marks the cells along it, not all those in its
+  // box. The cells marked are all those an edge may pass through, and a
+  // cell left free holds no point of any edge.
+  std::vector<bool> crossed(std::size_t(leaf.columns) * leaf.rows, false);
+  const auto markBox = [&](const dvec2& lo, const dvec2& hi) {
+    for (int row = leaf.cellRow(lo.y); row <= leaf.cellRow(hi.y); ++row)
+      for (int column = leaf.cellColumn(lo.x); column <= leaf.cellColumn(hi.x); ++column)
+        crossed[at(column, row)] = true;
+  };
+  // Pieces of a curve p(θ), θ from a to b, each no longer than about a
+  // cell; bulge: how far the curve may stray from a piece's chord.
+  const auto markPieces = [&](auto&& point, double a, double b, double length, double curvature) {
+    const int pieces = int(std::clamp(std::ceil(length / side), 1.0, 4096.0));
+    const double step = (b - a) / pieces;
+    // Linear interpolation's error: at most |p''| · step² / 8.
+    const double bulge = curvature * step * step / 8.0 + pad_;
+    dvec2 p = point(a);
+    for (int k = 1; k <= pieces; ++k) {
+      const dvec2 q = point(k == pieces ? b : a + k * step);
+      markBox(glm::min(p, q) - dvec2(bulge), glm::max(p, q) + dvec2(bulge));
+      p = q;
+    }
+  };
+  for (const Item& item : leaf.items) {
+    const SweepEdge& e = edges_[item.edge];
+    if (e.bezier) {
+      // The control polygon is no shorter than the curve, and |B''| is at
+      // most n (n − 1) times the largest second difference of the control
+      // points.
+      const ProfileEdge& c = e.source;
+      const bool cubic = c.kind == ProfileEdge::Kind::Cubic;
+      const dvec2 last = cubic ? c.control2 : c.control1;
+      const double polygon = glm::length(c.control1 - c.from) + glm::length(last - c.control1) +
+                             (cubic ? glm::length(c.to - last) : glm::length(c.to - c.control1));
+      const double curvature =
+          cubic ? 6.0 * std::max(glm::length(c.from - 2.0 * c.control1 + c.control2),
+                                 glm::length(c.control1 - 2.0 * c.control2 + c.to))
+                : 2.0 * glm::length(c.from - 2.0 * c.control1 + c.to);
+      markPieces([&](double t) { return bezierPoint(c, t); }, 0.0, 1.0, polygon, curvature);
+      continue;
+    }
+    // A segment, or an arc's chord (the edges' test counts crossings of
+    // the chord, and toggles between chord and arc).
+    const auto onChord = [&](double f) { return e.from + f * (e.to - e.from); };
+    markPieces(onChord, 0.0, 1.0, glm::length(e.to - e.from), 0.0);
+    if (!e.arc) continue;
+    const dmat2 axes = glm::inverse(e.toUnit);
+    const auto onArc = [&](double angle) {
+      return e.center + axes * dvec2(std::cos(angle), std::sin(angle));
+    };
+    markPieces(onArc, e.lo, e.hi, e.size * (e.hi - e.lo), e.size);
+  }
+  // Free cells side by side make one set of points that no edge passes
+  // through, in or out as a whole: each connected group of them takes the
+  // state at the centre of its first cell, asked of the edges once, and
+  // checked at its last cell's (a centre where rounding misled the edges'
+  // count, a ray along a curve's tangent, would else mislead the group).
+  leaf.cells.assign(crossed.size(), CellState::Crossed);
+  std::vector<bool> seen(crossed.size(), false);
+  std::vector<std::pair<int, int>> stack, group;
+  // A cell's centre, or nothing where rounding would put it in another
+  // cell (a box far from the origin for its size).
+  const auto centreOf = [&](int column, int row) -> std::optional<dvec2> {
+    const dvec2 centre = leaf.box.lo + (dvec2(column, row) + 0.5) * side;
+    if (leaf.cellColumn(centre.x) != column || leaf.cellRow(centre.y) != row) return std::nullopt;
+    return centre;
+  };
+  for (int row = 0; row < leaf.rows; ++row)
+    for (int column = 0; column < leaf.columns; ++column) {
+      if (crossed[at(column, row)] || seen[at(column, row)]) continue;
+      stack.assign(1, {column, row});
+      group.clear();
+      seen[at(column, row)] = true;
+      while (!stack.empty()) {
+        const auto [c, r] = stack.back();
+        stack.pop_back();
+        group.push_back({c, r});
+        static constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (const auto& step : kSteps) {
+          const int nc = c + step[0], nr = r + step[1];
+          if (nc < 0 || nr < 0 || nc >= leaf.columns || nr >= leaf.rows) continue;
+          if (crossed[at(nc, nr)] || seen[at(nc, nr)]) continue;
+          seen[at(nc, nr)] = true;
+          stack.push_back({nc, nr});
+        }
+      }
+      const auto first = centreOf(group.front().first, group.front().second);
+      const auto last = centreOf(group.back().first, group.back().second);
+      if (!first || !last) continue;
+      const bool inside = edgesContain(leaf, *first);
+      if (group.size() > 1 && edgesContain(leaf, *last) != inside) continue;
+      for (const auto& [c, r] : group)
+        leaf.cells[at(c, r)] = inside ? CellState::Inside : CellState::Outside;
+    }
+}
+
 bool SweptRegion::leafContains(std::uint32_t index, const dvec2& u) const {
   const Leaf& leaf = leaves_[index];
   if (u.x < leaf.box.lo.x || u.x > leaf.box.hi.x || u.y < leaf.box.lo.y || u.y > leaf.box.hi.y)
     return false;
+  if (!leaf.cells.empty()) {
+    const CellState state =
+        leaf.cells[std::size_t(leaf.cellRow(u.y)) * leaf.columns + leaf.cellColumn(u.x)];
+    if (state != CellState::Crossed) return state == CellState::Inside;
+  }
+  return edgesContain(leaf, u);
+}
+
+bool SweptRegion::edgesContain(const Leaf& leaf, const dvec2& u) const {
+  // The ray goes to the nearest side of the leaf's box: along a line of
+  // text it would cross every glyph after u, across it only those above
+  // or below u. Turned by quarter turns so that it runs in +x (exactly:
+  // coordinates swapped and negated), the tests are those of a ray in +x.
+  const double reach[4] = {leaf.box.hi.x - u.x, leaf.box.hi.y - u.y, u.x - leaf.box.lo.x,
+                           u.y - leaf.box.lo.y};
+  const int turn = int(std::min_element(reach, reach + 4) - reach);
+  static constexpr double kDirection[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  const dvec2 end = u + (reach[turn] + 1.0) * dvec2(kDirection[turn][0], kDirection[turn][1]);
+  const auto turned = [turn](const dvec2& p) {
+    return turn == 1 ? dvec2(p.y, -p.x) : turn == 2 ? -p : turn == 3 ? dvec2(-p.y, p.x) : p;
+  };
+  const dvec2 v = turned(u);
+  const dvec2 rayLo = glm::min(u, end), rayHi = glm::max(u, end);  // the ray's box
   bool inside = false;
-  const dvec2 end(leaf.box.hi.x + 1.0, u.y);
   const auto meets = [&](const dvec2& lo, const dvec2& hi) {
-    return sweep_detail::boxesMeet(u, end, lo, hi);
+    return sweep_detail::boxesMeet(rayLo, rayHi, lo, hi);
   };
   forEachEdgeNear(leaf, meets, [&](std::uint32_t i) {
     const SweepEdge& e = edges_[i];
     if (e.bezier) {
-      if (bezierCrossesRight(u, e.source)) inside = !inside;
+      ProfileEdge curve = e.source;
+      curve.from = turned(curve.from);
+      curve.to = turned(curve.to);
+      curve.control1 = turned(curve.control1);
+      curve.control2 = turned(curve.control2);
+      if (bezierCrossesRight(v, curve)) inside = !inside;
       return;
     }
-    if (segmentCrosses(u, e.from, e.to)) inside = !inside;
-    if (e.arc && inArcCap(u, e)) inside = !inside;
+    if (segmentCrosses(v, turned(e.from), turned(e.to))) inside = !inside;
+    if (e.arc && inArcCap(u, e)) inside = !inside;  // (the same whichever way the ray goes)
   });
   return inside;
 }

@@ -193,10 +193,25 @@ class SweptRegion {
     dvec2 lo, hi;  // the edge's box
     std::uint32_t edge;
   };
+  // The leaf's state (in or out) over a grid of cells on its box: a cell
+  // that no edge's box meets is wholly in or wholly out, and the state at
+  // its centre answers for every point in it; a cell an edge's box meets
+  // says "ask the edges". Rays that enter an extrusion through its cap ask
+  // the leaf once, mostly far from any edge: the grid answers them at once.
+  enum class CellState : std::uint8_t { Outside, Inside, Crossed };
   struct Leaf {
     ProfileBounds box;
     std::vector<Node> nodes;
     std::vector<Item> items;
+    std::vector<CellState> cells;  // row-major; empty: no grid
+    int columns = 0, rows = 0;
+    double cellsPerUnit = 0.0;  // 1 / a cell's side
+    int cellColumn(double x) const {
+      return std::clamp(int((x - box.lo.x) * cellsPerUnit), 0, columns - 1);
+    }
+    int cellRow(double y) const {
+      return std::clamp(int((y - box.lo.y) * cellsPerUnit), 0, rows - 1);
+    }
   };
   struct TreeNode {
     Region::Op op;
@@ -217,6 +232,10 @@ class SweptRegion {
   void forEachEdgeInOrder(const Leaf& leaf, MeetsFrom&& meetsFrom, const double& bound,
                           F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;
+  // The same from the leaf's edges: the even-odd count of those that a
+  // ray from u in +x crosses.
+  bool edgesContain(const Leaf& leaf, const dvec2& u) const;
+  void buildCells(Leaf& leaf) const;
   bool treeContains(std::uint32_t node, const dvec2& u) const;
   template <class Path>
   void treeSpans(const Primitive* owner, std::uint32_t node, const Path& path, double t0, double t1,
