@@ -266,9 +266,9 @@ void SweptRegion::buildIndex(Leaf& leaf, std::vector<std::uint32_t> edges) {
 }
 
 void SweptRegion::buildCells(Leaf& leaf) const {
-  // About 64 cells an edge, square, at most 2¹⁶ in all: an edge's box then
-  // meets a few cells, and most of the box's area is in cells it meets
-  // none of.
+  // Square cells, about 256 an edge, at least 2¹² and at most 2¹⁶ in all:
+  // an edge then passes through a few cells each, and most of the box's
+  // area is in cells no edge passes through.
   const double width = leaf.box.hi.x - leaf.box.lo.x, height = leaf.box.hi.y - leaf.box.lo.y;
   if (leaf.items.empty() || !(width > 0.0) || !(height > 0.0)) return;
   const double cellCount = std::clamp(256.0 * double(leaf.items.size()), 4096.0, 65536.0);
@@ -280,9 +280,10 @@ void SweptRegion::buildCells(Leaf& leaf) const {
   // A cell is the set of points that cellColumn and cellRow send to it.
   // Both are monotonic, so a box meets no cells but those between the
   // cells of its corners. Each edge is marked as pieces no longer than a
-  // cell, each in its box grown by pad_ (more than the rounding of its
-  // ends): a slanted edge marks the cells along it, not all those in its
-  // box. The cells marked are all those an edge may pass through, and a
+  // cell, each in the box of its ends grown by how far the curve may stray
+  // from the chord between them, and by pad_ (more than the rounding of
+  // the ends): a slanted edge marks the cells along it, not all those in
+  // its box. The cells marked are all those an edge may pass through, and a
   // cell left free holds no point of any edge.
   std::vector<bool> crossed(std::size_t(leaf.columns) * leaf.rows, false);
   const auto markBox = [&](const dvec2& lo, const dvec2& hi) {
@@ -331,7 +332,11 @@ void SweptRegion::buildCells(Leaf& leaf) const {
     const auto onArc = [&](double angle) {
       return e.center + axes * dvec2(std::cos(angle), std::sin(angle));
     };
-    markPieces(onArc, e.lo, e.hi, e.size * (e.hi - e.lo), e.size);
+    // |p''| = |axes · (cos, sin)| is at most the axes' largest singular
+    // value, itself at most their Frobenius norm (a sheared ellipse's
+    // largest semi-axis may be longer than either column).
+    const double reach = std::sqrt(glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]));
+    markPieces(onArc, e.lo, e.hi, reach * (e.hi - e.lo), reach);
   }
   // Free cells side by side make one set of points that no edge passes
   // through, in or out as a whole: each connected group of them takes the

@@ -194,10 +194,11 @@ class SweptRegion {
     std::uint32_t edge;
   };
   // The leaf's state (in or out) over a grid of cells on its box: a cell
-  // that no edge's box meets is wholly in or wholly out, and the state at
-  // its centre answers for every point in it; a cell an edge's box meets
-  // says "ask the edges". Rays that enter an extrusion through its cap ask
-  // the leaf once, mostly far from any edge: the grid answers them at once.
+  // that no edge passes through is wholly in or wholly out, and the state
+  // at its centre answers for every point in it; a cell an edge may pass
+  // through says "ask the edges". Rays that enter an extrusion through its
+  // cap ask the leaf once, mostly far from any edge: the grid answers them
+  // at once.
   enum class CellState : std::uint8_t { Outside, Inside, Crossed };
   struct Leaf {
     ProfileBounds box;
@@ -206,12 +207,13 @@ class SweptRegion {
     std::vector<CellState> cells;  // row-major; empty: no grid
     int columns = 0, rows = 0;
     double cellsPerUnit = 0.0;  // 1 / a cell's side
-    int cellColumn(double x) const {
-      return std::clamp(int((x - box.lo.x) * cellsPerUnit), 0, columns - 1);
+    // The cell of a coordinate, clamped to the grid (NaN: the first);
+    // monotonic, as buildCells needs.
+    static int cellOf(double f, int count) {
+      return f > 0.0 ? (f < double(count - 1) ? int(f) : count - 1) : 0;
     }
-    int cellRow(double y) const {
-      return std::clamp(int((y - box.lo.y) * cellsPerUnit), 0, rows - 1);
-    }
+    int cellColumn(double x) const { return cellOf((x - box.lo.x) * cellsPerUnit, columns); }
+    int cellRow(double y) const { return cellOf((y - box.lo.y) * cellsPerUnit, rows); }
   };
   struct TreeNode {
     Region::Op op;
@@ -233,7 +235,7 @@ class SweptRegion {
                           F&& f) const;
   bool leafContains(std::uint32_t leaf, const dvec2& u) const;
   // The same from the leaf's edges: the even-odd count of those that a
-  // ray from u in +x crosses.
+  // ray from u to the nearest side of the leaf's box crosses.
   bool edgesContain(const Leaf& leaf, const dvec2& u) const;
   void buildCells(Leaf& leaf) const;
   bool treeContains(std::uint32_t node, const dvec2& u) const;
