@@ -395,19 +395,40 @@ class Evaluator {
         // reach past the region: the cutters are meshed over all of it.
         std::vector<Piece> cutters = evaluateAll(operands.subspan(1), minuend.box);
         order_.arrange(cutters);
+        const bool primitives =
+            cutters.size() > 1 && std::all_of(cutters.begin(), cutters.end(),
+                                              [](const Piece& c) { return c.shape != 0; });
+        const std::size_t byCgal = stats_.corefinements - stats_.inDoubles;
         Piece cut = unite(std::move(cutters));
-        if (cut.empty() || !minuend.box.overlaps(cut.box)) return minuend;
-        // A contact's offset moved some of the minuend's faces off the
-        // model's: a cut flush with such a face (a grid cell cut out next
-        // to two cells that touch along an edge) would leave a sheet of
-        // that thickness, so the cutter grows past it.
-        if (minuend.grown > 0.0) {
-          const dvec3 reach(tolerance_);
-          offsetMesh(exact(cut), minuend.grown + kContactOffset * tolerance_,
-                     {minuend.box.lo - reach, minuend.box.hi + reach});
-          cut.shape = 0;
+        // Cutters that overlap are united first. Where their union is not
+        // in general position (two equal bores that cross) and too small
+        // to be moved off (kPerturbedFaces), CGAL makes it, exactly, and
+        // the cut of the minuend by that exact mesh then goes to CGAL too,
+        // however large (a ball less three crossing bores: 0.58 s, against
+        // 0.16 s). The cutters are then cut away one by one instead, each
+        // a boolean of the large minuend and one cutter, which the
+        // booleans in doubles take (moving the cutter where it touches the
+        // wall of another). Taken only if every cut is made so (else the
+        // union is cut away as before), and only for cutters that are
+        // primitives, cheap to mesh again (another cutter's booleans would
+        // be made twice).
+        if (order_.doubles && primitives && minuend.doubles &&
+            stats_.corefinements - stats_.inDoubles > byCgal) {
+          const MeshBooleanStats before = stats_;
+          std::vector<Piece> each = evaluateAll(operands.subspan(1), minuend.box);
+          order_.arrange(each);
+          Piece oneByOne = minuend;
+          doublesOnly_ = true;
+          declinedInDoubles_ = false;
+          for (Piece& one : each) {
+            cutAway(oneByOne, one);
+            if (declinedInDoubles_) break;
+          }
+          doublesOnly_ = false;
+          if (!declinedInDoubles_) return oneByOne;
+          stats_ = before;
         }
-        corefine(minuend, cut, Boolean::Op::Difference);
+        cutAway(minuend, cut);
         return minuend;
       }
     }
@@ -417,6 +438,28 @@ class Evaluator {
   std::vector<MaterialPtr> materials;
 
  private:
+  // While set, a boolean that the booleans in doubles decline is not made
+  // by CGAL: declinedInDoubles_ says so, and the operands are left as
+  // they were, or as far as the booleans in doubles got.
+  bool doublesOnly_ = false;
+  bool declinedInDoubles_ = false;
+
+  // minuend less cut.
+  void cutAway(Piece& minuend, Piece& cut) {
+    if (cut.empty() || !minuend.box.overlaps(cut.box)) return;
+    // A contact's offset moved some of the minuend's faces off the
+    // model's: a cut flush with such a face (a grid cell cut out next to
+    // two cells that touch along an edge) would leave a sheet of that
+    // thickness, so the cutter grows past it.
+    if (minuend.grown > 0.0) {
+      const dvec3 reach(tolerance_);
+      offsetMesh(exact(cut), minuend.grown + kContactOffset * tolerance_,
+                 {minuend.box.lo - reach, minuend.box.hi + reach});
+      cut.shape = 0;
+    }
+    corefine(minuend, cut, Boolean::Op::Difference);
+  }
+
   std::uint32_t tagOf(const MaterialPtr& material) {
     auto [it, added] = tags_.try_emplace(material.get(), std::uint32_t(materials.size()));
     if (added) materials.push_back(material);
@@ -777,6 +820,10 @@ class Evaluator {
                   (perturbed ? kPerturbedReach * kContactOffset * tolerance_ : 0.0);
         return boxAfter(a);
       }
+    }
+    if (doublesOnly_) {  // a trial in doubles (the cuts one by one): no CGAL
+      declinedInDoubles_ = true;
+      return;
     }
     exact(a);
     exact(b);
