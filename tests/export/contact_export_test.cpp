@@ -263,6 +263,23 @@ TEST(ContactExport, ABallInTheRodThatCutsItIsTakenWhole) {
   exportsValid(source, 72 - 2 * kPi, kTolerance * (2 * 36 + 4 * 12 + 2 * kPi * 2));
 }
 
+TEST(ContactExport, CrossingBoresAreCutAwayOneByOneInDoubles) {
+  // Three equal tapered bores that cross at a ball's centre: their union
+  // is not in general position (equal cones whose axes meet), too small
+  // to be moved off, so CGAL unites them; the ball is then cut by each
+  // bore in turn in doubles, rather than by that exact union in CGAL.
+  // Valid, and in agreement with the model (volume, distance).
+  const std::string source =
+      "local bore = cylinder{r1=5, r2=2.5, h=30, center=true}\n"
+      "return sphere(12) - bore - bore:rotate(90, 0, 0) - bore:rotate(0, 90, 0)";
+  MeshBooleanStats stats;
+  const SolidPtr solid = part(source);
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  EXPECT_GE(stats.inDoubles, 3u);  // a cut for each bore
+}
+
 TEST(ContactExport, SeparatePiecesAndCavitiesAreKept) {
   // Two balls apart, thinner than the tolerance by the measure of a
   // sliver (volume under tolerance × area), so they are probed, and a box
