@@ -416,6 +416,10 @@ bool SweptRegion::edgesContain(const Leaf& leaf, const dvec2& u) const {
   forEachEdgeNear(leaf, meets, [&](std::uint32_t i) {
     const SweepEdge& e = edges_[i];
     if (e.bezier) {
+      if (turn == 0) {  // (the curve as it is, uncopied)
+        if (bezierCrossesRight(v, e.source)) inside = !inside;
+        return;
+      }
       ProfileEdge curve = e.source;
       curve.from = turned(curve.from);
       curve.to = turned(curve.to);
