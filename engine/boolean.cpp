@@ -235,7 +235,10 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   }
   out.clear();
   if (!firstTestsThisBox_ && !bounds_.hitBy(ray)) return;
-  operands_[0]->spans(ray, out);
+  // The first operand's first boundary is the answer unless a hole covers
+  // it: then its spans beyond are needed, and it is asked for them all.
+  operands_[0]->spansToFirstBoundary(ray, out);
+  bool whole = false;
   SpanList operand, spare;
   SpanList* result = &out;
   SpanList* other = &spare;
@@ -268,7 +271,14 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
       std::swap(result, other);
       return !result->empty();
     });
-    if (result->empty() || result->front().in.t == start) break;
+    if (!result->empty() && result->front().in.t == start) break;
+    if (!whole) {
+      whole = true;
+      operands_[0]->spans(ray, out);
+      result = &out;
+      other = &spare;
+      reach = 0.0;
+    }
   }
   if (result != &out) out = *result;
 }

@@ -41,6 +41,7 @@ struct Normalised {
 // degree 1 and 2 for a uniform scale (the factors σ cancel), 2 and 4
 // otherwise.
 struct ScaledPath {
+  static constexpr bool kBoxedPieces = true;  // each piece's image lies in its box
   Normalised n;
   SweepPolynomial x, y, sx, sy;  // in s
   bool uniform;
@@ -140,6 +141,7 @@ constexpr double kTwistedPiece = 1.0 / 64.0;
 constexpr int kMaxTwistedPieces = 512;
 
 struct TwistedPath {
+  static constexpr bool kBoxedPieces = true;
   Normalised n;
   dvec3 o, d;
   double z0, h, tau;
@@ -205,24 +207,45 @@ struct TwistedPath {
     return lastBounds.bounds;
   }
 
+  bool scaled = true;  // scale is not (1, 1); without scale σ = 1 and v = xy, no division
+
+  // The turn at the middle of a stretch, for a root search along it: the
+  // edges near a piece are searched one after another over the piece, so
+  // it is worked out once a piece.
+  struct Turn {
+    double t0 = kInfinity, t1 = kInfinity, t = 0.0;
+    SineCosine sc{0.0, 1.0};
+  };
+  mutable Turn lastTurn;
+  const Turn& turnFor(double t0, double t1) const {
+    if (t0 != lastTurn.t0 || t1 != lastTurn.t1) {
+      const double t = 0.5 * (t0 + t1);
+      lastTurn = {t0, t1, t, sineCosine(tau * zeta(t))};
+    }
+    return lastTurn;
+  }
+
   double zeta(double t) const { return (o.z + t * d.z - z0) / h; }
   bool meets(const SweepPiece& piece, const dvec2& lo, const dvec2& hi) const {
     return sweepPieceMeets(piece, lo, hi);
   }
+  // v(t) = xy(t)/σ(t), the untwisted point, at z = ζ(t). (Without scale
+  // the quotients by σ = 1 would give xy bit for bit.)
+  dvec2 untwisted(double t, double z) const {
+    if (!scaled) return {o.x + t * d.x, o.y + t * d.y};
+    return {(o.x + t * d.x) / (1.0 + (scale.x - 1.0) * z),
+            (o.y + t * d.y) / (1.0 + (scale.y - 1.0) * z)};
+  }
+  // v'(t) for the v at ζ(t) = z: (xy' − v·σ')/σ.
+  dvec2 untwistedVelocity(const dvec2& v, double z) const {
+    if (!scaled) return {d.x, d.y};
+    const double dz = d.z / h;
+    const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
+    return {(d.x - v.x * (scale.x - 1.0) * dz) / sx, (d.y - v.y * (scale.y - 1.0) * dz) / sy};
+  }
   dvec2 at(double t) const {
     const double z = zeta(t);
-    const dvec2 v((o.x + t * d.x) / (1.0 + (scale.x - 1.0) * z),
-                  (o.y + t * d.y) / (1.0 + (scale.y - 1.0) * z));
-    return rotated(v, tau * z);
-  }
-  // u'(t), by the product rule: u = Rot(τζ)·v, u' = Rot(τζ)·(v' + τζ'·J·v).
-  dvec2 velocity(double t) const {
-    const double z = zeta(t), dz = d.z / h;
-    const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
-    const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
-    const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
-                   (d.y - v.y * (scale.y - 1.0) * dz) / sy);
-    return rotated(dv + tau * dz * dvec2(-v.y, v.x), tau * z);
+    return rotated(untwisted(t, z), tau * z);
   }
 
   int roots(const SweepEdge& e, double t0, double t1, double* out) const {
@@ -237,24 +260,29 @@ struct TwistedPath {
       hess = 2.0 * norm;
     }
     const double L1 = grad * b.speed, L2 = hess * b.speed * b.speed + grad * b.bend;
+    // The turn Rot(τζ) along the stretch, from the one at its middle.
+    const Turn& middle = turnFor(t0, t1);
+    const double spin = tau * (d.z / h);
+    auto turnAt = [&](double t) { return sineCosineBeside(middle.sc, spin * (t - middle.t)); };
     // The implicit function and its slope along the curve, with one sine
-    // and cosine for the point and its velocity.
+    // and cosine for the point and its velocity: u'(t) by the product rule,
+    // u = Rot(τζ)·v, u' = Rot(τζ)·(v' + τζ'·J·v).
     auto f = [&](double t) {
       const double z = zeta(t), dz = d.z / h;
-      const SineCosine sc = sineCosine(tau * z);
+      const SineCosine sc = turnAt(t);
       const double c = sc.cos, sn = sc.sin;
-      const double sx = 1.0 + (scale.x - 1.0) * z, sy = 1.0 + (scale.y - 1.0) * z;
-      const dvec2 v((o.x + t * d.x) / sx, (o.y + t * d.y) / sy);
-      const dvec2 dv((d.x - v.x * (scale.x - 1.0) * dz) / sx,
-                     (d.y - v.y * (scale.y - 1.0) * dz) / sy);
+      const dvec2 v = untwisted(t, z);
       const dvec2 u = turned(v, c, sn);
-      const dvec2 du = turned(dv + tau * dz * dvec2(-v.y, v.x), c, sn);
+      const dvec2 du = turned(untwistedVelocity(v, z) + tau * dz * dvec2(-v.y, v.x), c, sn);
       const double value = e.implicit(u);
       const dvec2 gradient =
           e.arc ? 2.0 * (glm::transpose(e.toUnit) * (e.toUnit * (u - e.center))) : e.normal;
       return std::pair<double, double>(value, glm::dot(gradient, du));
     };
-    auto valueAt = [&](double t) { return e.implicit(at(t)); };
+    auto valueAt = [&](double t) {
+      const SineCosine sc = turnAt(t);
+      return e.implicit(turned(untwisted(t, zeta(t)), sc.cos, sc.sin));
+    };
     int count = 0;
     struct Interval {
       double lo, hi;
@@ -322,7 +350,15 @@ dvec2 LinearExtrusion::profilePoint(const dvec3& p) const {
   return twist_ == 0.0 ? v : rotated(v, twist_ * zeta);
 }
 
-void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
+void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const { spansOf(ray, false, out); }
+
+// The renderer asks an opaque solid for its first boundary only: the
+// extrusion then follows the ray's curve only as far as that.
+void LinearExtrusion::objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const {
+  spansOf(ray, true, out);
+}
+
+void LinearExtrusion::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
   const dvec3& o = ray.origin;
   const dvec3& d = ray.dir;
   // The slab, and the box of the sides.
@@ -357,6 +393,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
   cutSweepWindow(ray, t0, t1);
 
   SpanList spans;
+  bool truncated = false;
   const Normalised n{0.5 * (t0 + t1), 0.5 * (t1 - t0)};
   if (twist_ == 0.0) {
     ScaledPath path;
@@ -387,7 +424,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
         a = b;
       }
     }
-    swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans);
+    truncated = swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans, firstOnly);
   } else {
     TwistedPath path;
     path.n = n;
@@ -397,6 +434,7 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     path.h = height_;
     path.tau = twist_;
     path.scale = scale_;
+    path.scaled = scale_ != dvec2(1.0);
     path.resolution = 1e-9 * swept_->size() / std::max(glm::length(d), 1e-300);
     path.window = path.boundsOver(t0, t1);
     path.perPiece = path.sigmaVaries(t0, t1);
@@ -414,10 +452,22 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
     };
     if (!path.perPiece) {
       const double speed = path.window.speed;
+      // The middles' turns: every eighth through sineCosine, each of the
+      // others the one before turned by a piece's step. (Off by a few units
+      // in the last place, which the index's boxes, grown by a billionth of
+      // the region, take in.)
+      const SineCosine step =
+          sineCosineBeside({0.0, 1.0}, twist_ * (d.z / height_) * (t1 - t0) / k);
+      SineCosine turn{0.0, 1.0};
       for (int i = 0; i < k; ++i) {
         double ta, tb;
         piece(i, ta, tb);
-        const dvec2 m = path.at(0.5 * (ta + tb));
+        const double tm = 0.5 * (ta + tb);
+        const double z = path.zeta(tm);
+        turn = i % 8 == 0 ? sineCosine(twist_ * z)
+                          : SineCosine{turn.sin * step.cos + turn.cos * step.sin,
+                                       turn.cos * step.cos - turn.sin * step.sin};
+        const dvec2 m = turned(path.untwisted(tm, z), turn.cos, turn.sin);
         const double r = speed * 0.5 * (tb - ta);
         pieces[count++] = {ta, tb, m - dvec2(r), m + dvec2(r), false, m, m};
       }
@@ -439,10 +489,17 @@ void LinearExtrusion::objectSpans(const Ray& ray, SpanList& out) const {
         pieces[count++] = {ta, tb, lo, hi, false, m, m};
       }
     }
-    swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans);
+    truncated = swept_->spans(this, path, t0, t1, face0, face1, pieces, count, spans, firstOnly);
   }
   for (const Span& s : spans)
     if (!(s.out.t < ray.tMin || s.in.t > ray.tMax)) out.push_back(s);
+  if (truncated && (out.empty() || !(out.front().in.t > ray.tMin))) {
+    // Cut short where the first boundary is not yet known (the curve only
+    // touched an edge, or the ray starts inside, where the first boundary
+    // is an exit): the whole spans.
+    out.clear();
+    spansOf(ray, false, out);
+  }
 }
 
 bool LinearExtrusion::objectContains(const dvec3& p) const {

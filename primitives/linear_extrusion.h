@@ -43,12 +43,17 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion> {
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
+  void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
   bool objectContains(const dvec3& p) const override;
   dvec3 objectNormal(const dvec3& p, int face) const override;
   Bounds objectBounds() const override;
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
 
  private:
+  // objectSpans, or with firstOnly only as far as the first boundary
+  // (SweptRegion::spans).
+  void spansOf(const Ray& ray, bool firstOnly, SpanList& out) const;
+
   std::shared_ptr<const SweptRegion> swept_;  // shared by copies (transforms, materials)
   double height_, z0_;
   double twistDegrees_, twist_;  // twist_ in radians

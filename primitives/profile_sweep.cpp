@@ -338,6 +338,15 @@ void SweptRegion::buildCells(Leaf& leaf) const {
     const double reach = std::sqrt(glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]));
     markPieces(onArc, e.lo, e.hi, reach * (e.hi - e.lo), reach);
   }
+  leaf.crossedBelow.assign(std::size_t(leaf.rows + 1) * (leaf.columns + 1), 0);
+  for (int row = 0; row < leaf.rows; ++row)
+    for (int column = 0; column < leaf.columns; ++column) {
+      const auto below = [&](int r, int c) -> std::uint32_t& {
+        return leaf.crossedBelow[std::size_t(r) * (leaf.columns + 1) + c];
+      };
+      below(row + 1, column + 1) = below(row, column + 1) + below(row + 1, column) -
+                                   below(row, column) + (crossed[at(column, row)] ? 1 : 0);
+    }
   // Free cells side by side make one set of points that no edge passes
   // through, in or out as a whole: each connected group of them takes the
   // state at the centre of its first cell, asked of the edges once, and

@@ -158,6 +158,7 @@ class SweptRegion {
   //   dvec2 at(double t) const;
   //   int roots(const SweepEdge&, double t0, double t1, double* out) const;
   //   bool meets(const SweepPiece&, const dvec2& lo, const dvec2& hi) const;
+  //   static constexpr bool kBoxedPieces;  // does each piece's box hold its image?
   // roots writes at most 8 values of t in [t0, t1] where the edge's
   // implicit function vanishes along the curve (more is harmless: each is
   // checked to lie on the edge; a root it misses must be a tangency).
@@ -173,8 +174,11 @@ class SweptRegion {
   // (meets, and from: a t before which the curve is not in the box) then
   // has the index walked nearest box first, for a region of one leaf whose
   // box the window starts outside: the spans are exact up to a little past
-  // the first crossing and end there. Returns true when they were cut so;
-  // if they are then empty, the caller must ask again without firstOnly.
+  // the first crossing and end there. A path with kBoxedPieces has its
+  // pieces taken in order instead, for a region of one leaf, to the same
+  // end. Returns true when they were cut so; if they are then empty, or
+  // the first does not start inside the ray's window, the caller must ask
+  // again without firstOnly.
   template <class Path>
   bool spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
              std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out,
@@ -205,6 +209,10 @@ class SweptRegion {
     std::vector<Node> nodes;
     std::vector<Item> items;
     std::vector<CellState> cells;  // row-major; empty: no grid
+    // How many cells an edge may pass through lie in rows below r and
+    // columns left of c, at [r·(columns + 1) + c] (a summed-area table,
+    // Crow 1984): four reads tell whether any lies in a box of cells.
+    std::vector<std::uint32_t> crossedBelow;
     int columns = 0, rows = 0;
     double cellsPerUnit = 0.0;  // 1 / a cell's side
     // The cell of a coordinate, clamped to the grid (NaN: the first);
@@ -214,6 +222,16 @@ class SweptRegion {
     }
     int cellColumn(double x) const { return cellOf((x - box.lo.x) * cellsPerUnit, columns); }
     int cellRow(double y) const { return cellOf((y - box.lo.y) * cellsPerUnit, rows); }
+    // Does no edge pass through the box lo–hi? (False without a grid.)
+    bool edgeFree(const dvec2& lo, const dvec2& hi) const {
+      if (crossedBelow.empty()) return false;
+      const int c0 = cellColumn(lo.x), c1 = cellColumn(hi.x) + 1;
+      const int r0 = cellRow(lo.y), r1 = cellRow(hi.y) + 1;
+      const auto at = [this](int r, int c) {
+        return crossedBelow[std::size_t(r) * (columns + 1) + c];
+      };
+      return at(r1, c1) - at(r0, c1) - at(r1, c0) + at(r0, c0) == 0;
+    }
   };
   struct TreeNode {
     Region::Op op;

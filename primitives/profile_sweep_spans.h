@@ -229,46 +229,61 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
     }
   };
   // Where the crossings found are all there are: the window's end, or in
-  // the first-boundary mode a little past the first crossing.
+  // the first-boundary mode a little past the first crossing: `bound`, the
+  // first crossing found and a margin within which a crossing may still
+  // change what it means. The stretches up to `end` are exact.
   double end = t1;
+  double bound = kInfinity;
+  const double margin = 1e-6 * (t1 - t0);
+  const auto addBounding = [&](std::uint32_t e, const SweepPiece& piece) {
+    const std::size_t before = crossings.size();
+    addCrossings(e, piece.t0, piece.t1);
+    for (std::size_t i = before; i < crossings.size(); ++i)
+      bound = std::min(bound, crossings[i].t + margin);
+  };
   bool ordered = false;
   if constexpr (requires(double from) { path.meetsFrom(pieces[0], dvec2(), dvec2(), from); }) {
     ordered = firstOnly && startOutside && pieceCount == 1;
     if (ordered) {
-      // Only the first boundary is needed: the index is walked nearest
-      // box first, and boxes the curve enters only past the first crossing
-      // found (and a margin, within which a crossing may still change
-      // what it means) are left. The stretches up to `end` are exact.
+      // The index walked nearest box first, leaving the boxes the curve
+      // enters only past the bound.
       const SweepPiece& piece = pieces[0];
-      const double margin = 1e-6 * (t1 - t0);
-      double bound = kInfinity;
       const auto meetsFrom = [&](const dvec2& lo, const dvec2& hi, double& from) {
         return path.meetsFrom(piece, lo, hi, from);
       };
-      forEachEdgeInOrder(leaf, meetsFrom, bound, [&](std::uint32_t e) {
-        const std::size_t before = crossings.size();
-        addCrossings(e, piece.t0, piece.t1);
-        for (std::size_t i = before; i < crossings.size(); ++i)
-          bound = std::min(bound, crossings[i].t + margin);
-      });
+      forEachEdgeInOrder(leaf, meetsFrom, bound, [&](std::uint32_t e) { addBounding(e, piece); });
       touched = true;
-      if (bound < t1) {
-        end = bound;
-        truncated = true;
-        std::size_t kept = 0;
-        for (const SweepCrossing& c : crossings)
-          if (c.t <= end) crossings[kept++] = c;
-        crossings.resize(kept);
-      }
     }
   }
+  // Pieces in boxes, in the first-boundary mode: taken in order, until the
+  // next starts past the bound.
+  const bool byPieces = Path::kBoxedPieces && firstOnly && !ordered;
   for (int k = 0; k < pieceCount && !ordered; ++k) {
     const SweepPiece& piece = pieces[k];
+    if (piece.t0 > bound) break;
     const auto meets = [&](const dvec2& lo, const dvec2& hi) { return path.meets(piece, lo, hi); };
     // (The root's box is the leaf's, grown.)
     if (!meets(leaf.nodes[0].lo, leaf.nodes[0].hi)) continue;
     touched = true;
-    forEachEdgeNear(leaf, meets, [&](std::uint32_t e) { addCrossings(e, piece.t0, piece.t1); });
+    // A piece in cells that no edge passes through crosses none: most of a
+    // twisted path's pieces, inside the region or out.
+    if constexpr (Path::kBoxedPieces)
+      if (leaf.edgeFree(piece.lo, piece.hi)) continue;
+    forEachEdgeNear(leaf, meets, [&](std::uint32_t e) {
+      if (byPieces) {
+        addBounding(e, piece);
+      } else {
+        addCrossings(e, piece.t0, piece.t1);
+      }
+    });
+  }
+  if (bound < t1) {
+    end = bound;
+    truncated = true;
+    std::size_t kept = 0;
+    for (const SweepCrossing& c : crossings)
+      if (c.t <= end) crossings[kept++] = c;
+    crossings.resize(kept);
   }
   if (!touched) return;
   // By insertion: a ray meets few edges.

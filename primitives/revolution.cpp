@@ -21,6 +21,7 @@ namespace {
 // edge's equation along it is written down in closed form from these
 // coefficients, once per edge and ray.
 struct TurnedPath {
+  static constexpr bool kBoxedPieces = false;  // its one piece has no box: meets tests the curve
   double middle, half, inverseHalf;
   SweepPolynomial rho2, z;
   // For meets: 1 / z1 (0 for a level ray), the s where ρ² is least (or

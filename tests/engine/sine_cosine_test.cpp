@@ -57,6 +57,32 @@ TEST(SineCosine, WithinOneUlpNearTheQuadrantsEnds) {
   }
 }
 
+// sineCosineBeside: the angle sum from a's sine and cosine (each within an
+// ulp) and e's (Taylor series to 1e-19 for |e| <= 1/8, sineCosine beyond):
+// two products and a sum, each rounded, so within 2.5 units of 2⁻⁵³
+// of the exact value (1.25 ε) plus the inputs' own errors (ε/2 each):
+// 2.25 ε in all, absolute, since the values are at most 1.
+TEST(SineCosine, BesideAnAngleWithinAFewUnitsOfRounding) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> angle(-6300.0, 6300.0), unit(-1.0, 1.0);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const double a = angle(random);
+    // Steps within the series' reach, at its edge, and beyond it.
+    for (double e : {0.125 * unit(random), std::copysign(0.125, unit(random)), 3.0 * unit(random),
+                     1e-9 * unit(random), 0.0}) {
+      const SineCosine sc = sineCosineBeside(sineCosine(a), e);
+      const long double exact = (long double)a + (long double)e;
+      worst = std::max({worst, std::abs(double(sc.sin - std::sin(exact))),
+                        std::abs(double(sc.cos - std::cos(exact)))});
+    }
+  }
+  EXPECT_LE(worst, 2.25 * kEpsilon);
+  // a + 0 is a itself, bit for bit.
+  EXPECT_EQ(sineCosineBeside(sineCosine(0.7), 0.0).sin, sineCosine(0.7).sin);
+  EXPECT_EQ(sineCosineBeside(sineCosine(0.7), 0.0).cos, sineCosine(0.7).cos);
+}
+
 TEST(SineCosine, LargeAnglesFallBackToTheLibrary) {
   for (double x : {1e6, -3.5e7, 1e300}) {
     EXPECT_EQ(sineCosine(x).sin, std::sin(x)) << x;

@@ -13,7 +13,11 @@
 #include <random>
 #include <stdexcept>
 
+#include "engine/boolean.h"
 #include "export/cgal/mesh_validity.h"
+#include "primitives/box.h"
+#include "primitives/cylinder.h"
+#include "primitives/sphere.h"
 #include "primitives/sweep_checks.h"
 #include "primitives/sweep_shapes.h"
 #include "raytrace/renderer.h"
@@ -155,6 +159,48 @@ TEST(LinearExtrusion, SpansAgreeWithContainsOnRandomLines) {
     SCOPED_TRACE(name);
     test::expectSpansAgreeWithContainsOnRandomLines(*solid, 3000, 3);
   }
+}
+
+// spansToFirstBoundary follows a ray's curve only to its first boundary
+// (the pieces of a twisted path in order, up to the first crossing): that
+// boundary is the one of the whole spans, bit for bit, from outside and
+// inside, over windows that start and end anywhere.
+TEST(LinearExtrusion, FirstBoundaryAgreesWithTheWholeSpans) {
+  auto solids = assorted();
+  solids.push_back(
+      {"twisted star",
+       extrude(test::regionOf({test::polygonLoop(test::starPoints(24, 2.0, 1.6))}), 3.0, 40.0)});
+  for (const auto& [name, solid] : solids) {
+    SCOPED_TRACE(name);
+    const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*solid, 3000, 13);
+    // Most rays meet the solid, both entering and leaving first.
+    EXPECT_GT(hits, 500);
+    EXPECT_GT(entries, 300);
+    EXPECT_LT(entries, hits - 50);
+  }
+}
+
+// A difference asks its first operand for the first boundary only; where a
+// hole covers that boundary, the operand's spans beyond it are asked for
+// after all. Holes through the twisted star, along it and across it, and
+// a nest of balls, so that most rays that meet the part start in a hole.
+TEST(LinearExtrusion, FirstBoundaryOfADifferenceLiesPastItsHoles) {
+  const SolidPtr star =
+      extrude(test::regionOf({test::polygonLoop(test::starPoints(24, 2.0, 1.6))}), 3.0, 40.0);
+  std::vector<SolidPtr> parts{star};
+  parts.push_back(Primitive::create<Cylinder>(0.8, 0.8, 5.0)
+                      ->transformed(Affine::translation(dvec3(0, 0, -1))));
+  parts.push_back(Primitive::create<Box>(dvec3(6.0, 0.6, 0.6))
+                      ->transformed(Affine::translation(dvec3(-3.0, -0.3, 1.2))));
+  for (int i = 0; i < 8; ++i) {
+    const double a = 2.0 * kPi * i / 8.0;
+    parts.push_back(Primitive::create<Sphere>(0.7)->transformed(
+        Affine::translation(dvec3(1.6 * std::cos(a), 1.6 * std::sin(a), 3.0 * (i % 2)))));
+  }
+  const SolidPtr part = differenceOf(parts);
+  const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*part, 6000, 17);
+  EXPECT_GT(hits, 1000);
+  EXPECT_GT(entries, 500);
 }
 
 TEST(LinearExtrusion, NormalsFaceOutward) {
