@@ -236,9 +236,14 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   out.clear();
   if (!firstTestsThisBox_ && !bounds_.hitBy(ray)) return;
   // The first operand's first boundary is the answer unless a hole covers
-  // it: then its spans beyond are needed, and it is asked for them all.
-  operands_[0]->spansToFirstBoundary(ray, out);
-  bool whole = false;
+  // it: then its spans beyond are needed, and one that cuts them short is
+  // asked for them all.
+  bool whole = !operands_[0]->firstBoundaryCutsShort();
+  if (whole) {
+    operands_[0]->spans(ray, out);
+  } else {
+    operands_[0]->spansToFirstBoundary(ray, out);
+  }
   SpanList operand, spare;
   SpanList* result = &out;
   SpanList* other = &spare;

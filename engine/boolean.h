@@ -52,6 +52,9 @@ class Boolean : public Solid {
   // along all of the first operand. For a union: the first boundary of the
   // operand the ray enters first, the others asked only up to it.
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool firstBoundaryCutsShort() const override {
+    return op_ == Op::Union || (op_ == Op::Difference && holesInsideBeyondWindow_);
+  }
   // For a union: does any operand meet the window? The first one that does
   // ends the search.
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;

@@ -31,6 +31,7 @@ class Instance : public Solid {
   const Bounds& rayBox() const override { return rayBox_; }
   void spans(const Ray& ray, SpanList& out) const override;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool firstBoundaryCutsShort() const override { return child_->firstBoundaryCutsShort(); }
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool contains(const dvec3& p) const override;
   void prepare() const override { child_->prepare(); }

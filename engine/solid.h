@@ -70,6 +70,11 @@ class Solid : public std::enable_shared_from_this<Solid> {
   // means the solid does not meet the window; the spans beyond that first
   // boundary may not be the solid's.
   virtual void spansToFirstBoundary(const Ray& ray, SpanList& out) const { spans(ray, out); }
+  // May spansToFirstBoundary's spans beyond the first boundary differ from
+  // spans()'s (a shape that stops looking there)? A difference asks its
+  // first operand for the first boundary alone only then, since where a
+  // hole covers that boundary it needs the rest and must ask again.
+  virtual bool firstBoundaryCutsShort() const { return false; }
   // Does the solid meet the open window (tMin, tMax), some stretch of it
   // inside there? What an opaque solid's shadow ray asks: the answer of
   // spansToFirstBoundary's spans, but any hit stops the search, not only

@@ -41,6 +41,10 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion> {
   // whether the extrusion holds p.
   dvec2 profilePoint(const dvec3& p) const;
 
+  // Only a path of many pieces (a twist, a scale other in x than in y)
+  // stops at the first boundary.
+  bool firstBoundaryCutsShort() const override { return twist_ != 0.0 || scale_.x != scale_.y; }
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;

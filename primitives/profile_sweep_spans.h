@@ -257,7 +257,7 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   }
   // Pieces in boxes, in the first-boundary mode: taken in order, until the
   // next starts past the bound.
-  const bool byPieces = Path::kBoxedPieces && firstOnly && !ordered;
+  const bool byPieces = Path::kBoxedPieces && firstOnly && !ordered && pieceCount > 1;
   for (int k = 0; k < pieceCount && !ordered; ++k) {
     const SweepPiece& piece = pieces[k];
     if (piece.t0 > bound) break;

@@ -29,6 +29,8 @@ class Revolution : public PrimitiveShape<Revolution> {
   double angleDegrees() const { return angleDegrees_; }
   std::string kind() const override { return "rotate_extrude"; }
 
+  bool firstBoundaryCutsShort() const override { return true; }
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;

@@ -26,6 +26,8 @@ class Torus : public PrimitiveShape<Torus> {
   double minorRadius() const { return r_; }
   std::string kind() const override { return "torus"; }
 
+  bool firstBoundaryCutsShort() const override { return true; }
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;

@@ -34,6 +34,7 @@ class MarkedSolid : public Solid {
   const Bounds& bounds() const override;
   void spans(const Ray& ray, SpanList& out) const override;
   void spansToFirstBoundary(const Ray& ray, SpanList& out) const override;
+  bool firstBoundaryCutsShort() const override { return marked_->firstBoundaryCutsShort(); }
   bool contains(const dvec3& p) const override;
   void prepare() const override { marked_->prepare(); }
   std::span<const SolidPtr> children() const override { return {&marked_, 1}; }
