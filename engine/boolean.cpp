@@ -28,8 +28,10 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
   booleans_ = 1;
   insideBeyondWindow_ = op_ != Op::Difference;
   holesInsideBeyondWindow_ = true;
+  cutsShort_ = false;
   for (size_t i = 0; i < operands_.size(); ++i) {
     const SolidPtr& s = operands_[i];
+    cutsShort_ = cutsShort_ || (op_ == Op::Union && s->firstBoundaryCutsShort());
     insideBeyondWindow_ = insideBeyondWindow_ && s->insideBeyondWindow();
     if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s->insideBeyondWindow();
     instances_ = instances_ || s->hasInstances();
@@ -42,6 +44,8 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
                                   std::to_string(kMaxPrimitives) +
                                   " primitives (counting each use of a shared part)");
   }
+  cutsShort_ = cutsShort_ || (op_ == Op::Difference && holesInsideBeyondWindow_);
+  firstCutsShort_ = op_ == Op::Difference && operands_[0]->firstBoundaryCutsShort();
   if (depth_ > kMaxDepth)
     throw std::invalid_argument(
         kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
@@ -238,7 +242,7 @@ void Boolean::spansToFirstBoundary(const Ray& ray, SpanList& out) const {
   // The first operand's first boundary is the answer unless a hole covers
   // it: then its spans beyond are needed, and one that cuts them short is
   // asked for them all.
-  bool whole = !operands_[0]->firstBoundaryCutsShort();
+  bool whole = !firstCutsShort_;
   if (whole) {
     operands_[0]->spans(ray, out);
   } else {
