@@ -122,6 +122,36 @@ TEST(EdgeLines, TwoPlacesOfOneSharedPartMeetAtALine) {
   EXPECT_EQ(differ, 0);
 }
 
+// The same with a bar that is a difference (a notch cut from its far end):
+// the renderer walks the two uses of it (only unions of uses are copied
+// into place), so the valley is told from the face's two uses, not from
+// two primitives.
+TEST(EdgeLines, TwoPlacesOfOneSharedDifferenceMeetAtALine) {
+  const std::string bar =
+      "local function bar() return box{size={10, 2, 2}}:translate(0, -1, -2) - "
+      "sphere{r=0.5}:translate(9, 0, 0) end\n";
+  Scene shared = runScript(bar +
+                               "local b = bar()\nreturn union(b:rotate(25, 0, 0), "
+                               "b:rotate(-25, 0, 0))",
+                           "part.lua");
+  Scene apart =
+      runScript(bar + "return union(bar():rotate(25, 0, 0), bar():rotate(-25, 0, 0))", "part.lua");
+  ASSERT_EQ(treeStats(*shared.objects[0]).storedPrimitives, 2u);
+  RenderOptions options(200, 150, 1);
+  options.edges = true;
+  const Image a = Renderer(shared, options).render(), b = Renderer(apart, options).render();
+  int differ = 0, lined = 0;
+  options.edges = false;
+  const Image plain = Renderer(apart, options).render();
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      differ += glm::length(a.at(x, y) - b.at(x, y)) > 0.02;
+      lined += glm::length(b.at(x, y) - plain.at(x, y)) > 0.02;
+    }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(lined, 200);
+}
+
 // A box from a script, rendered with and without lines: a pixel changes
 // only beside the box's outline (on the box or off it) or beside a crease,
 // always toward the line's colour by at most the full line; every pixel on
