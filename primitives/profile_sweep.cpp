@@ -18,27 +18,9 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr std::uint32_t kLeafEdges = 4;
 
-double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
-
-// Profile::contains's rules (profile.cpp), edge by edge: does the half-line
-// from p towards +x cross the segment a–b (half-open in y, so that a vertex
-// counts once)?
-bool segmentCrosses(const dvec2& p, const dvec2& a, const dvec2& b) {
-  if ((a.y > p.y) == (b.y > p.y)) return false;
-  const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-  return x > p.x;
-}
-
-// Is p between the arc and its chord?
+// Is p between the arc and its chord? (Profile::contains's rule.)
 bool inArcCap(const dvec2& p, const SweepEdge& e) {
-  const dvec2 w = e.toUnit * (p - e.center);
-  if (glm::dot(w, w) >= 1.0) return false;
-  if (e.fullTurn) return true;
-  const dvec2 a(std::cos(e.lo), std::sin(e.lo));
-  const dvec2 b(std::cos(e.hi), std::sin(e.hi));
-  const double mid = 0.5 * (e.lo + e.hi);
-  const dvec2 m(std::cos(mid), std::sin(mid));
-  return (cross(b - a, w - a) > 0.0) == (cross(b - a, m - a) > 0.0);
+  return inUnitArcCap(e.toUnit * (p - e.center), e.lo, e.hi);
 }
 
 ProfileBounds edgeBox(const ProfileEdge& e) {
@@ -437,7 +419,7 @@ bool SweptRegion::edgesContain(const Leaf& leaf, const dvec2& u) const {
       if (bezierCrossesRight(v, curve)) inside = !inside;
       return;
     }
-    if (segmentCrosses(v, turned(e.from), turned(e.to))) inside = !inside;
+    if (halfLineCrossesSegment(v, turned(e.from), turned(e.to))) inside = !inside;
     if (e.arc && inArcCap(u, e)) inside = !inside;  // (the same whichever way the ray goes)
   });
   return inside;

@@ -23,32 +23,33 @@ bool onArc(double theta, double a0, double a1) {
   return t <= hi;
 }
 
-// Crossings of the half-line from p towards +x with the segment a–b, by the
-// half-open rule (an end exactly at p's height counts for the edge that
-// lies above it), so that a vertex shared by two edges counts once.
-bool segmentCrosses(const dvec2& p, const dvec2& a, const dvec2& b) {
+bool inArcCap(const dvec2& p, const ProfileEdge& e) {
+  return inUnitArcCap(glm::inverse(e.axes) * (p - e.center), e.angle0, e.angle1);
+}
+
+}  // namespace
+
+// By the half-open rule: an end exactly at p's height counts for the edge
+// that lies above it.
+bool halfLineCrossesSegment(const dvec2& p, const dvec2& a, const dvec2& b) {
   if ((a.y > p.y) == (b.y > p.y)) return false;
   const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
   return x > p.x;
 }
 
-// Is p between an arc and its chord? The chord cuts the ellipse in two; the
-// arc bounds the part that holds its middle point. In the frame where the
-// ellipse is the unit circle that is a disc cut by a line: the chord over
-// a half-angle h about the middle direction m is the line w·m = cos h, and
-// the arc's side is w·m > cos h (for an arc past a half circle too, where
-// cos h < 0). Tested so, not by the side of the chord's two ends, a tiny
-// arc's cap stays tiny. A whole ellipse (from == to) bounds its disc.
-bool inArcCap(const dvec2& p, const ProfileEdge& e) {
-  const dvec2 w = glm::inverse(e.axes) * (p - e.center);
+// The chord cuts the circle in two; the arc bounds the part that holds its
+// middle point. The chord over a half-angle h about the middle direction m
+// is the line w·m = cos h, and the arc's side is w·m > cos h (for an arc
+// past a half circle too, where cos h < 0). Tested so, not by the side of
+// the chord's two ends, a tiny arc's cap stays tiny. A whole turn bounds
+// the disc.
+bool inUnitArcCap(const dvec2& w, double angle0, double angle1) {
   if (glm::dot(w, w) >= 1.0) return false;
-  if (std::abs(e.angle1 - e.angle0) >= kTwoPi) return true;
-  const double mid = 0.5 * (e.angle0 + e.angle1);
-  const double halfAngle = 0.5 * std::abs(e.angle1 - e.angle0);
+  if (std::abs(angle1 - angle0) >= kTwoPi) return true;
+  const double mid = 0.5 * (angle0 + angle1);
+  const double halfAngle = 0.5 * std::abs(angle1 - angle0);
   return glm::dot(w, dvec2(std::cos(mid), std::sin(mid))) > std::cos(halfAngle);
 }
-
-}  // namespace
 
 ProfileEdge ProfileEdge::segment(const dvec2& a, const dvec2& b) {
   ProfileEdge e;
@@ -135,7 +136,7 @@ bool Profile::contains(const dvec2& p) const {
         if (bezierCrossesRight(p, e)) inside = !inside;
         continue;
       }
-      if (segmentCrosses(p, e.from, e.to)) inside = !inside;
+      if (halfLineCrossesSegment(p, e.from, e.to)) inside = !inside;
       if (e.kind == ProfileEdge::Kind::Arc && inArcCap(p, e)) inside = !inside;
     }
   return inside;

@@ -80,4 +80,13 @@ struct Profile {
   Profile transformed(const Affine2& map) const;
 };
 
+// The even-odd rule's pieces, for Profile::contains and for a sweep's own
+// count over its index of edges, so that both count alike: does the
+// half-line from p towards +x cross the segment a–b (half-open in y, so
+// that a vertex shared by two edges counts once)? Is w, in the frame where
+// an arc's ellipse is the unit circle, between the arc from angle0 to
+// angle1 and its chord (the count crosses the chord, not the arc)?
+bool halfLineCrossesSegment(const dvec2& p, const dvec2& a, const dvec2& b);
+bool inUnitArcCap(const dvec2& w, double angle0, double angle1);
+
 }  // namespace csgray::detail
