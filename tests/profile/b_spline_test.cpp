@@ -70,19 +70,19 @@ void expectSameCurve(const BSpline& s) {
 const std::vector<dvec2> kControls = {{0, 0}, {1, 2}, {3, 3}, {4, 0}, {6, -1}, {7, 2}, {5, 4}};
 
 TEST(BSpline, ClampedCubicWithADoubleKnot) {
-  expectSameCurve({3, {0, 0, 0, 0, 1, 2, 2, 3, 3, 3, 3}, kControls});
+  expectSameCurve({3, {0, 0, 0, 0, 1, 2, 2, 3, 3, 3, 3}, kControls, {}});
 }
 
 TEST(BSpline, UniformCubicUnclampedAtBothEnds) {
-  expectSameCurve({3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, kControls});
+  expectSameCurve({3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, kControls, {}});
 }
 
 TEST(BSpline, QuadraticWithUnevenKnots) {
-  expectSameCurve({2, {0, 0, 0.5, 0.7, 2, 2.5, 4, 5, 5, 5}, kControls});
+  expectSameCurve({2, {0, 0, 0.5, 0.7, 2, 2.5, 4, 5, 5, 5}, kControls, {}});
 }
 
 TEST(BSpline, DegreeOneIsTheControlPolygon) {
-  const BSpline s{1, {0, 0, 1, 2, 3, 4, 5, 6, 6}, kControls};
+  const BSpline s{1, {0, 0, 1, 2, 3, 4, 5, 6, 6}, kControls, {}};
   expectSameCurve(s);
   const std::vector<ProfileEdge> edges = bSplineEdges(s);
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -93,7 +93,7 @@ TEST(BSpline, DegreeOneIsTheControlPolygon) {
 
 TEST(BSpline, AClampedCubicOfFourPointsIsOneBezier) {
   const std::vector<ProfileEdge> edges =
-      bSplineEdges({3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {1, 2}, {3, 3}, {4, 0}}});
+      bSplineEdges({3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {1, 2}, {3, 3}, {4, 0}}, {}});
   ASSERT_EQ(edges.size(), 1u);
   EXPECT_EQ(edges[0].kind, ProfileEdge::Kind::Cubic);
   EXPECT_EQ(edges[0].from, dvec2(0, 0));
@@ -112,15 +112,16 @@ std::string error(const BSpline& s) {
 }
 
 TEST(BSpline, BadSplinesAreRefused) {
-  EXPECT_EQ(error({4, {0, 0, 0, 0, 0, 1, 1, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}}}),
-            "a spline of degree 4 (degrees 1 to 3 are read)");
-  EXPECT_EQ(error({3, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}, {3, 1}}}),
+  EXPECT_EQ(
+      error({4, {0, 0, 0, 0, 0, 1, 1, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}}, {}}),
+      "a spline of degree 4 (degrees 1 to 3 are read)");
+  EXPECT_EQ(error({3, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}, {3, 1}}, {}}),
             "a spline with 4 control points of degree 3 needs 8 knots, not 6");
-  EXPECT_EQ(error({2, {0, 0, 0, 1}, {{0, 0}}}),
+  EXPECT_EQ(error({2, {0, 0, 0, 1}, {{0, 0}}, {}}),
             "a spline of degree 2 needs at least 3 control points, not 1");
-  EXPECT_EQ(error({2, {0, 0, 1, 0.5, 1, 1}, {{0, 0}, {1, 1}, {2, 0}}}),
+  EXPECT_EQ(error({2, {0, 0, 1, 0.5, 1, 1}, {{0, 0}, {1, 1}, {2, 0}}, {}}),
             "a spline's knots decrease");
-  EXPECT_EQ(error({2, {0, 1, 1, 1, 1, 2}, {{0, 0}, {1, 1}, {2, 0}}}),
+  EXPECT_EQ(error({2, {0, 1, 1, 1, 1, 2}, {{0, 0}, {1, 1}, {2, 0}}, {}}),
             "a spline's knots leave its curve no length");
 }
 

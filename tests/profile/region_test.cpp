@@ -441,10 +441,12 @@ TEST(RegionOffset, OffsetsAgreeWithDistances) {
     const dvec2 nearest = glm::clamp(p, dvec2(0.0), dvec2(1.0));
     const double outside = glm::length(p - nearest);
     const double inside = std::min(std::min(p.x, 1.0 - p.x), std::min(p.y, 1.0 - p.y));
-    if (std::abs(outside - r) > 1e-9)
+    if (std::abs(outside - r) > 1e-9) {
       EXPECT_EQ(grown.contains(p), outside < r) << p.x << ", " << p.y;
-    if (std::abs(inside - r) > 1e-9)
+    }
+    if (std::abs(inside - r) > 1e-9) {
       EXPECT_EQ(shrunk.contains(p), inside > r) << p.x << ", " << p.y;
+    }
   }
 }
 
@@ -489,10 +491,18 @@ TEST(RegionOffset, AGearKeepsOneLoopAndItsDistances) {
     EXPECT_EQ(grown.contains(p), in || e < d) << p.x << ", " << p.y;
     EXPECT_EQ(shrunk.contains(p), in && e > d) << p.x << ", " << p.y;
     // A mitre reaches further than the rounding, a chamfer between.
-    if (grown.contains(p)) EXPECT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
-    if (chamferOut.contains(p)) EXPECT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
-    if (mitreIn.contains(p)) EXPECT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
-    if (chamferIn.contains(p)) EXPECT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+    if (grown.contains(p)) {
+      EXPECT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
+    }
+    if (chamferOut.contains(p)) {
+      EXPECT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
+    }
+    if (mitreIn.contains(p)) {
+      EXPECT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
+    }
+    if (chamferIn.contains(p)) {
+      EXPECT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+    }
   }
 }
 
@@ -627,7 +637,9 @@ TEST(RegionHull, ArcsOnlyWhereTheyBulge) {
   const Profile e = evaluate(*crescent, kTolerance);
   EXPECT_GT(area(c), area(e));
   for (const ProfileEdge& edge : c.loops.at(0).edges)
-    if (edge.kind == ProfileEdge::Kind::Arc) EXPECT_NEAR(glm::length(edge.center), 0.0, 1e-12);
+    if (edge.kind == ProfileEdge::Kind::Arc) {
+      EXPECT_NEAR(glm::length(edge.center), 0.0, 1e-12);
+    }
 }
 
 TEST(RegionHull, RandomDiscsAndBoxesAgreeWithAFinePolygon) {

@@ -116,6 +116,10 @@ std::optional<RefHit> reference(const Reference& ref, const Ray& ray) {
       linearFactors(ref, h.point, theta, phi);
       h.margin = std::min({theta, phi, 1.0 - theta, 1.0 - phi});
       break;
+    case Shape::Region:
+    case Shape::Mesh:  // not figures of the seed's kind: no reference here
+      ADD_FAILURE() << "no reference hit for this shape";
+      return std::nullopt;
   }
   return h;
 }
@@ -238,6 +242,9 @@ void expectEdgesExact(const Surface& s, const Reference& ref, unsigned seed) {
         pairs.push_back({dvec3(1 - d, a, 0), dvec3(1 + d, a, 0)});  // ϑ = 1
         pairs.push_back({dvec3(a, 1 - d, 0), dvec3(a, 1 + d, 0)});  // φ = 1
         break;
+      case Shape::Region:
+      case Shape::Mesh:
+        FAIL() << "no edges of the seed's kind for this shape";
     }
     for (const auto& [in, out] : pairs) {
       double l = lambda(rng);
