@@ -33,14 +33,19 @@ struct TraceContext {
   // Where the last shaded boundary's use was found, on this thread
   // (engine/instance_surface.h), if kept.
   UseHint* useHint = nullptr;
-  // With keepCameraHit, what the camera ray (depth 0) met, its normal as
-  // normalAt gives it and the use of the boundary's primitive: the edge
-  // lines and the depth and normal images take them from the colour's
-  // own trace rather than tracing the ray again.
-  bool keepCameraHit = false;
-  std::optional<SurfaceHit> cameraHit;
-  dvec3 cameraNormal{0.0};
-  std::uintptr_t cameraUse = 0;
+  // Where to keep what the camera ray (depth 0) met, if anywhere: the
+  // edge lines and the depth and normal images take it from the colour's
+  // own trace rather than tracing the ray again. (Kept apart: a context is
+  // made for every pixel.)
+  struct CameraHit* cameraHit = nullptr;
+};
+
+// What the camera ray met, its normal as normalAt gives it, and the use of
+// the boundary's primitive.
+struct CameraHit {
+  std::optional<SurfaceHit> hit;
+  dvec3 normal{0.0};
+  std::uintptr_t use = 0;
 };
 
 namespace {
@@ -460,8 +465,8 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
                       TraceContext& ctx, int raysLeft) const {
   ++(depth == 0 ? ctx.counts.primary : ctx.counts.secondary);
   std::optional<SurfaceHit> hit = firstHit(ray);
-  const bool keep = depth == 0 && ctx.keepCameraHit;
-  if (keep) ctx.cameraHit = hit;
+  CameraHit* keep = depth == 0 ? ctx.cameraHit : nullptr;
+  if (keep) keep->hit = hit;
   if (!hit) return missed(ray, ctx);
 
   ShadingPoint sp;
@@ -470,7 +475,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     const Surface& s = *hit->surface;
     sp.material = &materialOf(s.material());
     sp.normal = s.normalAt(sp.point, hit->face);
-    if (keep) ctx.cameraNormal = sp.normal;
+    if (keep) keep->normal = sp.normal;
     // A smooth mesh's normal leans away from its triangle's, which is the
     // one that tells the side the ray comes from (both sides are shaded).
     if (glm::dot(s.faceNormal(hit->face), ray.dir) > 0.0) sp.normal = -sp.normal;
@@ -485,7 +490,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     const BoundarySurface surface =
         boundarySurface(*objects_[std::size_t(hit->object)], ray, b, textured, ctx.useHint);
     sp.normal = b.flip ? -surface.normal : surface.normal;
-    if (keep) ctx.cameraNormal = surface.normal, ctx.cameraUse = surface.use;
+    if (keep) keep->normal = surface.normal, keep->use = surface.use;
     sp.color = textured ? sp.material->texture->colorAt(surface.texturePoint, surface.textureNormal)
                         : sp.material->color;
     if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
@@ -679,24 +684,31 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
+  const int samples = refine ? 1 : options_.samples;
+  // What each pixel's centre ray met, for the edge lines and the depth and
+  // normal images.
+  const bool centre = options_.depthAov || options_.normalAov || edges;
   forEachTile(!refine && !edges, [&](int x, int y, TileWork& tile) {
     TraceContext ctx{Sampler(x, y)};
     ctx.useHint = &tile.useHint;
-    const int samples = refine ? 1 : options_.samples;
-    const bool centre = options_.depthAov || options_.normalAov || edges;
+    if (!centre) {
+      result.color.set(x, y, pixel(x, y, samples, ctx));
+      add(tile.counts, ctx.counts);
+      return;
+    }
     // One sample is the centre ray, whose trace keeps what it met.
-    ctx.keepCameraHit = centre && samples <= 1;
+    std::optional<CameraHit> kept;
+    if (samples <= 1) ctx.cameraHit = &kept.emplace();
     result.color.set(x, y, pixel(x, y, samples, ctx));
     add(tile.counts, ctx.counts);
-    if (!centre) return;
     Ray ray = camera_.ray(x + 0.5, y + 0.5);
-    const std::optional<SurfaceHit> hit = ctx.keepCameraHit ? ctx.cameraHit : firstHit(ray);
+    const std::optional<SurfaceHit> hit = kept ? kept->hit : firstHit(ray);
     if (options_.depthAov)
       result.depth.set(x, y,
                        dvec3(hit ? hit->t * glm::dot(ray.dir, camera_.forward()) : kInfinity));
     if (!hit) return;
-    std::uintptr_t use = ctx.cameraUse;
-    dvec3 n = ctx.keepCameraHit ? ctx.cameraNormal : normalAt(*hit, ray, &use);
+    std::uintptr_t use = kept ? kept->use : 0;
+    dvec3 n = kept ? kept->normal : normalAt(*hit, ray, &use);
     if (edges) seen[std::size_t(y) * w + x] = surfaceSample(*hit, n, use, ray.dir);
     if (glm::dot(n, ray.dir) > 0.0) n = -n;
     if (options_.normalAov) result.normal.set(x, y, n);
