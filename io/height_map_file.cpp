@@ -91,8 +91,12 @@ HeightMap heightMapOfText(const std::string& text, const std::string& name) {
 
 HeightMap readHeightMap(const std::string& path, const std::string& name, bool invert,
                         const std::function<TextureImage(const std::string&)>& loadImage) {
-  const std::string bytes = readInputFile(path, name, kMaxFileBytes);
-  if (!hasPngSignature(bytes)) return heightMapOfText(bytes, name);
+  // A PNG is told by its first bytes and left to loadImage, which reads it
+  // itself (read here too, the file was held twice while it was decoded).
+  std::string start;
+  readInputFileStart(path, name, 8, start);
+  if (!hasPngSignature(start))
+    return heightMapOfText(readInputFile(path, name, kMaxFileBytes), name);
   if (!loadImage) throw std::invalid_argument(name + ": this program cannot read images");
   try {
     return heightMapOfImage(loadImage(path), invert);

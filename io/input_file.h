@@ -41,5 +41,10 @@ std::string inputFileProblem(const std::string& path);
 // or "name: the file is larger than N MiB", name being how the user named
 // the file.
 std::string readInputFile(const std::string& path, const std::string& name, std::size_t maxBytes);
+// The first `count` bytes of the regular file at path (fewer if it is
+// shorter), into bytes; throws as readInputFile does. For telling a file's
+// kind before reading it whole, or handing it to a reader that opens it.
+void readInputFileStart(const std::string& path, const std::string& name, std::size_t count,
+                        std::string& bytes);
 
 }  // namespace csgray::detail
