@@ -180,6 +180,31 @@ TEST(LinearExtrusion, FirstBoundaryAgreesWithTheWholeSpans) {
   }
 }
 
+// A ray from inside an L-shaped prism, scaled unevenly (a path of many
+// pieces), that touches the L's inner corner and leaves by the far side:
+// the touch is a crossing of two edges at one point, which the first-
+// boundary mode stops a margin past, still inside. The exit lies beyond
+// what it followed, so the whole spans are asked for.
+TEST(LinearExtrusion, FirstBoundaryFromInsidePastATouchedCorner) {
+  const auto l =
+      extrude(test::regionOf({test::polygonLoop({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})}),
+              2.0, 0.0, dvec2(0.5, 1.0));
+  // At z = 1 the x axis is scaled by 0.75: the profile point (0.5, 1.25)
+  // moves by (2, −1) a unit of t, through the corner (1, 1) at t = 0.25
+  // (exactly), and leaves through x = 2 at t = 0.75.
+  const Ray ray(dvec3(0.375, 1.25, 1.0), dvec3(1.5, -1.0, 0.0));
+  SpanList whole, first;
+  l->spans(ray, whole);
+  l->spansToFirstBoundary(ray, first);
+  const auto expected = test::firstBoundary(whole, ray), actual = test::firstBoundary(first, ray);
+  ASSERT_TRUE(expected && actual);
+  EXPECT_NEAR(expected->first.t, 0.75, 1e-12);
+  EXPECT_FALSE(expected->second);
+  EXPECT_EQ(actual->first.t, expected->first.t);
+  EXPECT_EQ(actual->first.face, expected->first.face);
+  EXPECT_EQ(actual->second, expected->second);
+}
+
 // A difference asks its first operand for the first boundary only; where a
 // hole covers that boundary, the operand's spans beyond it are asked for
 // after all. Holes through the twisted star, along it and across it, and
