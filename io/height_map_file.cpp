@@ -93,9 +93,7 @@ HeightMap readHeightMap(const std::string& path, const std::string& name, bool i
                         const std::function<TextureImage(const std::string&)>& loadImage) {
   // A PNG is told by its first bytes and left to loadImage, which reads it
   // itself (read here too, the file was held twice while it was decoded).
-  std::string start;
-  readInputFileStart(path, name, 8, start);
-  if (!hasPngSignature(start))
+  if (!hasPngSignature(readInputFileStart(path, name, 8)))
     return heightMapOfText(readInputFile(path, name, kMaxFileBytes), name);
   if (!loadImage) throw std::invalid_argument(name + ": this program cannot read images");
   try {

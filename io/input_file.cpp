@@ -69,22 +69,22 @@ bool InputFile::readUpTo(std::string& bytes, std::size_t limit) {
 std::string inputFileProblem(const std::string& path) { return InputFile(path).problem(); }
 
 std::string readInputFile(const std::string& path, const std::string& name, std::size_t maxBytes) {
-  std::string bytes;
-  readInputFileStart(path, name, maxBytes + 1, bytes);
+  std::string bytes = readInputFileStart(path, name, maxBytes + 1);
   if (bytes.size() > maxBytes)
     throw std::invalid_argument(name + ": the file is larger than " +
                                 std::to_string(maxBytes >> 20) + " MiB");
   return bytes;
 }
 
-void readInputFileStart(const std::string& path, const std::string& name, std::size_t count,
-                        std::string& bytes) {
+std::string readInputFileStart(const std::string& path, const std::string& name,
+                               std::size_t count) {
   InputFile file(path);
   if (!file.problem().empty())
     throw std::invalid_argument(name + ": cannot open: " + file.problem());
-  bytes.clear();
+  std::string bytes;
   if (!file.readUpTo(bytes, count))
     throw std::invalid_argument(name + ": cannot read: " + file.problem());
+  return bytes;
 }
 
 }  // namespace csgray::detail

@@ -42,9 +42,8 @@ std::string inputFileProblem(const std::string& path);
 // the file.
 std::string readInputFile(const std::string& path, const std::string& name, std::size_t maxBytes);
 // The first `count` bytes of the regular file at path (fewer if it is
-// shorter), into bytes; throws as readInputFile does. For telling a file's
-// kind before reading it whole, or handing it to a reader that opens it.
-void readInputFileStart(const std::string& path, const std::string& name, std::size_t count,
-                        std::string& bytes);
+// shorter); throws as readInputFile does. For telling a file's kind before
+// reading it whole, or handing it to a reader that opens it itself.
+std::string readInputFileStart(const std::string& path, const std::string& name, std::size_t count);
 
 }  // namespace csgray::detail
