@@ -238,22 +238,29 @@ void dropSlivers(Profile& profile) {
   profile = std::move(kept);
 }
 
-// The set of the points about which the curves (closed chains: each point
-// is left as often as it is reached) wind an odd number of times, or a
-// non-zero number. The winding number is flooded from the unbounded face
-// (0): crossing an edge from its left to its right takes away the count of
-// the curves that run along it.
-ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule) {
+using CountedPiece = CountedTraits::X_monotone_curve_2;
+
+// A curve's x-monotone pieces, each counted `weight` times the way the
+// curve runs: +weight when that is left to right.
+void addPieces(const CircleSegment& curve, int weight, std::vector<CountedPiece>& pieces) {
   const ArcTraits traits;
-  std::vector<CountedTraits::X_monotone_curve_2> pieces;
   std::vector<boost::variant<ArcTraits::Point_2, ArcCurve>> split;
-  for (const CircleSegment& c : curves) {
-    split.clear();
-    traits.make_x_monotone_2_object()(c, std::back_inserter(split));
-    for (const auto& item : split)
-      if (const ArcCurve* piece = boost::get<ArcCurve>(&item))
-        pieces.emplace_back(*piece, piece->is_directed_right() ? 1 : -1);
-  }
+  traits.make_x_monotone_2_object()(curve, std::back_inserter(split));
+  for (const auto& item : split)
+    if (const ArcCurve* piece = boost::get<ArcCurve>(&item))
+      pieces.emplace_back(*piece, piece->is_directed_right() ? weight : -weight);
+}
+
+// The points about which the pieces (closed chains: each point is left as
+// often as it is reached) wind as the rule says, as polygons with holes
+// whose interiors are disjoint. The winding number is flooded from the
+// unbounded face (0): crossing an edge from its left to its right takes
+// away the count of the curves that run along it. The edges between two
+// filled faces, or two empty ones, are then removed, so that each filled
+// face left is a whole component: joining the faces one by one instead
+// would sweep their shared edges again.
+std::vector<ArcPolygonWithHoles> filledPolygons(const std::vector<CountedPiece>& pieces,
+                                                FillRule rule) {
   CountedArrangement arrangement;
   CGAL::insert(arrangement, pieces.begin(), pieces.end());
 
@@ -261,7 +268,6 @@ ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule)
     f->set_data(kUnknownWinding);
   std::vector<CountedArrangement::Face_handle> stack{arrangement.unbounded_face()};
   stack.back()->set_data(0);
-  std::vector<ArcPolygonWithHoles> inside;
   const auto flood = [&](CountedArrangement::Face_handle f,
                          CountedArrangement::Ccb_halfedge_circulator first) {
     auto h = first;
@@ -279,19 +285,50 @@ ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule)
     stack.pop_back();
     if (!f->is_unbounded()) flood(f, f->outer_ccb());
     for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) flood(f, *i);
+  }
+  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
     const int winding = f->data();
     const bool filled = rule == FillRule::EvenOdd ? (winding & 1) != 0 : winding != 0;
-    if (f->is_unbounded() || !filled) continue;
+    f->set_data(filled ? 1 : 0);
+  }
+  std::vector<CountedArrangement::Halfedge_handle> inner;
+  for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e)
+    if (e->face()->data() == e->twin()->face()->data()) inner.push_back(e);
+  for (const auto e : inner) arrangement.remove_edge(e);
+
+  std::vector<ArcPolygonWithHoles> filled;
+  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+    if (f->is_unbounded() || f->data() == 0) continue;
     std::vector<ArcPolygon> holes;
     for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) {
       ArcPolygon hole = polygonOf(*i);
       if (hole.size() > 0) holes.push_back(std::move(hole));
     }
-    inside.emplace_back(polygonOf(f->outer_ccb()), holes.begin(), holes.end());
+    filled.emplace_back(polygonOf(f->outer_ccb()), holes.begin(), holes.end());
   }
+  return filled;
+}
+
+ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule) {
+  std::vector<CountedPiece> pieces;
+  for (const CircleSegment& c : curves) addPieces(c, 1, pieces);
+  const std::vector<ArcPolygonWithHoles> filled = filledPolygons(pieces, rule);
   ArcPolygonSet set;
-  if (!inside.empty()) set.join(inside.begin(), inside.end());
+  if (!filled.empty()) set.join(filled.begin(), filled.end());
   return set;
+}
+
+// Polygons with holes as a profile: outer loops counterclockwise, holes
+// clockwise, slivers dropped.
+Profile profileOfPolygons(const std::vector<ArcPolygonWithHoles>& polygons) {
+  Profile profile;
+  for (const ArcPolygonWithHoles& p : polygons) {
+    if (p.is_unbounded()) throw std::logic_error("an evaluated region is unbounded");
+    profile.loops.push_back(loopOf(p.outer_boundary()));
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) profile.loops.push_back(loopOf(*h));
+  }
+  dropSlivers(profile);
+  return profile;
 }
 
 }  // namespace
@@ -402,14 +439,7 @@ ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
 Profile profileOf(const ArcPolygonSet& set) {
   std::vector<ArcPolygonWithHoles> polygons;
   set.polygons_with_holes(std::back_inserter(polygons));
-  Profile profile;
-  for (const ArcPolygonWithHoles& p : polygons) {
-    if (p.is_unbounded()) throw std::logic_error("an evaluated region is unbounded");
-    profile.loops.push_back(loopOf(p.outer_boundary()));
-    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) profile.loops.push_back(loopOf(*h));
-  }
-  dropSlivers(profile);
-  return profile;
+  return profileOfPolygons(polygons);
 }
 
 Profile evaluate(const Region& region, double ellipseTolerance) {
@@ -418,14 +448,14 @@ Profile evaluate(const Region& region, double ellipseTolerance) {
 }
 
 Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
-  std::vector<CircleSegment> curves;
-  curves.reserve(segments.size());
+  std::vector<CountedPiece> pieces;
+  pieces.reserve(segments.size());
   for (const auto& [from, to] : segments) {
     requireFinite(from, "point");
     requireFinite(to, "point");
-    if (from != to) curves.emplace_back(exactPoint(from), exactPoint(to));
+    if (from != to) addPieces(CircleSegment(exactPoint(from), exactPoint(to)), 1, pieces);
   }
-  return profileOf(filledSet(curves, FillRule::NonZero));
+  return profileOfPolygons(filledPolygons(pieces, FillRule::NonZero));
 }
 
 }  // namespace csgray::detail

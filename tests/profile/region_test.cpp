@@ -116,11 +116,22 @@ TEST(Region, NonZeroFillCountsDirections) {
     return a;
   };
   // Overlapping, both counterclockwise: 4 + 4 - 1, where even-odd would
-  // leave the overlap out.
-  EXPECT_NEAR(area(nonZeroFill(joined(square(0, 0, 2, true), square(1, 1, 2, true)))), 7.0, 1e-12);
-  // Nested, the inner one clockwise: a hole.
-  EXPECT_NEAR(area(nonZeroFill(joined(square(0, 0, 4, true), square(1, 1, 2, false)))), 12.0,
-              1e-12);
+  // leave the overlap out; the overlap and the rest are one outline of
+  // eight sides, not three faces.
+  const Profile overlapping = nonZeroFill(joined(square(0, 0, 2, true), square(1, 1, 2, true)));
+  EXPECT_NEAR(area(overlapping), 7.0, 1e-12);
+  ASSERT_EQ(overlapping.loops.size(), 1u);
+  EXPECT_EQ(overlapping.loops[0].edges.size(), 8u);
+  // Nested, the inner one clockwise: a hole, one outer loop and one inner.
+  const Profile nested = nonZeroFill(joined(square(0, 0, 4, true), square(1, 1, 2, false)));
+  EXPECT_NEAR(area(nested), 12.0, 1e-12);
+  EXPECT_EQ(nested.loops.size(), 2u);
+  // Nested, both counterclockwise: the inner square winds twice, and is
+  // filled with the rest, one square.
+  const Profile twice = nonZeroFill(joined(square(0, 0, 4, true), square(1, 1, 2, true)));
+  EXPECT_NEAR(area(twice), 16.0, 1e-12);
+  ASSERT_EQ(twice.loops.size(), 1u);
+  EXPECT_EQ(twice.loops[0].edges.size(), 4u);
   // Two squares side by side, their shared side run both ways: one loop.
   const Profile pair = nonZeroFill(joined(square(0, 0, 1, true), square(1, 0, 1, true)));
   EXPECT_EQ(pair.loops.size(), 1u);
