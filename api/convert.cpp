@@ -19,6 +19,8 @@ void copyShared(const From& from, To& to) {
   to.shininess = from.shininess;
   to.reflection = from.reflection;
   to.transparency = from.transparency;
+  to.filterDistance = from.filterDistance;
+  to.transmittedSpecular = from.transmittedSpecular;
   to.ior = from.ior;
   to.fresnel = from.fresnel;
   to.gloss = from.gloss;

@@ -61,6 +61,36 @@ const Material& materialOf(const Boundary& b) {
 
 double largest(const dvec3& c) { return std::max({c.x, c.y, c.z}); }
 
+// Calls visit(light, point) for each point a shading point samples of each
+// light: a point or spot light's one, an area light's drawn ones.
+template <class Visit>
+void forEachLightSample(const std::vector<Light>& lights, const dvec3& at, Sampler& rng,
+                        Visit&& visit) {
+  for (const Light& light : lights) {
+    for (int i = 0, n = light.sampleCount(); i < n; ++i) {
+      double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers
+      if (light.isArea()) u = rng.next(), v = rng.next();
+      visit(light, light.samplePoint(i, u, v, at));
+    }
+  }
+}
+
+// The filter of a material with a filter distance over `depth` of it.
+dvec3 filterOver(const Material& m, double depth) {
+  return glm::pow(m.filter, dvec3(depth / m.filterDistance));
+}
+
+// What a stretch of a transparent material `depth` long lets through: its
+// transparency, and its filter once or, with a filter distance, raised to
+// the depth over that distance (the transmissivity T^d of Hall and
+// Greenberg, "A Testbed for Realistic Image Synthesis", IEEE CG&A 3(8),
+// 1983: light in an absorbing medium falls exponentially with the way it
+// travels, the Beer-Lambert law).
+dvec3 stretchPass(const Material& m, double depth) {
+  if (m.filterDistance <= 0.0) return m.transparency * m.filter;
+  return m.transparency * filterOver(m, depth);
+}
+
 // Does any primitive of the solid let light through? A shadow ray needs all
 // the spans of such a solid (each stretch dims it), and of any other only
 // the first boundary (an opaque stretch stops it). A subtree shared by many
@@ -147,15 +177,15 @@ constexpr int kEdgeBisections = 4;
 
 }  // namespace
 
-Media Media::entered(int solid, double index) const {
+Media Media::entered(int solid, const Material& medium) const {
   Media m = *this;
   if (m.count == kMax) {  // deeper nesting than any part needs: forget the outermost
     std::copy(m.object + 1, m.object + kMax, m.object);
-    std::copy(m.ior + 1, m.ior + kMax, m.ior);
+    std::copy(m.material + 1, m.material + kMax, m.material);
     --m.count;
   }
   m.object[m.count] = solid;
-  m.ior[m.count] = index;
+  m.material[m.count] = &medium;
   ++m.count;
   return m;
 }
@@ -165,7 +195,7 @@ Media Media::left(int solid) const {
   for (int i = 0; i < count; ++i) {
     if (object[i] == solid) continue;
     m.object[m.count] = object[i];
-    m.ior[m.count] = ior[i];
+    m.material[m.count] = material[i];
     ++m.count;
   }
   return m;
@@ -226,7 +256,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
     objects_[i]->spans(view, spans);
     for (const Span& s : spans)
       if (s.in.t <= 0.0 && s.out.t >= 0.0)
-        cameraMedia_ = cameraMedia_.entered(int(i), materialOf(s.out).ior);
+        cameraMedia_ = cameraMedia_.entered(int(i), materialOf(s.out));
   }
 }
 
@@ -278,16 +308,19 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   SpanList spans;
   const std::uint32_t solids = std::uint32_t(objects_.size());
   double tMax = 1.0;
-  // Each stretch inside a transparent solid or surface dims the light;
+  // Each stretch inside a transparent solid, and each transparent
+  // surface (which has no depth: its filter counts once), dims the light;
   // anything opaque ends the search.
-  auto dim = [&](const Material& m) {
-    pass *= m.transparency * m.filter;
+  const double length = glm::length(to - from);
+  auto dim = [&](const Material& m, const dvec3& share) {
+    pass *= share;
     return m.transparency > 0.0;
   };
   bvh_.traverse(ray, tMax, [&](std::uint32_t i, double) {
     if (i >= solids) {
       const Surface& surface = *scene_.surfaces[i - solids];
-      return !surface.hit(ray) || dim(materialOf(surface.material()));
+      const Material& m = materialOf(surface.material());
+      return !surface.hit(ray) || dim(m, m.transparency * m.filter);
     }
     if (i >= ghostsFrom_) return true;  // ghosts cast no shadows
     // A stretch inside the solid: its material is the one of the face
@@ -305,8 +338,12 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
       return false;
     }
     objects_[i]->spans(ray, spans);
-    for (const Span& s : spans)
-      if (s.out.t > 0.0 && s.in.t < 1.0 && !dim(material(s))) return false;
+    for (const Span& s : spans) {
+      if (s.out.t <= 0.0 || s.in.t >= 1.0) continue;
+      const Material& m = material(s);
+      const double depth = (std::min(s.out.t, 1.0) - std::max(s.in.t, 0.0)) * length;
+      if (!dim(m, stretchPass(m, depth))) return false;
+    }
     return true;
   });
   return pass;
@@ -331,30 +368,57 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
   // takes nothing from the lights, so it sends them no shadow rays: each
   // would add radiance · pass · 0.
   if (m.diffuse <= 0.0 && m.specular <= 0.0) return color;
-  for (const Light& light : lights_) {
-    for (int i = 0, n = light.sampleCount(); i < n; ++i) {
-      double u = 0.5, v = 0.5;  // a point or spot light draws no random numbers
-      if (light.isArea()) u = ctx.rng.next(), v = ctx.rng.next();
-      dvec3 s = light.samplePoint(i, u, v, sp.point);
-      dvec3 l = glm::normalize(s - sp.point);
-      double cosAlpha = glm::dot(sp.normal, l);
-      if (cosAlpha <= 0.0) continue;
-      dvec3 radiance = light.radianceAt(sp.point, s);
-      if (largest(radiance) <= 0.0) continue;
-      dvec3 pass(1.0);
-      if (light.castsShadows) {
-        ++ctx.counts.shadow;
-        pass = transmittance(origin, s);
-        if (largest(pass) <= 0.0) continue;
-      }
-      double highlight = 0.0;
-      if (m.specular > 0.0) {
-        double cosBeta = glm::dot(reflect(-l, sp.normal), -viewDir);
-        if (cosBeta > 0.0) highlight = m.specular * std::pow(cosBeta, m.shininess);
-      }
-      color += radiance * pass * (m.diffuse * cosAlpha * sp.color + highlight);
+  forEachLightSample(lights_, sp.point, ctx.rng, [&](const Light& light, const dvec3& s) {
+    dvec3 l = glm::normalize(s - sp.point);
+    double cosAlpha = glm::dot(sp.normal, l);
+    if (cosAlpha <= 0.0) return;
+    dvec3 radiance = light.radianceAt(sp.point, s);
+    if (largest(radiance) <= 0.0) return;
+    dvec3 pass(1.0);
+    if (light.castsShadows) {
+      ++ctx.counts.shadow;
+      pass = transmittance(origin, s);
+      if (largest(pass) <= 0.0) return;
     }
-  }
+    double highlight = 0.0;
+    if (m.specular > 0.0) {
+      double cosBeta = glm::dot(reflect(-l, sp.normal), -viewDir);
+      if (cosBeta > 0.0) highlight = m.specular * std::pow(cosBeta, m.shininess);
+    }
+    color += radiance * pass * (m.diffuse * cosAlpha * sp.color + highlight);
+  });
+  return color;
+}
+
+// Hall's transmitted highlight (Hall and Greenberg 1983): the light that
+// reaches the point from beyond the surface and passes through it toward
+// the eye shows as a highlight where the eye ray, going on through the
+// surface (refracted), points near the light: Phong's lobe
+// cos^shininess β' with β' the angle between that ray and the light, as
+// Phong's highlight takes the angle about the mirrored ray. The shadow
+// rays start on the far side: the caller dims what comes through the
+// surface itself.
+dvec3 Renderer::transmittedHighlight(const ShadingPoint& sp, const dvec3& onward,
+                                     TraceContext& ctx) const {
+  const Material& m = *sp.material;
+  const dvec3 origin = sp.point - (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  const dvec3 along = glm::normalize(onward);
+  dvec3 color(0.0);
+  forEachLightSample(lights_, sp.point, ctx.rng, [&](const Light& light, const dvec3& s) {
+    const dvec3 l = glm::normalize(s - sp.point);
+    if (glm::dot(sp.normal, l) >= 0.0) return;  // on the eye's side: direct's
+    const double cosBeta = glm::dot(along, l);
+    if (cosBeta <= 0.0) return;
+    const double highlight = m.transmittedSpecular * std::pow(cosBeta, m.shininess);
+    const dvec3 radiance = light.radianceAt(sp.point, s);
+    if (highlight <= 0.0 || largest(radiance) <= 0.0) return;
+    dvec3 pass(1.0);
+    if (light.castsShadows) {
+      ++ctx.counts.shadow;
+      pass = transmittance(origin, s);
+    }
+    color += radiance * pass * highlight;
+  });
   return color;
 }
 
@@ -467,7 +531,15 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   std::optional<SurfaceHit> hit = firstHit(ray);
   CameraHit* keep = depth == 0 ? ctx.cameraHit : nullptr;
   if (keep) keep->hit = hit;
-  if (!hit) return missed(ray, ctx);
+  // Inside a solid whose filter deepens with depth, what the ray brings
+  // back from the next face it meets is dimmed over the way there (the
+  // face where it entered applied its transparency alone).
+  const Material* medium = media.innermost();
+  const auto faded = [&](const dvec3& c) {
+    if (!medium || medium->filterDistance <= 0.0) return c;
+    return c * filterOver(*medium, hit ? hit->t * glm::length(ray.dir) : kInfinity);
+  };
+  if (!hit) return faded(missed(ray, ctx));
 
   ShadingPoint sp;
   sp.point = ray.at(hit->t);
@@ -502,7 +574,9 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   bool leaving = !hit->surface && !hit->entering && m.transparency > 0.0;
   double kr = leaving ? 0.0 : m.reflection;
   double kt = leaving ? 1.0 : m.transparency;
-  dvec3 tint = leaving ? dvec3(1.0) : m.filter;
+  // (A solid with a filter distance tints along the way inside instead.)
+  const bool tintsInside = !hit->surface && m.filterDistance > 0.0;
+  dvec3 tint = leaving || tintsInside ? dvec3(1.0) : m.filter;
 
   // The media beyond the surface, for a ray that goes on through it (not
   // copied at an opaque one): the span list says whether the ray enters
@@ -510,7 +584,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   Media beyond;
   if (kt > 0.0)
     beyond = hit->surface    ? media
-             : hit->entering ? media.entered(hit->object, m.ior)
+             : hit->entering ? media.entered(hit->object, m)
                              : media.left(hit->object);
   double n1 = media.current(), n2 = beyond.current();
   // (A surface that passes all light shows none of its own: no shadow rays.)
@@ -534,6 +608,15 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
       kt *= 1.0 - r;
     }
   }
+
+  // Lights seen through the last face between them and the eye: beyond a
+  // transparent surface, or beyond the face by which the ray leaves a
+  // transparent solid, so that the light shows where the eye's path,
+  // bent at every face before, finally points (through a pane, along the
+  // eye ray shifted sideways). Dimmed as what lies beyond: by kt and the
+  // tint here, and for a solid by its entry and the way inside.
+  if ((leaving || hit->surface) && m.transmittedSpecular > 0.0 && kt > 0.0 && through)
+    color += kt * tint * transmittedHighlight(sp, *through, ctx);
 
   double offset = 1e-9 * (scale_ + glm::length(sp.point));
   bool deeper = depth < scene_.limits.maxDepth;
@@ -563,7 +646,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     Ray onwardRay(sp.point - offset * sp.normal, blurred(*through, -sp.normal));
     color += kt * tint * trace(onwardRay, depth + 1, weight * kTinted, beyond, ctx, left - 1);
   }
-  return color;
+  return faded(color);
 }
 
 dvec3 Renderer::withHighlights(const Ray& ray, const dvec3& color) const {

@@ -102,15 +102,18 @@ struct SurfaceHit {
 };
 
 // The media a ray is in: the solids it has entered, innermost (last
-// entered) on top, each with its index of refraction.
+// entered) on top, each with the material of the face the ray entered by
+// (its index of refraction, and how it dims light with depth).
 struct Media {
   static constexpr int kMax = 8;
   int count = 0;
   int object[kMax];
-  double ior[kMax];
+  const Material* material[kMax];
 
-  double current() const { return count ? ior[count - 1] : 1.0; }
-  Media entered(int solid, double index) const;
+  // The innermost medium's material, or null outside every solid.
+  const Material* innermost() const { return count ? material[count - 1] : nullptr; }
+  double current() const { return count ? material[count - 1]->ior : 1.0; }
+  Media entered(int solid, const Material& m) const;
   Media left(int solid) const;
 };
 
@@ -153,6 +156,9 @@ class Renderer {
   dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, TraceContext& ctx,
               int raysLeft = kRaysPerCameraRay - 1) const;
   dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
+  // Hall's transmitted highlight: the lights beyond a transparent face
+  // seen through it, about `onward`, the way the eye ray goes on past it.
+  dvec3 transmittedHighlight(const ShadingPoint& sp, const dvec3& onward, TraceContext& ctx) const;
   // The light that reaches a point from other surfaces (the scene's
   // indirect light): the mean of what diffusely scattered rays see.
   dvec3 indirect(const ShadingPoint& sp, const Media& media, int depth, double weight,

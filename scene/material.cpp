@@ -1,5 +1,6 @@
 #include "scene/material.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "engine/instance.h"
@@ -20,6 +21,9 @@ void checkMaterial(const Material& m) {
   checkColor(f, "filter", m.filter);
   if (m.filter.x > 1.0 || m.filter.y > 1.0 || m.filter.z > 1.0)
     throw std::invalid_argument("material: filter components must be in [0, 1]");
+  if (!(m.filterDistance >= 0.0 && std::isfinite(m.filterDistance)))
+    throw std::invalid_argument("material: filter_distance must be a finite number >= 0");
+  checkUnit(f, "transmitted_specular", m.transmittedSpecular);
   if (!(m.ior >= 1.0 && m.ior <= 10.0))
     throw std::invalid_argument("material: ior must be from 1 to 10");
   checkUnit(f, "gloss", m.gloss);

@@ -23,6 +23,17 @@ struct Material {
   // (I = k·I_behind), tinted by filter.
   double transparency = 0.0;
   dvec3 filter{1.0, 1.0, 1.0};
+  // The depth of the solid through which its filter is reached: a stretch
+  // of length d passes filter^(d / filterDistance), the transmissivity
+  // raised to the distance travelled of Hall and Greenberg's model (the
+  // Beer-Lambert law), so thick glass is darker than thin. 0: the filter
+  // applies once per stretch, whatever its length.
+  double filterDistance = 0.0;
+  // Hall's transmitted highlight: a light seen through a transparent
+  // surface, or through the face by which an eye ray leaves a transparent
+  // solid, as Phong's lobe cos^shininess about the way the eye ray goes on
+  // past it, times this factor (raytrace/renderer.cpp).
+  double transmittedSpecular = 0.0;
   double ior = 1.0;      // index of refraction; 1 passes rays straight through
   bool fresnel = false;  // weigh reflection and refraction by the Fresnel equations
   // Blur of the mirrored and refracted rays, a roughness in [0, 1]: 0 is a

@@ -27,6 +27,8 @@ MaterialPtr materialArg(lua_State* L, int index) {
   m->reflection = args.number("reflection").value_or(m->reflection);
   m->transparency = args.number("transparency").value_or(m->transparency);
   m->filter = args.color("filter").value_or(m->filter);
+  m->filterDistance = args.number("filter_distance").value_or(m->filterDistance);
+  m->transmittedSpecular = args.number("transmitted_specular").value_or(m->transmittedSpecular);
   m->ior = args.number("ior").value_or(m->ior);
   m->fresnel = args.boolean("fresnel").value_or(false);
   m->gloss = args.number("gloss").value_or(m->gloss);

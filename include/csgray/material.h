@@ -78,10 +78,12 @@ struct Material {
   double reflection = 0.0;         // [0, 1]: share of the mirrored ray's colour
   double transparency = 0.0;       // [0, 1]: share of the light behind that passes
   Vec3 filter{1.0, 1.0, 1.0};      // components in [0, 1]: tint of the light passing
-  double ior = 1.0;                // 1 to 10: index of refraction
-  bool fresnel = false;            // weigh reflection and refraction by Fresnel's equations
-  double gloss = 0.0;              // [0, 1]: blur of the mirrored and refracted rays
-  Vec3 emission{0.0, 0.0, 0.0};    // components >= 0: light the surface gives off
+  double filterDistance = 0.0;  // >= 0: depth of a solid through which filter is reached (0: once)
+  double transmittedSpecular = 0.0;  // [0, 1]: highlight of lights seen through the surface
+  double ior = 1.0;                  // 1 to 10: index of refraction
+  bool fresnel = false;              // weigh reflection and refraction by Fresnel's equations
+  double gloss = 0.0;                // [0, 1]: blur of the mirrored and refracted rays
+  Vec3 emission{0.0, 0.0, 0.0};      // components >= 0: light the surface gives off
 };
 
 }  // namespace csgray

@@ -559,6 +559,24 @@ TEST(Shading, APureMirrorSendsNoShadowRays) {
   EXPECT_EQ(render(0.5).rays.shadow, std::uint64_t(w * h));
 }
 
+// A ball of radius 1 about the origin, and the same ball hollowed to a
+// radius of 0.5, both of material m.
+std::pair<SolidPtr, SolidPtr> ballAndHollowBall(const MaterialPtr& m) {
+  return {sphereAt(dvec3(0), 1.0)->withDefaultMaterial(m),
+          differenceOf({sphereAt(dvec3(0), 1.0), sphereAt(dvec3(0), 0.5)})->withDefaultMaterial(m)};
+}
+
+// The solid over a flat target on the plane z = -5, black beyond.
+Scene overFlatTarget(const SolidPtr& solid, const dvec3& target) {
+  Scene scene;
+  scene.objects.push_back(solid);
+  scene.surfaces.push_back(
+      Surface::plane(dvec3(0, 0, -5), dvec3(0, 0, 1))->withMaterial(flat(target)));
+  scene.camera = farCamera();
+  scene.background = kBlack;
+  return scene;
+}
+
 // An eye ray through a transparent solid (index 1) sees the solid's own
 // colour s by (1 − k) and what lies beyond by k·filter, once per stretch
 // inside the solid: the face where it leaves a stretch is not shaded. The
@@ -569,18 +587,8 @@ TEST(Shading, TransparencyAndFilterApplyOncePerStretch) {
   auto m = std::make_shared<Material>(*flat(s));
   m->transparency = k;
   m->filter = f;
-  SolidPtr ball = sphereAt(dvec3(0), 1.0)->withDefaultMaterial(m);
-  SolidPtr hollow =
-      differenceOf({sphereAt(dvec3(0), 1.0), sphereAt(dvec3(0), 0.5)})->withDefaultMaterial(m);
-  auto sceneWith = [&](const SolidPtr& solid) {
-    Scene scene;
-    scene.objects.push_back(solid);
-    scene.surfaces.push_back(
-        Surface::plane(dvec3(0, 0, -5), dvec3(0, 0, 1))->withMaterial(flat(target)));
-    scene.camera = farCamera();
-    scene.background = kBlack;
-    return scene;
-  };
+  const auto [ball, hollow] = ballAndHollowBall(m);
+  auto sceneWith = [&](const SolidPtr& solid) { return overFlatTarget(solid, target); };
   const Ray down(dvec3(0.1, 0.2, 5), dvec3(0, 0, -1));
   Scene one = sceneWith(ball), two = sceneWith(hollow);
   dvec3 through = Renderer(one, {8, 8, 1}).trace(down);
@@ -603,6 +611,116 @@ TEST(Shading, TransparencyAndFilterApplyOncePerStretch) {
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(pass1[c] / lit[c], k * f[c], 1e-12) << c;
     EXPECT_NEAR(pass2[c] / lit[c], std::pow(k * f[c], 2.0), 1e-12) << c;
+  }
+}
+
+// With a filter distance D, a stretch of length d passes filter^(d / D)
+// (Hall's transmissivity raised to the distance, the Beer-Lambert law):
+// the eye ray through a ball sees what lies beyond by k·filter^(chord / D);
+// through a hollow ball, by that for each of its two stretches; and a
+// shadow ray through the ball passes k·filter^(chord / D) of the light,
+// the chord of its own line.
+TEST(Shading, FilterDistanceDimsEachStretchByItsLength) {
+  const double k = 0.4, distance = 0.7;
+  const dvec3 s(0.9, 0.8, 0.1), f(1.0, 0.5, 0.25), target(0.2, 0.6, 0.8);
+  auto m = std::make_shared<Material>(*flat(s));
+  m->transparency = k;
+  m->filter = f;
+  m->filterDistance = distance;
+  const auto [ball, hollow] = ballAndHollowBall(m);
+  auto sceneWith = [&](const SolidPtr& solid) { return overFlatTarget(solid, target); };
+  // Down at x = 0.1, y = 0.2: 0.05 from the axis, squared.
+  const Ray down(dvec3(0.1, 0.2, 5), dvec3(0, 0, -1));
+  const double chord = 2.0 * std::sqrt(1.0 - 0.05);
+  const double wall = std::sqrt(1.0 - 0.05) - std::sqrt(0.25 - 0.05);
+  Scene one = sceneWith(ball), two = sceneWith(hollow);
+  // (The way inside is the chord less the offsets rays start at, 10⁻⁹ of
+  // the scene's size off each face: 10⁻⁷ covers them.)
+  const dvec3 through = Renderer(one, {8, 8, 1}).trace(down);
+  const dvec3 throughHollow = Renderer(two, {8, 8, 1}).trace(down);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(through[c], (1 - k) * s[c] + k * std::pow(f[c], chord / distance) * target[c], 1e-7)
+        << c;
+    const double inner = (1 - k) * s[c] + k * std::pow(f[c], wall / distance) * target[c];
+    EXPECT_NEAR(throughHollow[c], (1 - k) * s[c] + k * std::pow(f[c], wall / distance) * inner,
+                1e-7)
+        << c;
+  }
+  // Thicker than the filter distance, darker than the filter once.
+  EXPECT_LT(through.z, (1 - k) * s.z + k * f.z * target.z - 0.01);
+
+  // The shadow of the ball, 3 above a floor lit from 10 above it.
+  const dvec3 lamp(0, 0, 10), centre(0, 0, 3), floorPoint(0.05, -0.1, 0);
+  auto shadow = [&](const SolidPtr& solid) {
+    Scene scene = floorScene(matte(dvec3(1.0), 0.0, 1.0));
+    if (solid) scene.objects.push_back(solid->transformed(Affine::translation(centre)));
+    scene.lights.push_back(Light{Light::Kind::Point, lamp});
+    return floorColour(Renderer(scene, {8, 8, 1}), floorPoint);
+  };
+  // The chord of the shadow ray's line: 2·√(1 − δ²), δ its distance from
+  // the ball's centre.
+  const dvec3 axis = glm::normalize(lamp - floorPoint);
+  const double offAxis = glm::length(glm::cross(centre - floorPoint, axis));
+  const double shadowChord = 2.0 * std::sqrt(1.0 - offAxis * offAxis);
+  const dvec3 lit = shadow(nullptr), passed = shadow(ball);
+  ASSERT_GT(lit.x, 0.5);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(passed[c] / lit[c], k * std::pow(f[c], shadowChord / distance), 1e-12) << c;
+}
+
+// Hall's transmitted highlight: a lamp under a slab of glass (index n, 2
+// thick) shows, to parallel eye rays 40° off the slab's normal, where the
+// eye's path through the slab ends pointing at it. The path bends into the
+// slab at sin θt = sin 40° / n (Snell), crosses it, and leaves it parallel
+// to the eye ray: the lamp, 5 under the slab, is seen from the top face's
+// point 5·tan 40° + 2·tan θt before it in x. The highlight's brightest
+// pixel is that point's, at n = 1.5 and at n = 1 (no bending). It is
+// dimmed by the slab's transparency once; without transmitted_specular, or
+// through an opaque slab, there is none.
+TEST(Shading, TransmittedHighlightLiesWhereTheEyePathThroughAGlassSlabMeetsTheLamp) {
+  const double theta = radians(40.0), thickness = 2.0, below = 5.0;
+  const dvec3 lamp(0.0, 0.0, -thickness - below);
+  const int w = 241, h = 3;
+  const dvec3 view(std::sin(theta), 0.0, -std::cos(theta));
+  CameraSpec camera{dvec3(-5.5, 0.0, 0.0) - 10.0 * view, dvec3(-5.5, 0.0, 0.0), dvec3(0, 1, 0),
+                    45.0};
+  camera.orthographic = true;
+  camera.orthoWidth = 12.0;
+  auto render = [&](double ior, double transmitted, double transparency) {
+    auto m = std::make_shared<Material>(*glass(ior));
+    m->transparency = transparency;
+    m->transmittedSpecular = transmitted;
+    m->shininess = 2000.0;
+    Scene scene;
+    scene.objects.push_back(
+        boxFromTo(dvec3(-30, -30, -thickness), dvec3(30, 30, 0))->withDefaultMaterial(m));
+    scene.lights.push_back(Light{Light::Kind::Point, lamp});
+    scene.camera = camera;
+    scene.background = kBlack;
+    return Renderer(scene, {w, h, 1}).render();
+  };
+  const Camera rays(camera, w, h);
+  for (const double ior : {1.5, 1.0}) {
+    const Image image = render(ior, 1.0, 1.0);
+    int brightest = 0;
+    for (int x = 1; x < w; ++x)
+      if (image.at(x, 1).x > image.at(brightest, 1).x) brightest = x;
+    EXPECT_GT(image.at(brightest, 1).x, 0.8) << ior;
+    // Where the brightest pixel's ray meets the pane's top, z = 0.
+    const Ray ray = rays.ray(brightest + 0.5, 1.5);
+    const double x = ray.origin.x - ray.origin.z / ray.dir.z * ray.dir.x;
+    const double refracted = std::asin(std::sin(theta) / ior);
+    const double expected = lamp.x - below * std::tan(theta) - thickness * std::tan(refracted);
+    // Within a pixel, as it falls on the pane.
+    EXPECT_NEAR(x, expected, camera.orthoWidth / w / std::cos(theta)) << ior;
+  }
+  // Dimmed once by the slab's transparency, where the eye ray enters it:
+  // half as bright at every pixel at transparency 0.5.
+  const Image clear = render(1.5, 1.0, 1.0), half = render(1.5, 1.0, 0.5);
+  for (int x = 0; x < w; ++x) EXPECT_NEAR(half.at(x, 1).x, 0.5 * clear.at(x, 1).x, 1e-12) << x;
+  for (const auto& [transmitted, transparency] : {std::pair{0.0, 1.0}, std::pair{1.0, 0.0}}) {
+    const Image image = render(1.5, transmitted, transparency);
+    for (int x = 0; x < w; ++x) EXPECT_EQ(image.at(x, 1).x, 0.0) << transmitted << " " << x;
   }
 }
 

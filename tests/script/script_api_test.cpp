@@ -205,6 +205,8 @@ TEST(ScriptMaterial, OutOfRangeValuesAreErrors) {
       {"specular=-1", "material: specular must be in [0, 1]"},
       {"reflection=1.01", "material: reflection must be in [0, 1]"},
       {"transparency=3", "material: transparency must be in [0, 1]"},
+      {"filter_distance=-1", "material: filter_distance must be a finite number >= 0"},
+      {"transmitted_specular=2", "material: transmitted_specular must be in [0, 1]"},
       {"ior=0.5", "material: ior must be from 1 to 10"},
       {"ior=11", "material: ior must be from 1 to 10"},
       {"color={1, -0.5, 0}", "material: color components must be >= 0"},
