@@ -172,13 +172,15 @@ class SweptRegion {
   //   bool meetsFrom(const SweepPiece&, const dvec2& lo, const dvec2& hi,
   //                  double& from) const;
   // (meets, and from: a t before which the curve is not in the box) then
-  // has the index walked nearest box first, for a region of one leaf whose
-  // box the window starts outside: the spans are exact up to a little past
-  // the first crossing and end there. A path with kBoxedPieces has its
-  // pieces taken in order instead, for a region of one leaf, to the same
-  // end. Returns true when they were cut so; if they are then empty, or
-  // the first does not start inside the ray's window, the caller must ask
-  // again without firstOnly.
+  // has the index walked nearest box first, for each leaf whose box the
+  // window starts outside: the leaf's spans are exact up to a little past
+  // its first crossing and end there. A path with kBoxedPieces has its
+  // pieces taken in order instead, to the same end. Leaves under unions
+  // only (a union of them is exact up to the nearest of their ends, and is
+  // cut there); the operands of intersections and differences give all
+  // their spans. Returns true when the spans were cut so; if they are then
+  // empty, or the first does not start inside the ray's window, the caller
+  // must ask again without firstOnly.
   template <class Path>
   bool spans(const Primitive* owner, const Path& path, double t0, double t1, std::uint32_t face0,
              std::uint32_t face1, const SweepPiece* pieces, int pieceCount, SpanList& out,
@@ -260,7 +262,7 @@ class SweptRegion {
   template <class Path>
   void treeSpans(const Primitive* owner, std::uint32_t node, const Path& path, double t0, double t1,
                  std::uint32_t face0, std::uint32_t face1, const SweepPiece* pieces, int pieceCount,
-                 bool firstOnly, bool& truncated, SpanList& out) const;
+                 bool firstOnly, double& exactTo, SpanList& out) const;
 
   // How far past an edge's end (a fraction of a segment, radians of an
   // arc) a crossing still counts as on it, and within which of an end it

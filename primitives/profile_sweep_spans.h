@@ -145,9 +145,9 @@ bool SweptRegion::spans(const Primitive* owner, const Path& path, double t0, dou
                         int pieceCount, SpanList& out, bool firstOnly) const {
   out.clear();
   if (!(t0 < t1)) return false;
-  bool truncated = false;
-  treeSpans(owner, 0, path, t0, t1, face0, face1, pieces, pieceCount,
-            firstOnly && tree_.size() == 1, truncated, out);
+  double exactTo = t1;
+  treeSpans(owner, 0, path, t0, t1, face0, face1, pieces, pieceCount, firstOnly, exactTo, out);
+  const bool truncated = exactTo < t1;
   bool flipped = false;
   for (const Span& s : out) flipped = flipped || s.in.flip || s.out.flip;
   if (!flipped) return truncated;
@@ -170,22 +170,29 @@ template <class Path>
 void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const Path& path,
                             double t0, double t1, std::uint32_t face0, std::uint32_t face1,
                             const SweepPiece* pieces, int pieceCount, bool firstOnly,
-                            bool& truncated, SpanList& out) const {
+                            double& exactTo, SpanList& out) const {
   out.clear();
   const TreeNode& node = tree_[index];
   if (node.op != Region::Op::Leaf) {
+    // A union asks its operands for their first boundaries too: each one's
+    // spans are exact up to where it was cut short, so the union's are up
+    // to the nearest such point, and are cut there. (The operands of an
+    // intersection or a difference give all their spans: a hole's far
+    // boundary may be the first of the result.)
+    const bool operandsFirst = firstOnly && node.op == Region::Op::Union;
+    double operandsExactTo = t1;
     SpanList operand, merged;
     bool first = true;
     for (std::uint32_t child : node.operands) {
       if (first) {
-        treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, false, truncated,
-                  out);
+        treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, operandsFirst,
+                  operandsExactTo, out);
         first = false;
         if (out.empty() && node.op != Region::Op::Union) return;
         continue;
       }
-      treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, false, truncated,
-                operand);
+      treeSpans(owner, child, path, t0, t1, face0, face1, pieces, pieceCount, operandsFirst,
+                operandsExactTo, operand);
       if (node.op == Region::Op::Union) {
         if (operand.empty()) continue;
         unite(out, operand, merged);
@@ -197,6 +204,16 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
       }
       out = merged;
       if (out.empty() && node.op != Region::Op::Union) return;
+    }
+    if (operandsExactTo < t1) {
+      exactTo = std::min(exactTo, operandsExactTo);
+      merged.clear();
+      for (Span s : out) {
+        if (s.in.t >= operandsExactTo) break;
+        if (s.out.t > operandsExactTo) s.out = Boundary{operandsExactTo, owner, face1, false};
+        merged.push_back(s);
+      }
+      out = merged;
     }
     return;
   }
@@ -279,7 +296,7 @@ void SweptRegion::treeSpans(const Primitive* owner, std::uint32_t index, const P
   }
   if (bound < t1) {
     end = bound;
-    truncated = true;
+    exactTo = std::min(exactTo, end);
     std::size_t kept = 0;
     for (const SweepCrossing& c : crossings)
       if (c.t <= end) crossings[kept++] = c;

@@ -167,9 +167,14 @@ TEST(LinearExtrusion, SpansAgreeWithContainsOnRandomLines) {
 // inside, over windows that start and end anywhere.
 TEST(LinearExtrusion, FirstBoundaryAgreesWithTheWholeSpans) {
   auto solids = assorted();
-  solids.push_back(
-      {"twisted star",
-       extrude(test::regionOf({test::polygonLoop(test::starPoints(24, 2.0, 1.6))}), 3.0, 40.0)});
+  const RegionPtr star = test::regionOf({test::polygonLoop(test::starPoints(24, 2.0, 1.6))});
+  solids.push_back({"twisted star", extrude(star, 3.0, 40.0)});
+  // A union, each leaf followed to its own first boundary: the star, a
+  // disc across its rim and one apart.
+  solids.push_back({"twisted union",
+                    extrude(Region::boolean(Region::Op::Union, {star, test::circle({1.8, 0.5}, 0.6),
+                                                                test::circle({-1.0, -2.6}, 0.4)}),
+                            3.0, 40.0)});
   for (const auto& [name, solid] : solids) {
     SCOPED_TRACE(name);
     const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*solid, 3000, 13);

@@ -152,11 +152,26 @@ RegionPtr wavyWall() {
 
 // spansToFirstBoundary follows a ray's curve only to its first boundary:
 // that boundary is the one of the whole spans, bit for bit, from outside
-// and inside, over windows that start and end anywhere.
+// and inside, over windows that start and end anywhere. Unions of
+// profiles (each leaf followed to its own first boundary): the wall with
+// a lip on its rim, as the turned vase's; leaves that overlap and one
+// apart; and a union inside a difference.
 TEST(Revolution, FirstBoundaryAgreesWithTheWholeSpans) {
   auto solids = assorted();
   solids.push_back({"wavy wall", revolve(wavyWall())});
   solids.push_back({"wavy wedge", revolve(wavyWall(), 250.0)});
+  const auto unionOf = [](std::vector<RegionPtr> operands) {
+    return Region::boolean(Region::Op::Union, std::move(operands));
+  };
+  solids.push_back(
+      {"wall and lip", revolve(unionOf({wavyWall(), test::circle({0.85, 4.0}, 0.2)}))});
+  const RegionPtr three = unionOf({test::rectangle({0.5, 0}, {1.5, 2}), test::circle({1.5, 2}, 0.7),
+                                   test::circle({3, 0.5}, 0.4)});
+  solids.push_back({"union of three", revolve(three)});
+  solids.push_back({"union of three, wedge", revolve(three, 200.0)});
+  solids.push_back(
+      {"union less a disc",
+       revolve(Region::boolean(Region::Op::Difference, {three, test::circle({1.2, 1.4}, 0.5)}))});
   for (const auto& [name, solid] : solids) {
     SCOPED_TRACE(name);
     const auto [hits, entries] = test::expectFirstBoundaryAgreesWithTheWholeSpans(*solid, 3000, 11);
