@@ -1056,13 +1056,17 @@ class Evaluator {
           return false;
       return true;
     };
-    bool moved = false;
+    // Every pair is judged before any corner moves: the inside test
+    // against b holds a tree over b's faces, and corners of b moved while
+    // later pairs were still judged put it out of step with b. (Two
+    // Sierpinski tetrahedra of level 5 kept a corner a unit in the last
+    // place apart that way, and CGAL's corefinement lost a tetrahedron
+    // of the 2 048 there.)
+    std::vector<std::pair<Vertex, Vertex>> welds;
     for (const auto& [u, w] : pairs)
-      if (leadsOut(a, u, insideB) && leadsOut(b, w, insideA)) {
-        b.point(w) = a.point(u);
-        moved = true;
-      }
-    return moved;
+      if (leadsOut(a, u, insideB) && leadsOut(b, w, insideA)) welds.emplace_back(u, w);
+    for (const auto& [u, w] : welds) b.point(w) = a.point(u);
+    return !welds.empty();
   }
 
   // Has the mesh two vertices at one place (to doubles), within the other
