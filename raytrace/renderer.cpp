@@ -311,7 +311,6 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   // Each stretch inside a transparent solid, and each transparent
   // surface (which has no depth: its filter counts once), dims the light;
   // anything opaque ends the search.
-  const double length = glm::length(to - from);
   auto dim = [&](const Material& m, const dvec3& share) {
     pass *= share;
     return m.transparency > 0.0;
@@ -341,7 +340,12 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     for (const Span& s : spans) {
       if (s.out.t <= 0.0 || s.in.t >= 1.0) continue;
       const Material& m = material(s);
-      const double depth = (std::min(s.out.t, 1.0) - std::max(s.in.t, 0.0)) * length;
+      // (The stretch's length only where the filter depends on it: a
+      // square root spared on every other shadow ray.)
+      const double depth =
+          m.filterDistance > 0.0
+              ? (std::min(s.out.t, 1.0) - std::max(s.in.t, 0.0)) * glm::length(to - from)
+              : 0.0;
       if (!dim(m, stretchPass(m, depth))) return false;
     }
     return true;
