@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <numbers>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "engine/boolean.h"
 #include "engine/degrees.h"
@@ -243,15 +244,26 @@ class Importer {
     if (n == "polygon") return polygon(node);
     if (n == "linear_extrude") return linearExtrude(node);
     if (n == "rotate_extrude") return rotateExtrude(node);
-    if (n == "offset") return offset(node);
+    if (n == "offset") return remembered(node, &Importer::offset);
     if (n == "resize") return resize(node);
     if (n == "hull") return hullOf(node);
     if (n == "import") return importFile(node);
     if (n == "minkowski") return minkowskiOf(node);
     if (n == "text") return text(node);
-    if (n == "projection") return projection(node);
+    if (n == "projection") return remembered(node, &Importer::projection);
     if (n == "surface") return surface(node);
     throw NodeError("unknown node");
+  }
+
+  // The costly 2D nodes (offsets, projections) are made once for each
+  // subtree written alike: OpenSCAD's files repeat them (GEB offsets each of
+  // its letters three times), and a region is an immutable value to share.
+  Shape remembered(const CsgNode& node, Shape (Importer::*make)(const CsgNode&)) {
+    std::string key = csgNodeKey(node);
+    if (auto it = made2D_.find(key); it != made2D_.end()) return it->second;
+    Shape s = (this->*make)(node);
+    made2D_.emplace(std::move(key), s);
+    return s;
   }
 
   // OpenSCAD's text(), sized and laid out as OpenSCAD does
@@ -733,6 +745,7 @@ class Importer {
 
   const std::string& file_;
   const CsgImportOptions& options_;
+  std::unordered_map<std::string, Shape> made2D_;  // by csgNodeKey
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace csgray::detail {
@@ -203,7 +204,53 @@ class Parser {
   int line_ = 1;
 };
 
+void appendKey(const CsgValue& value, std::string& key) {
+  switch (value.kind) {
+    case CsgValue::Kind::Undef:
+      key += 'u';
+      break;
+    case CsgValue::Kind::Number: {
+      char digits[32];  // %a: every bit of the double
+      std::snprintf(digits, sizeof digits, "n%a", value.number);
+      key += digits;
+      break;
+    }
+    case CsgValue::Kind::Boolean:
+      key += value.boolean ? 't' : 'f';
+      break;
+    case CsgValue::Kind::String:
+      // Its length first, so that no string can end the key early.
+      key += 's' + std::to_string(value.text.size()) + ':' + value.text;
+      break;
+    case CsgValue::Kind::Vector:
+      key += '[';
+      for (const CsgValue& item : value.items) appendKey(item, key);
+      key += ']';
+      break;
+  }
+}
+
+void appendKey(const CsgNode& node, std::string& key) {
+  key += node.name;
+  if (node.modifier) key += node.modifier;
+  key += '(';
+  for (const CsgValue& v : node.positional) appendKey(v, key);
+  for (const auto& [name, v] : node.named) {
+    key += name + '=';
+    appendKey(v, key);
+  }
+  key += "){";
+  for (const CsgNode& child : node.children) appendKey(child, key);
+  key += '}';
+}
+
 }  // namespace
+
+std::string csgNodeKey(const CsgNode& node) {
+  std::string key;
+  appendKey(node, key);
+  return key;
+}
 
 std::vector<CsgNode> parseCsg(const std::string& text, const std::string& fileName) {
   return Parser(text, fileName).file();

@@ -43,4 +43,9 @@ class CsgError : public std::runtime_error {
 // stray character, a number that does not parse, nesting deeper than 1000).
 std::vector<CsgNode> parseCsg(const std::string& text, const std::string& fileName);
 
+// The subtree of node as text, without the lines it stands on: two nodes
+// have the same key exactly when they and their children are written
+// alike (numbers to the last bit), so they make the same shape.
+std::string csgNodeKey(const CsgNode& node);
+
 }  // namespace csgray::detail

@@ -149,6 +149,24 @@ TEST(CsgImport, OpenScadFacetsAreOpenScadsPolygons) {
   EXPECT_NEAR(exportedVolume(sphere), volume, 1e-9);
 }
 
+// OpenSCAD's files repeat subtrees (its GEB example offsets each letter
+// three times): an offset written alike is made once and shared; one whose
+// radius differs in the last bit, or whose child differs, is made apart.
+TEST(CsgImport, AnOffsetWrittenAlikeTwiceIsMadeOnce) {
+  const CsgModel model = importText(
+      "offset(r = 1) { square(size = [2, 2]); }\n"
+      "offset(r = 1) {\n  square(size = [2, 2]);\n}\n"
+      "offset(r = 1.0000000000000002) { square(size = [2, 2]); }\n"
+      "offset(r = 1) { square(size = [2, 3]); }\n");
+  ASSERT_EQ(model.regions.size(), 4u);
+  EXPECT_EQ(model.regions[0], model.regions[1]);
+  EXPECT_NE(model.regions[0], model.regions[2]);
+  EXPECT_NE(model.regions[0], model.regions[3]);
+  // A w × h rectangle rounded out by r: wh + 2r(w + h) + πr².
+  EXPECT_NEAR(area(evaluate(*model.regions[1], 1e-9)), 4.0 + 8.0 + pi, 1e-6);
+  EXPECT_NEAR(area(evaluate(*model.regions[3], 1e-9)), 6.0 + 10.0 + pi, 1e-6);
+}
+
 TEST(CsgImport, ALowFnIsAShapeEitherWay) {
   // cylinder($fn = 6): a hexagonal prism, exact as such.
   for (CsgFacets facets : {CsgFacets::Exact, CsgFacets::OpenScad}) {
