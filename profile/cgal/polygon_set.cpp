@@ -39,7 +39,7 @@ using CountedArrangement =
     CGAL::Arrangement_2<CountedTraits, CGAL::Arr_face_extended_dcel<CountedTraits, int>>;
 constexpr int kUnknownWinding = std::numeric_limits<int>::min();
 
-enum class FillRule { EvenOdd, NonZero };
+enum class FillRule { EvenOdd, NonZero, Positive };
 
 void requireFinite(double v, const char* what) {
   if (std::isfinite(v)) return;
@@ -288,7 +288,9 @@ std::vector<ArcPolygonWithHoles> filledPolygons(const std::vector<CountedPiece>&
   }
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
     const int winding = f->data();
-    const bool filled = rule == FillRule::EvenOdd ? (winding & 1) != 0 : winding != 0;
+    const bool filled = rule == FillRule::EvenOdd   ? (winding & 1) != 0
+                        : rule == FillRule::NonZero ? winding != 0
+                                                    : winding > 0;
     f->set_data(filled ? 1 : 0);
   }
   std::vector<CountedArrangement::Halfedge_handle> inner;
@@ -445,6 +447,12 @@ Profile profileOf(const ArcPolygonSet& set) {
 Profile evaluate(const Region& region, double ellipseTolerance) {
   requireTolerance("a region's ellipses", ellipseTolerance);
   return profileOf(polygonSetOf(region, ellipseTolerance));
+}
+
+Profile positiveWindingFill(const std::vector<CircleSegment>& curves) {
+  std::vector<CountedPiece> pieces;
+  for (const CircleSegment& c : curves) addPieces(c, 1, pieces);
+  return profileOfPolygons(filledPolygons(pieces, FillRule::Positive));
 }
 
 Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {

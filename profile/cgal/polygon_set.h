@@ -40,6 +40,11 @@ std::vector<std::vector<CircleSegment>> exactLoops(const Profile& profile, doubl
 
 ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance);
 
+// The points about which closed chains of curves (each point left as
+// often as it is reached) wind a positive number of times, each curve
+// counted the way it runs, as a profile (profileOf's conventions).
+Profile positiveWindingFill(const std::vector<CircleSegment>& curves);
+
 // The set's boundary as a profile: outer loops counterclockwise, holes
 // clockwise; pieces of one segment or circle that follow each other joined
 // into one edge; edges too short for doubles to tell apart dropped.

@@ -13,6 +13,9 @@
 // mitre's bisector: Clipper's square joins, which OpenSCAD's chamfer uses). Where an arc meets a
 // corner, its tangent line there is what the mitre extends.
 //
+// Rounded offsets of regions bounded by segments alone are made by the
+// convolution method instead, which is faster (convolutionOffset, below).
+//
 // The strips' corners are rational points exactly on the circles they
 // meet (the tangent half-angle substitution gives rational points of a
 // circle with a rational radius), so that strips and discs meet without
@@ -323,6 +326,98 @@ ArcPolygonSet boundaryBand(const Profile& boundary, double d, int side, Corners 
   return set;
 }
 
+// A rounded offset of a boundary of segments, made as Minkowski sums with
+// a disc are by the convolution method (Wein, "Exact and efficient
+// construction of planar Minkowski sums using the convolution method",
+// ESA 2006): every edge moved by |d| along its normal on the offset's
+// side, and the moved edges of each corner joined by the arc of radius |d|
+// about it that turns the way the loop turns there (backwards, where the
+// loop turns away from the offset's side). The curves cross one another
+// only where the offset folds over itself, not at every corner as the
+// band's pieces overlap, so the arrangement is about as large as the
+// boundary.
+//
+// The offset is then the set of points about which these curves wind a
+// positive number of times. Grow the disc about x from a point to radius
+// |d|: the winding number changes only as the moved curves pass x, and it
+// counts the pieces of the region within the disc less their holes (the
+// convolution's winding numbers, after Guibas, Ramshaw and Stolfi, "A
+// kinetic framework for computational geometry", FOCS 1983). A piece has
+// a hole only where a hole of the region lies wholly within the disc, so
+// the rule is exact when no hole is that small. For an inset (d < 0, the
+// edges moved inwards) the curves are those of the complement run
+// backwards, and the same holds of the region's islands.
+// segmentsWithoutSmallLoops says when it may be used; the tests hold both
+// to distances from the boundary.
+Profile convolutionOffset(const Profile& boundary, double d) {
+  const FT r(std::abs(d));
+  std::vector<CircleSegment> curves;
+  struct MovedEdge {
+    dvec2 to, tangent;
+    ExactPoint start, end;
+  };
+  std::vector<MovedEdge> moved;
+  for (const ProfileLoop& loop : boundary.loops) {
+    moved.clear();
+    for (const ProfileEdge& e : loop.edges) {
+      if (e.from == e.to) continue;
+      const dvec2 t = glm::normalize(e.to - e.from);
+      // The angle of the right normal (away from the region), or of the
+      // left one for an inset.
+      const double angle = std::atan2(-t.x, t.y) + (d > 0.0 ? 0.0 : kPi);
+      moved.push_back({e.to, t, pointOnCircle(exactPoint(e.from), r, angle),
+                       pointOnCircle(exactPoint(e.to), r, angle)});
+    }
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      const MovedEdge& in = moved[i];
+      const MovedEdge& out = moved[(i + 1) % moved.size()];
+      curves.emplace_back(in.start, in.end);
+      if (in.end == out.start) continue;
+      // Where the loop hardly turns, the chord: which way so short an arc
+      // runs would be rounding's to say.
+      const double turn =
+          std::atan2(cross(in.tangent, out.tangent), glm::dot(in.tangent, out.tangent));
+      if (std::abs(turn) < 1e-9) {
+        curves.emplace_back(in.end, out.start);
+        continue;
+      }
+      const PlaneKernel::Circle_2 circle(exactPoint(in.to), r * r,
+                                         turn > 0.0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE);
+      curves.emplace_back(circle, onePoint(in.end), onePoint(out.start));
+    }
+  }
+  return positiveWindingFill(curves);
+}
+
+// May a rounded offset by d take the convolution? Every edge a segment,
+// and no loop that could lie within a disc of radius |d|: a hole for a
+// growing offset, an island for a shrinking one. A hole that lies within
+// such a disc about its box's centre is filled by the offset whole, so it
+// is left out of the boundary; one whose box is less than 2|d| wide and
+// tall, but does not lie in that disc, might still fit in another.
+bool segmentsWithoutSmallLoops(Profile& boundary, double d) {
+  const double r = std::abs(d);
+  std::vector<ProfileLoop> kept;
+  for (ProfileLoop& loop : boundary.loops) {
+    double twiceArea = 0.0;
+    ProfileBounds box;
+    for (const ProfileEdge& e : loop.edges) {
+      if (e.kind != ProfileEdge::Kind::Segment) return false;
+      twiceArea += cross(e.from, e.to);
+      box.include(e.from);
+    }
+    const bool hole = twiceArea < 0.0;
+    const dvec2 size = box.hi - box.lo;
+    if (hole != (d > 0.0) || std::max(size.x, size.y) > 2.0 * r) {
+      kept.push_back(std::move(loop));
+      continue;
+    }
+    if (!hole || 0.5 * glm::length(size) >= r) return false;
+  }
+  boundary.loops = std::move(kept);
+  return true;
+}
+
 void requireFiniteOffset(double d, const char* name) {
   if (std::isfinite(d)) return;
   std::ostringstream msg;
@@ -335,6 +430,9 @@ Profile offsetBy(const Region& region, double d, Corners corners, double ellipse
   ArcPolygonSet set = polygonSetOf(region, ellipseTolerance);
   if (d == 0.0) return profileOf(set);
   const Profile boundary = profileOf(set);
+  if (Profile segments = boundary;
+      corners == Corners::Round && segmentsWithoutSmallLoops(segments, d))
+    return convolutionOffset(segments, d);
   const ArcPolygonSet band = boundaryBand(boundary, std::abs(d), d > 0.0 ? 1 : -1, corners);
   if (d > 0.0)
     set.join(band);

@@ -392,6 +392,48 @@ TEST(RegionOffset, RoundedInsetKeepsSharpCorners) {
   EXPECT_NEAR(area(q), 1.5 * 1.5 - 1.0 + (1.0 - kPi / 4.0) * r * r, 1e-12);
 }
 
+TEST(RegionOffset, AnLGrowsByStripsAndCornersLessTheOverlapAtItsInnerCorner) {
+  // A polygon grown by r less than its features: its area, r times its
+  // perimeter, a sector of the disc of radius r at each outer corner (five
+  // quarter discs), less the square r² where the strips of the inner
+  // corner's edges overlap.
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  const double r = 0.25;
+  const Profile p = offsetRounded(*l, r, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_EQ(p.loops[0].edges.size(), 11u);  // 6 sides, 5 arcs, the inner corner sharp
+  EXPECT_NEAR(area(p), 3.0 + 8.0 * r + (1.25 * kPi - 1.0) * r * r, 1e-12);
+  expectClosed(p);
+}
+
+TEST(RegionOffset, AHoleNarrowerThanTwiceTheOffsetCloses) {
+  const RegionPtr framed = subtract(rect(0, 0, 2, 2), rect(0.8, 0.8, 1.2, 1.2));
+  const Profile open = offsetRounded(*framed, 0.1, kTolerance);
+  ASSERT_EQ(open.loops.size(), 2u);
+  // The hole shrinks to a square of side 0.2, its corners kept sharp.
+  EXPECT_NEAR(area(open), 4.0 + 8.0 * 0.1 + kPi * 0.01 - 0.2 * 0.2, 1e-12);
+  const Profile closed = offsetRounded(*framed, 0.3, kTolerance);
+  ASSERT_EQ(closed.loops.size(), 1u);
+  EXPECT_NEAR(area(closed), 4.0 + 8.0 * 0.3 + kPi * 0.09, 1e-12);
+  // A hole 0.5 wide (its corners 0.35 from its centre) closes at 0.3 too.
+  const RegionPtr wider = subtract(rect(0, 0, 2, 2), rect(0.75, 0.75, 1.25, 1.25));
+  const Profile filled = offsetRounded(*wider, 0.3, kTolerance);
+  ASSERT_EQ(filled.loops.size(), 1u);
+  EXPECT_NEAR(area(filled), 4.0 + 8.0 * 0.3 + kPi * 0.09, 1e-12);
+}
+
+TEST(RegionOffset, AnIslandNarrowerThanTwiceTheInsetVanishes) {
+  // Its square's corners are 0.28 or 0.35 from its centre, within 0.4 or
+  // not: either way no point of it is 0.3 from the outside.
+  for (const double side : {0.4, 0.5}) {
+    const RegionPtr islands =
+        Region::boolean(Region::Op::Union, {rect(0, 0, 3, 3), rect(5, 5, 5 + side, 5 + side)});
+    const Profile p = offsetRounded(*islands, -0.3, kTolerance);
+    ASSERT_EQ(p.loops.size(), 1u) << side;
+    EXPECT_NEAR(area(p), 2.4 * 2.4, 1e-12) << side;
+  }
+}
+
 TEST(RegionOffset, RoundedOffsetOfAHoleAndAnArc) {
   // A washer grown by r: the outer circle grows, the hole shrinks.
   const RegionPtr washer = subtract(disc({0, 0}, 3), disc({0, 0}, 1));
@@ -548,6 +590,55 @@ TEST(RegionOffset, GrownUnionsOfDiscsAndBoxesHoldWhatIsNear) {
       for (const auto& distance : distances) e = std::min(e, distance(p));
       if (std::abs(e - r) < 1e-9) continue;
       ASSERT_EQ(grown.contains(p), e < r)
+          << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+    }
+  }
+}
+
+TEST(RegionOffset, OffsetsOfFramesAndNotchesHoldWhatIsNear) {
+  // Unions of boxes less boxes (holes, notches, islands of every size
+  // against the offset), grown and shrunk: a point is in offset(r) exactly
+  // when it is within r of the region, and in offset(−r) exactly when it is
+  // in the region more than r from its boundary.
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> u(-2.0, 2.0), size(0.1, 1.5), amount(0.02, 0.6);
+  for (int round = 0; round < 16; ++round) {
+    std::vector<RegionPtr> parts, cuts;
+    for (int i = 0; i < 2 + round % 3; ++i) {
+      const dvec2 c(u(random), u(random));
+      parts.push_back(rect(c.x, c.y, c.x + size(random), c.y + size(random)));
+    }
+    for (int i = 0; i < 1 + round % 3; ++i) {
+      const dvec2 c(u(random), u(random));
+      cuts.push_back(rect(c.x, c.y, c.x + 0.5 * size(random), c.y + 0.5 * size(random)));
+    }
+    const RegionPtr region = subtract(Region::boolean(Region::Op::Union, parts),
+                                      Region::boolean(Region::Op::Union, cuts));
+    const Profile exact = evaluate(*region, kTolerance);
+    const auto toBoundary = [&](const dvec2& p) {
+      double best = INFINITY;
+      for (const ProfileLoop& loop : exact.loops)
+        for (const ProfileEdge& e : loop.edges) {
+          const dvec2 ab = e.to - e.from;
+          const double t = std::clamp(glm::dot(p - e.from, ab) / glm::dot(ab, ab), 0.0, 1.0);
+          best = std::min(best, glm::length(p - e.from - t * ab));
+        }
+      return best;
+    };
+    const double r = amount(random);
+    const Profile grown = offsetRounded(*region, r, kTolerance);
+    const Profile shrunk = offsetRounded(*region, -r, kTolerance);
+    expectClosed(grown);
+    expectClosed(shrunk);
+    std::uniform_real_distribution<double> w(-3.0, 4.0);
+    for (int i = 0; i < 1500; ++i) {
+      const dvec2 p(w(random), w(random));
+      const double e = toBoundary(p);
+      if (std::abs(e - r) < 1e-9) continue;
+      const bool in = exact.contains(p);
+      ASSERT_EQ(grown.contains(p), in || e < r)
+          << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+      ASSERT_EQ(shrunk.contains(p), in && e > r)
           << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
     }
   }
