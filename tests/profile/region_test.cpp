@@ -595,6 +595,70 @@ TEST(RegionOffset, GrownUnionsOfDiscsAndBoxesHoldWhatIsNear) {
   }
 }
 
+// The distance from p to an evaluated profile's boundary: its segments and
+// circular arcs.
+double distanceToBoundary(const Profile& profile, const dvec2& p) {
+  double best = INFINITY;
+  for (const ProfileLoop& loop : profile.loops)
+    for (const ProfileEdge& e : loop.edges) {
+      best = std::min({best, glm::length(p - e.from), glm::length(p - e.to)});
+      if (e.kind == ProfileEdge::Kind::Segment) {
+        const dvec2 ab = e.to - e.from;
+        const double t = std::clamp(glm::dot(p - e.from, ab) / glm::dot(ab, ab), 0.0, 1.0);
+        best = std::min(best, glm::length(p - e.from - t * ab));
+        continue;
+      }
+      // An arc: the radius through p, where it meets the arc.
+      const double radius = std::sqrt(std::abs(glm::determinant(e.axes)));
+      const dvec2 v = p - e.center;
+      const double lo = std::min(e.angle0, e.angle1), hi = std::max(e.angle0, e.angle1);
+      double theta = std::atan2(v.y, v.x);  // brought into [lo, lo + 2π)
+      theta = lo + std::fmod(std::fmod(theta - lo, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
+      if (theta <= hi) best = std::min(best, std::abs(glm::length(v) - radius));
+    }
+  return best;
+}
+
+TEST(RegionOffset, OffsetsOfDiscsAndBoxesLessDiscsHoldWhatIsNear) {
+  // As below, with arcs: unions of discs and boxes less discs, grown and
+  // shrunk, then opened and closed (the second offset meets arcs whose
+  // radius is its own).
+  std::mt19937 random(53);
+  std::uniform_real_distribution<double> u(-2.0, 2.0), size(0.1, 1.2), amount(0.02, 0.5);
+  for (int round = 0; round < 16; ++round) {
+    std::vector<RegionPtr> parts, cuts;
+    for (int i = 0; i < 2 + round % 3; ++i) {
+      const dvec2 c(u(random), u(random));
+      const double s = size(random);
+      parts.push_back(i % 2 ? rect(c.x, c.y, c.x + s, c.y + 0.7 * s) : disc(c, s));
+    }
+    for (int i = 0; i < round % 3; ++i)
+      cuts.push_back(disc({u(random), u(random)}, 0.4 * size(random)));
+    RegionPtr region = Region::boolean(Region::Op::Union, parts);
+    if (!cuts.empty()) region = subtract(region, Region::boolean(Region::Op::Union, cuts));
+    const double r = amount(random);
+    for (const RegionPtr& shape : {region, Region::leaf(offsetRounded(*region, r, kTolerance)),
+                                   Region::leaf(offsetRounded(*region, -r, kTolerance))}) {
+      const Profile exact = evaluate(*shape, kTolerance);
+      const Profile grown = offsetRounded(*shape, r, kTolerance);
+      const Profile shrunk = offsetRounded(*shape, -r, kTolerance);
+      expectClosed(grown);
+      expectClosed(shrunk);
+      std::uniform_real_distribution<double> w(-3.5, 3.5);
+      for (int i = 0; i < 1000; ++i) {
+        const dvec2 p(w(random), w(random));
+        const double e = distanceToBoundary(exact, p);
+        if (std::abs(e - r) < 1e-9) continue;
+        const bool in = exact.contains(p);
+        ASSERT_EQ(grown.contains(p), in || e < r)
+            << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+        ASSERT_EQ(shrunk.contains(p), in && e > r)
+            << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+      }
+    }
+  }
+}
+
 TEST(RegionOffset, OffsetsOfFramesAndNotchesHoldWhatIsNear) {
   // Unions of boxes less boxes (holes, notches, islands of every size
   // against the offset), grown and shrunk: a point is in offset(r) exactly
@@ -615,32 +679,93 @@ TEST(RegionOffset, OffsetsOfFramesAndNotchesHoldWhatIsNear) {
     const RegionPtr region = subtract(Region::boolean(Region::Op::Union, parts),
                                       Region::boolean(Region::Op::Union, cuts));
     const Profile exact = evaluate(*region, kTolerance);
-    const auto toBoundary = [&](const dvec2& p) {
+    const auto toBoundary = [&](const dvec2& p) { return distanceToBoundary(exact, p); };
+    // Every edge is axis-parallel and every corner square, so the mitred
+    // offset is the points within r of the region in the largest of the
+    // axes' distances (the Minkowski sum with a square), and the chamfer
+    // lies between the rounding and the mitre.
+    const auto toBoundaryAlongAxes = [&](const dvec2& p) {
       double best = INFINITY;
       for (const ProfileLoop& loop : exact.loops)
         for (const ProfileEdge& e : loop.edges) {
-          const dvec2 ab = e.to - e.from;
-          const double t = std::clamp(glm::dot(p - e.from, ab) / glm::dot(ab, ab), 0.0, 1.0);
-          best = std::min(best, glm::length(p - e.from - t * ab));
+          const dvec2 lo = glm::min(e.from, e.to), hi = glm::max(e.from, e.to);
+          const dvec2 gap = glm::max(glm::max(lo - p, p - hi), dvec2(0.0));
+          best = std::min(best, std::max(gap.x, gap.y));
         }
       return best;
     };
     const double r = amount(random);
     const Profile grown = offsetRounded(*region, r, kTolerance);
     const Profile shrunk = offsetRounded(*region, -r, kTolerance);
-    expectClosed(grown);
-    expectClosed(shrunk);
+    const Profile mitreOut = offsetDelta(*region, r, false, kTolerance);
+    const Profile mitreIn = offsetDelta(*region, -r, false, kTolerance);
+    const Profile chamferOut = offsetDelta(*region, r, true, kTolerance);
+    const Profile chamferIn = offsetDelta(*region, -r, true, kTolerance);
+    for (const Profile* q : {&grown, &shrunk, &mitreOut, &mitreIn, &chamferOut, &chamferIn})
+      expectClosed(*q);
     std::uniform_real_distribution<double> w(-3.0, 4.0);
     for (int i = 0; i < 1500; ++i) {
       const dvec2 p(w(random), w(random));
-      const double e = toBoundary(p);
-      if (std::abs(e - r) < 1e-9) continue;
+      const double e = toBoundary(p), square = toBoundaryAlongAxes(p);
+      if (std::abs(e - r) < 1e-9 || std::abs(square - r) < 1e-9) continue;
       const bool in = exact.contains(p);
       ASSERT_EQ(grown.contains(p), in || e < r)
           << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
       ASSERT_EQ(shrunk.contains(p), in && e > r)
           << round << ": " << p.x << ", " << p.y << " at " << e << " of " << r;
+      ASSERT_EQ(mitreOut.contains(p), in || square < r)
+          << round << ": " << p.x << ", " << p.y << " at " << square << " of " << r;
+      ASSERT_EQ(mitreIn.contains(p), in && square > r)
+          << round << ": " << p.x << ", " << p.y << " at " << square << " of " << r;
+      if (grown.contains(p)) ASSERT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
+      if (chamferOut.contains(p)) ASSERT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
+      if (mitreIn.contains(p)) ASSERT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
+      if (chamferIn.contains(p)) ASSERT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
     }
+  }
+}
+
+TEST(RegionOffset, AnOpeningRoundsTheOuterCornersOnly) {
+  // An L shrunk by r and grown by r again: each of its five outer corners
+  // loses the square r² less a quarter disc; the inner corner, which the
+  // inset rounds with an arc about it, comes back sharp (that arc moves
+  // onto its centre, the corner).
+  const RegionPtr l = subtract(rect(0, 0, 2, 2), rect(1, 1, 3, 3));
+  for (const double r : {0.25, 0.125}) {
+    const RegionPtr shrunk = Region::leaf(offsetRounded(*l, -r, kTolerance));
+    const Profile opened = offsetRounded(*shrunk, r, kTolerance);
+    ASSERT_EQ(opened.loops.size(), 1u);
+    EXPECT_NEAR(area(opened), 3.0 - 5.0 * (1.0 - kPi / 4.0) * r * r, 1e-12) << r;
+    expectClosed(opened);
+  }
+}
+
+TEST(RegionOffset, AGrowthShrunkAgainKeepsItsArcs) {
+  // A bar and a disc that touch at one point (wall_hook.lua's plate and
+  // cup), grown by 2 and shrunk by 2 again: the disc's far side comes back
+  // to its radius, rounded or mitred, and the rounded closing holds the
+  // region (the mitre may cut into the cusp it filled). Offsets made of
+  // a band of pieces once left a ring 14 to 16 from the centre there.
+  const RegionPtr s = Region::boolean(Region::Op::Union, {rect(0, 0, 6, 60), disc({20, 14}, 14)});
+  const RegionPtr grown = Region::leaf(offsetRounded(*s, 2.0, kTolerance));
+  const Profile region = evaluate(*s, kTolerance), outer = evaluate(*grown, kTolerance);
+  const Profile rounded = offsetRounded(*grown, -2.0, kTolerance);
+  const Profile mitred = offsetDelta(*grown, -2.0, false, kTolerance);
+  for (int i = 0; i <= 60; ++i) {
+    const double a = (i - 30) * kPi / 60.0;  // the side away from the bar
+    for (const double radius : {13.9, 14.1, 15.0, 15.9}) {
+      const dvec2 p = dvec2(20, 14) + radius * dvec2(std::cos(a), std::sin(a));
+      EXPECT_EQ(rounded.contains(p), radius < 14.0) << radius << " at " << a;
+      EXPECT_EQ(mitred.contains(p), radius < 14.0) << radius << " at " << a;
+    }
+  }
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> x(-3.0, 37.0), y(-3.0, 63.0);
+  for (int i = 0; i < 3000; ++i) {
+    const dvec2 p(x(random), y(random));
+    if (region.contains(p)) EXPECT_TRUE(rounded.contains(p)) << p.x << ", " << p.y;
+    if (rounded.contains(p) || mitred.contains(p))
+      EXPECT_TRUE(outer.contains(p)) << p.x << ", " << p.y;
   }
 }
 
