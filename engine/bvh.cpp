@@ -45,6 +45,10 @@ class BvhBuilder {
   // them that are inner nodes, and so on (fold).
   std::vector<Bvh::Node> wideNodes() {
     std::vector<Bvh::Node> nodes;
+    // Each wide node takes at least one inner node of the binary tree, of
+    // which there are fewer than half its nodes: room for all at once, so
+    // that a tree of millions is not copied again at each doubling.
+    nodes.reserve(binary_.size() / 2 + 1);
     std::vector<std::uint32_t> root{0};
     if (binary_[0].count == 0) root = {binary_[0].start, binary_[0].start + 1};
     fold(root, nodes);

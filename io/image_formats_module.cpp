@@ -98,7 +98,10 @@ bool keepsFloat(const std::string& formatName) {
 std::string outputProblem(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
+  // OpenImageIO's "term" writer draws on the terminal, its "null" one
+  // drops the pixels: neither makes a file.
+  if (!out || out->format_name() == std::string("term") ||
+      out->format_name() == std::string("null")) {
     (void)OIIO::geterror();
     return "unknown image format '" + ext + "'";
   }

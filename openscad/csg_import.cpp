@@ -33,8 +33,14 @@ namespace csgray::detail {
 int openscadFragments(double r, double fn, double fa, double fs) {
   // OpenSCAD's GRID_FINE: below it a circle is a point, made a triangle.
   if (r < 0.00000095367431640625) return 3;
-  if (fn > 0.0) return std::max(int(std::min(fn, 1e6)), 3);
-  return int(std::ceil(std::max(std::min(360.0 / fa, 2.0 * std::numbers::pi * r / fs), 5.0)));
+  const double n =
+      fn > 0.0 ? std::max(fn, 3.0)
+               : std::ceil(std::max(std::min(360.0 / fa, 2.0 * std::numbers::pi * r / fs), 5.0));
+  if (!(n <= kMaxOpenScadFragments))
+    throw std::invalid_argument(
+        "$fn, $fa and $fs ask for " + std::to_string(std::llround(std::min(n, 1e18))) +
+        " sides of a circle, more than " + std::to_string(kMaxOpenScadFragments));
+  return int(n);
 }
 
 namespace {
@@ -402,6 +408,7 @@ class Importer {
   // each at the angles 360°·j/n, a ring of radius 0 a single point: caps at
   // the first and the last ring, quads (triangles at a point) between.
   static SolidPtr ringSolid(const std::vector<dvec2>& rings, int n) {
+    requireOpenScadTriangles(2.0 * double(n) * double(rings.size()));
     std::vector<dvec3> points;
     std::vector<std::size_t> first;
     for (const dvec2& ring : rings) {

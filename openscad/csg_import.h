@@ -62,7 +62,10 @@ CsgModel importCsgFile(const std::string& path, const CsgImportOptions& options)
 
 // OpenSCAD's number of segments of a circle of radius r (its
 // get_fragments_from_r): max($fn, 3) for $fn > 0, else
-// ceil(max(min(360/$fa, 2πr/$fs), 5)).
+// ceil(max(min(360/$fa, 2πr/$fs), 5)). Throws std::invalid_argument when
+// that is more than kMaxOpenScadFragments (a $fa or $fs near 0 asks for
+// billions).
 int openscadFragments(double r, double fn, double fa, double fs);
+constexpr int kMaxOpenScadFragments = 1'000'000;
 
 }  // namespace csgray::detail

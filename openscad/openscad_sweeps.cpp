@@ -70,14 +70,6 @@ int diagonalSlices(double delta2, double height, const OpenScadResolution& res) 
   return std::max(int(std::ceil(std::sqrt(delta2 + height * height) / res.fs)), 1);
 }
 
-// The importer names the node in front of the message.
-void requireBudget(double triangles) {
-  if (triangles > double(kMaxTessellationTriangles))
-    throw std::invalid_argument("OpenSCAD's polygons would take " +
-                                std::to_string(std::llround(triangles)) + " triangles, more than " +
-                                std::to_string(kMaxTessellationTriangles));
-}
-
 std::size_t pointCount(const SweepLoops& loops) {
   std::size_t n = 0;
   for (const auto& loop : loops) n += loop.size();
@@ -93,6 +85,13 @@ int shorter(const dvec2& first, const dvec2& second) {
 }
 
 }  // namespace
+
+void requireOpenScadTriangles(double triangles) {
+  if (triangles > double(kMaxTessellationTriangles))
+    throw std::invalid_argument("OpenSCAD's polygons would take " +
+                                std::to_string(std::llround(triangles)) + " triangles, more than " +
+                                std::to_string(kMaxTessellationTriangles));
+}
 
 int openscadExtrudeSlices(const SweepLoops& loops, const OpenScadLinearExtrude& e,
                           const OpenScadResolution& res) {
@@ -128,7 +127,7 @@ SolidPtr openscadLinearExtrusion(const SweepLoops& loops, const OpenScadLinearEx
         "a scale of 0 on one axis flattens the top to a segment, which OpenSCAD's polygons "
         "cannot close");
   const int slices = openscadExtrudeSlices(loops, e, res);
-  requireBudget(2.0 * double(pointCount(loops)) * (slices + 1));
+  requireOpenScadTriangles(2.0 * double(pointCount(loops)) * (slices + 1));
   const double z0 = e.center ? -0.5 * e.height : 0.0;
 
   TriangleMesh mesh;
@@ -183,7 +182,7 @@ SolidPtr openscadRevolution(const SweepLoops& loops, double angleDegrees,
   for (const auto& loop : loops)
     for (const dvec2& u : loop) reach = std::max(reach, u.x);
   const int steps = openscadRevolutionSteps(reach, angleDegrees, res);
-  requireBudget(2.0 * double(pointCount(loops)) * (steps + 1));
+  requireOpenScadTriangles(2.0 * double(pointCount(loops)) * (steps + 1));
   return meshShape(revolvedLoops(loops, angleDegrees, steps, angleDegrees >= 360.0),
                    "rotate_extrude");
 }

@@ -17,6 +17,11 @@
 
 namespace csgray::detail {
 
+// Refuses a polyhedron of OpenSCAD's polygons of more triangles than a
+// tessellation may have (kMaxTessellationTriangles): throws
+// std::invalid_argument, to which the importer adds the node.
+void requireOpenScadTriangles(double triangles);
+
 // OpenSCAD's special variables of a node.
 struct OpenScadResolution {
   double fn = 0.0, fa = 12.0, fs = 2.0;

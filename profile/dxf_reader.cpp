@@ -78,6 +78,11 @@ struct OpenPolyline {
 };
 
 constexpr int kMaxBlockDepth = 32;
+// Edges a drawing may make, and blocks it may insert, the copies INSERT
+// makes included: a few blocks that each insert the one before ten times
+// would otherwise make billions.
+constexpr std::size_t kMaxEdges = 200000;
+constexpr std::size_t kMaxInserts = 1000000;
 
 class DxfReader {
  public:
@@ -132,7 +137,8 @@ class DxfReader {
     map.linear = dmat2(options_.scale);
     map.offset = -options_.origin * options_.scale;
     std::vector<ProfileEdge> edges;
-    collect(drawing_, map, 0, edges);
+    std::size_t inserted = 0;
+    collect(drawing_, map, 0, edges, inserted);
     Profile profile = joined(edges);
     if (profile.loops.empty()) {
       std::string which =
@@ -455,10 +461,14 @@ class DxfReader {
   }
 
   // The drawing's edges and those of the blocks it inserts, mapped.
-  void collect(const Drawing& d, const Affine2& map, int depth,
-               std::vector<ProfileEdge>& out) const {
+  void collect(const Drawing& d, const Affine2& map, int depth, std::vector<ProfileEdge>& out,
+               std::size_t& inserted) const {
     for (const ProfileEdge& e : d.edges) out.push_back(e.transformed(map));
     for (const Drawing::Insert& insert : d.inserts) {
+      if (out.size() > kMaxEdges || ++inserted > kMaxInserts)
+        fail(insert.line, "more than " + std::to_string(kMaxEdges) + " edges or " +
+                              std::to_string(kMaxInserts) +
+                              " inserted blocks (with the copies INSERT makes)");
       auto it = blocks_.find(insert.block);
       if (it == blocks_.end())
         fail(insert.line,
@@ -468,7 +478,7 @@ class DxfReader {
                               " (a block that inserts itself?)");
       Affine2 toBase;
       toBase.offset = -it->second.base;
-      collect(it->second, toBase.then(insert.map).then(map), depth + 1, out);
+      collect(it->second, toBase.then(insert.map).then(map), depth + 1, out, inserted);
     }
   }
 

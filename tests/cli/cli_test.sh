@@ -149,6 +149,12 @@ expect_failure "malformed size" "$work/out.png" render "$work/part.lua" -o "$wor
 expect_failure "negative threads" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --threads -1
 expect_failure "unknown format" "$work/out.xyz" render "$work/part.lua" -o "$work/out.xyz"
 expect_in_stderr "unknown format" "unknown image format '.xyz'"
+# OpenImageIO's terminal and null writers make no file: not image formats.
+for ext in term null; do
+  expect_failure "$ext format" "$work/out.$ext" render "$work/part.lua" -o "$work/out.$ext" --size 8x6
+  expect_in_stderr "$ext format" "unknown image format '.$ext'"
+  if [ -s "$work/stdout" ]; then fail "$ext format: wrote to stdout"; else pass; fi
+done
 expect_failure "no extension" "$work/out" render "$work/part.lua" -o "$work/out"
 expect_failure "missing folder" "$work/no/such/out.png" render "$work/part.lua" -o "$work/no/such/out.png"
 expect_in_stderr "missing folder" "cannot write $work/no/such/out.png: folder $work/no/such does not exist"

@@ -167,6 +167,36 @@ TEST(CsgImport, AnOffsetWrittenAlikeTwiceIsMadeOnce) {
   EXPECT_NEAR(area(evaluate(*model.regions[3], 1e-9)), 6.0 + 10.0 + pi, 1e-6);
 }
 
+// OpenSCAD's polygons of more sides or triangles than csgray makes are
+// refused with one line, before any memory is taken: a $fa and $fs near 0
+// ask for billions of sides, whose count once overflowed an int.
+TEST(CsgImport, OpenScadPolygonsPastTheBudgetAreRefused) {
+  const auto error = [](const std::string& text) {
+    try {
+      importText(text, CsgFacets::OpenScad);
+    } catch (const CsgError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error("sphere($fn = 0, $fa = 1e-9, $fs = 1e-9, r = 1);"),
+            "part.csg:1: sphere: $fn, $fa and $fs ask for 6283185308 sides of a circle, more "
+            "than 1000000");
+  EXPECT_EQ(error("\ncylinder($fn = 1e300, h = 1, r1 = 1, r2 = 1);"),
+            "part.csg:2: cylinder: $fn, $fa and $fs ask for 1000000000000000000 sides of a "
+            "circle, more than 1000000");
+  EXPECT_EQ(error("circle($fn = 0, $fa = 1e-9, $fs = 1e-9, r = 1);"),
+            "part.csg:1: circle: $fn, $fa and $fs ask for 6283185308 sides of a circle, more "
+            "than 1000000");
+  // 100 000 sides: a circle may have them, a sphere of 50 000 rings not.
+  EXPECT_EQ(error("circle($fn = 100000, r = 1);"), "(no error)");
+  EXPECT_EQ(error("sphere($fn = 100000, r = 1);"),
+            "part.csg:1: sphere: OpenSCAD's polygons would take 10000000000 triangles, more "
+            "than 20000000");
+  // The exact import takes no polygons.
+  EXPECT_EQ(importError("sphere($fn = 0, $fa = 1e-9, $fs = 1e-9, r = 1);"), "(no error)");
+}
+
 TEST(CsgImport, ALowFnIsAShapeEitherWay) {
   // cylinder($fn = 6): a hexagonal prism, exact as such.
   for (CsgFacets facets : {CsgFacets::Exact, CsgFacets::OpenScad}) {

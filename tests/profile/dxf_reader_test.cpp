@@ -243,6 +243,25 @@ TEST(DxfReader, BadFilesAreOneLineErrors) {
             "part.dxf:11: blocks nested deeper than 32 (a block that inserts itself?)");
   EXPECT_EQ(error(drawing(entity("CIRCLE", {{40, "-1"}}))),
             "part.dxf:10: a CIRCLE's radius must be > 0");
+  // Blocks that insert the one before ten times: a small file of a billion
+  // circles, or of a billion inserts of nothing, stops at the insert that
+  // goes past the limit.
+  for (const std::string& first :
+       {entity("CIRCLE", {{10, "0"}, {20, "0"}, {40, "1"}}), std::string()}) {
+    std::string blocks = entity("BLOCK", {{2, "b0"}}) + first + entity("ENDBLK", {});
+    for (int level = 1; level < 10; ++level) {
+      blocks += entity("BLOCK", {{2, "b" + std::to_string(level)}});
+      for (int k = 0; k < 10; ++k)
+        blocks += entity("INSERT", {{2, "b" + std::to_string(level - 1)}, {10, num(3.0 * k)}});
+      blocks += entity("ENDBLK", {});
+    }
+    const std::string message = error(drawing(entity("INSERT", {{2, "b9"}}), blocks));
+    EXPECT_NE(message.find(": more than 200000 edges or 1000000 inserted blocks (with the copies "
+                           "INSERT makes)"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.rfind("part.dxf:", 0), 0u) << message;
+  }
   EXPECT_EQ(error(drawing(line(0, 0, 1, 0))),
             "part.dxf: the drawing draws no closed outline (its layers: 0)");
 }

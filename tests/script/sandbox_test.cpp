@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <new>
 
 #include "engine/boolean.h"
@@ -181,6 +183,41 @@ TEST(Sandbox, MemoryLimitCannotBeCaught) {
               "evil.lua:" + std::to_string(c.line) + ": script exceeded the memory limit of 64 MiB")
         << c.source;
   }
+}
+
+// A height map is charged at what building its mesh takes, before it is
+// built: one past the limit stops at the call, without taking the memory
+// first, though the finished mesh would be within it.
+TEST(Sandbox, AHeightMapPastTheMemoryLimitStopsBeforeItsMesh) {
+  ScriptOptions options;
+  int loads = 0;
+  options.loadImage = [&](const std::string&) {
+    ++loads;
+    TextureImage image;
+    image.width = image.height = 180;  // 4·179² triangles: 100 MB to build, 26 MB built
+    image.rgb.assign(std::size_t(180) * 180 * 3, 0.5f);
+    return image;
+  };
+  // The image is read through loadImage; the file need only be there.
+  const std::string folder = testing::TempDir() + "/height_map_limit";
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder + "/hill.png", std::ios::binary)
+      << "\x89PNG\r\n\x1a\n";  // loadImage reads it
+  options.limits = smallLimits();
+  options.folder = folder;
+  const auto error = [&](const std::string& source) {
+    return test::scriptError(source, options, "evil.lua");
+  };
+  EXPECT_EQ(error("local s = sphere(1)\nreturn height_map{file='hill.png'}"),
+            "evil.lua:2: script exceeded the memory limit of 64 MiB");
+  EXPECT_EQ(loads, 1);
+  options.loadImage = [](const std::string&) {
+    TextureImage image;
+    image.width = image.height = 60;  // some 11 MB
+    image.rgb.assign(std::size_t(60) * 60 * 3, 0.5f);
+    return image;
+  };
+  EXPECT_EQ(error("return height_map{file='hill.png'}"), "(no error)");
 }
 
 // A C++ allocation that fails (here in the programs that read meshes and
