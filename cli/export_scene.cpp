@@ -63,13 +63,14 @@ void exportOutline(const Scene& scene, const ExportOptions& options, double scri
 }  // namespace
 
 void checkExportOutput(const ExportOptions& options) {
-  // Throws for an unknown extension.
-  if (!outlineFormatFor(options.output)) meshFormatFor(options.output);
   std::error_code same;
   if (std::filesystem::equivalent(options.script, options.output, same))
     throw std::runtime_error("cannot write " + options.output + ": it is the script itself");
+  // Where the file would go first (a folder has no extension to speak
+  // of), then its format: meshFormatFor throws for an unknown extension.
   if (std::string problem = outputPathProblem(options.output); !problem.empty())
     throw std::runtime_error("cannot write " + options.output + ": " + problem);
+  if (!outlineFormatFor(options.output)) meshFormatFor(options.output);
 }
 
 void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {

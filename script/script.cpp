@@ -70,6 +70,8 @@ Scene runScript(const std::string& source, const std::string& chunkName,
     const std::string shown = shownValue(name);
     if (!isIdentifier(name))
       throw DefineError("-D " + shown + "=...: '" + shown + "' is not a valid Lua name");
+    if (std::find(defined.begin(), defined.end(), name) != defined.end())
+      throw DefineError("-D " + shown + "=...: '" + shown + "' is given twice");
     bool builtIn = lua_getglobal(L, name.c_str()) != LUA_TNIL;
     lua_pop(L, 1);
     if (builtIn) throw DefineError("-D " + shown + "=...: '" + shown + "' is a built-in name");

@@ -166,6 +166,11 @@ TEST(Script, DefinesSetGlobals) {
   options.defines = {{"not a name", "1"}};
   EXPECT_NE(scriptError("return sphere(1)", options).find("not a valid Lua name"),
             std::string::npos);
+  // A name given twice says so (it once said the name was built in).
+  options.defines = {{"width", "20"}, {"width", "30"}};
+  EXPECT_NE(scriptError("return sphere(1)", options).find("'width' is given twice"),
+            std::string::npos)
+      << scriptError("return sphere(1)", options);
 }
 
 // Every error names the file and the line of the call that failed.
