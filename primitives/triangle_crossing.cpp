@@ -1,5 +1,6 @@
 #include "primitives/triangle_crossing.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 
 namespace csgray::detail {
@@ -48,7 +49,27 @@ std::array<Quad, 3> quadCross(const dvec3& a, const dvec3& b, const dvec3& c) {
 
 }  // namespace
 
+// Is x·y − z·w, each factor the difference of two doubles, surely not
+// zero, by doubles alone? Each difference is within a unit roundoff u =
+// 2⁻⁵³ of its exact value, each product then within 3u (and its own
+// rounding), the difference within u more: the computed value is within
+// 6u·(|xy| + |zw|) of the exact one (the standard error analysis of such
+// expressions, as in Shewchuk's static filters), so one larger than 8u
+// times that sum has the exact value's sign and is not zero. Tiny values,
+// where underflow would break the bound, are left to the exact test.
+bool surelyNonZero(double x, double y, double z, double w) {
+  const double p = x * y, q = z * w;
+  const double bound = 8.0 * 0x1p-53 * (std::abs(p) + std::abs(q));
+  return bound > 0x1p-960 && std::abs(p - q) > bound;
+}
+
 bool collinear(const dvec3& a, const dvec3& b, const dvec3& c) {
+  // Most triangles are plainly not flat: decided in doubles (a mesh of
+  // millions of faces spent a fifth of its load in quadruple precision).
+  const dvec3 u = b - a, v = c - a;
+  if (surelyNonZero(u.y, v.z, u.z, v.y) || surelyNonZero(u.z, v.x, u.x, v.z) ||
+      surelyNonZero(u.x, v.y, u.y, v.x))
+    return false;
   const std::array<Quad, 3> n = quadCross(a, b, c);
   return n[0] == 0 && n[1] == 0 && n[2] == 0;
 }

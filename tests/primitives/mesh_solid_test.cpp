@@ -24,6 +24,7 @@
 #include "engine/boolean.h"
 #include "primitives/box.h"
 #include "primitives/sphere.h"
+#include "primitives/triangle_crossing.h"
 #include "script/script.h"
 #include "tessellation/polygon_triangulation.h"
 #include "test_support.h"
@@ -604,6 +605,41 @@ TEST(MeshSolid, NonConvexFaces) {
 
 // A face with a point in the middle of an edge (shared with the face next
 // to it): collinear points are not cut into triangles without area.
+// collinear() decides in doubles where that is sure and exactly where it
+// is not: points on one line are collinear at every scale, one unit in the
+// last place off the line makes a sliver that is not, and so is every
+// random triangle.
+TEST(MeshSolid, CollinearIsExactAtEveryScale) {
+  std::mt19937 random(61);
+  std::uniform_int_distribution<int> small(-40, 40);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const int exponent : {-700, -30, 0, 30, 500}) {
+    const double s = std::ldexp(1.0, exponent);
+    for (int trial = 0; trial < 200; ++trial) {
+      // Small integers times a power of two: every point is exact.
+      const dvec3 a = s * dvec3(small(random), small(random), small(random));
+      const dvec3 d = s * dvec3(small(random), small(random), small(random));
+      const dvec3 b = a + 3.0 * d, c = a - 5.0 * d;
+      EXPECT_TRUE(collinear(a, b, c)) << exponent << " " << trial;
+      EXPECT_TRUE(collinear(a, a, c)) << exponent << " " << trial;
+      if (d == dvec3(0.0)) continue;
+      for (int axis = 0; axis < 3; ++axis) {
+        // (A coordinate of 0 would move to a subnormal: exact only for
+        // points of nearby exponents, as meshes have.)
+        if (c[axis] == 0.0) continue;
+        dvec3 off = c;
+        off[axis] = std::nextafter(off[axis], INFINITY);
+        // Off the line unless the line runs along that axis alone.
+        const bool alongAxis = d[(axis + 1) % 3] == 0.0 && d[(axis + 2) % 3] == 0.0;
+        EXPECT_EQ(collinear(a, b, off), alongAxis) << exponent << " " << trial << " " << axis;
+      }
+      const dvec3 p = s * dvec3(u(random), u(random), u(random)),
+                  q = s * dvec3(u(random), u(random), u(random));
+      EXPECT_FALSE(collinear(a, p, q)) << exponent << " " << trial;
+    }
+  }
+}
+
 TEST(MeshSolid, FacesWithCollinearPoints) {
   MeshSpec m = openScadCube();
   m.points.push_back({5, 0, 0});  // 8: the middle of edge 0–1
