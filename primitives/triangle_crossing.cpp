@@ -47,8 +47,6 @@ std::array<Quad, 3> quadCross(const dvec3& a, const dvec3& b, const dvec3& c) {
   return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
 }
 
-}  // namespace
-
 // Is x·y − z·w, each factor the difference of two doubles, surely not
 // zero, by doubles alone? Each difference is within a unit roundoff u =
 // 2⁻⁵³ of its exact value, each product then within 3u (and its own
@@ -62,6 +60,8 @@ bool surelyNonZero(double x, double y, double z, double w) {
   const double bound = 8.0 * 0x1p-53 * (std::abs(p) + std::abs(q));
   return bound > 0x1p-960 && std::abs(p - q) > bound;
 }
+
+}  // namespace
 
 bool collinear(const dvec3& a, const dvec3& b, const dvec3& c) {
   // Most triangles are plainly not flat: decided in doubles (a mesh of

@@ -311,10 +311,15 @@ std::vector<ArcPolygonWithHoles> filledPolygons(const std::vector<CountedPiece>&
   return filled;
 }
 
-ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule) {
+// The curves' x-monotone pieces, each counted once the way it runs.
+std::vector<CountedPiece> countedPieces(const std::vector<CircleSegment>& curves) {
   std::vector<CountedPiece> pieces;
   for (const CircleSegment& c : curves) addPieces(c, 1, pieces);
-  const std::vector<ArcPolygonWithHoles> filled = filledPolygons(pieces, rule);
+  return pieces;
+}
+
+ArcPolygonSet filledSet(const std::vector<CircleSegment>& curves, FillRule rule) {
+  const std::vector<ArcPolygonWithHoles> filled = filledPolygons(countedPieces(curves), rule);
   ArcPolygonSet set;
   if (!filled.empty()) set.join(filled.begin(), filled.end());
   return set;
@@ -450,9 +455,7 @@ Profile evaluate(const Region& region, double ellipseTolerance) {
 }
 
 Profile positiveWindingFill(const std::vector<CircleSegment>& curves) {
-  std::vector<CountedPiece> pieces;
-  for (const CircleSegment& c : curves) addPieces(c, 1, pieces);
-  return profileOfPolygons(filledPolygons(pieces, FillRule::Positive));
+  return profileOfPolygons(filledPolygons(countedPieces(curves), FillRule::Positive));
 }
 
 Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
