@@ -15,6 +15,21 @@ namespace csgray::detail {
 
 using namespace mesh_reading;
 
+namespace {
+
+// What may follow a corner's vertex index: "/vt", "/vt/vn" or "//vn",
+// whole numbers. They do not shape the solid, but a corner written
+// otherwise ("1/", "2/x") is a file that is not OBJ.
+bool isCornerTail(std::string_view tail) {
+  auto number = [](std::string_view text) { return !text.empty() && parseInteger(text); };
+  const std::size_t second = tail.find('/', 1);
+  if (second == std::string_view::npos) return number(tail.substr(1));
+  const std::string_view texture = tail.substr(1, second - 1), normal = tail.substr(second + 1);
+  return (texture.empty() || number(texture)) && number(normal);
+}
+
+}  // namespace
+
 TriangleMesh readObj(std::string_view bytes, const std::string& name,
                      const MeshReadLimits& limits) {
   checkSize(bytes, name, limits);
@@ -50,9 +65,12 @@ TriangleMesh readObj(std::string_view bytes, const std::string& name,
       corners.clear();
       while (tokens.next(token)) {
         // v, v/vt, v/vt/vn or v//vn: the position index is before the '/'.
-        std::string_view position = token.substr(0, token.find('/'));
+        const std::size_t slash = token.find('/');
+        std::string_view position = token.substr(0, slash);
         std::optional<std::int64_t> index = parseInteger(position);
         if (!index) fail(where, shown(token) + " is not a vertex index");
+        if (slash != std::string_view::npos && !isCornerTail(token.substr(slash)))
+          fail(where, shown(token) + " is not a corner: OBJ writes v, v/vt, v/vt/vn or v//vn");
         const auto count = std::int64_t(raw.points.size());
         if (*index == 0) fail(where, "face index 0: OBJ counts vertices from 1");
         if (*index < 0) {

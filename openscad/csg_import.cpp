@@ -111,7 +111,14 @@ class Importer {
     const CsgValue* v = find(node, key, position);
     if (!given(v)) return fallback;
     if (v->kind != CsgValue::Kind::Number) throw NodeError(std::string(key) + " must be a number");
-    return v->number;
+    return definedNumber(v->number, key);
+  }
+
+  // OpenSCAD writes nan for arithmetic without a value (0/0, sqrt(-1)): no
+  // parameter takes it, and a shape that left it out would hide the slip.
+  static double definedNumber(double x, const std::string& what) {
+    if (std::isnan(x)) throw NodeError(what + " is nan (an undefined number in the source)");
+    return x;
   }
 
   std::string string(const CsgNode& node, const char* key, const std::string& fallback,
@@ -136,7 +143,7 @@ class Importer {
     std::vector<double> out;
     for (const CsgValue& item : v.items) {
       if (item.kind != CsgValue::Kind::Number) throw NodeError(what + " must hold numbers only");
-      out.push_back(item.number);
+      out.push_back(definedNumber(item.number, what));
     }
     return out;
   }
@@ -162,7 +169,7 @@ class Importer {
                        int position = -1) const {
     const CsgValue* v = find(node, key, position);
     if (!given(v)) return fallback;
-    if (v->kind == CsgValue::Kind::Number) return dvec3(v->number);
+    if (v->kind == CsgValue::Kind::Number) return dvec3(definedNumber(v->number, key));
     std::vector<double> n = numbers(*v, key);
     if (int(n.size()) < size)
       throw NodeError(std::string(key) + " must have " + std::to_string(size) + " numbers");

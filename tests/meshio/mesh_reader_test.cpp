@@ -281,6 +281,21 @@ TEST(MeshReader, ObjVertexTakesNumbersAfterItsCoordinates) {
   EXPECT_EQ(errorOf([&] { readObj(word, "word.obj"); }), "word.obj:2: \"extra\" is not a number");
 }
 
+// A face's corner is v, v/vt, v/vt/vn or v//vn; the texture and normal
+// indices are not used, but a corner written otherwise is refused.
+TEST(MeshReader, ObjCornersTakeOnlyTheFourForms) {
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  const std::string good = points + "f 1 3/1 2/1/1\nf 1//1 2 4\nf 1 4 3\nf 2 3 4\n";
+  EXPECT_EQ(readObj(good, "good.obj").triangles.size(), 4u);
+  for (const std::string corner : {"1/", "1//", "1/x", "1/2/", "1//x", "1/2/3/4", "1/2x"}) {
+    const std::string obj = points + "f " + corner + " 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    EXPECT_EQ(
+        errorOf([&] { readObj(obj, "corner.obj"); }),
+        "corner.obj:5: \"" + corner + "\" is not a corner: OBJ writes v, v/vt, v/vt/vn or v//vn")
+        << corner;
+  }
+}
+
 // ---- Vertices that are not three finite numbers, in every text format ----------
 
 // A tetrahedron in the text of a format, its second vertex written as

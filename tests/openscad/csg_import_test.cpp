@@ -500,6 +500,16 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
           .substr(0, 25),
       "part.csg:1: polyhedron: p");
   EXPECT_EQ(importError("sphere($fa = 0, r = 1);"), "part.csg:1: sphere: $fa and $fs must be > 0");
+  // OpenSCAD writes nan for 0/0: refused where it stands, not left out as
+  // a shape without volume would be.
+  EXPECT_EQ(importError("group() {\n  cube(size = 1);\n  cube(size = [nan, 1, 1]);\n}"),
+            "part.csg:3: cube: size is nan (an undefined number in the source)");
+  EXPECT_EQ(importError("sphere(r = nan);"),
+            "part.csg:1: sphere: r is nan (an undefined number in the source)");
+  EXPECT_EQ(
+      importError("multmatrix([[1, 0, 0, nan], [0, 1, 0, 0], [0, 0, 1, 0]]) { cube(size = "
+                  "1); }"),
+      "part.csg:1: multmatrix: a row of the matrix is nan (an undefined number in the source)");
   EXPECT_EQ(
       importError("multmatrix([[1, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0]]) { square(size = 1); }"),
       "part.csg:1: multmatrix: moves a 2D shape out of the plane z = 0; extrude it first");
