@@ -120,15 +120,15 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
         "csgray: %zu primitives tessellated, %zu booleans (%zu in doubles, %zu of them perturbed, "
         "%zu by CGAL%s), %zu "
         "joined without one, %zu "
-        "glued face to face, %zu rounding repair%s, %zu contact%s resolved, %zu stray shell%s "
-        "removed%s\n",
+        "glued face to face, %zu rounding repair%s, %zu contact%s resolved, %zu graze%s cleared, "
+        "%zu stray shell%s removed%s\n",
         scriptSeconds, secs(start, evaluated) - counts.checkSeconds, counts.checkSeconds,
         secs(evaluated, written), counts.primitives, counts.corefinements, counts.inDoubles,
         counts.perturbed, counts.corefinements - counts.inDoubles,
         counts.redoneByCgal ? "; the part made again by CGAL alone after a check failed" : "",
         counts.merges, counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s",
-        counts.contacts, counts.contacts == 1 ? "" : "s", counts.strayShells,
-        counts.strayShells == 1 ? "" : "s",
+        counts.contacts, counts.contacts == 1 ? "" : "s", counts.grazes,
+        counts.grazes == 1 ? "" : "s", counts.strayShells, counts.strayShells == 1 ? "" : "s",
         counts.reordered == 0   ? ""
         : counts.reordered == 1 ? "; made on a second try, each union's operands in reverse order"
                                 : "; made on a last try, each union's operands shuffled");

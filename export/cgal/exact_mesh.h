@@ -70,17 +70,33 @@ dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
   return dvec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-// The mesh as plain triangles: its points rounded to doubles, in the
-// order of its vertices, and its faces, each from the target of its
-// halfedge on.
+// A vertex's point near enough: the middle of the interval its lazy
+// exact coordinates carry. Unlike pointOf, it never has CGAL compute an
+// exact value to narrow that interval, which would change what pointOf
+// gives for points made from it later (and so the part's mesh, by a unit
+// in the last place): for a look at the mesh that must leave it as it was.
+inline double approximately(double x) { return x; }
+template <class Exact>
+double approximately(const CGAL::Lazy_exact_nt<Exact>& x) {
+  return CGAL::to_double(x.approx());
+}
 template <class Mesh>
-TriangleMesh trianglesOf(const Mesh& mesh) {
+dvec3 approximatePointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
+  const auto& p = mesh.point(v);
+  return dvec3(approximately(p.x()), approximately(p.y()), approximately(p.z()));
+}
+
+// The mesh as plain triangles: its points rounded to doubles (by
+// pointOf, or approximatePointOf), in the order of its vertices, and its
+// faces, each from the target of its halfedge on.
+template <class Mesh>
+TriangleMesh trianglesOf(const Mesh& mesh, bool approximate = false) {
   TriangleMesh out;
   std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
   out.points.reserve(mesh.number_of_vertices());
   for (auto v : mesh.vertices()) {
     index[v] = std::uint32_t(out.points.size());
-    out.points.push_back(pointOf(mesh, v));
+    out.points.push_back(approximate ? approximatePointOf(mesh, v) : pointOf(mesh, v));
   }
   out.triangles.reserve(mesh.number_of_faces());
   for (auto f : mesh.faces()) {

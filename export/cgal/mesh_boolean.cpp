@@ -32,6 +32,7 @@
 #include "export/cgal/rounded_repair.h"
 #include "export/cgal/stray_shells.h"
 #include "export/collinear_points.h"
+#include "export/grazed_faces.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -394,6 +395,7 @@ class Evaluator {
         // Whatever is cut away is cut from the minuend's mesh, which may
         // reach past the region: the cutters are meshed over all of it.
         std::vector<Piece> cutters = evaluateAll(operands.subspan(1), minuend.box);
+        clearGrazedCutters(operands.subspan(1), cutters, minuend);
         order_.arrange(cutters);
         const bool primitives =
             cutters.size() > 1 && std::all_of(cutters.begin(), cutters.end(),
@@ -416,6 +418,7 @@ class Evaluator {
             stats_.corefinements - stats_.inDoubles > byCgal) {
           const MeshBooleanStats before = stats_;
           std::vector<Piece> each = evaluateAll(operands.subspan(1), minuend.box);
+          clearGrazedCutters(operands.subspan(1), each, minuend);
           order_.arrange(each);
           Piece oneByOne = minuend;
           doublesOnly_ = true;
@@ -458,6 +461,34 @@ class Evaluator {
       cut.shape = 0;
     }
     corefine(minuend, cut, Boolean::Op::Difference);
+  }
+
+  // Each flat cutter (a box, a half-space, a convex polyhedron) whose
+  // faces the minuend only grazes, made again with those faces moved
+  // clear of it (export/grazed_faces.h). cutters[i] is operands[i]'s.
+  void clearGrazedCutters(std::span<const SolidPtr> operands, std::vector<Piece>& cutters,
+                          const Piece& minuend) {
+    std::optional<TriangleMesh> exactMinuend;  // in doubles, made once if needed
+    for (std::size_t i = 0; i < operands.size(); ++i) {
+      auto* primitive = dynamic_cast<const Primitive*>(operands[i].get());
+      Piece& cutter = cutters[i];
+      if (!primitive || cutter.empty() || !cutter.box.overlaps(minuend.box)) continue;
+      std::optional<std::vector<BoundingPlane>> planes =
+          boundingPlanes(*primitive, frame_.evalFrame(primitive->frame()));
+      if (!planes) continue;
+      if (!minuend.doubles && !exactMinuend) exactMinuend = trianglesOf(minuend.mesh, true);
+      if (!clearGrazedFaces(*planes, minuend.doubles ? minuend.doubles->mesh : *exactMinuend,
+                            tolerance_))
+        continue;
+      // The moved faces stay within twice the tolerance of the old.
+      const dvec3 margin(0.01 * glm::length(cutter.box.size()) + 2.0 * tolerance_);
+      Piece cleared =
+          pieceOf(convexPolytopeMesh(*planes, {cutter.box.lo - margin, cutter.box.hi + margin}),
+                  tagOf(primitive->material()), primitive->kind());
+      cleared.origin = primitive;
+      cutter = std::move(cleared);
+      ++stats_.grazes;
+    }
   }
 
   std::uint32_t tagOf(const MaterialPtr& material) {

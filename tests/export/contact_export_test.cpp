@@ -283,6 +283,71 @@ TEST(ContactExport, ABallInTheRodThatCutsItIsTakenWhole) {
   exportsValid(source, 72 - 2 * kPi, kTolerance * (2 * 36 + 4 * 12 + 2 * kPi * 2));
 }
 
+// The highest (or, with -1, lowest) coordinate of the mesh along axis.
+double extreme(const TriangleMesh& mesh, int axis, double sign) {
+  double most = -kInfinity;
+  for (const dvec3& p : mesh.points) most = std::max(most, sign * p[axis]);
+  return sign * most;
+}
+
+TEST(ContactExport, ABoxAsWideAsTheCylinderItHalvesLeavesNoFins) {
+  // The box's sides touch the cylinder along four lines above z = 5; the
+  // cylinder's mesh, whose points lie outside the circle, pokes past them,
+  // and the cut kept those slivers as fins up to the top (z = 10), which
+  // failed the check. The grazed sides are moved clear: the half cylinder,
+  // nothing above z = 5. Also with the box taller than the cylinder, and
+  // turned so that its sides touch between the mesh's points.
+  const double exact = kPi * 25 * 5;
+  const double slack = kTolerance * (2 * kPi * 5 * 5 + 2 * kPi * 25);
+  for (const char* cutter :
+       {"box{size={10, 10, 5}}:translate(-5, -5, 5)", "box{size={10, 10, 6}}:translate(-5, -5, 5)",
+        "box{size={10, 10, 5}}:translate(-5, -5, 5):rotate(0, 0, 17)"}) {
+    const std::string source = std::string("return cylinder{r=5, h=10} - ") + cutter;
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(stats.grazes, 1u) << cutter;
+    EXPECT_LE(extreme(mesh, 2, 1.0), 5.0) << cutter;
+    exportsValid(source, exact, slack);
+  }
+}
+
+TEST(ContactExport, AHemisphereCutByABoxAsWideAsTheBall) {
+  // The box's sides touch the ball's equator, and its bottom the south
+  // pole: the ball's mesh, a little outside the sphere, kept slivers below
+  // the equator there. Upper and lower halves, radius 1 and 5.
+  for (const double r : {1.0, 5.0}) {
+    for (const double sign : {1.0, -1.0}) {
+      char source[200];
+      std::snprintf(source, sizeof source,
+                    "return sphere(%g) - box{size={%g, %g, %g}}:translate(%g, %g, %g)", r, 2 * r,
+                    2 * r, r, -r, -r, sign > 0 ? -r : 0.0);
+      MeshBooleanStats stats;
+      const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+      EXPECT_EQ(stats.grazes, 1u) << source;
+      // The half kept lies on its side of z = 0.
+      EXPECT_GE(sign * extreme(mesh, 2, -sign), -1e-12) << source;
+      exportsValid(source, 2.0 / 3.0 * kPi * r * r * r, kTolerance * 3 * kPi * r * r);
+    }
+  }
+}
+
+TEST(ContactExport, ABoxThatCutsIntoTheCylinderIsNotMoved) {
+  // Sides 0.05 inside the cylinder, five tolerances: they cut it, and the
+  // part keeps the two slivers of the circle they leave, up to the top.
+  // Volume: the half cylinder and, above it, two circular segments of
+  // height h = 0.05: r² acos((r − h)/r) − (r − h) √(2rh − h²) each.
+  const double r = 5.0, h = 0.05;
+  const double segment = r * r * std::acos((r - h) / r) - (r - h) * std::sqrt(2 * r * h - h * h);
+  const std::string source =
+      "return cylinder{r=5, h=10} - box{size={9.9, 10, 5}}:translate(-4.95, -5, 5)";
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+  EXPECT_EQ(stats.grazes, 1u);  // the sides at y = ±5 graze it
+  EXPECT_EQ(extreme(mesh, 2, 1.0), 10.0);
+  exportsValid(source, kPi * 25 * 5 + 2 * segment * 5,
+               kTolerance * (2 * kPi * 5 * 10 + 2 * kPi * 25));
+}
+
 TEST(ContactExport, CrossingBoresAreCutAwayOneByOneInDoubles) {
   // Three equal tapered bores that cross at a ball's centre: their union
   // is not in general position (equal cones whose axes meet), too small

@@ -1,0 +1,78 @@
+#include "export/grazed_faces.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <glm/geometric.hpp>
+
+namespace csgray::detail {
+
+namespace {
+
+// A triangle clipped by planes has at most three corners plus one per
+// plane; the cutters meant here have a few planes (a box six).
+using Polygon = std::vector<dvec3>;
+
+// The part of the polygon where normal·p <= offset (Sutherland and
+// Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974), into out.
+void clip(const Polygon& in, const dvec3& normal, double offset, Polygon& out) {
+  out.clear();
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const dvec3& a = in[i];
+    const dvec3& b = in[(i + 1) % in.size()];
+    const double sa = glm::dot(normal, a) - offset, sb = glm::dot(normal, b) - offset;
+    if (sa <= 0.0) out.push_back(a);
+    if ((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0))
+      out.push_back(a + (sa / (sa - sb)) * (b - a));
+  }
+}
+
+}  // namespace
+
+bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const TriangleMesh& minuend,
+                      double tolerance) {
+  const double loose = 2.0 * tolerance;
+  const std::vector<BoundingPlane> judged = planes;
+  bool moved = false;
+  Polygon polygon, clipped;
+  for (std::size_t j = 0; j < judged.size(); ++j) {
+    const BoundingPlane& face = judged[j];
+    // How far beyond the face the minuend reaches within its prism and
+    // slab; past the tolerance, the face cuts into it.
+    double reach = 0.0;
+    for (const TriangleMesh::Triangle& t : minuend.triangles) {
+      const dvec3 p[3] = {minuend.points[t[0]], minuend.points[t[1]], minuend.points[t[2]]};
+      auto beyond = [&](const BoundingPlane& plane, double by) {
+        return glm::dot(plane.normal, p[0]) > plane.offset + by &&
+               glm::dot(plane.normal, p[1]) > plane.offset + by &&
+               glm::dot(plane.normal, p[2]) > plane.offset + by;
+      };
+      // Nothing beyond the face, or all of it beyond the slab or outside
+      // the prism: not this face's (the usual case, tested first).
+      if (glm::dot(face.normal, p[0]) <= face.offset &&
+          glm::dot(face.normal, p[1]) <= face.offset && glm::dot(face.normal, p[2]) <= face.offset)
+        continue;
+      if (beyond(face, loose)) continue;
+      bool outside = false;
+      for (std::size_t k = 0; k < judged.size() && !outside; ++k)
+        outside = k != j && beyond(judged[k], loose);
+      if (outside) continue;
+      polygon.assign(p, p + 3);
+      for (std::size_t k = 0; k < judged.size() && !polygon.empty(); ++k) {
+        if (k == j) continue;
+        clip(polygon, judged[k].normal, judged[k].offset + loose, clipped);
+        polygon.swap(clipped);
+      }
+      clip(polygon, face.normal, face.offset + loose, clipped);
+      for (const dvec3& q : clipped)
+        reach = std::max(reach, glm::dot(face.normal, q) - face.offset);
+      if (reach > tolerance) break;
+    }
+    if (reach > 0.0 && reach <= tolerance) {
+      planes[j].offset = face.offset + reach + 0.1 * tolerance;
+      moved = true;
+    }
+  }
+  return moved;
+}
+
+}  // namespace csgray::detail

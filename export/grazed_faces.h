@@ -1,0 +1,34 @@
+// A flat cutter's faces that the part it cuts only grazes, moved clear.
+//
+// A box cut from a cylinder with its sides tangent to the cylinder (the
+// half of a cylinder, cut by a box as wide as the cylinder: a habit of
+// OpenSCAD's users), or from a ball whose equator it touches, meets the
+// exact solid along a line or at a point. The curved solid's mesh does
+// not stop there: its points lie a little outside the curve (the minimax
+// polygons of circlePolygon), so it pokes past the box's side by up to
+// its tessellation error, and the difference of the meshes keeps that
+// sliver: a fin a hundredth wide and as tall as the cut, which the model
+// has not. The mesh of an exact solid never strays more than the
+// tolerance from it, so a face with no more than that of the minuend
+// beyond it is grazed, not cut into: moving it out past that sliver
+// changes the part by less than the tolerance and leaves no fin.
+#pragma once
+
+#include <vector>
+
+#include "tessellation/tessellation.h"
+#include "tessellation/triangle_mesh.h"
+
+namespace csgray::detail {
+
+// The cutter is the convex polytope of the planes (normal·p <= offset,
+// unit normals). For each plane, the minuend's triangles are taken where
+// they lie within the face's prism (every other plane, loosened by twice
+// the tolerance) and less than twice the tolerance beyond the plane; if
+// what lies beyond reaches no further than the tolerance, the plane moves
+// out a tenth of the tolerance past it. Each plane is judged against the
+// planes as they were. Returns whether any moved.
+bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const TriangleMesh& minuend,
+                      double tolerance);
+
+}  // namespace csgray::detail
