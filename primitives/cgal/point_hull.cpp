@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 namespace csgray::detail {
 
@@ -94,6 +95,7 @@ Polytope solidHull(std::span<const dvec3> points) {
   // Each plane's boundary: its halfedges whose other side is another
   // plane's, walked in the triangles' order (counter-clockwise from
   // outside), turning about each corner past the edges inside the plane.
+  std::vector<std::vector<std::uint32_t>> loops;
   std::vector<bool> walked(mesh.number_of_halfedges(), false);
   for (auto start : mesh.halfedges()) {
     std::size_t g = groupOf(start);
@@ -108,8 +110,32 @@ Polytope solidHull(std::span<const dvec3> points) {
       while (groupOf(mesh.opposite(next)) == g) next = mesh.next(mesh.opposite(next));
       h = next;
     } while (h != start);
-    result.faces.push_back(faceOf(result.vertices, std::move(loop)));
+    loops.push_back(std::move(loop));
   }
+  // CGAL lists the hull's vertices and faces in an order that follows
+  // where its working data lay in memory (a longer name of the output
+  // file changed it, and so the export's triangles). The polytope is put
+  // in an order of its own: the corners by their coordinates, each loop
+  // from its least corner, the faces by their loops.
+  std::vector<std::uint32_t> byPlace(result.vertices.size()), rank(result.vertices.size());
+  std::iota(byPlace.begin(), byPlace.end(), 0u);
+  std::sort(byPlace.begin(), byPlace.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const dvec3 &p = result.vertices[a], &q = result.vertices[b];
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  });
+  std::vector<dvec3> sorted(result.vertices.size());
+  for (std::uint32_t i = 0; i < byPlace.size(); ++i) {
+    rank[byPlace[i]] = i;
+    sorted[i] = result.vertices[byPlace[i]];
+  }
+  result.vertices = std::move(sorted);
+  for (std::vector<std::uint32_t>& loop : loops) {
+    for (std::uint32_t& corner : loop) corner = rank[corner];
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+  }
+  std::sort(loops.begin(), loops.end());
+  for (std::vector<std::uint32_t>& loop : loops)
+    result.faces.push_back(faceOf(result.vertices, std::move(loop)));
   return result;
 }
 

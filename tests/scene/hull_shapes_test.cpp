@@ -13,6 +13,7 @@
 #include "check/exact_volume.h"
 #include "check_support.h"
 #include "engine/primitive.h"
+#include "primitives/cgal/point_hull.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/rounded_polytope.h"
 #include "raytrace/renderer.h"
@@ -247,6 +248,38 @@ TEST(Hull, CurvedShapesWithinTheTolerance) {
   double size = 2.0 * std::sqrt(14.0), area = 49.0;  // Knud Thomsen's approximation: 48.9
   EXPECT_NEAR(exactVolume(*hull, 200), 8.0 * kPi, area * kHullTolerance * size);
   EXPECT_TRUE(test::checksOut(*hull));
+}
+
+TEST(Hull, TheSamePointsGiveTheSamePolytopeWhateverTheHeap) {
+  // OpenSCAD's hull of two polygon balls (15 rings of 30 points, 70
+  // apart). CGAL's convex_hull_3 lists its result in an order that follows
+  // where its data lay in memory: the polytope's corners and faces must
+  // not, or the part's mesh changes with the heap (it changed with the
+  // length of the output file's name).
+  std::vector<dvec3> points;
+  for (double x : {0.0, 70.0})
+    for (int i = 0; i < 15; ++i)
+      for (int j = 0; j < 30; ++j) {
+        const double polar = kPi * (i + 0.5) / 15, azimuth = 2 * kPi * j / 30;
+        points.push_back({x + 2 * std::sin(polar) * std::cos(azimuth),
+                          2 * std::sin(polar) * std::sin(azimuth), 2 * std::cos(polar)});
+      }
+  const Polytope first = pointHull(points);
+  ASSERT_EQ(first.dimension, 3);
+  // Blocks of many sizes, every other one freed: a heap laid out otherwise.
+  std::vector<std::vector<char>> blocks;
+  for (std::size_t i = 1; i < 400; ++i) blocks.emplace_back(40 * i + 24 * (i % 7));
+  for (std::size_t i = 0; i < blocks.size(); i += 2) blocks[i] = {};
+  for (int round = 0; round < 3; ++round) {
+    blocks.emplace_back(1000 + 333 * round);
+    const Polytope again = pointHull(points);
+    ASSERT_EQ(again.vertices, first.vertices);
+    ASSERT_EQ(again.faces.size(), first.faces.size());
+    for (std::size_t f = 0; f < first.faces.size(); ++f) {
+      EXPECT_EQ(again.faces[f].loop, first.faces[f].loop);
+      EXPECT_EQ(again.faces[f].normal, first.faces[f].normal);
+    }
+  }
 }
 
 TEST(HullScript, RegionsAndSolidsShareTheName) {
