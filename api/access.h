@@ -19,13 +19,13 @@ struct csgray::Scene::Impl {
 namespace csgray::detail {
 
 struct Access {
-  static const SolidPtr& of(const csgray::Solid& s) { return s.impl_; }
+  static const SolidPtr& of(const csgray::Solid& s) { return s.impl_.pointer(); }
   static csgray::Solid solid(SolidPtr p) { return csgray::Solid(std::move(p)); }
 
-  static const TexturePtr& of(const csgray::Texture& t) { return t.impl_; }
+  static const TexturePtr& of(const csgray::Texture& t) { return t.impl_.pointer(); }
   static csgray::Texture texture(TexturePtr p) { return csgray::Texture(std::move(p)); }
 
-  static const SurfacePtr& of(const csgray::Surface& s) { return s.impl_; }
+  static const SurfacePtr& of(const csgray::Surface& s) { return s.impl_.pointer(); }
   static csgray::Surface surface(SurfacePtr p) { return csgray::Surface(std::move(p)); }
 
   static const Scene& of(const csgray::Scene& s) { return s.impl_->scene; }

@@ -10,6 +10,7 @@
 #include "api/errors.h"
 #include "check/exact_volume.h"
 #include "csgray/mesh.h"
+#include "export/cgal/mesh_validity.h"
 #include "meshio/mesh_import.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/quadric.h"
@@ -36,12 +37,35 @@ std::vector<detail::SolidPtr> internals(const std::vector<Solid>& solids) {
   return out;
 }
 
-Solid namedQuadric(detail::NamedQuadric kind, detail::QuadricAxes axes) {
-  return guarded([&] { return wrap(detail::namedQuadricShape(kind, axes)); });
+// A NaN or an infinity refused as the script refuses one, before the shape
+// sees it: "cylinder: h must be finite", a vector's component by the
+// script's index, "box: size[1] must be finite".
+void finite(const char* function, const char* key, double value) {
+  detail::checkFinite(function, key, value);
+}
+void finite(const char* function, const char* key, const Vec3& vector) {
+  const double components[3] = {vector.x, vector.y, vector.z};
+  for (int i = 0; i < 3; ++i)
+    detail::checkFinite(function, (key + ("[" + std::to_string(i + 1) + "]")).c_str(),
+                        components[i]);
 }
 
-Solid platonic(detail::Platonic kind, double r) {
-  return guarded([&] { return wrap(detail::platonicSolid(kind, r)); });
+// name: the script's function, for the messages.
+Solid namedQuadric(const char* name, detail::NamedQuadric kind, detail::QuadricAxes axes) {
+  return guarded([&] {
+    const std::pair<const char*, const std::optional<double>*> given[] = {
+        {"a", &axes.a}, {"b", &axes.b}, {"c", &axes.c}, {"p", &axes.p}};
+    for (const auto& [key, value] : given)
+      if (*value) finite(name, key, **value);
+    return wrap(detail::namedQuadricShape(kind, axes));
+  });
+}
+
+Solid platonic(const char* name, detail::Platonic kind, double r) {
+  return guarded([&] {
+    finite(name, "r", r);
+    return wrap(detail::platonicSolid(kind, r));
+  });
 }
 
 Solid boolean(detail::Boolean::Op op, const std::vector<Solid>& solids) {
@@ -53,25 +77,41 @@ Solid boolean(detail::Boolean::Op op, const std::vector<Solid>& solids) {
 Solid::Solid(std::shared_ptr<const detail::Solid> impl) : impl_(std::move(impl)) {}
 
 Solid Solid::sphere(double r) {
-  return guarded([&] { return wrap(detail::sphereShape(r, std::nullopt)); });
+  return guarded([&] {
+    finite("sphere", "r", r);
+    return wrap(detail::sphereShape(r, std::nullopt));
+  });
 }
 
 Solid Solid::ellipsoid(const Vec3& radii) {
-  return guarded([&] { return wrap(detail::ellipsoidShape(toDetail(radii))); });
+  return guarded([&] {
+    finite("ellipsoid", "radii", radii);
+    return wrap(detail::ellipsoidShape(toDetail(radii)));
+  });
 }
 
 Solid Solid::box(const Vec3& size, bool center) {
-  return guarded([&] { return wrap(detail::boxShape(toDetail(size), center)); });
+  return guarded([&] {
+    finite("box", "size", size);
+    return wrap(detail::boxShape(toDetail(size), center));
+  });
 }
 
-Solid Solid::box(double size, bool center) { return box(Vec3{size, size, size}, center); }
+Solid Solid::box(double size, bool center) {
+  guarded([&] { finite("box", "size", size); });
+  return box(Vec3{size, size, size}, center);
+}
 
 Solid Solid::cylinder(double h, double r, bool center) {
   detail::CylinderParams p;
   p.h = h;
   p.r = r;
   p.center = center;
-  return guarded([&] { return wrap(detail::cylinderShape("cylinder", p)); });
+  return guarded([&] {
+    finite("cylinder", "h", h);
+    finite("cylinder", "r", r);
+    return wrap(detail::cylinderShape("cylinder", p));
+  });
 }
 
 Solid Solid::cone(double h, double r1, double r2, bool center) {
@@ -80,15 +120,28 @@ Solid Solid::cone(double h, double r1, double r2, bool center) {
   p.r1 = r1;
   p.r2 = r2;
   p.center = center;
-  return guarded([&] { return wrap(detail::cylinderShape("cone", p)); });
+  return guarded([&] {
+    finite("cone", "h", h);
+    finite("cone", "r1", r1);
+    finite("cone", "r2", r2);
+    return wrap(detail::cylinderShape("cone", p));
+  });
 }
 
 Solid Solid::halfSpace(const Vec3& normal, double offset) {
-  return guarded([&] { return wrap(detail::halfSpaceShape(toDetail(normal), offset)); });
+  return guarded([&] {
+    finite("half_space", "normal", normal);
+    finite("half_space", "offset", offset);
+    return wrap(detail::halfSpaceShape(toDetail(normal), offset));
+  });
 }
 
 Solid Solid::torus(double R, double r) {
-  return guarded([&] { return wrap(detail::torusShape(R, r)); });
+  return guarded([&] {
+    finite("torus", "R", R);
+    finite("torus", "r", r);
+    return wrap(detail::torusShape(R, r));
+  });
 }
 
 Solid Solid::quadric(const Matrix4& rows) {
@@ -96,35 +149,49 @@ Solid Solid::quadric(const Matrix4& rows) {
 }
 
 Solid Solid::hyperboloid1(double a, double b, double c) {
-  return namedQuadric(detail::NamedQuadric::Hyperboloid1, {a, b, c, {}});
+  return namedQuadric("hyperboloid1", detail::NamedQuadric::Hyperboloid1, {a, b, c, {}});
 }
 Solid Solid::hyperboloid2(double a, double b, double c) {
-  return namedQuadric(detail::NamedQuadric::Hyperboloid2, {a, b, c, {}});
+  return namedQuadric("hyperboloid2", detail::NamedQuadric::Hyperboloid2, {a, b, c, {}});
 }
 Solid Solid::ellipticCone(double a, double b, double c) {
-  return namedQuadric(detail::NamedQuadric::EllipticCone, {a, b, c, {}});
+  return namedQuadric("elliptic_cone", detail::NamedQuadric::EllipticCone, {a, b, c, {}});
 }
 Solid Solid::ellipticParaboloid(double a, double b) {
-  return namedQuadric(detail::NamedQuadric::EllipticParaboloid, {a, b, {}, {}});
+  return namedQuadric("elliptic_paraboloid", detail::NamedQuadric::EllipticParaboloid,
+                      {a, b, {}, {}});
 }
 Solid Solid::hyperbolicParaboloid(double a, double b) {
-  return namedQuadric(detail::NamedQuadric::HyperbolicParaboloid, {a, b, {}, {}});
+  return namedQuadric("hyperbolic_paraboloid", detail::NamedQuadric::HyperbolicParaboloid,
+                      {a, b, {}, {}});
 }
 Solid Solid::ellipticCylinder(double a, double b) {
-  return namedQuadric(detail::NamedQuadric::EllipticCylinder, {a, b, {}, {}});
+  return namedQuadric("elliptic_cylinder", detail::NamedQuadric::EllipticCylinder, {a, b, {}, {}});
 }
 Solid Solid::hyperbolicCylinder(double a, double b) {
-  return namedQuadric(detail::NamedQuadric::HyperbolicCylinder, {a, b, {}, {}});
+  return namedQuadric("hyperbolic_cylinder", detail::NamedQuadric::HyperbolicCylinder,
+                      {a, b, {}, {}});
 }
 Solid Solid::parabolicCylinder(double p) {
-  return namedQuadric(detail::NamedQuadric::ParabolicCylinder, {{}, {}, {}, p});
+  return namedQuadric("parabolic_cylinder", detail::NamedQuadric::ParabolicCylinder,
+                      {{}, {}, {}, p});
 }
 
-Solid Solid::tetrahedron(double r) { return platonic(detail::Platonic::Tetrahedron, r); }
-Solid Solid::hexahedron(double r) { return platonic(detail::Platonic::Hexahedron, r); }
-Solid Solid::octahedron(double r) { return platonic(detail::Platonic::Octahedron, r); }
-Solid Solid::dodecahedron(double r) { return platonic(detail::Platonic::Dodecahedron, r); }
-Solid Solid::icosahedron(double r) { return platonic(detail::Platonic::Icosahedron, r); }
+Solid Solid::tetrahedron(double r) {
+  return platonic("tetrahedron", detail::Platonic::Tetrahedron, r);
+}
+Solid Solid::hexahedron(double r) {
+  return platonic("hexahedron", detail::Platonic::Hexahedron, r);
+}
+Solid Solid::octahedron(double r) {
+  return platonic("octahedron", detail::Platonic::Octahedron, r);
+}
+Solid Solid::dodecahedron(double r) {
+  return platonic("dodecahedron", detail::Platonic::Dodecahedron, r);
+}
+Solid Solid::icosahedron(double r) {
+  return platonic("icosahedron", detail::Platonic::Icosahedron, r);
+}
 
 Solid Solid::convex(const std::vector<Plane>& planes) {
   return guarded([&] {
@@ -151,6 +218,10 @@ Solid Solid::fromMesh(const Mesh& mesh) {
     made.points.reserve(mesh.vertices.size());
     for (const Vec3& p : mesh.vertices) made.points.push_back(toDetail(p));
     made.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+    // As a mesh file is held (fromMeshFile, the script's mesh{}): a solid's
+    // boundary, closed, outward and without crossing faces.
+    if (const detail::MeshDefect defect = detail::meshDefect(made); !defect.valid())
+      throw std::invalid_argument("mesh: " + defect.text);
     return wrap(detail::meshShape(made, "mesh"));
   });
 }
@@ -204,12 +275,12 @@ Solid Solid::operator*(const Solid& other) const { return intersectionOf({*this,
 Solid Solid::clip(const Bounds& box) const {
   return guarded([&] {
     detail::SolidPtr cutter = detail::clipBoxShape(toDetail(box.lo), toDetail(box.hi));
-    return wrap(detail::clippedShape(impl_, {cutter}));
+    return wrap(detail::clippedShape(impl_.pointer(), {cutter}));
   });
 }
 
 Solid Solid::clip(const std::vector<Solid>& cutters) const {
-  return guarded([&] { return wrap(detail::clippedShape(impl_, internals(cutters))); });
+  return guarded([&] { return wrap(detail::clippedShape(impl_.pointer(), internals(cutters))); });
 }
 
 Solid Solid::translate(const Vec3& offset) const {
@@ -245,7 +316,8 @@ Solid Solid::transform(const Matrix4& rows) const {
 }
 
 Solid Solid::material(const Material& material) const {
-  return guarded([&] { return wrap(detail::solidWithMaterial(impl_, toDetail(material))); });
+  return guarded(
+      [&] { return wrap(detail::solidWithMaterial(impl_.pointer(), toDetail(material))); });
 }
 
 Bounds Solid::bounds() const { return detail::toPublic(impl_->bounds()); }

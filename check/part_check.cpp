@@ -66,6 +66,10 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
   CheckReport report;
   report.options = options;
   report.triangles = mesh.size();
+  if (solid.bounds().empty()) {
+    report.failure = "the part is empty: it has no mesh to check";
+    return report;
+  }
   if (!solid.bounds().finite()) {
     report.failure = "the part is unbounded: it has no mesh to check";
     return report;

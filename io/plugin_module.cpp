@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace csgray::detail {
@@ -17,11 +18,17 @@ const void* loadPluginModule(const std::string& fileName, const std::string& bui
   // Installed (cmake --install), the library (libcsgray.so) finds them in
   // csgray/ beside it, and the executable in lib/csgray/.
   Dl_info self;
-  if (::dladdr(reinterpret_cast<const void*>(&loadPluginModule), &self) && self.dli_fname)
+  const bool found = ::dladdr(reinterpret_cast<const void*>(&loadPluginModule), &self) != 0 &&
+                     self.dli_fname != nullptr;
+  if (found)
     paths.push_back(
         (std::filesystem::path(self.dli_fname).parent_path() / "csgray" / fileName).string());
   if (!error) paths.push_back((exe.parent_path() / CSGRAY_MODULES_FROM_BIN / fileName).string());
-  paths.push_back(builtPath);
+  // The build's own module only for code that runs from the build tree (the
+  // test programs): an installed copy must not load a build's module, of
+  // another version perhaps, that happens to be where it was built.
+  if (found && std::string_view(self.dli_fname).starts_with(CSGRAY_BUILD_DIR))
+    paths.push_back(builtPath);
   std::string why;
   for (const std::string& path : paths) {
     if (!std::filesystem::exists(path)) continue;

@@ -13,7 +13,8 @@ namespace csgray::detail {
 // looked for beside the executable (where the build puts it next to
 // csgray), where cmake --install puts it (lib/csgray/, found from the
 // executable and from the shared library that holds this code), else at
-// builtPath (for the test programs). Throws
+// builtPath when this code runs from the build tree (the test programs;
+// never an installed copy). Throws
 // std::runtime_error, naming `what` the module is needed for, if it cannot
 // be loaded.
 const void* loadPluginModule(const std::string& fileName, const std::string& builtPath,

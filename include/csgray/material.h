@@ -62,7 +62,7 @@ class CSGRAY_API Texture {
 
  private:
   explicit Texture(std::shared_ptr<const detail::Texture> impl);
-  std::shared_ptr<const detail::Texture> impl_;
+  detail::Shared<detail::Texture> impl_;
   friend struct detail::Access;
 };
 

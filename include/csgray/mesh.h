@@ -36,12 +36,12 @@ struct ExportOptions {
   // it stores them before the mesh is checked, so that the file holds a
   // valid mesh. None: plain doubles.
   std::optional<MeshFormat> format = MeshFormat::Stl;
-  bool ascii = false;  // text STL or PLY
+  bool ascii = false;  // text STL or PLY (give writeMesh the same)
 };
 
 // The closed, 2-manifold, outward, self-intersection-free mesh of the
 // solid, as `csgray export` makes it. Error NotPrintable when there is none
-// (an unbounded or empty solid, operands that touch in an edge, ...).
+// (an unbounded or empty solid, solids that touch where CGAL cannot cut).
 CSGRAY_API Mesh exportMesh(const Solid& solid, const ExportOptions& options = {});
 
 // Writes the mesh; the extension picks the format (.stl, .obj, .off, .ply,

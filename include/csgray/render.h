@@ -28,7 +28,9 @@ struct Image {
   std::vector<float> rgb;  // width · height · 3
 
   Vec3 at(int x, int y) const {
-    const float* p = &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    const std::size_t pixel =
+        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+    const float* p = &rgb[pixel * 3];
     return {p[0], p[1], p[2]};
   }
 };

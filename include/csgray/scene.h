@@ -59,7 +59,7 @@ class CSGRAY_API Surface {
 
  private:
   explicit Surface(std::shared_ptr<const detail::Surface> impl);
-  std::shared_ptr<const detail::Surface> impl_;
+  detail::Shared<detail::Surface> impl_;
   friend struct detail::Access;
 };
 

@@ -78,7 +78,9 @@ class CSGRAY_API Solid {
   static Solid polyhedron(const std::vector<Vec3>& points,
                           const std::vector<std::vector<std::int64_t>>& faces);
   // A closed mesh whose triangles run counter-clockwise seen from outside,
-  // as exportMesh and readMesh give them.
+  // as exportMesh and readMesh give them. Error (InvalidArgument) naming
+  // the fault when it is not such a mesh: open, not a 2-manifold, inside
+  // out, or with faces that cross (as fromMeshFile and mesh{} refuse it).
   static Solid fromMesh(const Mesh& mesh);
   // A mesh file (STL, OBJ, OFF or PLY) as a solid; with repair, what can
   // be mended is, and repairReport (if given) says what was done.
@@ -140,7 +142,7 @@ class CSGRAY_API Solid {
 
  private:
   explicit Solid(std::shared_ptr<const detail::Solid> impl);
-  std::shared_ptr<const detail::Solid> impl_;
+  detail::Shared<detail::Solid> impl_;
   friend struct detail::Access;
 };
 

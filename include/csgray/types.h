@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 
 #if defined(__GNUC__)
 #define CSGRAY_API __attribute__((visibility("default")))
@@ -11,6 +12,33 @@
 #endif
 
 namespace csgray {
+
+namespace detail {
+
+// The internal value behind a Solid, a Surface or a Texture, shared by
+// their copies: they are immutable, so a copy costs a reference count. A
+// move copies too, so that a value moved from still holds what it held
+// rather than nothing (using it was a null dereference).
+template <class T>
+class Shared {
+ public:
+  explicit Shared(std::shared_ptr<const T> p) : p_(std::move(p)) {}
+  Shared(const Shared&) = default;
+  Shared(Shared&& other) noexcept : p_(other.p_) {}
+  Shared& operator=(const Shared&) = default;
+  Shared& operator=(Shared&& other) noexcept {
+    p_ = other.p_;
+    return *this;
+  }
+  const T* operator->() const { return p_.get(); }
+  const T& operator*() const { return *p_; }
+  const std::shared_ptr<const T>& pointer() const { return p_; }
+
+ private:
+  std::shared_ptr<const T> p_;
+};
+
+}  // namespace detail
 
 // A point or a vector in model units (millimetres for a printed part), or a
 // linear RGB colour with components from 0 (black) up.

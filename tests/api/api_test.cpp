@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -24,6 +25,8 @@ using csgray::Solid;
 using csgray::Vec3;
 
 constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void expectVolume(const Solid& solid, double exact, double relative = 1e-3) {
   EXPECT_NEAR(solid.volume(), exact, relative * exact) << solid.kind();
@@ -191,6 +194,36 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
        [] { csgray::Texture::checker(std::nullopt, 0); }},
       {"return sphere(1):material{color=wood{octaves=17}}",
        [] { csgray::Texture::noise(csgray::Texture::Noise::Wood, std::nullopt, 17); }},
+      // A NaN or an infinity, as the script refuses one (1/0 and 0/0 there).
+      {"return sphere(1/0)", [] { Solid::sphere(kInf); }},
+      {"return sphere(0/0)", [] { Solid::sphere(kNaN); }},
+      {"return box{1/0, 1, 1}",
+       [] {
+         Solid::box({kInf, 1, 1});
+       }},
+      {"return box(0/0)", [] { Solid::box(kNaN); }},
+      {"return ellipsoid{radii={1, 0/0, 1}}",
+       [] {
+         Solid::ellipsoid({1, kNaN, 1});
+       }},
+      {"return cylinder{h=1/0, r=1}", [] { Solid::cylinder(kInf, 1); }},
+      {"return cylinder{h=2, r=0/0}", [] { Solid::cylinder(2, kNaN); }},
+      {"return cone{h=2, r1=1/0}", [] { Solid::cone(2, kInf); }},
+      {"return cone{h=2, r1=1, r2=0/0}", [] { Solid::cone(2, 1, kNaN); }},
+      {"return torus{R=1/0, r=1}", [] { Solid::torus(kInf, 1); }},
+      {"return torus{R=2, r=0/0}", [] { Solid::torus(2, kNaN); }},
+      {"return half_space{normal={0, 0, 1/0}}",
+       [] {
+         Solid::halfSpace({0, 0, kInf});
+       }},
+      {"return half_space{normal={0, 0, 1}, offset=0/0}",
+       [] {
+         Solid::halfSpace({0, 0, 1}, kNaN);
+       }},
+      {"return hyperboloid1{a=1, b=1/0, c=1}", [] { Solid::hyperboloid1(1, kInf, 1); }},
+      {"return parabolic_cylinder{p=0/0}", [] { Solid::parabolicCylinder(kNaN); }},
+      {"return icosahedron(1/0)", [] { Solid::icosahedron(kInf); }},
+      {"return tetrahedron{r=0/0}", [] { Solid::tetrahedron(kNaN); }},
       {"return disc{r=0}", [] { csgray::Surface::disc(0); }},
       {"return square{size=-1}", [] { csgray::Surface::square(-1); }},
       {"return plane{normal={0, 0, 0}}",
@@ -308,6 +341,31 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);
 }
 
+// Solids, surfaces and textures are immutable values: one moved from
+// still holds what it held (it was empty, and using it crashed).
+TEST(ApiScene, ValuesMovedFromStillHoldTheirShapes) {
+  Solid ball = Solid::sphere(2);
+  const Solid taken = std::move(ball);
+  // NOLINTBEGIN(bugprone-use-after-move): the point of the test
+  EXPECT_EQ(ball.kind(), "sphere");
+  EXPECT_EQ(ball.bounds().hi, (Vec3{2, 2, 2}));
+  EXPECT_TRUE(ball.translate({1, 0, 0}).contains({2.5, 0, 0}));
+  Solid box = Solid::box(1);
+  box = std::move(ball);
+  EXPECT_EQ(box.kind(), "sphere");
+  EXPECT_EQ(ball.kind(), "sphere");
+  expectVolume(csgray::Scene(ball).part(), 4.0 / 3.0 * kPi * 8);
+  csgray::Surface floor = csgray::Surface::plane();
+  const csgray::Surface moved = std::move(floor);
+  EXPECT_EQ(floor.kind(), "plane");
+  EXPECT_EQ(csgray::Scene().add(floor).surfaces().size(), 1u);
+  csgray::Texture checker = csgray::Texture::checker();
+  const csgray::Texture other = std::move(checker);
+  EXPECT_EQ(checker.colorAt({0.5, 0.5, 0.5}, {0, 0, 1}), other.colorAt({0.5, 0.5, 0.5}, {0, 0, 1}));
+  // NOLINTEND(bugprone-use-after-move)
+  EXPECT_EQ(taken.kind(), "sphere");
+}
+
 TEST(ApiScene, AMeshSurfaceIsASurface) {
   // Two triangles of the unit square at z = 1, moved up by 2: the sheet
   // renders as the script's mesh_surface{} does, and is no part.
@@ -340,6 +398,29 @@ TEST(ApiExport, ASphereIsClosedAndWithinTheTolerance) {
   EXPECT_EQ(mesh.triangleMaterial.size(), mesh.triangles.size());
   ASSERT_EQ(mesh.materials.size(), 1u);
   EXPECT_FALSE(mesh.materials[0]);
+}
+
+// fromMesh holds a mesh as a mesh file is held: a box's mesh is a solid;
+// two overlapping boxes in one mesh, or a box inside out, are refused
+// (they were taken, and failed only at the export).
+TEST(ApiSolid, FromMeshRefusesWhatIsNotASolidsBoundary) {
+  const csgray::Mesh box = csgray::exportMesh(Solid::box(2));
+  expectVolume(Solid::fromMesh(box), 8.0, 1e-9);
+  csgray::Mesh two = box;
+  const csgray::Mesh moved = csgray::exportMesh(Solid::box(2).translate({1, 1, 1}));
+  for (const Vec3& p : moved.vertices) two.vertices.push_back(p);
+  for (auto t : moved.triangles) {
+    for (auto& i : t) i += std::uint32_t(box.vertices.size());
+    two.triangles.push_back(t);
+  }
+  auto [code, message] = errorOf([&] { Solid::fromMesh(two); });
+  EXPECT_EQ(code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(message.rfind("mesh: self-intersecting", 0), 0u) << message;
+  csgray::Mesh inverted = box;
+  for (auto& t : inverted.triangles) std::swap(t[1], t[2]);
+  std::tie(code, message) = errorOf([&] { Solid::fromMesh(inverted); });
+  EXPECT_EQ(code, ErrorCode::InvalidArgument);
+  EXPECT_NE(message.find("inside out"), std::string::npos) << message;
 }
 
 TEST(ApiExport, DefectsAndFailuresAreTyped) {
@@ -480,6 +561,12 @@ TEST(ApiCheck, ASoundPartPasses) {
   const csgray::CheckReport unbounded = csgray::check(Solid::halfSpace({0, 0, 1}), options);
   EXPECT_FALSE(unbounded.ok);
   EXPECT_FALSE(unbounded.failure.empty());
+  // An empty part is called empty (it was called unbounded).
+  const csgray::CheckReport empty =
+      csgray::check(Solid::sphere(1) * Solid::sphere(1).translate({5, 0, 0}), options);
+  EXPECT_FALSE(empty.ok);
+  EXPECT_NE(empty.failure.find("empty"), std::string::npos) << empty.failure;
+  EXPECT_EQ(empty.failure.find("unbounded"), std::string::npos) << empty.failure;
 }
 
 TEST(ApiScript, AnExampleGivesItsScene) {

@@ -1,6 +1,6 @@
 #!/bin/sh
 # The library as a user gets it: `cmake --install` into a temporary prefix,
-# the csgray command run from there, and examples/cpp configured with
+# its headers compiled on their own, the csgray command run from there, and examples/cpp configured with
 # find_package(csgray) against it, built and run. Its image must be a PNG of the size it asked for; its STL must hold
 # triangles whose volume is the part's analytic volume, read back by a
 # program built against the same install with pkg-config (csgray.pc).
@@ -30,6 +30,15 @@ if grep -rhE '#include *<(glm|CGAL|OpenMesh|OpenImageIO|lua)' "$tmp/prefix/inclu
   fail "a public header includes a dependency's header"
 fi
 
+# Each public header compiles on its own under the strictest warnings a
+# user may build with.
+for header in "$tmp"/prefix/include/csgray/*.h; do
+  printf '#include "csgray/%s"\n' "$(basename "$header")" >"$tmp/header.cpp"
+  "$cxx" -std=c++17 -I"$tmp/prefix/include" -Wall -Wextra -Wpedantic -Wshadow -Wconversion \
+    -Wsign-conversion -Werror -fsyntax-only "$tmp/header.cpp" ||
+    fail "$(basename "$header") does not compile on its own without warnings"
+done
+
 # The command, whose modules are installed in lib/csgray/ (the build's own
 # are still there to be found: the loader's log says which was loaded).
 "$tmp/prefix/bin/csgray" --version >/dev/null || fail "the installed csgray does not run"
@@ -38,6 +47,17 @@ LD_DEBUG=files "$tmp/prefix/bin/csgray" export "$source/examples/primitives.lua"
   { cat "$tmp/export.log" >&2; fail "the installed csgray cannot export"; }
 grep -q "file=$tmp/prefix/.*/csgray/libcsgray_mesh_tools.so .*dynamically loaded" "$tmp/export.log" ||
   fail "the installed csgray did not load its installed module"
+
+# Without its installed modules it fails rather than load the build's,
+# which may be of another version.
+mv "$tmp/prefix/lib/csgray" "$tmp/modules"
+if "$tmp/prefix/bin/csgray" render "$source/examples/primitives.lua" -o "$tmp/no.jpg" \
+  --size 32x24 >"$tmp/no_module.log" 2>&1; then
+  fail "the installed csgray wrote a JPEG without its installed image module"
+fi
+grep -q "cannot load csgray's libcsgray_image_formats.so" "$tmp/no_module.log" ||
+  { cat "$tmp/no_module.log" >&2; fail "no message for the missing module"; }
+mv "$tmp/modules" "$tmp/prefix/lib/csgray"
 
 "$cmake" -S "$source/examples/cpp" -B "$tmp/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$tmp/prefix" >"$tmp/configure.log" 2>&1 ||
