@@ -77,6 +77,15 @@ SolidPtr Primitive::withMaterial(const MaterialPtr& material) const {
   return copy;
 }
 
+SolidPtr Primitive::placedAs(std::shared_ptr<Primitive> shape) const {
+  shape->frame_ = frame_;
+  shape->material_ = material_;
+  shape->textureFromObject_ = textureFromObject_;
+  shape->updateBounds();
+  shape->setOrigin(origin());
+  return shape;
+}
+
 void Primitive::updateBounds() {
   Bounds local = objectBounds();
   if (local.empty()) {

@@ -87,6 +87,10 @@ class Primitive : public Solid {
   // largest stretch, and the box of the region's corners in the frame.
   virtual TriangleMesh objectTessellate(double tolerance, const Bounds& region) const = 0;
 
+  // shape, a new primitive in object space, placed as this one is: its
+  // frame, its material and texture frame, and where the script made it.
+  SolidPtr placedAs(std::shared_ptr<Primitive> shape) const;
+
   Boundary boundary(double t, int face = 0) const {
     return Boundary{t, this, static_cast<decltype(Boundary::face)>(face), false};
   }

@@ -317,6 +317,11 @@ struct TwistedPath {
 
 }  // namespace
 
+SolidPtr LinearExtrusion::sweepOf(RegionPtr region) const {
+  return placedAs(std::make_shared<LinearExtrusion>(std::move(region), height_, z0_ != 0.0,
+                                                    twistDegrees_, scale_));
+}
+
 LinearExtrusion::LinearExtrusion(RegionPtr region, double height, bool center, double twistDegrees,
                                  dvec2 scale)
     : height_(height),

@@ -19,7 +19,7 @@
 
 namespace csgray::detail {
 
-class LinearExtrusion : public PrimitiveShape<LinearExtrusion> {
+class LinearExtrusion : public PrimitiveShape<LinearExtrusion>, public RegionSweep {
  public:
   // A twist beyond this many degrees is refused: more turns than any part
   // can show, and the numeric search's work grows with them.
@@ -36,6 +36,8 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion> {
   double twistDegrees() const { return twistDegrees_; }
   dvec2 scale() const { return scale_; }
   std::string kind() const override { return "linear_extrude"; }
+  const RegionPtr& sweptRegion() const override { return region(); }
+  SolidPtr sweepOf(RegionPtr region) const override;
 
   // The point of the profile plane that p (object space) lies over, and
   // whether the extrusion holds p.

@@ -282,6 +282,17 @@ class SweptRegion {
 // the stretch beyond is never traced (for a shadow ray, which starts on
 // the part, often the most of it). A span may then end at the cut, inside
 // the solid and outside the ray's range, as solid.h allows.
+// A sweep of a region, as the exporter may take it apart: the same sweep
+// of each operand of the region's boolean, combined by the same boolean,
+// is the same solid (a sweep is a preimage, which commutes with booleans).
+class RegionSweep {
+ public:
+  virtual ~RegionSweep() = default;
+  virtual const RegionPtr& sweptRegion() const = 0;
+  // The same sweep of another region, placed as this one.
+  virtual SolidPtr sweepOf(RegionPtr region) const = 0;
+};
+
 inline void cutSweepWindow(const Ray& ray, double& t0, double& t1) {
   const double margin = 1e-6 * (t1 - t0);
   if (ray.tMin - margin > t0) t0 = ray.tMin - margin - 1e-9 * std::abs(ray.tMin);

@@ -154,6 +154,10 @@ void halfSpace(const Primitive* owner, double f0, double f1, std::uint32_t face,
 
 }  // namespace
 
+SolidPtr Revolution::sweepOf(RegionPtr region) const {
+  return placedAs(std::make_shared<Revolution>(std::move(region), angleDegrees_));
+}
+
 Revolution::Revolution(RegionPtr region, double angleDegrees)
     : angleDegrees_(angleDegrees),
       angle_(angleDegrees * std::numbers::pi / 180.0),

@@ -19,7 +19,7 @@
 
 namespace csgray::detail {
 
-class Revolution : public PrimitiveShape<Revolution> {
+class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
  public:
   // Throws std::invalid_argument for an angle not in (0, 360], or a
   // region with points at u < 0 (crossing the axis), or a bad region.
@@ -28,6 +28,8 @@ class Revolution : public PrimitiveShape<Revolution> {
   const RegionPtr& region() const { return swept_->region(); }
   double angleDegrees() const { return angleDegrees_; }
   std::string kind() const override { return "rotate_extrude"; }
+  const RegionPtr& sweptRegion() const override { return region(); }
+  SolidPtr sweepOf(RegionPtr region) const override;
 
   bool firstBoundaryCutsShort() const override { return true; }
 

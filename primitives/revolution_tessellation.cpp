@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -37,6 +38,19 @@ TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const
   }
   if (!(reach > 0.0))
     throw std::invalid_argument("rotate_extrude: the region lies on the axis and has no volume");
+  // A loop that meets the axis at one point only (a circle of radius r at
+  // distance r) turns into a solid pinched to a point there, as a horn
+  // torus is: no 2-manifold mesh holds it.
+  for (const auto& loop : loops)
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      if (loop[i].x == 0.0 && loop[(i + 1) % loop.size()].x > 0.0 &&
+          loop[(i + loop.size() - 1) % loop.size()].x > 0.0) {
+        std::ostringstream msg;
+        msg << "rotate_extrude: the region touches the axis at the one point (0, " << loop[i].y
+            << "), where the solid pinches to a point that no printable mesh can hold; move the "
+               "region off the axis a little, or let it meet the axis along an edge";
+        throw std::invalid_argument(msg.str());
+      }
   const double half = 0.5 * tolerance;
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
   const int steps = arcSegments(reach, angle_, half, least);

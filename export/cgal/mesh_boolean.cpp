@@ -33,6 +33,7 @@
 #include "export/cgal/stray_shells.h"
 #include "export/collinear_points.h"
 #include "export/grazed_faces.h"
+#include "export/sweeps_apart.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -1509,6 +1510,10 @@ bool hasOrderedOperands(const Solid& solid) {
                      [](const SolidPtr& child) { return hasOrderedOperands(*child); });
 }
 
+// meshOfSolid's work, in the orders it tries (below).
+PartMesh meshInOrders(const Solid& solid, double tolerance, StoredCoordinate stored,
+                      MeshBooleanStats& counts, bool doubles);
+
 }  // namespace
 
 const char* booleanInProgress() { return inProgress; }
@@ -1527,6 +1532,31 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
         "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
+  try {
+    return meshInOrders(solid, tolerance, stored, counts, doubles);
+  } catch (const std::runtime_error&) {
+    // A last try, with the sweeps of touching regions taken apart
+    // (export/sweeps_apart.h); where that fails too, the first error.
+    SolidPtr apart;
+    try {
+      apart = sweepsTakenApart(solid.shared_from_this());
+    } catch (const std::invalid_argument&) {
+    }
+    if (!apart || apart.get() == &solid) throw;
+    try {
+      PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
+      counts.sweepsApart = true;
+      return part;
+    } catch (const std::runtime_error&) {
+    }
+    throw;
+  }
+}
+
+namespace {
+
+PartMesh meshInOrders(const Solid& solid, double tolerance, StoredCoordinate stored,
+                      MeshBooleanStats& counts, bool doubles) {
   // Where several solids touch near one place, the offsets that resolve
   // their contacts (docs/cli.md, "Contacts") are made pair by pair in the
   // order the booleans meet them, and an order can leave two moved faces
@@ -1570,5 +1600,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   }
   std::rethrow_exception(firstNotRefused ? firstNotRefused : first);
 }
+
+}  // namespace
 
 }  // namespace csgray::detail

@@ -728,6 +728,51 @@ TEST(ContactExport, TheKnurledKnobsGroovesEndOnTheFilletsTangentLine) {
   EXPECT_TRUE(test::checksOut(*solid, kTolerance));
 }
 
+// Sweeps of regions that touch themselves: meshed as one set of polygons
+// they have an edge of four faces, or faces that cross, and failed; the
+// export takes them apart into the sweeps of the region's operands, whose
+// contacts are resolved as solids' are. Volumes by Pappus for the turned.
+TEST(ContactExport, SweepsOfRegionsThatTouchThemselvesAreTakenApart) {
+  struct Case {
+    const char* source;
+    double volume, area;
+  } cases[] = {
+      // Two squares corner to corner: an edge contact, joined by a bridge.
+      {"return linear_extrude{square(1) + square(1):translate(1, 1), height=1}", 2.0, 10.0},
+      // The same on a plate.
+      {"return linear_extrude{square(1) + square(1):translate(1, 1), height=1}\n"
+       "  + box{size={2, 2, 1}}:translate(0, 0, -1)",
+       6.0, 20.0},
+      // Two circles side by side: tangent along a line.
+      {"return linear_extrude{circle(1) + circle(1):translate(2, 0), height=2}", 4 * kPi, 12 * kPi},
+      // Turned: two tangent circles at 2 and 4 from the axis, 2π²ρr² each;
+      // two squares corner to corner, 2πρ̄A each.
+      {"return rotate_extrude{circle(1):translate(2, 0) + circle(1):translate(4, 0)}",
+       2 * kPi * kPi * 6, 4 * kPi * kPi * 6},
+      {"return rotate_extrude{square(1):translate(1, 0) + square(1):translate(2, 1)}",
+       2 * kPi * (1.5 + 2.5), 2 * kPi * 4 * 4},
+  };
+  for (const Case& c : cases) {
+    MeshBooleanStats stats;
+    meshOfSolid(*part(c.source), kTolerance, nullptr, &stats);
+    EXPECT_TRUE(stats.sweepsApart) << c.source;
+    exportsValid(c.source, c.volume, kTolerance * c.area);
+  }
+}
+
+TEST(ContactExport, ARegionThatTouchesTheAxisAtAPointIsRefusedSayingSo) {
+  // A horn torus: pinched to a point on the axis, as torus{R=1, r=1} is.
+  try {
+    meshOfSolid(*part("return rotate_extrude{circle(1):translate(1, 0)}"), kTolerance);
+    ADD_FAILURE() << "exported";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("rotate_extrude: the region touches the axis at the one "
+                                         "point"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
   // examples/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
   // 1 deep.
