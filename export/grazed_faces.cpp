@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <glm/geometric.hpp>
 
 namespace csgray::detail {
@@ -28,9 +29,26 @@ void clip(const Polygon& in, const dvec3& normal, double offset, Polygon& out) {
 
 }  // namespace
 
-bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const TriangleMesh& minuend,
-                      double tolerance) {
+GrazeTest::GrazeTest(const TriangleMesh& minuend, double tolerance)
+    : minuend_(minuend), tolerance_(tolerance) {
+  boxes_.reserve(minuend.size());
+  for (const TriangleMesh::Triangle& t : minuend.triangles) {
+    Bounds box;
+    for (std::uint32_t i : t) box.include(minuend.points[i]);
+    boxes_.push_back(box);
+  }
+}
+
+bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const {
+  const double tolerance = tolerance_;
   const double loose = 2.0 * tolerance;
+  // Only the triangles near the cutter: within the reach of its moved
+  // faces and loosened prisms.
+  const Bounds near{box.lo - dvec3(2.0 * loose), box.hi + dvec3(2.0 * loose)};
+  std::vector<std::size_t> nearby;
+  for (std::size_t i = 0; i < boxes_.size(); ++i)
+    if (boxes_[i].overlaps(near)) nearby.push_back(i);
+  if (nearby.empty()) return false;
   const std::vector<BoundingPlane> judged = planes;
   bool moved = false;
   Polygon polygon, clipped;
@@ -39,8 +57,9 @@ bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const TriangleMesh& mi
     // How far beyond the face the minuend reaches within its prism and
     // slab; past the tolerance, the face cuts into it.
     double reach = 0.0;
-    for (const TriangleMesh::Triangle& t : minuend.triangles) {
-      const dvec3 p[3] = {minuend.points[t[0]], minuend.points[t[1]], minuend.points[t[2]]};
+    for (std::size_t i : nearby) {
+      const TriangleMesh::Triangle& t = minuend_.triangles[i];
+      const dvec3 p[3] = {minuend_.points[t[0]], minuend_.points[t[1]], minuend_.points[t[2]]};
       auto beyond = [&](const BoundingPlane& plane, double by) {
         return glm::dot(plane.normal, p[0]) > plane.offset + by &&
                glm::dot(plane.normal, p[1]) > plane.offset + by &&

@@ -21,14 +21,25 @@
 
 namespace csgray::detail {
 
-// The cutter is the convex polytope of the planes (normal·p <= offset,
-// unit normals). For each plane, the minuend's triangles are taken where
-// they lie within the face's prism (every other plane, loosened by twice
-// the tolerance) and less than twice the tolerance beyond the plane; if
-// what lies beyond reaches no further than the tolerance, the plane moves
-// out a tenth of the tolerance past it. Each plane is judged against the
-// planes as they were. Returns whether any moved.
-bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const TriangleMesh& minuend,
-                      double tolerance);
+// The minuend's triangles, held for the cutters of one difference.
+class GrazeTest {
+ public:
+  GrazeTest(const TriangleMesh& minuend, double tolerance);
+
+  // The cutter is the convex polytope of the planes (normal·p <= offset,
+  // unit normals) within `box`. For each plane, the minuend's triangles
+  // are taken where they lie within the face's prism (every other plane,
+  // loosened by twice the tolerance) and less than twice the tolerance
+  // beyond the plane; if what lies beyond reaches no further than the
+  // tolerance, the plane moves out a tenth of the tolerance past it. Each
+  // plane is judged against the planes as they were. Returns whether any
+  // moved.
+  bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const;
+
+ private:
+  const TriangleMesh& minuend_;
+  double tolerance_;
+  std::vector<Bounds> boxes_;  // the triangles' boxes
+};
 
 }  // namespace csgray::detail

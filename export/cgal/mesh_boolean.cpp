@@ -470,6 +470,7 @@ class Evaluator {
   void clearGrazedCutters(std::span<const SolidPtr> operands, std::vector<Piece>& cutters,
                           const Piece& minuend) {
     std::optional<TriangleMesh> exactMinuend;  // in doubles, made once if needed
+    std::optional<GrazeTest> test;
     for (std::size_t i = 0; i < operands.size(); ++i) {
       auto* primitive = dynamic_cast<const Primitive*>(operands[i].get());
       Piece& cutter = cutters[i];
@@ -477,10 +478,11 @@ class Evaluator {
       std::optional<std::vector<BoundingPlane>> planes =
           boundingPlanes(*primitive, frame_.evalFrame(primitive->frame()));
       if (!planes) continue;
-      if (!minuend.doubles && !exactMinuend) exactMinuend = trianglesOf(minuend.mesh, true);
-      if (!clearGrazedFaces(*planes, minuend.doubles ? minuend.doubles->mesh : *exactMinuend,
-                            tolerance_))
-        continue;
+      if (!test) {
+        if (!minuend.doubles) exactMinuend = trianglesOf(minuend.mesh, true);
+        test.emplace(minuend.doubles ? minuend.doubles->mesh : *exactMinuend, tolerance_);
+      }
+      if (!test->clearGrazedFaces(*planes, cutter.box)) continue;
       // The moved faces stay within twice the tolerance of the old.
       const dvec3 margin(0.01 * glm::length(cutter.box.size()) + 2.0 * tolerance_);
       Piece cleared =
