@@ -1,6 +1,7 @@
 #include "primitives/cylinder.h"
 
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 
 #include "engine/moved_box.h"
@@ -23,7 +24,17 @@ Cylinder::Cylinder(double r1, double r2, double height)
 }
 
 void Cylinder::objectSpans(const Ray& ray, SpanList& out) const {
-  const dvec3& o = ray.origin;
+  // A ray from far away (an orthographic camera placed far off, a long
+  // telephoto) makes the side's coefficients huge and nearly cancelling:
+  // c = o.x² + o.y² − r² lost the radius against 6·10⁷ units, and the side
+  // broke into noise. Such a ray is solved from its point nearest the
+  // axis's middle, and its parameters moved back by that far.
+  const dvec3 middle(0.0, 0.0, 0.5 * height_);
+  const double reach = 256.0 * std::max({r1_, r2_, height_});
+  double t0 = 0.0;
+  if (glm::dot(ray.origin - middle, ray.origin - middle) > reach * reach)
+    t0 = glm::dot(middle - ray.origin, ray.dir) / glm::dot(ray.dir, ray.dir);
+  const dvec3 o = ray.origin + t0 * ray.dir;
   const dvec3& d = ray.dir;
   // Slab 0 <= z <= h.
   double zIn = -kInfinity, zOut = kInfinity;
@@ -44,8 +55,9 @@ void Cylinder::objectSpans(const Ray& ray, SpanList& out) const {
   Interval side[2];
   int n = quadraticSublevel(a, b, c, side);
   for (int i = 0; i < n; ++i) {
-    Boundary in = side[i].lo > zIn ? boundary(side[i].lo, kSide) : boundary(zIn, capIn);
-    Boundary out_ = side[i].hi < zOut ? boundary(side[i].hi, kSide) : boundary(zOut, capOut);
+    Boundary in = side[i].lo > zIn ? boundary(t0 + side[i].lo, kSide) : boundary(t0 + zIn, capIn);
+    Boundary out_ =
+        side[i].hi < zOut ? boundary(t0 + side[i].hi, kSide) : boundary(t0 + zOut, capOut);
     if (in.t > out_.t || out_.t < ray.tMin || in.t > ray.tMax) continue;
     out.push_back(in, out_);
   }

@@ -421,6 +421,30 @@ TEST(CylinderPrimitive, ConeFrustumChord) {
   EXPECT_EQ(Primitive::create<Cylinder>(1.0, 1.0, 1.0)->kind(), "cylinder");
 }
 
+// From far off (an orthographic camera placed 10⁸ away) the chords are
+// those seen from near: the side's quadratic, solved at the far origin,
+// lost the radius to cancellation and broke into noise.
+TEST(CylinderPrimitive, ChordsFromFarAwayAreExact) {
+  auto cylinder = Primitive::create<Cylinder>(3.0, 3.0, 6.0);
+  auto cone = Primitive::create<Cylinder>(2.0, 1.0, 4.0);
+  for (const double far : {1e5, 1e8, 1e12}) {
+    for (const double y : {0.0, 1.0, 2.9}) {
+      // A horizontal line at height 3, distance y from the axis: a chord
+      // of 2·sqrt(9 − y²), entered at far − sqrt(9 − y²).
+      const SpanList spans = spansOf(*cylinder, Ray(dvec3(-far, y, 3), dvec3(1, 0, 0)));
+      ASSERT_EQ(spans.size(), 1u) << far << " " << y;
+      const double half = std::sqrt(9.0 - y * y);
+      EXPECT_NEAR(spans[0].length(), 2.0 * half, 1e-15 * far + 1e-12) << far << " " << y;
+      EXPECT_NEAR(spans[0].in.t, far - half, 1e-15 * far + 1e-12) << far << " " << y;
+    }
+    // The frustum at z = 2, radius 1.5, along an oblique line.
+    const dvec3 dir = glm::normalize(dvec3(1, 1, 0));
+    const SpanList chord = spansOf(*cone, Ray(dvec3(0, 0, 2) - far * dir, dir));
+    ASSERT_EQ(chord.size(), 1u) << far;
+    EXPECT_NEAR(chord[0].length(), 3.0, 1e-15 * far + 1e-12) << far;
+  }
+}
+
 // Side normals: (x, y, 0)/r on a cylinder; on the frustum r1 = 2, r2 = 1,
 // h = 4 the side's generator runs along (-1, 0, 4), so the outward normal
 // in the xz-plane is (4, 0, 1)/sqrt(17), rotated about z with the point.
