@@ -353,11 +353,19 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
   return pass;
 }
 
+double Renderer::offOf(const dvec3& point) const {
+  // Far above the rounding of a hit point, far below any feature a part
+  // could have: a billionth of the scene's size, and a ten-trillionth of
+  // the distance from the origin, about 450 units in the last place of the
+  // point's coordinates (a point far off is rounded to them). A billionth
+  // of that distance, as it was, is a thousandth at 10⁶: as large as a
+  // small part placed there, whose shadows then started beyond it.
+  return 1e-9 * scale_ + 1e-13 * glm::length(point);
+}
+
 dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const {
   const Material& m = *sp.material;
-  // Start shadow rays just off the surface: far above the rounding of a hit
-  // point (~1e-16 relative), far below any feature a part could have.
-  dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  dvec3 origin = sp.point + offOf(sp.point) * sp.normal;
   // I = Koh·O + Σ Fᵢ·(Kod·O·cos α + r·cos^f β) over the light that shadow
   // rays let through: Lambert's diffuse term and Phong's highlight (Phong,
   // "Illumination for Computer Generated Pictures", 1975; docs/theory.md).
@@ -405,7 +413,7 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
 dvec3 Renderer::transmittedHighlight(const ShadingPoint& sp, const dvec3& onward,
                                      TraceContext& ctx) const {
   const Material& m = *sp.material;
-  const dvec3 origin = sp.point - (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  const dvec3 origin = sp.point - offOf(sp.point) * sp.normal;
   const dvec3 along = glm::normalize(onward);
   dvec3 color(0.0);
   forEachLightSample(lights_, sp.point, ctx.rng, [&](const Light& light, const dvec3& s) {
@@ -448,7 +456,7 @@ dvec3 Renderer::indirect(const ShadingPoint& sp, const Media& media, int depth, 
                           ? std::min(0.9, largest(sp.material->diffuse * sp.color))
                           : 1.0;
   const int rays = ctx.bounces == 0 ? scene_.indirect.samples : 1;
-  const dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  const dvec3 origin = sp.point + offOf(sp.point) * sp.normal;
   dvec3 sum(0.0);
   ++ctx.bounces;
   for (int i = 0; i < rays; ++i) {
@@ -464,7 +472,7 @@ double Renderer::unoccluded(const ShadingPoint& sp, TraceContext& ctx) const {
   const int rays = scene_.ambientOcclusion.samples;
   const double reach =
       scene_.ambientOcclusion.distance > 0.0 ? scene_.ambientOcclusion.distance : 0.1 * scale_;
-  const dvec3 origin = sp.point + (1e-9 * (scale_ + glm::length(sp.point))) * sp.normal;
+  const dvec3 origin = sp.point + offOf(sp.point) * sp.normal;
   int open = 0;
   for (int i = 0; i < rays; ++i) {
     const double u = ctx.rng.next(), v = ctx.rng.next();
@@ -503,7 +511,7 @@ double Renderer::footprint(double t) const {
 }
 
 double Renderer::skyHiddenAt(const dvec3& ground, bool drawn, TraceContext& ctx) const {
-  const dvec3 origin = ground + dvec3(0.0, 0.0, 1e-9 * (scale_ + glm::length(ground)));
+  const dvec3 origin = ground + dvec3(0.0, 0.0, offOf(ground));
   const auto sky = cadLook_->skyPointsFor(ground, drawn);
   auto hidden = [&](int i) {
     ++ctx.counts.shadow;
@@ -622,7 +630,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   if ((leaving || hit->surface) && m.transmittedSpecular > 0.0 && kt > 0.0 && through)
     color += kt * tint * transmittedHighlight(sp, *through, ctx);
 
-  double offset = 1e-9 * (scale_ + glm::length(sp.point));
+  double offset = offOf(sp.point);
   bool deeper = depth < scene_.limits.maxDepth;
   double kTinted = kt * largest(tint);
   bool mirror = kr > 0.0 && deeper && weight * kr >= scene_.limits.minWeight;

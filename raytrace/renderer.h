@@ -182,6 +182,9 @@ class Renderer {
   // The colour a camera ray sees with the scene's highlighted solids laid
   // over it (OpenSCAD's `#`): drawn on top, whatever is in front.
   dvec3 withHighlights(const Ray& ray, const dvec3& color) const;
+  // How far off the surface at point rays start that leave it (shadow,
+  // mirrored, refracted and scattered rays), so that they do not meet it.
+  double offOf(const dvec3& point) const;
 
   std::shared_ptr<const Scene> sectioned_;  // the scene cut, when options.section says
   const Scene& scene_;                      // the scene rendered: the given one, or sectioned_

@@ -993,6 +993,42 @@ TEST(Shading, DepthAndNormalAovsOfPlanesFacingTheCamera) {
 
 // ------------------------------------------------------------- cameras
 
+// A block 0.01 × 0.01 × 0.005 on a slab, lit from above at a slant, seen
+// from above: its
+// shadow, a strip as long as the cube is tall times the light's slope,
+// covers the same pixels at the origin and 10⁶ away. Rays left the surface
+// a billionth of the distance from the origin off it (10⁻³ there), beyond
+// such a cube, and its shadow was lost.
+TEST(Shading, ASmallPartFarFromTheOriginCastsTheSameShadow) {
+  const int w = 80, h = 80;
+  std::vector<bool> shadowed[2];
+  for (int k = 0; k < 2; ++k) {
+    const dvec3 at = k == 0 ? dvec3(0.0) : dvec3(1e6, -2e6, 5e5);
+    Scene scene;
+    scene.objects.push_back(boxFromTo(at + dvec3(-0.05, -0.05, -0.01), at + dvec3(0.05, 0.05, 0.0))
+                                ->withDefaultMaterial(matte(dvec3(1.0), 0.0, 1.0)));
+    scene.objects.push_back(boxFromTo(at + dvec3(-0.005, -0.005, 0.0), at + dvec3(0.005))
+                                ->withDefaultMaterial(matte(dvec3(1.0), 0.0, 1.0)));
+    scene.lights.push_back(Light{Light::Kind::Point, at + dvec3(-1.0, 0.0, 1.0)});
+    scene.camera = CameraSpec{at + dvec3(0, 0, 1), at, dvec3(0, 1, 0), 45.0, true, 0.04};
+    scene.background = kBlack;
+    const Image image = Renderer(scene, {w, h, 1}).render();
+    int count = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const bool dark = image.at(x, y).x < 0.01;
+        shadowed[k].push_back(dark);
+        count += dark;
+      }
+    // The strip beside the cube: 0.005 long (its height times the
+    // light's slope, 1), 0.01 wide: 10 × 20 pixels of 0.0005.
+    EXPECT_NEAR(count, 200, 25) << k;
+  }
+  int differ = 0;
+  for (std::size_t i = 0; i < shadowed[0].size(); ++i) differ += shadowed[0][i] != shadowed[1][i];
+  EXPECT_LE(differ, 2);
+}
+
 TEST(Shading, OrthographicSilhouetteDoesNotDependOnDistance) {
   const double r = 1.3, orthoWidth = 5.0;
   const int w = 80, h = 60;
