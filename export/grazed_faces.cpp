@@ -1,6 +1,7 @@
 #include "export/grazed_faces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -30,13 +31,50 @@ void clip(const Polygon& in, const dvec3& normal, double offset, Polygon& out) {
 }  // namespace
 
 GrazeTest::GrazeTest(const TriangleMesh& minuend, double tolerance)
-    : minuend_(minuend), tolerance_(tolerance) {
+    : minuend_(minuend), tolerance_(tolerance), seen_(minuend.size(), 0) {
   boxes_.reserve(minuend.size());
   for (const TriangleMesh::Triangle& t : minuend.triangles) {
     Bounds box;
     for (std::uint32_t i : t) box.include(minuend.points[i]);
     boxes_.push_back(box);
+    whole_.include(box);
   }
+  // About four triangles a cell where they spread over the box's face.
+  cells_ = std::clamp(int(std::sqrt(double(minuend.size()) / 4.0)), 1, 256);
+  grid_.resize(std::size_t(cells_) * std::size_t(cells_));
+  for (std::uint32_t i = 0; i < boxes_.size(); ++i) {
+    int lo[2], hi[2];
+    cellRange(boxes_[i], lo, hi);
+    for (int y = lo[1]; y <= hi[1]; ++y)
+      for (int x = lo[0]; x <= hi[0]; ++x) grid_[std::size_t(y) * cells_ + x].push_back(i);
+  }
+}
+
+void GrazeTest::cellRange(const Bounds& box, int lo[2], int hi[2]) const {
+  for (int axis = 0; axis < 2; ++axis) {
+    const double size = whole_.hi[axis] - whole_.lo[axis];
+    auto cell = [&](double x) {
+      const double at = size > 0.0 ? (x - whole_.lo[axis]) / size * cells_ : 0.0;
+      return std::clamp(int(std::floor(at)), 0, cells_ - 1);
+    };
+    lo[axis] = cell(box.lo[axis]);
+    hi[axis] = cell(box.hi[axis]);
+  }
+}
+
+void GrazeTest::trianglesNear(const Bounds& box, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  if (!box.overlaps(whole_)) return;
+  ++query_;
+  int lo[2], hi[2];
+  cellRange(box, lo, hi);
+  for (int y = lo[1]; y <= hi[1]; ++y)
+    for (int x = lo[0]; x <= hi[0]; ++x)
+      for (std::uint32_t i : grid_[std::size_t(y) * cells_ + x])
+        if (seen_[i] != query_) {
+          seen_[i] = query_;
+          if (boxes_[i].overlaps(box)) out.push_back(i);
+        }
 }
 
 bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const {
@@ -45,9 +83,8 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
   // Only the triangles near the cutter: within the reach of its moved
   // faces and loosened prisms.
   const Bounds near{box.lo - dvec3(2.0 * loose), box.hi + dvec3(2.0 * loose)};
-  std::vector<std::size_t> nearby;
-  for (std::size_t i = 0; i < boxes_.size(); ++i)
-    if (boxes_[i].overlaps(near)) nearby.push_back(i);
+  std::vector<std::uint32_t> nearby;
+  trianglesNear(near, nearby);
   if (nearby.empty()) return false;
   const std::vector<BoundingPlane> judged = planes;
   bool moved = false;
@@ -57,7 +94,7 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
     // How far beyond the face the minuend reaches within its prism and
     // slab; past the tolerance, the face cuts into it.
     double reach = 0.0;
-    for (std::size_t i : nearby) {
+    for (std::uint32_t i : nearby) {
       const TriangleMesh::Triangle& t = minuend_.triangles[i];
       const dvec3 p[3] = {minuend_.points[t[0]], minuend_.points[t[1]], minuend_.points[t[2]]};
       auto beyond = [&](const BoundingPlane& plane, double by) {

@@ -14,6 +14,7 @@
 // changes the part by less than the tolerance and leaves no fin.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "tessellation/tessellation.h"
@@ -37,9 +38,20 @@ class GrazeTest {
   bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const;
 
  private:
+  // The triangles whose boxes meet `box`, by a grid over the minuend's
+  // box in x and y: each cell lists the triangles whose boxes reach it.
+  void trianglesNear(const Bounds& box, std::vector<std::uint32_t>& out) const;
+  // The cells in x and y that the box covers, clamped to the grid.
+  void cellRange(const Bounds& box, int lo[2], int hi[2]) const;
+
   const TriangleMesh& minuend_;
   double tolerance_;
   std::vector<Bounds> boxes_;  // the triangles' boxes
+  Bounds whole_;               // the minuend's box
+  int cells_ = 1;              // a side of the grid
+  std::vector<std::vector<std::uint32_t>> grid_;
+  mutable std::vector<std::uint32_t> seen_;  // per triangle: the query that last took it
+  mutable std::uint32_t query_ = 0;
 };
 
 }  // namespace csgray::detail
