@@ -1549,7 +1549,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
       PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
       counts.sweepsApart = true;
       return part;
-    } catch (const std::runtime_error&) {
+    } catch (const std::exception&) {  // whatever stops the last try, the first error stands
     }
     throw;
   }
