@@ -17,7 +17,9 @@
 namespace csgray::detail {
 
 // The part with each sweep of a boolean of regions replaced by that
-// boolean of the sweeps of its operands, down to the region's leaves;
+// boolean of the sweeps of its operands, down to the region's leaves, and
+// a leaf of several loops by the union of each outline less the holes
+// directly inside it (where that is the leaf: loops that do not cross);
 // the part itself when it has no such sweep. Throws std::invalid_argument
 // where an operand cannot be swept so (a hole of a rotate_extrude's
 // region that reaches across the axis).

@@ -751,6 +751,11 @@ TEST(ContactExport, SweepsOfRegionsThatTouchThemselvesAreTakenApart) {
        2 * kPi * kPi * 6, 4 * kPi * kPi * 6},
       {"return rotate_extrude{square(1):translate(1, 0) + square(1):translate(2, 1)}",
        2 * kPi * (1.5 + 2.5), 2 * kPi * 4 * 4},
+      // One polygon whose hole has a corner on the outline: a square of 16
+      // less a triangle of 1, taken apart into its two loops.
+      {"return linear_extrude{polygon{points={{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0}, {3, 1}, "
+       "{1, 1}}, paths={{0, 1, 2, 3}, {4, 5, 6}}}, height=1}",
+       15.0, 2 * 16 + 16 + 5},
   };
   for (const Case& c : cases) {
     MeshBooleanStats stats;
