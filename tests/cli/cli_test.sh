@@ -308,7 +308,7 @@ printf '%s\n' 'return scene{' \
   '  camera = camera{eye={0, -5, 2}, look_at={0, 0, 0}},' \
   '  lights = {sphere_light{pos={2, -2, 5}, r=1, samples=1024}},' \
   '}' > "$work/slow.lua"
-if "$csgray" render "$work/slow.lua" -o "$work/slow.png" --size 64x48 --threads 1 --samples 4 \
+if "$csgray" render "$work/slow.lua" -o "$work/slow.png" --size 64x48 --threads 1 --samples 12 \
      >"$work/stdout" 2>"$work/stderr" && [ -s "$work/slow.png" ]; then
   if [ -s "$work/stderr" ]; then fail "progress written to a pipe:"; od -c "$work/stderr" | head -5; else pass; fi
   seconds=$(sed -n 's/.* in \([0-9.]*\) s$/\1/p' "$work/stdout")
@@ -320,7 +320,7 @@ fi
 # The same render on a terminal (a pty from script(1), util-linux) shows the
 # bar once the first second has passed, and clears it at the end.
 if command -v script >/dev/null; then
-  script -qec "'$csgray' render '$work/slow.lua' -o '$work/slow.png' --size 64x48 --threads 1 --samples 4" \
+  script -qec "'$csgray' render '$work/slow.lua' -o '$work/slow.png' --size 64x48 --threads 1 --samples 12" \
     /dev/null >"$work/tty" 2>&1
   # This run's own time decides (a loaded machine makes the first run slow
   # and this one fast, or the other way round).
