@@ -59,6 +59,39 @@ ShellApproach nearestShells(const TriangleMesh& mesh, const MeshShells& shells) 
       if (d < best.distance) best = {d, p, q};
     }
   }
+  // Shells that touch where one has a vertex and the other a face (a
+  // cone's tip on a box) come closer than any two of their vertices: each
+  // vertex is held against the faces of other shells within the best
+  // distance yet along x, sweeping both along x.
+  std::vector<std::uint32_t> faces(mesh.triangles.size());
+  std::iota(faces.begin(), faces.end(), 0u);
+  auto lowX = [&](std::uint32_t f) {
+    const TriangleMesh::Triangle& t = mesh.triangles[f];
+    return std::min({mesh.points[t[0]].x, mesh.points[t[1]].x, mesh.points[t[2]].x});
+  };
+  auto highX = [&](std::uint32_t f) {
+    const TriangleMesh::Triangle& t = mesh.triangles[f];
+    return std::max({mesh.points[t[0]].x, mesh.points[t[1]].x, mesh.points[t[2]].x});
+  };
+  std::sort(faces.begin(), faces.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return lowX(a) < lowX(b); });
+  std::vector<std::uint32_t> active;  // faces begun along x, not yet left behind
+  std::size_t nextFace = 0;
+  budget = 20'000'000;
+  for (std::size_t i = 0; i < order.size() && budget > 0; ++i) {
+    const dvec3& p = mesh.points[order[i]];
+    while (nextFace < faces.size() && lowX(faces[nextFace]) <= p.x + best.distance)
+      active.push_back(faces[nextFace++]);
+    std::erase_if(active, [&](std::uint32_t f) { return highX(f) < p.x - best.distance; });
+    for (std::uint32_t f : active) {
+      if (budget-- == 0) break;
+      const TriangleMesh::Triangle& t = mesh.triangles[f];
+      if (shells.shellOfPoint[t[0]] == shells.shellOfPoint[order[i]]) continue;
+      const double d =
+          pointTriangleDistance(p, mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+      if (d < best.distance) best = {d, p, p};
+    }
+  }
   return best;
 }
 

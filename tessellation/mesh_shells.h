@@ -17,10 +17,10 @@ struct MeshShells {
 
 MeshShells meshShells(const TriangleMesh& mesh);
 
-// The nearest two points of different shells, through their vertices
-// (infinite distance for fewer than two shells)
-// (the gap between two shells is at most this, and at a cut made by a
-// boolean, where both sides have vertices on the cut's rim, about it).
+// The nearest two points of different shells, a vertex of one and a
+// vertex or a face of another (infinite distance for fewer than two
+// shells; where it is a face, both points are the vertex). Past a budget
+// of pairs, the nearest found so far: an upper bound.
 struct ShellApproach {
   double distance = 0.0;
   dvec3 a{0.0}, b{0.0};

@@ -26,6 +26,7 @@
 #include "primitives/mesh_solid.h"
 #include "primitives/sphere.h"
 #include "primitives/torus.h"
+#include "tessellation/mesh_shells.h"
 
 namespace csgray::detail {
 namespace {
@@ -273,6 +274,28 @@ void expectMeshOf(const Case& c, const TriangleMesh& mesh, double tolerance, dou
 }
 
 // ---- Tests ------------------------------------------------------------------------------
+
+// Two shells whose nearest points are a vertex of one and the middle of
+// a face of the other: a pyramid's tip 10⁻⁴ over a box's top. Vertex to
+// vertex they are 5 apart; the shells are 10⁻⁴ apart, and nearestShells
+// (the check's "separate shells" warning) says so.
+TEST(Tessellation, NearestShellsMeetVertexToFace) {
+  TriangleMesh mesh = Primitive::create<Box>(dvec3(10.0))->tessellate(0.01, Bounds());
+  const std::uint32_t base = std::uint32_t(mesh.points.size());
+  const double z = 10.0 + 1e-4;
+  for (const dvec3& p : {dvec3(5, 5, z), dvec3(3, 3, z + 2), dvec3(7, 3, z + 2), dvec3(7, 7, z + 2),
+                         dvec3(3, 7, z + 2)})
+    mesh.points.push_back(p);
+  const std::uint32_t tip = base, ring[4] = {base + 1, base + 2, base + 3, base + 4};
+  for (int k = 0; k < 4; ++k) mesh.triangles.push_back({tip, ring[(k + 1) % 4], ring[k]});
+  mesh.triangles.push_back({ring[0], ring[1], ring[2]});
+  mesh.triangles.push_back({ring[0], ring[2], ring[3]});
+  const MeshShells shells = meshShells(mesh);
+  ASSERT_EQ(shells.count, 2u);
+  const ShellApproach near = nearestShells(mesh, shells);
+  EXPECT_NEAR(near.distance, 1e-4, 1e-12);
+  EXPECT_NEAR(glm::length(0.5 * (near.a + near.b) - dvec3(5, 5, 10)), 0.0, 2e-4);
+}
 
 TEST(Tessellation, EveryBoundedPrimitiveIsClosedOutwardAndWithinTolerance) {
   for (double tolerance : {0.05, 0.002}) {
