@@ -95,11 +95,14 @@ SolidPtr sweepsTakenApart(const SolidPtr& part) {
   bool any = false;
   SolidPtr mapped = part->mapPrimitives([&](const Primitive& primitive) -> SolidPtr {
     auto* sweep = dynamic_cast<const RegionSweep*>(&primitive);
-    if (sweep == nullptr || (sweep->sweptRegion()->op() == Region::Op::Leaf &&
-                             sweep->sweptRegion()->profile().loops.size() < 2))
+    if (sweep == nullptr) return primitive.shared_from_this();
+    RegionPtr region = sweep->sweptRegion();
+    // A leaf that cannot be taken apart into its loops stays as it is:
+    // the last try is made only where something changed.
+    if (region->op() == Region::Op::Leaf && !(region = loopsApart(region)))
       return primitive.shared_from_this();
     any = true;
-    return apart(*sweep, sweep->sweptRegion());
+    return apart(*sweep, region);
   });
   return any ? mapped : part;
 }

@@ -27,7 +27,14 @@ const void* loadPluginModule(const std::string& fileName, const std::string& bui
   // The build's own module only for code that runs from the build tree (the
   // test programs): an installed copy must not load a build's module, of
   // another version perhaps, that happens to be where it was built.
-  if (found && std::string_view(self.dli_fname).starts_with(CSGRAY_BUILD_DIR))
+  // (dli_fname may be relative for the executable: its path from
+  // /proc/self/exe is asked too.)
+  const auto inBuild = [](const std::string& path) {
+    return std::string_view(path).starts_with(CSGRAY_BUILD_DIR);
+  };
+  std::error_code absoluteError;
+  if ((found && inBuild(std::filesystem::absolute(self.dli_fname, absoluteError).string())) ||
+      (!exe.empty() && inBuild(exe.string())))
     paths.push_back(builtPath);
   std::string why;
   for (const std::string& path : paths) {

@@ -72,9 +72,9 @@ dvec3 pointOf(const Mesh& mesh, typename Mesh::Vertex_index v) {
 
 // A vertex's point near enough: the middle of the interval its lazy
 // exact coordinates carry. Unlike pointOf, it never has CGAL compute an
-// exact value to narrow that interval, which would change what pointOf
-// gives for points made from it later (and so the part's mesh, by a unit
-// in the last place): for a look at the mesh that must leave it as it was.
+// exact value to narrow that interval (CGAL's to_double does where the
+// interval is wide), which narrows what later constructions from it
+// carry: for a look at the mesh that must leave it as it was.
 inline double approximately(double x) { return x; }
 template <class Exact>
 double approximately(const CGAL::Lazy_exact_nt<Exact>& x) {
