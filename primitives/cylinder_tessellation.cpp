@@ -85,9 +85,8 @@ TriangleMesh Cylinder::rimsAndSides(const CirclePolygon rim[2], double tolerance
       continue;
     }
     for (std::uint32_t s = 0; s < count[k]; ++s) {
-      const double theta = 2.0 * std::numbers::pi * s / rim[k].segments;
-      const double rho = rim[k].radiusAt(radius[k], s);
-      mesh.points.emplace_back(rho * std::cos(theta), rho * std::sin(theta), z[k]);
+      const glm::dvec2 p = rim[k].pointAt(radius[k], s);
+      mesh.points.emplace_back(p.x, p.y, z[k]);
     }
   }
   if (rim[0].segments == rim[1].segments || count[0] == 1 || count[1] == 1) {

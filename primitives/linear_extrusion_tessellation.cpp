@@ -12,7 +12,8 @@
 
 namespace csgray::detail {
 
-// The region's loops (within half the tolerance) placed at slices
+// The region's loops (within half the tolerance; circles on a cylinder's
+// rim polygon, within the whole where nothing else uses it) placed at slices
 // ζ = k/N of the height, p = S(ζ)·Rot(−τζ)·u, with the sides between
 // consecutive slices and a cap at each end (the same triangulation of the
 // loops, reversed at the bottom). Slices: one without twist and with a
@@ -25,7 +26,12 @@ namespace csgray::detail {
 // surface). N holds both within the other half of the tolerance.
 TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
-  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude");
+  // Circles take a cylinder's rim polygon (flatten()): at the whole
+  // tolerance where the sides are straight prisms, as a cylinder's are, so
+  // that a swept circle meets a cylinder of its radius on the same points.
+  const bool prism = twist_ == 0.0 && scale_.x == 1.0 && scale_.y == 1.0;
+  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude",
+                                prism ? tolerance : 0.5 * tolerance);
   auto measure = [&](double& reach, double& longest, std::size_t& points) {
     reach = longest = 0.0;
     points = 0;

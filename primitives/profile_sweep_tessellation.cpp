@@ -12,6 +12,7 @@
 
 #include "engine/degrees.h"
 #include "profile/region_evaluation.h"
+#include "tessellation/loop_crossings.h"
 
 namespace csgray::detail {
 
@@ -211,13 +212,23 @@ double signedArea2(const std::vector<dvec2>& loop) {
   return a;
 }
 
-SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind) {
+SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
+                      double circleTolerance) {
   // Evaluated exactly (circles stay circles through the booleans), then
-  // flattened by the sagitta rule: loops that neither cross nor share an
-  // edge, outer ones counter-clockwise, holes clockwise.
-  SweepLoops loops;
-  for (std::vector<dvec2>& loop : flatten(evaluate(region, tolerance), tolerance))
-    if (loop.size() >= 3 && signedArea2(loop) != 0.0) loops.push_back(std::move(loop));
+  // flattened: loops that neither cross nor share an edge, outer ones
+  // counter-clockwise, holes clockwise.
+  const Profile evaluated = evaluate(region, tolerance);
+  auto loopsOf = [&](double circles) {
+    SweepLoops loops;
+    for (std::vector<dvec2>& loop : flatten(evaluated, tolerance, circles))
+      if (loop.size() >= 3 && signedArea2(loop) != 0.0) loops.push_back(std::move(loop));
+    return loops;
+  };
+  SweepLoops loops = loopsOf(circleTolerance);
+  // A cylinder's rim polygon lies partly outside its circle: where the
+  // region comes within that of itself (two circles tangent in a heart's
+  // cusp), the loops would cross, and the inscribed polygons are taken.
+  if (circleTolerance > 0.0 && loopsMeet(loops)) loops = loopsOf(0.0);
   if (loops.empty())
     throw std::invalid_argument(std::string(kind) + ": the region has no area to export");
   return loops;

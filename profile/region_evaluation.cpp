@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <numbers>
@@ -21,6 +22,69 @@ double cross(const dvec2& a, const dvec2& b) { return a.x * b.y - a.y * b.x; }
 double largestStretch(const dmat2& m) {
   const double p = glm::dot(m[0], m[0]), s = glm::dot(m[1], m[1]), q = glm::dot(m[0], m[1]);
   return std::sqrt(0.5 * (p + s) + std::hypot(0.5 * (p - s), q));
+}
+
+// The radius of an arc of a circle given as evaluate() gives them (axes
+// r·I, its angles measured from +x), or 0 for any other edge.
+double gridRadius(const ProfileEdge& e) {
+  const dmat2& a = e.axes;
+  const bool circle = e.kind == ProfileEdge::Kind::Arc && a[0][1] == 0.0 && a[1][0] == 0.0 &&
+                      a[0][0] == a[1][1] && a[0][0] > 0.0;
+  return circle ? a[0][0] : 0.0;
+}
+
+// The points of an arc of a circle about center from angle0 through turn,
+// in its sense, after its first point: the points of a cylinder's rim of
+// its radius (circlePolygon, placed as primitives/cylinder_tessellation.cpp
+// places them: CirclePolygon::pointAt) that lie strictly inside the arc. A rim point within 10⁻⁹
+// of a step of an end counts as at it. An end that is another arc of the
+// same circle (`fromJoined`, `toJoined`: no corner) is left to the rim's
+// points, the one at that end included where it is a step.
+//
+// A corner keeps its exact point on the circle (a flat face through it
+// stays flush with what stands on it), and the rim's chord is followed to
+// within the rim's error of it, along the arc, before the outline turns to
+// the corner. A chord from the corner straight to the next step would sag
+// up to 1.5 times the rim's error when it spans nearly a step, and would
+// leave the rim: a cylinder of the radius beside the sweep would show the
+// sliver between them as a crevice a step long. The turn instead leaves a
+// notch no deeper than the rim's error, and the corner's turn stays a
+// turn (a point at the corner's own angle would fold back on a flat end
+// that runs along the radius). An arc shorter than twice that is its
+// chord.
+void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radius,
+                   const CirclePolygon& polygon, double angle0, double turn, bool fromJoined,
+                   bool toJoined) {
+  constexpr double kEps = 1e-9;
+  const double perStep = polygon.segments / (2.0 * std::numbers::pi);
+  // In steps along the arc's sense, so that the arc runs upwards.
+  const double sense = turn < 0.0 ? -1.0 : 1.0;
+  const double u0 = sense * angle0 * perStep, u1 = u0 + std::abs(turn) * perStep;
+  // The rim's error along the arc, in steps.
+  const double reach = polygon.error * perStep / radius;
+  if (!fromJoined && !toJoined && u1 - u0 < 2.0 * reach) return;
+  const auto n = static_cast<long long>(polygon.segments);
+  auto rimPoint = [&](double k) {
+    const long long signedStep = std::llround(sense * k);
+    return center + polygon.pointAt(radius, static_cast<std::uint32_t>(((signedStep % n) + n) % n));
+  };
+  // The point of the rim's chord from step k to k + 1 at u.
+  auto chordPoint = [&](double k, double u) {
+    const dvec2 a = rimPoint(k) - center, e = rimPoint(k + 1.0) - rimPoint(k);
+    const double theta = sense * u / perStep;
+    const dvec2 d(std::cos(theta), std::sin(theta));
+    // center + s·d on the chord a + t·e: s (d × e) = a × e.
+    return center + cross(a, e) / cross(d, e) * d;
+  };
+  const double first = fromJoined ? std::ceil(u0 - kEps) : std::floor(u0 + kEps) + 1.0;
+  const double last = toJoined ? std::floor(u1 - kEps) : std::ceil(u1 - kEps) - 1.0;
+  // Room for a turn at both corners, each within reach of its own.
+  const double room = std::min(reach, (u1 - u0) / 3.0);
+  if (!fromJoined && (first > last || first - u0 > room))
+    points.push_back(chordPoint(std::floor(u0 + kEps), u0 + room));
+  for (double k = first; k <= last; k += 1.0) points.push_back(rimPoint(k));
+  if (!toJoined && (first > last || u1 - last > room))
+    points.push_back(chordPoint(std::ceil(u1 - kEps) - 1.0, u1 - room));
 }
 
 }  // namespace
@@ -55,15 +119,27 @@ double evaluationTolerance(const Region& region) {
   return size > 0.0 ? fraction * size : fraction;
 }
 
-std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance) {
+std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance,
+                                        double circleTolerance) {
   requireTolerance("a region's outline", tolerance);
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   std::vector<std::vector<dvec2>> polygons;
   polygons.reserve(profile.loops.size());
   for (const ProfileLoop& loop : profile.loops) {
     std::vector<dvec2>& points = polygons.emplace_back();
-    for (const ProfileEdge& e : loop.edges) {
-      points.push_back(e.from);
+    const std::size_t count = loop.edges.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const ProfileEdge& e = loop.edges[i];
+      const ProfileEdge& before = loop.edges[(i + count - 1) % count];
+      const double onGrid = circleTolerance > 0.0 ? gridRadius(e) : 0.0;
+      // Where two arcs of one circle meet (a circle CGAL split into
+      // halves), the point between them is no corner: the grid's points
+      // stand in for it, as on a cylinder's rim.
+      auto sameCircle = [&](const ProfileEdge& other) {
+        return onGrid > 0.0 && gridRadius(other) == onGrid && other.center == e.center;
+      };
+      const bool joined = sameCircle(before);
+      if (!joined) points.push_back(e.from);
       if (e.bezier()) {
         const int steps = bezierSteps(e, tolerance);
         for (int k = 1; k < steps; ++k) points.push_back(bezierPoint(e, double(k) / steps));
@@ -71,6 +147,11 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
       if (e.kind != ProfileEdge::Kind::Arc) continue;
       double turn = e.angle1 - e.angle0;
       if (std::abs(turn) > kTwoPi) turn = std::copysign(kTwoPi, turn);
+      if (onGrid > 0.0) {
+        addGridPoints(points, e.center, onGrid, circlePolygon(onGrid, circleTolerance), e.angle0,
+                      turn, joined, sameCircle(loop.edges[(i + 1) % count]));
+        continue;
+      }
       // An ellipse's inscribed polygon is the image of the unit circle's,
       // so it strays by at most the circle's sagitta times the largest
       // stretch of the axes; a full circle gets at least 8 sides (as

@@ -46,8 +46,13 @@ double area(const Profile& evaluated);
 
 // Each loop as a polygon within `tolerance` of the exact edges (the sagitta
 // rule of the cylinders' tessellation for arcs); a loop's first point is
-// not repeated at its end.
-std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance);
+// not repeated at its end. With a circleTolerance, arcs of circles instead
+// take the points of a cylinder's rim of their radius at that tolerance
+// (circlePolygon) that lie on them, between their ends, so that a swept
+// circle meets a cylinder of its radius on the same points: a ring swept
+// around a cylinder leaves no crevice between their polygons.
+std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance,
+                                        double circleTolerance = 0.0);
 
 // OpenSCAD's offset(r = r): every point within |r| of the region (r > 0)
 // or the points of the region at least -r from its outside (r < 0); the

@@ -3,9 +3,11 @@
 // revolution from a profile, and convex polytopes from their planes.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,13 @@ struct CirclePolygon {
   // The distance from the axis of step s's point, for a circle of radius rho.
   double radiusAt(double rho, std::uint32_t s) const {
     return rho * out * (1.0 + shift * (double((s * 7919u) % 17u) - 8.0) / 8.0);
+  }
+  // Step s's point for a circle of radius rho about the origin, the steps
+  // counted counter-clockwise from +x.
+  glm::dvec2 pointAt(double rho, std::uint32_t s) const {
+    const double theta = 2.0 * std::numbers::pi * s / segments;
+    const double r = radiusAt(rho, s);
+    return {r * std::cos(theta), r * std::sin(theta)};
   }
 };
 // The polygon of circles of radius up to `radius`, within `tolerance`.

@@ -311,6 +311,39 @@ TEST(ContactExport, ABoxAsWideAsTheCylinderItHalvesLeavesNoFins) {
   }
 }
 
+TEST(ContactExport, ASweptCircleMeetsACylinderOfItsRadiusOnItsPoints) {
+  // A sweep flattened its circles by a rule of its own, and a cylinder of
+  // the same radius beside it (a ring around a boss, a pin through a
+  // swept plate's hole) left crevices between the two polygons, 0.005
+  // wide and as deep as the sweep, which failed the check. Swept circles
+  // now take the cylinder's rim polygon: also where the ring's arcs end in
+  // corners (half a ring), where a step falls between them (turned 1°), and
+  // off the origin.
+  const double pi = kPi;
+  struct Part {
+    const char* source;
+    double volume, area;
+  };
+  const Part parts[] = {
+      {"local ring = circle(5):offset{r=2} - circle(5)\n"
+       "return cylinder{r=5, h=5} + linear_extrude{ring, height=3}",
+       125 * pi + 72 * pi, 2 * 25 * pi + 10 * pi * 5 + 2 * 24 * pi + 14 * pi * 3},
+      {"local ring = circle(10):translate(3, 4) - circle(5):translate(3, 4)\n"
+       "return cylinder{r=5, h=5}:translate(3, 4, 0) + linear_extrude{ring, height=3}",
+       125 * pi + 225 * pi, 2 * 100 * pi + 20 * pi * 3 + 10 * pi * 2},
+      {"local ring = (circle(8) - circle(5)) * square{size={20, 20}}:translate(-10, 0)\n"
+       "return cylinder{r=5, h=6} + linear_extrude{ring, height=3}",
+       150 * pi + 58.5 * pi, 2 * 25 * pi + 10 * pi * 6 + 39 * pi + 8 * pi * 3 + 18},
+      {"local ring = (circle(8) - circle(5)) * square{size={20, 20}}:translate(-10, 0)\n"
+       "return cylinder{r=5, h=6} + linear_extrude{ring:rotate(1), height=3}",
+       150 * pi + 58.5 * pi, 2 * 25 * pi + 10 * pi * 6 + 39 * pi + 8 * pi * 3 + 18},
+      {"local plate = linear_extrude{square{size={30, 30}, center=true} - circle(4), height=2}\n"
+       "return plate + cylinder{r=4, h=10}:translate(0, 0, -4)",
+       1800 + 128 * pi, 2 * 900 + 4 * 60 + 8 * pi * 8 + 2 * 16 * pi},
+  };
+  for (const Part& part : parts) exportsValid(part.source, part.volume, kTolerance * part.area);
+}
+
 TEST(ContactExport, AHemisphereCutByABoxAsWideAsTheBall) {
   // The box's sides touch the ball's equator, and its bottom the south
   // pole: the ball's mesh, a little outside the sphere, kept slivers below

@@ -10,11 +10,13 @@
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 
 #include "profile/region_evaluation.h"
+#include "tessellation/tessellation.h"
 
 namespace csgray::detail {
 namespace {
@@ -324,6 +326,70 @@ TEST(Region, FlattenedArcsKeepTheTolerance) {
     EXPECT_GE(glm::length(middle), 1.0 - tolerance);
   }
   EXPECT_THROW(flatten(p, 0.0), std::invalid_argument);
+}
+
+TEST(Region, FlattenedCirclesTakeACylindersRimPolygon) {
+  // With a circle tolerance, a hole of radius 5 is the rim of a cylinder
+  // of radius 5 at that tolerance, point for point (the points of
+  // primitives/cylinder_tessellation.cpp), so that a swept plate with the
+  // hole meets a pin through it on the same points.
+  const double tolerance = 0.01;
+  const Profile p = evaluate(*subtract(rect(-8, -8, 8, 8), disc({0, 0}, 5)), kTolerance);
+  const auto polygons = flatten(p, 0.5 * tolerance, tolerance);
+  ASSERT_EQ(polygons.size(), 2u);
+  const CirclePolygon rim = circlePolygon(5.0, tolerance);
+  std::vector<dvec2> expected;
+  for (std::uint32_t s = 0; s < std::uint32_t(rim.segments); ++s) {
+    const double theta = 2.0 * std::numbers::pi * s / rim.segments;
+    const double rho = rim.radiusAt(5.0, s);
+    expected.emplace_back(rho * std::cos(theta), rho * std::sin(theta));
+  }
+  auto lexicographic = [](const dvec2& a, const dvec2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  };
+  std::vector<dvec2> hole = polygons[1];
+  std::sort(hole.begin(), hole.end(), lexicographic);
+  std::sort(expected.begin(), expected.end(), lexicographic);
+  EXPECT_EQ(hole, expected);
+}
+
+TEST(Region, FlattenedArcsBetweenCornersKeepTheirCornersAndTheTolerance) {
+  // Half a ring: two arcs (radii 5 and 8) between corners on y = 0, which
+  // stay where they are, exactly; every point and every edge's middle
+  // lies within the tolerance of the exact outline, also where a corner
+  // falls between the rim's steps (the ring turned by 1°).
+  const double tolerance = 0.01;
+  for (const double turn : {0.0, 1.0}) {
+    SCOPED_TRACE(turn);
+    const double c = std::cos(turn * kPi / 180.0), s = std::sin(turn * kPi / 180.0);
+    auto turned = [&](const dvec2& q) { return dvec2(c * q.x - s * q.y, s * q.x + c * q.y); };
+    const dvec2 corners[4] = {turned({-8, 0}), turned({-5, 0}), turned({5, 0}), turned({8, 0})};
+    const RegionPtr half = polygon({{corners[3], turned({8, 9}), turned({-8, 9}), corners[0]}});
+    const Profile p =
+        evaluate(*intersect(subtract(disc({0, 0}, 8), disc({0, 0}, 5)), half), kTolerance);
+    const auto polygons = flatten(p, 0.5 * tolerance, tolerance);
+    ASSERT_EQ(polygons.size(), 1u);
+    const std::vector<dvec2>& loop = polygons[0];
+    for (const dvec2& corner : corners) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const dvec2& q : loop) nearest = std::min(nearest, glm::length(q - corner));
+      EXPECT_LE(nearest, 1e-12 * 8.0) << corner.x << ", " << corner.y;
+    }
+    // Distance from the exact outline: the two arcs above the cut and the
+    // cut's two pieces.
+    auto away = [&](const dvec2& q) {
+      const double along = c * q.x + s * q.y, across = -s * q.x + c * q.y;
+      const double r = glm::length(q);
+      double d = std::abs(across) + (std::abs(along) < 5 || std::abs(along) > 8 ? 1.0 : 0.0);
+      if (across >= -1e-12) d = std::min({d, std::abs(r - 5.0), std::abs(r - 8.0)});
+      return d;
+    };
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      EXPECT_LE(away(loop[i]), tolerance) << loop[i].x << ", " << loop[i].y;
+      const dvec2 middle = 0.5 * (loop[i] + loop[(i + 1) % loop.size()]);
+      EXPECT_LE(away(middle), tolerance) << middle.x << ", " << middle.y;
+    }
+  }
 }
 
 TEST(Region, NonFiniteInputIsRefused) {
