@@ -440,7 +440,11 @@ std::vector<ConvexPolyhedron::Plane> platonicPlanes(Platonic solid, double R) {
 }
 
 std::shared_ptr<ConvexPolyhedron> platonicSolid(Platonic solid, double R) {
-  return Primitive::create<ConvexPolyhedron>(platonicPlanes(solid, R), platonicInfo(solid).name);
+  // Its vertices as Coxeter gives them, not as three planes meet in
+  // doubles: an octahedron's tip at (0, 0, -R) exactly, flush with a face
+  // there.
+  return Primitive::create<ConvexPolyhedron>(platonicPlanes(solid, R), platonicVertices(solid, R),
+                                             platonicInfo(solid).name);
 }
 
 }  // namespace csgray::detail

@@ -16,6 +16,7 @@
 
 #include "primitives/primitive_shape.h"
 #include "primitives/profile_sweep.h"
+#include "profile/region_evaluation.h"
 
 namespace csgray::detail {
 
@@ -38,6 +39,14 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion>, public RegionSwe
   std::string kind() const override { return "linear_extrude"; }
   const RegionPtr& sweptRegion() const override { return region(); }
   SolidPtr sweepOf(RegionPtr region) const override;
+
+  // Straight: no twist, and a scale of 1 (its sides are prisms).
+  bool prism() const { return twist_ == 0.0 && scale_.x == 1.0 && scale_.y == 1.0; }
+  // A copy whose export cuts the region's circles that are among `rims`
+  // (in its plane) on those cylinders' rim polygons (flatten()), as a
+  // prism: the exporter gives it the circles that the part's cylinders
+  // stand on (export/swept_rims.h).
+  std::shared_ptr<const LinearExtrusion> withRims(std::vector<CircleRim> rims) const;
 
   // The point of the profile plane that p (object space) lies over, and
   // whether the extrusion holds p.
@@ -64,6 +73,7 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion>, public RegionSwe
   double height_, z0_;
   double twistDegrees_, twist_;  // twist_ in radians
   dvec2 scale_;
+  std::vector<CircleRim> rims_;  // withRims; empty for a part's own
 };
 
 }  // namespace csgray::detail

@@ -12,8 +12,8 @@
 
 namespace csgray::detail {
 
-// The region's loops (within half the tolerance; circles on a cylinder's
-// rim polygon, within the whole where nothing else uses it) placed at slices
+// The region's loops (within half the tolerance; circles on rims_, within
+// the whole, where nothing else uses it) placed at slices
 // ζ = k/N of the height, p = S(ζ)·Rot(−τζ)·u, with the sides between
 // consecutive slices and a cap at each end (the same triangulation of the
 // loops, reversed at the bottom). Slices: one without twist and with a
@@ -24,14 +24,19 @@ namespace csgray::detail {
 // quad over an edge of length ℓ out of its plane by at most
 // |sx − sy|·ℓ/(4N) (the bilinear patch between its corners is the exact
 // surface). N holds both within the other half of the tolerance.
+std::shared_ptr<const LinearExtrusion> LinearExtrusion::withRims(
+    std::vector<CircleRim> rims) const {
+  auto copy = std::make_shared<LinearExtrusion>(*this);
+  copy->rims_ = std::move(rims);
+  return copy;
+}
+
 TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
-  // Circles take a cylinder's rim polygon (flatten()): at the whole
-  // tolerance where the sides are straight prisms, as a cylinder's are, so
-  // that a swept circle meets a cylinder of its radius on the same points.
-  const bool prism = twist_ == 0.0 && scale_.x == 1.0 && scale_.y == 1.0;
+  // Circles a cylinder stands on take its rim polygon (flatten()), at the
+  // whole tolerance, as the cylinder's: the sides are straight prisms.
   SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude",
-                                prism ? tolerance : 0.5 * tolerance);
+                                prism() ? rims_ : std::vector<CircleRim>{}, tolerance);
   auto measure = [&](double& reach, double& longest, std::size_t& points) {
     reach = longest = 0.0;
     points = 0;

@@ -213,22 +213,22 @@ double signedArea2(const std::vector<dvec2>& loop) {
 }
 
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
-                      double circleTolerance) {
+                      std::span<const CircleRim> rims, double rimTolerance) {
   // Evaluated exactly (circles stay circles through the booleans), then
   // flattened: loops that neither cross nor share an edge, outer ones
   // counter-clockwise, holes clockwise.
   const Profile evaluated = evaluate(region, tolerance);
-  auto loopsOf = [&](double circles) {
+  auto loopsOf = [&](std::span<const CircleRim> on) {
     SweepLoops loops;
-    for (std::vector<dvec2>& loop : flatten(evaluated, tolerance, circles))
+    for (std::vector<dvec2>& loop : flatten(evaluated, tolerance, on, rimTolerance))
       if (loop.size() >= 3 && signedArea2(loop) != 0.0) loops.push_back(std::move(loop));
     return loops;
   };
-  SweepLoops loops = loopsOf(circleTolerance);
+  SweepLoops loops = loopsOf(rims);
   // A cylinder's rim polygon lies partly outside its circle: where the
   // region comes within that of itself (two circles tangent in a heart's
   // cusp), the loops would cross, and the inscribed polygons are taken.
-  if (circleTolerance > 0.0 && loopsMeet(loops)) loops = loopsOf(0.0);
+  if (!rims.empty() && loopsMeet(loops)) loops = loopsOf({});
   if (loops.empty())
     throw std::invalid_argument(std::string(kind) + ": the region has no area to export");
   return loops;

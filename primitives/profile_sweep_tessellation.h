@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <functional>
 #include <glm/vec2.hpp>
+#include <span>
 #include <vector>
 
 #include "profile/region.h"
+#include "profile/region_evaluation.h"
 #include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
@@ -17,13 +19,12 @@ namespace csgray::detail {
 using SweepLoops = std::vector<std::vector<dvec2>>;
 
 // The region evaluated (profile/region_evaluation.h) and flattened into
-// loops within `tolerance` of its edges (arcs by the sagitta rule, or with
-// a circleTolerance, arcs of circles on a cylinder's rim polygon at that
-// tolerance: flatten()), outer loops counter-clockwise, holes clockwise,
-// none crossing another. Throws std::invalid_argument naming kind for a
-// region without area.
+// loops within `tolerance` of its edges (arcs by the sagitta rule; arcs on
+// `rims`, on a cylinder's rim polygon at rimTolerance: flatten()), outer
+// loops counter-clockwise, holes clockwise, none crossing another. Throws
+// std::invalid_argument naming kind for a region without area.
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
-                      double circleTolerance = 0.0);
+                      std::span<const CircleRim> rims = {}, double rimTolerance = 0.0);
 
 // Triangles covering the polygon set (loops as sweepLoops makes them),
 // counter-clockwise in the plane: triangle(a, b, c) gets ids[loop][point]

@@ -43,15 +43,13 @@ double gridRadius(const ProfileEdge& e) {
 //
 // A corner keeps its exact point on the circle (a flat face through it
 // stays flush with what stands on it), and the rim's chord is followed to
-// within the rim's error of it, along the arc, before the outline turns to
-// the corner. A chord from the corner straight to the next step would sag
-// up to 1.5 times the rim's error when it spans nearly a step, and would
-// leave the rim: a cylinder of the radius beside the sweep would show the
-// sliver between them as a crevice a step long. The turn instead leaves a
-// notch no deeper than the rim's error, and the corner's turn stays a
-// turn (a point at the corner's own angle would fold back on a flat end
-// that runs along the radius). An arc shorter than twice that is its
-// chord.
+// within the rim's error of it, along the arc (to a point a hair inside the
+// chord), before the outline turns to the corner. A chord from the corner straight to the next step
+// would sag up to 1.5 times the rim's error when it spans nearly a step, and would leave the rim: a
+// cylinder of the radius beside the sweep would show the sliver between them as a crevice a step
+// long. The turn instead leaves a notch no deeper than the rim's error, and the corner's turn stays
+// a turn (a point at the corner's own angle would fold back on a flat end that runs along the
+// radius). An arc shorter than twice that is its chord.
 void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radius,
                    const CirclePolygon& polygon, double angle0, double turn, bool fromJoined,
                    bool toJoined) {
@@ -73,8 +71,11 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
     const dvec2 a = rimPoint(k) - center, e = rimPoint(k + 1.0) - rimPoint(k);
     const double theta = sense * u / perStep;
     const dvec2 d(std::cos(theta), std::sin(theta));
-    // center + s·d on the chord a + t·e: s (d × e) = a × e.
-    return center + cross(a, e) / cross(d, e) * d;
+    // center + s·d on the chord a + t·e: s (d × e) = a × e; then a part in
+    // 10⁹ nearer the centre, so that the outline runs into a cylinder on
+    // the rim there rather than along its face to rounding (which left the
+    // union slivers that rounding made cross).
+    return center + (1.0 - 1e-9) * (cross(a, e) / cross(d, e)) * d;
   };
   const double first = fromJoined ? std::ceil(u0 - kEps) : std::floor(u0 + kEps) + 1.0;
   const double last = toJoined ? std::floor(u1 - kEps) : std::ceil(u1 - kEps) - 1.0;
@@ -120,9 +121,18 @@ double evaluationTolerance(const Region& region) {
 }
 
 std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance,
-                                        double circleTolerance) {
+                                        std::span<const CircleRim> rims, double rimTolerance) {
   requireTolerance("a region's outline", tolerance);
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  // The rim an arc lies on, if any.
+  auto rimOf = [&](const ProfileEdge& e) -> const CircleRim* {
+    const double r = gridRadius(e);
+    if (r == 0.0) return nullptr;
+    for (const CircleRim& rim : rims)
+      if (std::abs(rim.radius - r) <= 1e-9 * r && glm::length(rim.center - e.center) <= 1e-9 * r)
+        return &rim;
+    return nullptr;
+  };
   std::vector<std::vector<dvec2>> polygons;
   polygons.reserve(profile.loops.size());
   for (const ProfileLoop& loop : profile.loops) {
@@ -131,7 +141,8 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
     for (std::size_t i = 0; i < count; ++i) {
       const ProfileEdge& e = loop.edges[i];
       const ProfileEdge& before = loop.edges[(i + count - 1) % count];
-      const double onGrid = circleTolerance > 0.0 ? gridRadius(e) : 0.0;
+      const CircleRim* rim = rims.empty() ? nullptr : rimOf(e);
+      const double onGrid = rim ? gridRadius(e) : 0.0;
       // Where two arcs of one circle meet (a circle CGAL split into
       // halves), the point between them is no corner: the grid's points
       // stand in for it, as on a cylinder's rim.
@@ -148,8 +159,8 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
       double turn = e.angle1 - e.angle0;
       if (std::abs(turn) > kTwoPi) turn = std::copysign(kTwoPi, turn);
       if (onGrid > 0.0) {
-        addGridPoints(points, e.center, onGrid, circlePolygon(onGrid, circleTolerance), e.angle0,
-                      turn, joined, sameCircle(loop.edges[(i + 1) % count]));
+        addGridPoints(points, e.center, onGrid, circlePolygon(onGrid, rimTolerance), e.angle0, turn,
+                      joined, sameCircle(loop.edges[(i + 1) % count]));
         continue;
       }
       // An ellipse's inscribed polygon is the image of the unit circle's,

@@ -44,15 +44,24 @@ double evaluationTolerance(const Region& region);
 // exact for every kind of edge.
 double area(const Profile& evaluated);
 
+// A circle of the plane whose arcs flatten() cuts on the polygon a
+// cylinder standing on it has (circlePolygon, its first point on +x from
+// the centre): its centre and radius.
+struct CircleRim {
+  dvec2 center{0.0};
+  double radius = 0.0;
+};
+
 // Each loop as a polygon within `tolerance` of the exact edges (the sagitta
 // rule of the cylinders' tessellation for arcs); a loop's first point is
-// not repeated at its end. With a circleTolerance, arcs of circles instead
-// take the points of a cylinder's rim of their radius at that tolerance
-// (circlePolygon) that lie on them, between their ends, so that a swept
-// circle meets a cylinder of its radius on the same points: a ring swept
-// around a cylinder leaves no crevice between their polygons.
+// not repeated at its end. An arc of a circle that is one of `rims` (its
+// centre and radius within 10⁻⁹ of the radius) instead takes the points of
+// that cylinder's rim polygon at rimTolerance that lie on it, between its
+// ends, so that a swept circle meets the cylinder on the same points: a
+// ring swept around a cylinder leaves no crevice between their polygons.
 std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance,
-                                        double circleTolerance = 0.0);
+                                        std::span<const CircleRim> rims = {},
+                                        double rimTolerance = 0.0);
 
 // OpenSCAD's offset(r = r): every point within |r| of the region (r > 0)
 // or the points of the region at least -r from its outside (r < 0); the

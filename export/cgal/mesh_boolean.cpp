@@ -34,6 +34,7 @@
 #include "export/collinear_points.h"
 #include "export/grazed_faces.h"
 #include "export/sweeps_apart.h"
+#include "export/swept_rims.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -354,6 +355,8 @@ class Evaluator {
   // (an unbounded primitive is meshed within a larger box), which the
   // operations above it cut away.
   Piece evaluate(const Solid& solid, const Bounds& outer) {
+    // The first call is the part's: its cylinders, for its extrusions.
+    if (!rims_) rims_.emplace(solid, [this](const Primitive& p) { return placedFrame(p); });
     const Bounds region = outer.intersected(frame_.evalBounds(solid.bounds()));
     if (region.empty()) return {};
     if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) {
@@ -557,12 +560,25 @@ class Evaluator {
     return pieces;
   }
 
-  // The primitive's triangles within the region, in the evaluation's frame.
+  // The frame a primitive is tessellated in: the evaluation's.
+  Affine placedFrame(const Primitive& primitive) const {
+    return frame_.identity ? primitive.frame() : frame_.evalFrame(primitive.frame());
+  }
+
+  // The primitive's triangles within the region, in the evaluation's frame;
+  // an extrusion's circles that a cylinder of the part stands on on that
+  // cylinder's rim polygon (export/swept_rims.h).
   TriangleMesh tessellation(const Primitive& primitive, const Bounds& region) const {
-    if (frame_.identity) return primitive.tessellate(tolerance_, region);
-    return std::dynamic_pointer_cast<const Primitive>(
-               primitive.withFrame(frame_.evalFrame(primitive.frame())))
-        ->tessellate(tolerance_, region);
+    std::shared_ptr<const Primitive> placed;
+    if (!frame_.identity)
+      placed = std::dynamic_pointer_cast<const Primitive>(
+          primitive.withFrame(frame_.evalFrame(primitive.frame())));
+    const Primitive& shape = placed ? *placed : primitive;
+    if (auto* sweep = dynamic_cast<const LinearExtrusion*>(&shape); sweep && !rims_->empty()) {
+      std::vector<CircleRim> rims = rims_->of(*sweep, sweep->frame());
+      if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
+    }
+    return shape.tessellate(tolerance_, region);
   }
 
   // Each primitive keeps within its limit; the whole part within
@@ -661,6 +677,8 @@ class Evaluator {
         return std::none_of(members.begin(), members.end(),
                             [&](const Piece& m) { return m.box.overlaps(piece.box); });
       };
+      for (const std::vector<Piece>& members : groups)
+        for (const Piece& member : members) closeHairGap(member, piece);
       auto group = std::find_if(groups.begin(), groups.end(), apart);
       if (group == groups.end()) {
         groups.emplace_back();
@@ -737,6 +755,7 @@ class Evaluator {
       for (std::size_t i = 0; i + 1 < pieces.size(); i += 2) {
         Piece& a = pieces[i];
         Piece& b = pieces[i + 1];
+        if (op == Boolean::Op::Union) closeHairGap(a, b);
         if (!a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
           weldNearVertices(a, b, hairApart(a.box, b.box));
@@ -1027,6 +1046,39 @@ class Evaluator {
     return std::max({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) * 0x1p-40;
   }
 
+  // Solids stacked at a height computed in doubles (a box 0.3 high with
+  // another on it at 0.1 + 0.2) stand a unit in the last place off the
+  // face they stand on: their boxes are apart, so a union would join them
+  // without a boolean, and the file's rounding would then put the two
+  // faces in one place, crossing. Where b's box is apart from a's by no
+  // more than a hair across one axis-aligned plane, and meets it on the
+  // other two axes, b's points within a hair of that side of its box are
+  // moved onto a's side, which moves b by less than a hair: the solids
+  // then stand on each other exactly, and the union corefines or glues
+  // them as it does solids stacked exactly. Both must be in doubles, so
+  // that a's side is where its points are.
+  static void closeHairGap(const Piece& a, Piece& b) {
+    if (!a.doubles || !b.doubles || a.box.empty() || b.box.empty() || a.box.overlaps(b.box)) return;
+    const double reach = std::max(hair(a.box), hair(b.box));
+    int axis = -1;
+    bool above = false;
+    for (int k = 0; k < 3; ++k) {
+      const bool over = a.box.hi[k] < b.box.lo[k], under = b.box.hi[k] < a.box.lo[k];
+      if (!over && !under) continue;
+      const double gap = over ? b.box.lo[k] - a.box.hi[k] : a.box.lo[k] - b.box.hi[k];
+      if (axis >= 0 || gap > reach) return;
+      axis = k;
+      above = over;
+    }
+    if (axis < 0) return;
+    const double from = above ? b.box.lo[axis] : b.box.hi[axis];
+    const double to = above ? a.box.hi[axis] : a.box.lo[axis];
+    for (dvec3& p : b.doubles->mesh.points)
+      if (std::abs(p[axis] - from) <= reach) p[axis] = to;
+    b.box = b.doubles->mesh.bounds();
+    b.shape = 0;
+  }
+
   // Where the boxes overlap or come within a hair of each other, grown by
   // a hair; empty when they are further apart.
   static Bounds hairApart(const Bounds& a, const Bounds& b) {
@@ -1171,6 +1223,7 @@ class Evaluator {
   EvaluationOrder order_;
   bool refusedPinch_ = false;
   std::unordered_map<const Material*, std::uint32_t> tags_;
+  std::optional<SweptRims> rims_;
 };
 
 // The evaluated mesh with its points rounded to doubles (or floats), tags

@@ -206,6 +206,44 @@ TEST(ContactExport, BoxesTouchingAtAPointStayApartThere) {
   EXPECT_EQ(meshShells(mesh).count, 2u);
 }
 
+TEST(ContactExport, ATipOnAFaceIsSplit) {
+  // An octahedron's tip on the middle of a box's top face, and of a cube's:
+  // the tip was a unit in the last place short of the face, the two were
+  // joined without a boolean, and the file's rounding made them touch
+  // ("self-intersecting"). A point contact: two shells.
+  const double octahedron = 4.0 / 3.0 * 1000.0;  // (4/3) R³
+  const double side = 20.0 / std::sqrt(3.0);
+  for (const auto& [source, volume] : std::vector<std::pair<std::string, double>>{
+           {"return octahedron{r=10} + box{size={20, 20, 5}, center=true}:translate(0, 0, -12.5)",
+            octahedron + 2000.0},
+           {"return octahedron{r=10} + hexahedron{r=10}:translate(0, 0, -10 - 10 / math.sqrt(3))",
+            octahedron + side * side * side}}) {
+    const TriangleMesh mesh = exportsValid(source, volume, 0.1);
+    EXPECT_EQ(meshShells(mesh).count, 2u) << source;
+  }
+}
+
+TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
+  // 0.1 + 0.2 is 0.30000000000000004: the upper solid stood a unit in the
+  // last place above the lower one's top, they were joined without a
+  // boolean, and the file's rounding put the two faces in one place. So
+  // too a tetrahedron on a cube of its circumradius, its base wider than
+  // the cube's top (R/√3 + R/3 − R/3 is one unit above R/√3).
+  const double side = 20.0 / std::sqrt(3.0);
+  const double tetrahedron = 8.0 * 1000.0 / (9.0 * std::sqrt(3.0));  // 8R³/(9√3)
+  for (const auto& [source, volume] : std::vector<std::pair<std::string, double>>{
+           {"return box{size={10, 10, 0.3}} + box{size={4, 4, 1}}:translate(2, 2, 0.1 + 0.2)",
+            30.0 + 16.0},
+           {"return cylinder{r=5, h=0.3} + cylinder{r=3, h=1}:translate(0, 0, 0.1 + 0.2)",
+            kPi * (25 * 0.3 + 9)},
+           {"return hexahedron{r=10} + tetrahedron{r=10}:translate(0, 0, 10 / math.sqrt(3) + 10 / "
+            "3)",
+            side * side * side + tetrahedron}}) {
+    const TriangleMesh mesh = exportsValid(source, volume, kTolerance * 1500.0);
+    EXPECT_EQ(meshShells(mesh).count, 1u) << source;
+  }
+}
+
 TEST(ContactExport, ACutWhosePiecesTouchAlongAnEdgeGoesThrough) {
   // Two cutters touch along the edge x = y = 5: the block's material that
   // meets there is cut apart, so that the mesh stays a 2-manifold.
@@ -342,6 +380,20 @@ TEST(ContactExport, ASweptCircleMeetsACylinderOfItsRadiusOnItsPoints) {
        1800 + 128 * pi, 2 * 900 + 4 * 60 + 8 * pi * 8 + 2 * 16 * pi},
   };
   for (const Part& part : parts) exportsValid(part.source, part.volume, kTolerance * part.area);
+}
+
+TEST(ContactExport, ARibTangentInsideASweptRingLeavesNoGap) {
+  // A rib standing in a ring with its end on the inner circle: the ring's
+  // inscribed polygon lies inside the circle, so the rib's end overlaps it
+  // everywhere. A cylinder's rim polygon, outside the circle at its
+  // points, left a gap along the end as deep as the ring, which is why a
+  // sweep takes that polygon only where a cylinder stands on the circle.
+  // The rib reaches x²/30 into the ring across its width of 2 (4 × 2/90).
+  const double pi = kPi;
+  exportsValid(
+      "return linear_extrude{circle(20) - circle(15), height=4} + "
+      "box{size={2, 10, 8}}:translate(-1, 5, 0)",
+      pi * 175 * 4 + 160 - 4.0 * 2.0 / 90.0, kTolerance * (2 * 175 * pi + 140 * pi + 232));
 }
 
 TEST(ContactExport, AHemisphereCutByABoxAsWideAsTheBall) {

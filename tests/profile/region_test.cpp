@@ -329,13 +329,14 @@ TEST(Region, FlattenedArcsKeepTheTolerance) {
 }
 
 TEST(Region, FlattenedCirclesTakeACylindersRimPolygon) {
-  // With a circle tolerance, a hole of radius 5 is the rim of a cylinder
-  // of radius 5 at that tolerance, point for point (the points of
+  // On a rim, a hole of radius 5 is the rim of a cylinder of radius 5 at
+  // the rim's tolerance, point for point (the points of
   // primitives/cylinder_tessellation.cpp), so that a swept plate with the
   // hole meets a pin through it on the same points.
   const double tolerance = 0.01;
   const Profile p = evaluate(*subtract(rect(-8, -8, 8, 8), disc({0, 0}, 5)), kTolerance);
-  const auto polygons = flatten(p, 0.5 * tolerance, tolerance);
+  const CircleRim rims[] = {{{0, 0}, 5.0}};
+  const auto polygons = flatten(p, 0.5 * tolerance, rims, tolerance);
   ASSERT_EQ(polygons.size(), 2u);
   const CirclePolygon rim = circlePolygon(5.0, tolerance);
   std::vector<dvec2> expected;
@@ -367,7 +368,8 @@ TEST(Region, FlattenedArcsBetweenCornersKeepTheirCornersAndTheTolerance) {
     const RegionPtr half = polygon({{corners[3], turned({8, 9}), turned({-8, 9}), corners[0]}});
     const Profile p =
         evaluate(*intersect(subtract(disc({0, 0}, 8), disc({0, 0}, 5)), half), kTolerance);
-    const auto polygons = flatten(p, 0.5 * tolerance, tolerance);
+    const CircleRim rims[] = {{{0, 0}, 5.0}, {{0, 0}, 8.0}};
+    const auto polygons = flatten(p, 0.5 * tolerance, rims, tolerance);
     ASSERT_EQ(polygons.size(), 1u);
     const std::vector<dvec2>& loop = polygons[0];
     for (const dvec2& corner : corners) {

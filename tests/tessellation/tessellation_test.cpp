@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -556,6 +557,12 @@ TEST(Tessellation, FlatPrimitivesAreExact) {
     EXPECT_EQ(int(m.points.size()), platonicInfo(solid).vertices) << platonicInfo(solid).name;
     EXPECT_EQ(int(m.triangles.size()), faceTriangles[i]) << platonicInfo(solid).name;
     for (const dvec3& v : m.points) EXPECT_NEAR(glm::length(v), 2.0, 1e-12);
+    // The corners are the vertices as tabulated, bit for bit, not where
+    // three planes meet in doubles (an octahedron's tips were 1 ulp short).
+    const std::vector<dvec3> vertices = platonicVertices(solid, 10.0);
+    for (const dvec3& v : platonicSolid(solid, 10.0)->tessellate(1.0, {}).points)
+      EXPECT_NE(std::find(vertices.begin(), vertices.end(), v), vertices.end())
+          << platonicInfo(solid).name << " " << v.x << ", " << v.y << ", " << v.z;
   }
   // The polyhedron's own triangles.
   TriangleMesh cube = cubeMesh()->tessellate(1.0, {});

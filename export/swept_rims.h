@@ -1,0 +1,49 @@
+// The circles of a part's extrusions that its cylinders stand on.
+//
+// A cylinder's mesh turns on a polygon pushed a little outside its circle
+// (circlePolygon), an extrusion's on polygons inscribed in its region's
+// circles. Where the two meet on one circle (a ring swept around a boss of
+// its inner radius, a pin through a swept plate's round hole), the two
+// polygons cross, and the union keeps the slivers between them: crevices
+// a hundredth wide and as deep as the sweep, which `csgray check` rightly
+// fails. So the exporter hands each straight extrusion the circles of its
+// region that a cylinder of the part stands on, in the extrusion's plane,
+// and the extrusion cuts those on the cylinder's own rim polygon
+// (LinearExtrusion::withRims, flatten()). Only those: a rim polygon lies
+// partly outside its circle, and a flat face tangent to it from the inside
+// of a round hole (a rib standing in a ring) would then leave a gap where
+// the inscribed polygon leaves none.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "engine/affine.h"
+#include "engine/solid.h"
+#include "primitives/linear_extrusion.h"
+
+namespace csgray::detail {
+
+class SweptRims {
+ public:
+  // The part's cylinders (not cones), each in the frame `placed` gives it
+  // (the frame the export tessellates it in).
+  SweptRims(const Solid& part, const std::function<Affine(const Primitive&)>& placed);
+
+  // The rims, in the extrusion's plane, of the cylinders whose frame
+  // differs from the extrusion's (placed as the cylinders are) by a move
+  // only: a cylinder turned against the extrusion puts its rim's points
+  // elsewhere on the circle, and is left out.
+  std::vector<CircleRim> of(const LinearExtrusion& sweep, const Affine& placed) const;
+
+  bool empty() const { return cylinders_.empty(); }
+
+ private:
+  struct Rim {
+    glm::dmat4 worldFromObject;
+    double radius;
+  };
+  std::vector<Rim> cylinders_;
+};
+
+}  // namespace csgray::detail
