@@ -228,17 +228,28 @@ TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
   // last place above the lower one's top, they were joined without a
   // boolean, and the file's rounding put the two faces in one place. So
   // too a tetrahedron on a cube of its circumradius, its base wider than
-  // the cube's top (R/√3 + R/3 − R/3 is one unit above R/√3).
+  // the cube's top (R/√3 + R/3 − R/3 is one unit above R/√3), and an
+  // icosahedron turned onto a face, the box first.
   const double side = 20.0 / std::sqrt(3.0);
   const double tetrahedron = 8.0 * 1000.0 / (9.0 * std::sqrt(3.0));  // 8R³/(9√3)
+  // (5/12)(3 + √5)a³, the edge a = R/sin(2π/5).
+  const double edge = 10.0 / std::sin(2.0 * kPi / 5.0);
+  const double icosahedron = 5.0 / 12.0 * (3.0 + std::sqrt(5.0)) * edge * edge * edge;
   for (const auto& [source, volume] : std::vector<std::pair<std::string, double>>{
            {"return box{size={10, 10, 0.3}} + box{size={4, 4, 1}}:translate(2, 2, 0.1 + 0.2)",
             30.0 + 16.0},
            {"return cylinder{r=5, h=0.3} + cylinder{r=3, h=1}:translate(0, 0, 0.1 + 0.2)",
             kPi * (25 * 0.3 + 9)},
-           {"return hexahedron{r=10} + tetrahedron{r=10}:translate(0, 0, 10 / math.sqrt(3) + 10 / "
-            "3)",
-            side * side * side + tetrahedron}}) {
+           {"return hexahedron{r=10} + "
+            "tetrahedron{r=10}:translate(0, 0, 10 / math.sqrt(3) + 10 / 3)",
+            side * side * side + tetrahedron},
+           // An icosahedron turned onto a face (its inradius above the box),
+           // the face's corners a few units off the box's top.
+           {"local rin = 10 * math.sqrt((5 + 2 * math.sqrt(5)) / 15)\n"
+            "local turn = math.deg(math.acos(1 / math.sqrt(3)))\n"
+            "return box{size={30, 30, 3}, center=true}:translate(0, 0, -1.5) + "
+            "icosahedron{r=10}:rotate{angle=turn, axis={-1, 1, 0}}:translate(0, 0, rin)",
+            2700.0 + icosahedron}}) {
     const TriangleMesh mesh = exportsValid(source, volume, kTolerance * 1500.0);
     EXPECT_EQ(meshShells(mesh).count, 1u) << source;
   }
