@@ -36,19 +36,22 @@ double gridRadius(const ProfileEdge& e) {
 // The points of an arc of a circle about center from angle0 through turn,
 // in its sense, after its first point: the points of a cylinder's rim of
 // its radius (circlePolygon, placed as primitives/cylinder_tessellation.cpp
-// places them: CirclePolygon::pointAt) that lie strictly inside the arc. A rim point within 10⁻⁹
-// of a step of an end counts as at it. An end that is another arc of the
-// same circle (`fromJoined`, `toJoined`: no corner) is left to the rim's
-// points, the one at that end included where it is a step.
+// places them: CirclePolygon::pointAt) that lie strictly inside the arc.
+// A rim point within 10⁻⁹ of a step of an end counts as at it. An end that
+// is another arc of the same circle (`fromJoined`, `toJoined`: no corner)
+// is left to the rim's points, the one at that end included where it is a
+// step.
 //
 // A corner keeps its exact point on the circle (a flat face through it
 // stays flush with what stands on it), and the rim's chord is followed to
-// within the rim's error of it, along the arc (to a point a hair inside the
-// chord), before the outline turns to the corner. A chord from the corner straight to the next step
-// would sag up to 1.5 times the rim's error when it spans nearly a step, and would leave the rim: a
-// cylinder of the radius beside the sweep would show the sliver between them as a crevice a step
-// long. The turn instead leaves a notch no deeper than the rim's error, and the corner's turn stays
-// a turn (a point at the corner's own angle would fold back on a flat end that runs along the
+// within the rim's error of it, along the arc (to a point a hair inside
+// the chord), before the outline turns to the corner. A chord from the
+// corner straight to the next step would sag up to 1.5 times the rim's
+// error when it spans nearly a step, and would leave the rim: a cylinder
+// of the radius beside the sweep would show the sliver between them as a
+// crevice a step long. The turn instead leaves a notch no deeper than the
+// rim's error, and the corner's turn stays a turn (a point at the
+// corner's own angle would fold back on a flat end that runs along the
 // radius). An arc shorter than twice that is its chord.
 void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radius,
                    const CirclePolygon& polygon, double angle0, double turn, bool fromJoined,
@@ -159,8 +162,10 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
       double turn = e.angle1 - e.angle0;
       if (std::abs(turn) > kTwoPi) turn = std::copysign(kTwoPi, turn);
       if (onGrid > 0.0) {
-        addGridPoints(points, e.center, onGrid, circlePolygon(onGrid, rimTolerance), e.angle0, turn,
-                      joined, sameCircle(loop.edges[(i + 1) % count]));
+        // About the rim's own centre and radius, to which the arc's may
+        // differ by rounding: the cylinder's points, bit for bit.
+        addGridPoints(points, rim->center, rim->radius, circlePolygon(rim->radius, rimTolerance),
+                      e.angle0, turn, joined, sameCircle(loop.edges[(i + 1) % count]));
         continue;
       }
       // An ellipse's inscribed polygon is the image of the unit circle's,
