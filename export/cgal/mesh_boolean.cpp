@@ -574,7 +574,8 @@ class Evaluator {
       placed = std::dynamic_pointer_cast<const Primitive>(
           primitive.withFrame(frame_.evalFrame(primitive.frame())));
     const Primitive& shape = placed ? *placed : primitive;
-    if (auto* sweep = dynamic_cast<const LinearExtrusion*>(&shape); sweep && !rims_->empty()) {
+    if (auto* sweep = dynamic_cast<const LinearExtrusion*>(&shape);
+        sweep && rims_ && !rims_->empty()) {
       std::vector<CircleRim> rims = rims_->of(*sweep, sweep->frame());
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
@@ -1053,7 +1054,7 @@ class Evaluator {
   // faces in one place, crossing. Where b's box is apart from a's by no
   // more than a hair across one axis-aligned plane, and meets it on the
   // other two axes, b's points within a hair of that side of its box are
-  // moved onto a's side, which moves b by less than a hair: the solids
+  // moved onto a's side, which moves them by two hairs at most: the solids
   // then stand on each other exactly, and the union corefines or glues
   // them as it does solids stacked exactly. Both must be in doubles, so
   // that a's side is where its points are.
