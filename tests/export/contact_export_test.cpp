@@ -229,7 +229,8 @@ TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
   // boolean, and the file's rounding put the two faces in one place. So
   // too a tetrahedron on a cube of its circumradius, its base wider than
   // the cube's top (R/√3 + R/3 − R/3 is one unit above R/√3), and an
-  // icosahedron turned onto a face, the box first.
+  // icosahedron turned onto a face, the box first; and such gaps beside
+  // exact contacts.
   const double side = 20.0 / std::sqrt(3.0);
   const double tetrahedron = 8.0 * 1000.0 / (9.0 * std::sqrt(3.0));  // 8R³/(9√3)
   // (5/12)(3 + √5)a³, the edge a = R/sin(2π/5).
@@ -249,7 +250,25 @@ TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
             "local turn = math.deg(math.acos(1 / math.sqrt(3)))\n"
             "return box{size={30, 30, 3}, center=true}:translate(0, 0, -1.5) + "
             "icosahedron{r=10}:rotate{angle=turn, axis={-1, 1, 0}}:translate(0, 0, rin)",
-            2700.0 + icosahedron}}) {
+            2700.0 + icosahedron},
+           // Gaps next to exact contacts: plates 0.1 thick at i·0.1 (the
+           // one gap at 0.6, the rest glued face to face first), along z
+           // and along x; three boxes, each half over the one below.
+           {"local p = {}\nfor i = 0, 9 do p[#p + 1] = box{size={1, 1, 0.1}}:translate(0, 0, i * "
+            "0.1) "
+            "end\nreturn union(p)",
+            1.0},
+           {"local p = {}\nfor i = 0, 9 do p[#p + 1] = cylinder{r=1, h=0.1}:translate(0, 0, i * "
+            "0.1) "
+            "end\nreturn union(p)",
+            kPi},
+           {"local p = {}\nfor i = 0, 9 do p[#p + 1] = box{size={0.1, 1, 1}}:translate(i * 0.1, 0, "
+            "0) "
+            "end\nreturn union(p)",
+            1.0},
+           {"return box{size={1, 1, 0.3}} + box{size={1, 1, 0.3}}:translate(0.5, 0.5, 0.1 + 0.2) + "
+            "box{size={1, 1, 0.3}}:translate(1, 1, 0.6000000000000001)",
+            0.9}}) {
     const TriangleMesh mesh = exportsValid(source, volume, kTolerance * 1500.0);
     EXPECT_EQ(meshShells(mesh).count, 1u) << source;
   }
