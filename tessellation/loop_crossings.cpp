@@ -64,10 +64,16 @@ bool loopsMeet(const std::vector<std::vector<dvec2>>& loops) {
   // (cell, edge) pairs, sorted by cell: each edge in every cell its box
   // covers.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  // Loops of a few long edges among many short ones, in a box of extreme
+  // shape, could put each long edge in thousands of cells: past this many
+  // entries the loops are said to meet, which costs the caller only the
+  // polygons it would otherwise have taken.
+  const std::size_t most = 64 * edges.size() + 4096;
   for (std::uint32_t e = 0; e < edges.size(); ++e) {
     const Edge& edge = edges[e];
     const int c0 = column(std::min(edge.a.x, edge.b.x)), c1 = column(std::max(edge.a.x, edge.b.x));
     const int r0 = row(std::min(edge.a.y, edge.b.y)), r1 = row(std::max(edge.a.y, edge.b.y));
+    if (entries.size() + std::size_t(r1 - r0 + 1) * std::size_t(c1 - c0 + 1) > most) return true;
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) entries.emplace_back(std::uint32_t(r * columns + c), e);
   }

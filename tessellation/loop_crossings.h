@@ -17,7 +17,9 @@ using glm::dvec2;
 // count as meeting. In doubles: an edge within rounding of another may be
 // said to meet it, never the other way round where they cross clearly.
 // Edges are sorted into a grid of cells, about one edge each, so that the
-// cost grows with the number of edges and of edges close to each other.
+// cost grows with the number of edges and of edges close to each other;
+// loops whose edges would fill far more cells than that (a few long edges
+// across a box of extreme shape) are said to meet, without a test.
 bool loopsMeet(const std::vector<std::vector<dvec2>>& loops);
 
 }  // namespace csgray::detail
