@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -377,11 +378,28 @@ std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double
             curves.emplace_back(PlaneKernel::Circle_2(exactPoint(e.center), r * r));
           }
         } else if (e.from != e.to) {
-          // The circle through the ends and the middle: the ends are the
-          // neighbours' exactly, the centre and radius as near as doubles
-          // go. Three collinear points make a segment.
-          const dvec2 middle = e.arcPoint(0.5 * (e.angle0 + e.angle1));
-          curves.emplace_back(exactPoint(e.from), exactPoint(middle), exactPoint(e.to));
+          const PlaneKernel::FT r(radius);
+          const PlaneKernel::Point_2 c = exactPoint(e.center), a = exactPoint(e.from),
+                                     b = exactPoint(e.to);
+          if (radius > 0.0 && CGAL::squared_distance(c, a) == r * r &&
+              CGAL::squared_distance(c, b) == r * r) {
+            // Ends on the circle exactly (an offset's corner of a box, its
+            // tangent points on the axes): the arc of that circle, which a
+            // circle(r) about the same centre then meets exactly.
+            // Counter-clockwise where the angle grows through axes that do
+            // not mirror (an SVG's flip of y does).
+            const bool counterclockwise = (sweep > 0.0) == (glm::determinant(e.axes) > 0.0);
+            const PlaneKernel::Circle_2 circle(
+                c, r * r, counterclockwise ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE);
+            curves.emplace_back(circle, CircleSegmentTraits::Point_2(a.x(), a.y()),
+                                CircleSegmentTraits::Point_2(b.x(), b.y()));
+          } else {
+            // The circle through the ends and the middle: the ends are the
+            // neighbours' exactly, the centre and radius as near as doubles
+            // go. Three collinear points make a segment.
+            const dvec2 middle = e.arcPoint(0.5 * (e.angle0 + e.angle1));
+            curves.emplace_back(a, exactPoint(middle), b);
+          }
         }
         continue;
       }

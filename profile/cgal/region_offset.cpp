@@ -45,10 +45,19 @@ dvec2 toDouble(const ExactPoint& p) { return {CGAL::to_double(p.x()), CGAL::to_d
 // c ± r·((1 − t²)/(1 + t²), 2t/(1 + t²)) with t = tan(θ/2) (or tan of
 // half of θ − π, for the far half, so that |t| ≤ 1) is on the circle
 // exactly for any rational t.
+// A t within rounding of 0 or ±1 is taken as that, which puts the point at
+// c ± (r, 0) or c ± (0, r) exactly: tan(−π/4) is −0.9999999999999999, and
+// the ends of a rectangle's edges moved by r would otherwise lie a hair off
+// the axes through its corners, and off a circle of radius r about the
+// corner that a later boolean holds against them (a rounded plate less its
+// corners' circles gave slivers a hair wide that no mesh could hold).
 ExactPoint pointOnCircle(const ExactPoint& c, const FT& r, double theta) {
   const double s = std::remainder(theta, kTwoPi);
   const bool near = std::abs(s) <= 0.5 * kPi;
-  const FT t(std::tan(0.5 * (near ? s : std::remainder(s - kPi, kTwoPi))));
+  double tangent = std::tan(0.5 * (near ? s : std::remainder(s - kPi, kTwoPi)));
+  if (std::abs(std::abs(tangent) - 1.0) <= 4e-16) tangent = std::copysign(1.0, tangent);
+  if (std::abs(tangent) <= 4e-16) tangent = 0.0;
+  const FT t(tangent);
   const FT w = r / (1 + t * t);
   const FT x = w * (1 - t * t), y = w * 2 * t;
   return near ? ExactPoint(c.x() + x, c.y() + y) : ExactPoint(c.x() - x, c.y() - y);

@@ -412,6 +412,20 @@ TEST(ContactExport, ASweptCircleMeetsACylinderOfItsRadiusOnItsPoints) {
   for (const Part& part : parts) exportsValid(part.source, part.volume, kTolerance * part.area);
 }
 
+TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
+  // offset{r=5} of a rectangle less circle(5) about each corner: the
+  // region's arcs were a hair off the circles, and the sweep failed as
+  // "its tessellation is not a 2-manifold". Its sides touch the circles
+  // tangentially, so the plate is a hair thin at eight points.
+  exportsValid(
+      "local plate = square{size={40, 30}}:offset{r=5}\n"
+      "for _, p in ipairs({{0, 0}, {40, 0}, {0, 30}, {40, 30}}) do\n"
+      "  plate = plate - circle(5):translate(p[1], p[2])\n"
+      "end\n"
+      "return linear_extrude{plate, height=3}",
+      3.0 * (1900.0 - 75.0 * kPi), kTolerance * (2.0 * 1700.0 + 3.0 * 300.0));
+}
+
 TEST(ContactExport, ARibTangentInsideASweptRingLeavesNoGap) {
   // A rib standing in a ring with its end on the inner circle: the ring's
   // inscribed polygon lies inside the circle, so the rib's end overlaps it

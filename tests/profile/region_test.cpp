@@ -394,6 +394,26 @@ TEST(Region, FlattenedArcsBetweenCornersKeepTheirCornersAndTheTolerance) {
   }
 }
 
+TEST(Region, AnOffsetsCornersAreArcsOfTheCircleOfItsRadius) {
+  // A 40 × 30 rectangle grown by 5 has quarter circles of radius 5 about
+  // its corners, whose ends (the moved edges' ends) lie on the axes
+  // through the corners exactly; less a circle of radius 5 about each
+  // corner, it is one loop of area 1900 + 25π − 4·25π. The ends were a
+  // hair off (tan(π/4) in doubles), each arc became the circle through
+  // its ends and middle, a hair from circle(5), and the difference kept
+  // slivers between the two: three loops, and a sweep of it that could
+  // not be meshed.
+  Profile grown = offsetRounded(*rect(0, 0, 40, 30), 5.0, kTolerance);
+  RegionPtr plate = Region::leaf(std::move(grown));
+  for (const dvec2 corner : {dvec2(0, 0), dvec2(40, 0), dvec2(40, 30), dvec2(0, 30)})
+    plate = subtract(plate, disc(corner, 5.0));
+  const Profile p = evaluate(*plate, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  EXPECT_NEAR(area(p), 1900.0 - 75.0 * kPi, 1e-9);
+  for (const ProfileEdge& e : p.loops[0].edges)
+    if (e.kind == ProfileEdge::Kind::Arc) EXPECT_EQ(glm::length(e.axes[0]), 5.0);
+}
+
 TEST(Region, NonFiniteInputIsRefused) {
   const double nan = std::nan("");
   EXPECT_THROW(evaluate(*polygon({{{0, 0}, {1, nan}, {1, 1}}}), kTolerance), std::invalid_argument);
