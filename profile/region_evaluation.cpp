@@ -55,7 +55,7 @@ double gridRadius(const ProfileEdge& e) {
 // radius). An arc shorter than twice that is its chord.
 void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radius,
                    const CirclePolygon& polygon, double angle0, double turn, bool fromJoined,
-                   bool toJoined) {
+                   bool toJoined, const dvec2& arriving, const dvec2& leaving) {
   constexpr double kEps = 1e-9;
   const double perStep = polygon.segments / (2.0 * std::numbers::pi);
   // In steps along the arc's sense, so that the arc runs upwards.
@@ -84,11 +84,42 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   const double last = toJoined ? std::floor(u1 - kEps) : std::ceil(u1 - kEps) - 1.0;
   // Room for a turn at both corners, each within reach of its own.
   const double room = std::min(reach, (u1 - u0) / 3.0);
+  // A turn point on the far side of the line of the edge that meets the
+  // corner (the region lies left of every edge) is left out: where that
+  // edge runs into the circle tangentially (a cusp), it would cross it.
+  // The corner then lies inside the rim there, and the chord from it to
+  // the next rim point inside the rim polygon too.
+  auto turnPoint = [&](double k, double u, const dvec2& corner, const dvec2& along) {
+    const dvec2 p = chordPoint(k, u);
+    if (cross(along, p - corner) >= 0.0) points.push_back(p);
+  };
   if (!fromJoined && (first > last || first - u0 > room))
-    points.push_back(chordPoint(std::floor(u0 + kEps), u0 + room));
+    turnPoint(std::floor(u0 + kEps), u0 + room, points.back(), arriving);
   for (double k = first; k <= last; k += 1.0) points.push_back(rimPoint(k));
-  if (!toJoined && (first > last || u1 - last > room))
-    points.push_back(chordPoint(std::ceil(u1 - kEps) - 1.0, u1 - room));
+  if (!toJoined && (first > last || u1 - last > room)) {
+    const double a = sense * u1 / perStep;
+    turnPoint(std::ceil(u1 - kEps) - 1.0, u1 - room,
+              center + radius * dvec2(std::cos(a), std::sin(a)), leaving);
+  }
+}
+
+// The direction in which an edge leaves its start (at = false) or reaches
+// its end (at = true).
+dvec2 tangentAt(const ProfileEdge& e, bool atEnd) {
+  switch (e.kind) {
+    case ProfileEdge::Kind::Segment:
+      return e.to - e.from;
+    case ProfileEdge::Kind::Arc: {
+      const double angle = atEnd ? e.angle1 : e.angle0;
+      const double sense = e.angle1 < e.angle0 ? -1.0 : 1.0;
+      return sense * (e.axes * dvec2(-std::sin(angle), std::cos(angle)));
+    }
+    case ProfileEdge::Kind::Quadratic:
+      return atEnd ? e.to - e.control1 : e.control1 - e.from;
+    case ProfileEdge::Kind::Cubic:
+      return atEnd ? e.to - e.control2 : e.control1 - e.from;
+  }
+  return e.to - e.from;
 }
 
 }  // namespace
@@ -164,8 +195,10 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
       if (onGrid > 0.0) {
         // About the rim's own centre and radius, to which the arc's may
         // differ by rounding: the cylinder's points, bit for bit.
+        const ProfileEdge& after = loop.edges[(i + 1) % count];
         addGridPoints(points, rim->center, rim->radius, circlePolygon(rim->radius, rimTolerance),
-                      e.angle0, turn, joined, sameCircle(loop.edges[(i + 1) % count]));
+                      e.angle0, turn, joined, sameCircle(after), tangentAt(before, true),
+                      tangentAt(after, false));
         continue;
       }
       // An ellipse's inscribed polygon is the image of the unit circle's,

@@ -424,6 +424,23 @@ TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
       "end\n"
       "return linear_extrude{plate, height=3}",
       3.0 * (1900.0 - 75.0 * kPi), kTolerance * (2.0 * 1700.0 + 3.0 * 300.0));
+  // With cylinders standing in those notches, whose circles the sweep then
+  // cuts on the cylinders' polygons: the polygon's points pushed out of the
+  // circle crossed the side that runs into it tangentially, and the sweep
+  // fell back to inscribed polygons that left crevices round the cylinders.
+  exportsValid(
+      "local plate = square{size={40, 30}}:offset{r=5}\n"
+      "for _, p in ipairs({{0, 0}, {40, 0}, {0, 30}, {40, 30}}) do\n"
+      "  plate = plate - circle(5):translate(p[1], p[2])\n"
+      "end\n"
+      "return linear_extrude{plate, height=3} + cylinder{r=5, h=6} + "
+      "cylinder{r=5, h=6}:translate(40, 30, 0)",
+      3.0 * (1900.0 - 75.0 * kPi) + 12.0 * 25.0 * kPi,
+      kTolerance * (2.0 * 1700.0 + 3.0 * 300.0 + 2.0 * 250.0));
+  exportsValid(
+      "return linear_extrude{square{size={40, 30}}:offset{r=5} - circle(5), height=3} + "
+      "cylinder{r=5, h=6}",
+      5700.0 + 150.0 * kPi, kTolerance * (2.0 * 1900.0 + 3.0 * 300.0 + 250.0));
 }
 
 TEST(ContactExport, ARibTangentInsideASweptRingLeavesNoGap) {
