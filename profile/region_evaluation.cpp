@@ -84,22 +84,27 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   const double last = toJoined ? std::floor(u1 - kEps) : std::ceil(u1 - kEps) - 1.0;
   // Room for a turn at both corners, each within reach of its own.
   const double room = std::min(reach, (u1 - u0) / 3.0);
-  // A turn point on the far side of the line of the edge that meets the
-  // corner (the region lies left of every edge) is left out: where that
-  // edge runs into the circle tangentially (a cusp), it would cross it.
-  // The corner then lies inside the rim there, and the chord from it to
-  // the next rim point inside the rim polygon too.
-  auto turnPoint = [&](double k, double u, const dvec2& corner, const dvec2& along) {
+  // Where the edge that meets a corner turns back along the arc (a side
+  // running into the circle tangentially from the other side: a cusp), a
+  // turn point on the far side of that edge's line (the region lies left
+  // of every edge) would cross the edge, and is left out: the corner then
+  // lies inside the rim there, and the chord from it to the next rim point
+  // inside the rim polygon too. Elsewhere (a side leaving the arc along
+  // its tangent, or at an angle) the turn point stays.
+  auto turnPoint = [&](double k, double u, const dvec2& corner, const dvec2& edge,
+                       double arcAngle) {
     const dvec2 p = chordPoint(k, u);
-    if (cross(along, p - corner) >= 0.0) points.push_back(p);
+    const dvec2 arcDirection = sense * dvec2(-std::sin(arcAngle), std::cos(arcAngle));
+    if (glm::dot(edge, arcDirection) < 0.0 && cross(edge, p - corner) < 0.0) return;
+    points.push_back(p);
   };
   if (!fromJoined && (first > last || first - u0 > room))
-    turnPoint(std::floor(u0 + kEps), u0 + room, points.back(), arriving);
+    turnPoint(std::floor(u0 + kEps), u0 + room, points.back(), arriving, angle0);
   for (double k = first; k <= last; k += 1.0) points.push_back(rimPoint(k));
   if (!toJoined && (first > last || u1 - last > room)) {
     const double a = sense * u1 / perStep;
     turnPoint(std::ceil(u1 - kEps) - 1.0, u1 - room,
-              center + radius * dvec2(std::cos(a), std::sin(a)), leaving);
+              center + radius * dvec2(std::cos(a), std::sin(a)), leaving, a);
   }
 }
 

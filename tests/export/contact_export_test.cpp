@@ -441,6 +441,13 @@ TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
       "return linear_extrude{square{size={40, 30}}:offset{r=5} - circle(5), height=3} + "
       "cylinder{r=5, h=6}",
       5700.0 + 150.0 * kPi, kTolerance * (2.0 * 1900.0 + 3.0 * 300.0 + 250.0));
+  // Where the side leaves the arc along its tangent (a rounded corner over a
+  // cylinder), the turn point stays: without it the chord to the corner
+  // sagged past the tolerance.
+  exportsValid(
+      "return linear_extrude{square{size={20, 20}}:offset{r=3}, height=3} + "
+      "cylinder{r=3, h=6}:translate(0, 0, -6) + cylinder{r=3, h=6}:translate(20, 20, -6)",
+      1920.0 + 135.0 * kPi, kTolerance * (2.0 * 670.0 + 3.0 * 100.0 + 250.0));
 }
 
 TEST(ContactExport, ARibTangentInsideASweptRingLeavesNoGap) {
