@@ -755,7 +755,6 @@ class Evaluator {
       for (std::size_t i = 0; i + 1 < pieces.size(); i += 2) {
         Piece& a = pieces[i];
         Piece& b = pieces[i + 1];
-        if (op == Boolean::Op::Union) closeHairGap(a, b);
         if (!a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
           weldNearVertices(a, b, hairApart(a.box, b.box));
