@@ -18,7 +18,7 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
   visit(part);
 }
 
-std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep, const Affine& placed) const {
+std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep) const {
   std::vector<CircleRim> rims;
   if (!sweep.prism()) return rims;
   constexpr double kSlack = 1e-12;  // rounding of the frames' products
@@ -27,7 +27,7 @@ std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep, const Affine&
     // axis's direction and its x axis the sweep's (to rounding), so that
     // its rim is a circle in the sweep's plane with its points where
     // flatten() puts them, bit for bit where the frames are the same.
-    const glm::dmat4 m = placed.objectFromWorld() * cylinder.worldFromObject;
+    const glm::dmat4 m = sweep.frame().objectFromWorld() * cylinder.worldFromObject;
     const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
     const glm::dvec3 ex(1.0, 0.0, 0.0), ey(0.0, 1.0, 0.0), ez(0.0, 0.0, 1.0);
     if (glm::length(x - ex) > kSlack || glm::length(y - ey) > kSlack ||

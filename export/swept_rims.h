@@ -31,10 +31,10 @@ class SweptRims {
   SweptRims(const Solid& part, const std::function<Affine(const Primitive&)>& placed);
 
   // The rims, in the extrusion's plane, of the cylinders whose frame
-  // differs from the extrusion's (placed as the cylinders are) by a move
-  // only: a cylinder turned against the extrusion puts its rim's points
-  // elsewhere on the circle, and is left out.
-  std::vector<CircleRim> of(const LinearExtrusion& sweep, const Affine& placed) const;
+  // differs from the extrusion's (which must be placed as the cylinders
+  // are) by a move only: a cylinder turned against the extrusion puts its
+  // rim's points elsewhere on the circle, and is left out.
+  std::vector<CircleRim> of(const LinearExtrusion& sweep) const;
 
   bool empty() const { return cylinders_.empty(); }
 

@@ -108,8 +108,8 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   }
 }
 
-// The direction in which an edge leaves its start (at = false) or reaches
-// its end (at = true).
+// The direction in which an edge leaves its start (atEnd false) or reaches
+// its end (atEnd true).
 dvec2 tangentAt(const ProfileEdge& e, bool atEnd) {
   switch (e.kind) {
     case ProfileEdge::Kind::Segment:

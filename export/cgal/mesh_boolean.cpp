@@ -576,7 +576,7 @@ class Evaluator {
     const Primitive& shape = placed ? *placed : primitive;
     if (auto* sweep = dynamic_cast<const LinearExtrusion*>(&shape);
         sweep && rims_ && !rims_->empty()) {
-      std::vector<CircleRim> rims = rims_->of(*sweep, sweep->frame());
+      std::vector<CircleRim> rims = rims_->of(*sweep);
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
     return shape.tessellate(tolerance_, region);
