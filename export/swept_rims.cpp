@@ -1,5 +1,6 @@
 #include "export/swept_rims.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 
 #include "primitives/cylinder.h"
@@ -21,19 +22,25 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
 std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep) const {
   std::vector<CircleRim> rims;
   if (!sweep.prism()) return rims;
-  constexpr double kSlack = 1e-12;  // rounding of the frames' products
+  // Rounding of the frames' products, and the grid of 2⁻³⁰ the exporter
+  // snaps the frames of a part turned as a whole to (EvaluationFrame).
+  constexpr double kSlack = 1e-8;
   for (const Rim& cylinder : cylinders_) {
     // The cylinder in the sweep's frame: its axis must be the sweep's z
-    // axis's direction and its x axis the sweep's (to rounding), so that
-    // its rim is a circle in the sweep's plane with its points where
-    // flatten() puts them, bit for bit where the frames are the same.
+    // axis, and its x and y axes a turn of the sweep's about it (to
+    // rounding), so that its rim is a circle in the sweep's plane with
+    // its points where flatten() puts them: bit for bit where the frames
+    // are the same, within rounding where the cylinder is turned (its
+    // points are then placed through its own axes, as it places them).
     const glm::dmat4 m = sweep.frame().objectFromWorld() * cylinder.worldFromObject;
     const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
-    const glm::dvec3 ex(1.0, 0.0, 0.0), ey(0.0, 1.0, 0.0), ez(0.0, 0.0, 1.0);
-    if (glm::length(x - ex) > kSlack || glm::length(y - ey) > kSlack ||
-        glm::length(z - ez) > kSlack)
+    const glm::dvec3 turnedY(-x.y, x.x, 0.0), ex(1.0, 0.0, 0.0), ez(0.0, 0.0, 1.0);
+    if (std::abs(x.z) > kSlack || std::abs(glm::length(x) - 1.0) > kSlack ||
+        glm::length(y - turnedY) > kSlack || glm::length(z - ez) > kSlack)
       continue;
-    rims.push_back({dvec2(m[3].x, m[3].y), cylinder.radius});
+    const bool turned = glm::length(x - ex) > 1e-12;
+    rims.push_back(
+        {dvec2(m[3].x, m[3].y), cylinder.radius, turned ? dmat2(x.x, x.y, y.x, y.y) : dmat2(1.0)});
   }
   return rims;
 }

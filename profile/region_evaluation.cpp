@@ -53,10 +53,21 @@ double gridRadius(const ProfileEdge& e) {
 // rim's error, and the corner's turn stays a turn (a point at the
 // corner's own angle would fold back on a flat end that runs along the
 // radius). An arc shorter than twice that is its chord.
-void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radius,
-                   const CirclePolygon& polygon, double angle0, double turn, bool fromJoined,
-                   bool toJoined, const dvec2& arriving, const dvec2& leaving) {
+//
+// A rim turned about its axis (its first point not on +x) is followed in
+// its own frame, the arc's angles measured from its x axis; an unturned
+// rim's frame is the plane's, so its points are the same bits either way.
+void addGridPoints(std::vector<dvec2>& points, const CircleRim& rim, const CirclePolygon& polygon,
+                   double angle0, double turn, bool fromJoined, bool toJoined,
+                   const dvec2& arriving, const dvec2& leaving) {
   constexpr double kEps = 1e-9;
+  const dvec2& center = rim.center;
+  const double radius = rim.radius;
+  // The rim's frame to the plane's, and back.
+  const dmat2 rimFromPlane = glm::inverse(rim.axes);
+  auto toPlane = [&](const dvec2& v) { return rim.axes * v; };
+  auto toRim = [&](const dvec2& v) { return rimFromPlane * v; };
+  angle0 -= std::atan2(rim.axes[0].y, rim.axes[0].x);
   const double perStep = polygon.segments / (2.0 * std::numbers::pi);
   // In steps along the arc's sense, so that the arc runs upwards.
   const double sense = turn < 0.0 ? -1.0 : 1.0;
@@ -67,18 +78,19 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   const auto n = static_cast<long long>(polygon.segments);
   auto rimPoint = [&](double k) {
     const long long signedStep = std::llround(sense * k);
-    return center + polygon.pointAt(radius, static_cast<std::uint32_t>(((signedStep % n) + n) % n));
+    return center +
+           toPlane(polygon.pointAt(radius, static_cast<std::uint32_t>(((signedStep % n) + n) % n)));
   };
   // The point of the rim's chord from step k to k + 1 at u.
   auto chordPoint = [&](double k, double u) {
-    const dvec2 a = rimPoint(k) - center, e = rimPoint(k + 1.0) - rimPoint(k);
+    const dvec2 a = toRim(rimPoint(k) - center), e = toRim(rimPoint(k + 1.0) - rimPoint(k));
     const double theta = sense * u / perStep;
     const dvec2 d(std::cos(theta), std::sin(theta));
     // center + s·d on the chord a + t·e: s (d × e) = a × e; then a part in
     // 10⁹ nearer the centre, so that the outline runs into a cylinder on
     // the rim there rather than along its face to rounding (which left the
     // union slivers that rounding made cross).
-    return center + (1.0 - 1e-9) * (cross(a, e) / cross(d, e)) * d;
+    return center + toPlane((1.0 - 1e-9) * (cross(a, e) / cross(d, e)) * d);
   };
   const double first = fromJoined ? std::ceil(u0 - kEps) : std::floor(u0 + kEps) + 1.0;
   const double last = toJoined ? std::floor(u1 - kEps) : std::ceil(u1 - kEps) - 1.0;
@@ -94,7 +106,7 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   auto turnPoint = [&](double k, double u, const dvec2& corner, const dvec2& edge,
                        double arcAngle) {
     const dvec2 p = chordPoint(k, u);
-    const dvec2 arcDirection = sense * dvec2(-std::sin(arcAngle), std::cos(arcAngle));
+    const dvec2 arcDirection = toPlane(sense * dvec2(-std::sin(arcAngle), std::cos(arcAngle)));
     if (glm::dot(edge, arcDirection) < 0.0 && cross(edge, p - corner) < 0.0) return;
     points.push_back(p);
   };
@@ -104,7 +116,7 @@ void addGridPoints(std::vector<dvec2>& points, const dvec2& center, double radiu
   if (!toJoined && (first > last || u1 - last > room)) {
     const double a = sense * u1 / perStep;
     turnPoint(std::ceil(u1 - kEps) - 1.0, u1 - room,
-              center + radius * dvec2(std::cos(a), std::sin(a)), leaving, a);
+              center + toPlane(radius * dvec2(std::cos(a), std::sin(a))), leaving, a);
   }
 }
 
@@ -163,12 +175,15 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
                                         std::span<const CircleRim> rims, double rimTolerance) {
   requireTolerance("a region's outline", tolerance);
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  // The rim an arc lies on, if any.
+  // The rim an arc lies on, if any: its centre to a part in 10⁹ of its
+  // radius and of its distance from the origin, or within the grid of 2⁻³⁰
+  // to which the exporter snaps the frames of a part turned as a whole.
   auto rimOf = [&](const ProfileEdge& e) -> const CircleRim* {
     const double r = gridRadius(e);
     if (r == 0.0) return nullptr;
     for (const CircleRim& rim : rims)
-      if (std::abs(rim.radius - r) <= 1e-9 * r && glm::length(rim.center - e.center) <= 1e-9 * r)
+      if (std::abs(rim.radius - r) <= 1e-9 * r &&
+          glm::length(rim.center - e.center) <= 1e-9 * (r + glm::length(e.center)) + 0x1p-30)
         return &rim;
     return nullptr;
   };
@@ -201,9 +216,8 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
         // About the rim's own centre and radius, to which the arc's may
         // differ by rounding: the cylinder's points, bit for bit.
         const ProfileEdge& after = loop.edges[(i + 1) % count];
-        addGridPoints(points, rim->center, rim->radius, circlePolygon(rim->radius, rimTolerance),
-                      e.angle0, turn, joined, sameCircle(after), tangentAt(before, true),
-                      tangentAt(after, false));
+        addGridPoints(points, *rim, circlePolygon(rim->radius, rimTolerance), e.angle0, turn,
+                      joined, sameCircle(after), tangentAt(before, true), tangentAt(after, false));
         continue;
       }
       // An ellipse's inscribed polygon is the image of the unit circle's,

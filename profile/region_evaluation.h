@@ -45,17 +45,21 @@ double evaluationTolerance(const Region& region);
 double area(const Profile& evaluated);
 
 // A circle of the plane whose arcs flatten() cuts on the polygon a
-// cylinder standing on it has (circlePolygon, its first point on +x from
-// the centre): its centre and radius.
+// cylinder standing on it has (circlePolygon): its centre, its radius, and
+// the cylinder's x and y axes in the plane, which place the polygon's
+// points (the identity unless the cylinder is turned about its axis; a
+// turn as the cylinder's frame holds it, to rounding).
 struct CircleRim {
   dvec2 center{0.0};
   double radius = 0.0;
+  dmat2 axes{1.0};
 };
 
 // Each loop as a polygon within `tolerance` of the exact edges (the sagitta
 // rule of the cylinders' tessellation for arcs); a loop's first point is
 // not repeated at its end. An arc of a circle that is one of `rims` (its
-// centre and radius within 10⁻⁹ of the radius) instead takes the points of
+// centre and radius within 10⁻⁹ of the radius, the centre also within
+// 10⁻⁹ of its distance from the origin or 2⁻³⁰) instead takes the points of
 // that cylinder's rim polygon at rimTolerance that lie on it, between its
 // ends, so that a swept circle meets the cylinder on the same points: a
 // ring swept around a cylinder leaves no crevice between their polygons.

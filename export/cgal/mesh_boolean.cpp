@@ -24,6 +24,7 @@
 #include "engine/boolean.h"
 #include "engine/instance.h"
 #include "engine/primitive.h"
+#include "export/aligned_walls.h"
 #include "export/cgal/convex_intersection.h"
 #include "export/cgal/double_boolean.h"
 #include "export/cgal/exact_boolean.h"
@@ -671,6 +672,7 @@ class Evaluator {
   Piece unite(std::vector<Piece> pieces) {
     dropRepeats(pieces);
     closeHairGaps(pieces);
+    alignWalls(pieces);
     glueStacked(pieces);
     std::vector<std::vector<Piece>> groups;
     for (Piece& piece : pieces) {
@@ -1103,6 +1105,27 @@ class Evaluator {
         if (b.box.lo.x > a.box.hi.x + 3.0 * reach) break;
         closeHairGap(a, b);
       }
+  }
+
+  // Walls of two pieces a hair apart along an axis made flush (a pin in a
+  // swept hole, each placed by its own frame: aligned_walls.h), among the
+  // pieces in doubles, before any is glued or united.
+  static void alignWalls(std::vector<Piece>& pieces) {
+    std::vector<TriangleMesh*> meshes;
+    std::vector<Piece*> owners;
+    double reach = 0.0;
+    for (Piece& piece : pieces) {
+      if (!piece.doubles || piece.box.empty()) continue;
+      meshes.push_back(&piece.doubles->mesh);
+      owners.push_back(&piece);
+      reach = std::max(reach, hair(piece.box));
+    }
+    const std::vector<bool> moved = alignAxisLines(meshes, reach);
+    for (std::size_t i = 0; i < owners.size(); ++i) {
+      if (!moved[i]) continue;
+      owners[i]->box = meshes[i]->bounds();
+      owners[i]->shape = 0;
+    }
   }
 
   // Where the boxes overlap or come within a hair of each other, grown by

@@ -412,6 +412,48 @@ TEST(ContactExport, ASweptCircleMeetsACylinderOfItsRadiusOnItsPoints) {
   for (const Part& part : parts) exportsValid(part.source, part.volume, kTolerance * part.area);
 }
 
+TEST(ContactExport, PinsOnABoltCircleMeetTheirSweptHolesOnTheirPoints) {
+  // Pins turned about their axes onto a bolt circle, each through a round
+  // hole of a swept plate: a turned cylinder's rim was not the sweep's, and
+  // the crevices between the two polygons failed the check (1 deep). Now
+  // the sweep cuts a turned rim's points too, and walls a hair apart (each
+  // placed by its own frame: the plate moved, the part turned as a whole)
+  // are made flush. Volumes: the plate less its holes, and the pins.
+  const double pi = kPi;
+  auto boltCircle = [](int count, double r, double at, const char* placed) {
+    return "local holes, pins = {}, {}\n"
+           "for i = 0, " +
+           std::to_string(count - 1) +
+           " do\n"
+           "  local turn = i * 360 / " +
+           std::to_string(count) +
+           "\n"
+           "  holes[#holes + 1] = circle(" +
+           std::to_string(r) + "):translate(" + std::to_string(at) +
+           ", 0):rotate(turn)\n"
+           "  pins[#pins + 1] = cylinder{r=" +
+           std::to_string(r) + ", h=12}:translate(" + std::to_string(at) +
+           ", 0, -3):rotate(0, 0, turn)\n"
+           "end\n"
+           "local plate = linear_extrude{circle(30) - union(table.unpack(holes)), height=5}\n"
+           "return (plate" +
+           placed + ") + (union(table.unpack(pins))" + placed + ")";
+  };
+  struct Part {
+    int count;
+    double r;
+    const char* placed;
+  };
+  for (const Part& part : {Part{6, 3.0, ""}, Part{7, 3.0, ""}, Part{6, 2.5, ":translate(3, 4, 1)"},
+                           Part{7, 3.0, ":rotate(30, 20, 10)"}}) {
+    const double holes = part.count * part.r * part.r * pi;
+    const double volume = (900.0 * pi - holes) * 5.0 + holes * 12.0;
+    const double area = 2.0 * (900.0 * pi - holes) + 300.0 * pi +
+                        part.count * (2.0 * pi * part.r * 7.0 + 2.0 * part.r * part.r * pi);
+    exportsValid(boltCircle(part.count, part.r, 20.0, part.placed), volume, kTolerance * area);
+  }
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as

@@ -352,6 +352,22 @@ TEST(Region, FlattenedCirclesTakeACylindersRimPolygon) {
   std::sort(hole.begin(), hole.end(), lexicographic);
   std::sort(expected.begin(), expected.end(), lexicographic);
   EXPECT_EQ(hole, expected);
+
+  // A cylinder turned 17° about its axis (a pin on a bolt circle): its
+  // points, placed through its axes, the circle about (3, 4).
+  const double c = std::cos(17.0 * kPi / 180.0), s = std::sin(17.0 * kPi / 180.0);
+  const dmat2 axes(c, s, -s, c);
+  const dvec2 center(3.0, 4.0);
+  const Profile moved = evaluate(*subtract(rect(-8, -8, 14, 16), disc(center, 5)), kTolerance);
+  const CircleRim turned[] = {{center, 5.0, axes}};
+  const auto turnedPolygons = flatten(moved, 0.5 * tolerance, turned, tolerance);
+  ASSERT_EQ(turnedPolygons.size(), 2u);
+  std::vector<dvec2> turnedHole = turnedPolygons[1], turnedExpected;
+  for (std::uint32_t step = 0; step < std::uint32_t(rim.segments); ++step)
+    turnedExpected.push_back(center + axes * rim.pointAt(5.0, step));
+  std::sort(turnedHole.begin(), turnedHole.end(), lexicographic);
+  std::sort(turnedExpected.begin(), turnedExpected.end(), lexicographic);
+  EXPECT_EQ(turnedHole, turnedExpected);
 }
 
 TEST(Region, FlattenedArcsBetweenCornersKeepTheirCornersAndTheTolerance) {
