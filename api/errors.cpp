@@ -1,8 +1,10 @@
 #include "api/errors.h"
 
+#include <filesystem>
 #include <new>
 #include <stdexcept>
 
+#include "meshio/mesh_reader.h"
 #include "script/script.h"
 
 namespace csgray {
@@ -51,6 +53,20 @@ void throwAsError(ErrorCode otherwise) {
     throw csgray::Error(otherwise, e.what());
   } catch (...) {
     throw csgray::Error(ErrorCode::Internal, "unknown error");
+  }
+}
+
+TriangleMesh readMeshFileAsError(const std::string& path) {
+  if (!isReadableMeshName(path))
+    throw csgray::Error(ErrorCode::InvalidArgument,
+                        std::filesystem::path(path).filename().string() +
+                            ": unknown mesh format; use .stl, .obj, .off or .ply");
+  try {
+    return readMeshFile(path);
+  } catch (const std::bad_alloc&) {
+    throw csgray::Error(ErrorCode::OutOfMemory, "out of memory");
+  } catch (const std::exception& e) {
+    throw csgray::Error(ErrorCode::IoError, e.what());
   }
 }
 

@@ -2,9 +2,11 @@
 // public function runs its work through guarded().
 #pragma once
 
+#include <string>
 #include <utility>
 
 #include "csgray/error.h"
+#include "tessellation/triangle_mesh.h"
 
 namespace csgray::detail {
 
@@ -29,5 +31,11 @@ template <class F>
 auto guarded(F&& f) -> decltype(f()) {
   return guarded(ErrorCode::Internal, std::forward<F>(f));
 }
+
+// A mesh file read for readMesh and Solid::fromMeshFile: an extension
+// of none of the formats is InvalidArgument, as writeMesh's; a file that
+// cannot be read, or is not a file of its format, IoError (the message
+// names the file and where it went wrong).
+TriangleMesh readMeshFileAsError(const std::string& path);
 
 }  // namespace csgray::detail

@@ -169,14 +169,7 @@ void writeMesh(const Mesh& mesh, const std::string& path, bool ascii) {
 }
 
 Mesh readMesh(const std::string& path) {
-  detail::TriangleMesh read;
-  try {
-    read = detail::readMeshFile(path);
-  } catch (const std::bad_alloc&) {
-    throw Error(ErrorCode::OutOfMemory, "out of memory");
-  } catch (const std::exception& e) {
-    throw Error(ErrorCode::IoError, e.what());  // it names the file and where it went wrong
-  }
+  const detail::TriangleMesh read = detail::readMeshFileAsError(path);
   Mesh mesh;
   mesh.vertices.reserve(read.points.size());
   for (const detail::dvec3& p : read.points) mesh.vertices.push_back(toPublic(p));

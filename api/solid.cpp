@@ -230,10 +230,12 @@ Solid Solid::fromMeshFile(const std::string& path, bool repair, std::string* rep
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw Error(ErrorCode::IoError, "mesh: " + path + ": no such file");
+  detail::TriangleMesh read = detail::readMeshFileAsError(path);
   return guarded(ErrorCode::IoError, [&] {
     std::string report;
     try {
-      Solid solid = wrap(detail::meshShape(detail::importMesh(path, repair, report), path));
+      Solid solid = wrap(
+          detail::meshShape(detail::importedMesh(std::move(read), path, repair, report), path));
       if (repairReport) *repairReport = report;
       return solid;
     } catch (const std::invalid_argument& e) {

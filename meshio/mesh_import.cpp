@@ -10,8 +10,12 @@
 namespace csgray::detail {
 
 TriangleMesh importMesh(const std::string& path, bool repair, std::string& repairReport) {
+  return importedMesh(readMeshFile(path), path, repair, repairReport);
+}
+
+TriangleMesh importedMesh(TriangleMesh mesh, const std::string& path, bool repair,
+                          std::string& repairReport) {
   repairReport.clear();
-  TriangleMesh mesh = readMeshFile(path);
   if (repair) mesh = repairMesh(mesh, repairReport);
   const MeshDefect defect = meshDefect(mesh);
   if (defect.valid()) return mesh;

@@ -15,5 +15,9 @@ namespace csgray::detail {
 // closed, manifold, outward-facing mesh without self-intersections. Fits
 // ScriptOptions::loadMesh.
 TriangleMesh importMesh(const std::string& path, bool repair, std::string& repairReport);
+// The same for a mesh already read from the file at path (messages begin
+// with its file name): what importMesh does after reading.
+TriangleMesh importedMesh(TriangleMesh mesh, const std::string& path, bool repair,
+                          std::string& repairReport);
 
 }  // namespace csgray::detail

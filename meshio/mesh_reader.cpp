@@ -100,6 +100,11 @@ std::string lowerExtension(const std::string& name) {
 
 }  // namespace
 
+bool isReadableMeshName(const std::string& name) {
+  const std::string ext = lowerExtension(name);
+  return ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply";
+}
+
 TriangleMesh readMesh(std::string_view bytes, const std::string& name,
                       const MeshReadLimits& limits) {
   const std::string ext = lowerExtension(name);

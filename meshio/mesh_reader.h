@@ -33,6 +33,9 @@ TriangleMesh readOff(std::string_view bytes, const std::string& name,
 TriangleMesh readPly(std::string_view bytes, const std::string& name,
                      const MeshReadLimits& limits = {});
 
+// Whether `name`'s extension is one of the formats read here (.stl, .obj,
+// .off, .ply, in any case).
+bool isReadableMeshName(const std::string& name);
 // The reader chosen by the extension of `name` (.stl, .obj, .off, .ply, in
 // any case).
 TriangleMesh readMesh(std::string_view bytes, const std::string& name,

@@ -482,6 +482,20 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
   EXPECT_EQ(errorOf([&] { csgray::writeMesh(mesh, path("part.xyz")); }).first,
             ErrorCode::InvalidArgument);
   EXPECT_EQ(errorOf([&] { csgray::readMesh(path("missing.stl")); }).first, ErrorCode::IoError);
+  // A file that is not of its format cannot be read, as a mesh or as a
+  // solid; a mesh that is read but bounds no solid is a bad argument.
+  std::ofstream(path("garbage.stl")) << "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2\n";
+  std::ofstream(path("part.xyz")) << "1 2 3\n";
+  std::ofstream(path("open.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  for (const char* name : {"garbage.stl", "part.xyz", "open.obj"}) {
+    SCOPED_TRACE(name);
+    const ErrorCode expected =
+        std::string(name) == "garbage.stl" ? ErrorCode::IoError : ErrorCode::InvalidArgument;
+    EXPECT_EQ(errorOf([&] { Solid::fromMeshFile(path(name)); }).first, expected);
+    if (std::string(name) != "open.obj")
+      EXPECT_EQ(errorOf([&] { csgray::readMesh(path(name)); }).first, expected);
+  }
+  EXPECT_EQ(csgray::readMesh(path("open.obj")).triangles.size(), 1u);
   EXPECT_EQ(errorOf([&] { csgray::writeImage(image, path("no/such/folder/x.png")); }).first,
             ErrorCode::IoError);
 }
