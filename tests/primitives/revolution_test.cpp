@@ -202,6 +202,30 @@ TEST(Revolution, MeshesAreValidSolids) {
   expectValidMesh(*revolve(test::rectangle({0, -1}, {1, 1}), 250.0), 0.001, 2 * kPi * 250 / 360);
 }
 
+TEST(Revolution, FlatDiscsOnTheAxisAreStripsNotFans) {
+  // A disc turned from a rectangle on the axis, and a stepped hub (its top
+  // a disc, its step an annulus): a flat disc's triangles do not all meet
+  // at its centre, which made two discs in one plane cost CGAL seconds;
+  // no point lies on the axis, and each point has a few triangles only.
+  RegionPtr stepped = test::regionOf({ProfileLoop{
+      {ProfileEdge::segment({0, 0}, {20, 0}), ProfileEdge::segment({20, 0}, {20, 4}),
+       ProfileEdge::segment({20, 4}, {6, 4}), ProfileEdge::segment({6, 4}, {6, 16}),
+       ProfileEdge::segment({6, 16}, {0, 16}), ProfileEdge::segment({0, 16}, {0, 0})}}});
+  for (const auto& [region, volume] : {std::pair(test::rectangle({0, 0}, {20, 4}), 1600 * kPi),
+                                       std::pair(stepped, 1600 * kPi + 432 * kPi)}) {
+    const auto solid = revolve(region);
+    const TriangleMesh mesh = solid->tessellate(0.01, solid->bounds());
+    std::vector<int> degree(mesh.points.size(), 0);
+    for (const auto& t : mesh.triangles)
+      for (std::uint32_t v : t) ++degree[v];
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+      EXPECT_FALSE(mesh.points[v].x == 0.0 && mesh.points[v].y == 0.0) << v;
+      EXPECT_LE(degree[v], 8) << v;
+    }
+    expectValidMesh(*solid, 0.01, volume);
+  }
+}
+
 TEST(Revolution, RefusesRegionsAcrossTheAxisAndBadAngles) {
   EXPECT_THROW(revolve(test::rectangle({-0.5, 0}, {1, 1})), std::invalid_argument);
   try {
