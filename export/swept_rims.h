@@ -32,9 +32,9 @@ class SweptRims {
 
   // The rims, in the extrusion's plane, of the cylinders whose frame
   // differs from the extrusion's (which must be placed as the cylinders
-  // are) by a move and a turn about the extrusion's axis (a bolt circle's
-  // pins): a cylinder tilted against the extrusion, or scaled, has no rim
-  // in its plane, and is left out.
+  // are) by a move, a turn about the extrusion's axis (a bolt circle's
+  // pins) and a mirror: a cylinder tilted against the extrusion, or
+  // scaled, has no rim in its plane, and is left out.
   std::vector<CircleRim> of(const LinearExtrusion& sweep) const;
 
   bool empty() const { return cylinders_.empty(); }

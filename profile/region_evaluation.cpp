@@ -54,9 +54,10 @@ double gridRadius(const ProfileEdge& e) {
 // corner's own angle would fold back on a flat end that runs along the
 // radius). An arc shorter than twice that is its chord.
 //
-// A rim turned about its axis (its first point not on +x) is followed in
-// its own frame, the arc's angles measured from its x axis; an unturned
-// rim's frame is the plane's, so its points are the same bits either way.
+// A rim turned about its axis (its first point not on +x), or mirrored, is
+// followed in its own frame, the arc's angles measured from its x axis
+// and in its sense; an unturned rim's frame is the plane's, so its points
+// are the same bits either way.
 void addGridPoints(std::vector<dvec2>& points, const CircleRim& rim, const CirclePolygon& polygon,
                    double angle0, double turn, bool fromJoined, bool toJoined,
                    const dvec2& arriving, const dvec2& leaving) {
@@ -67,7 +68,13 @@ void addGridPoints(std::vector<dvec2>& points, const CircleRim& rim, const Circl
   const dmat2 rimFromPlane = glm::inverse(rim.axes);
   auto toPlane = [&](const dvec2& v) { return rim.axes * v; };
   auto toRim = [&](const dvec2& v) { return rimFromPlane * v; };
-  angle0 -= std::atan2(rim.axes[0].y, rim.axes[0].x);
+  if (rim.axes != dmat2(1.0)) {
+    // The arc in the rim's frame: from where its start lies there, and the
+    // other way round where the rim is mirrored (a pin placed by mirror()).
+    const dvec2 start = rimFromPlane * dvec2(std::cos(angle0), std::sin(angle0));
+    angle0 = std::atan2(start.y, start.x);
+    if (glm::determinant(rim.axes) < 0.0) turn = -turn;
+  }
   const double perStep = polygon.segments / (2.0 * std::numbers::pi);
   // In steps along the arc's sense, so that the arc runs upwards.
   const double sense = turn < 0.0 ? -1.0 : 1.0;

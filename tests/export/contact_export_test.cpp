@@ -418,7 +418,8 @@ TEST(ContactExport, PinsOnABoltCircleMeetTheirSweptHolesOnTheirPoints) {
   // the crevices between the two polygons failed the check (1 deep). Now
   // the sweep cuts a turned rim's points too, and walls a hair apart (each
   // placed by its own frame: the plate moved, the part turned as a whole)
-  // are made flush. Volumes: the plate less its holes, and the pins.
+  // are made flush. Volumes: the plate less its holes, and the pins. Pins
+  // and plates mirrored so too.
   const double pi = kPi;
   auto boltCircle = [](int count, double r, double at, const char* placed) {
     return "local holes, pins = {}, {}\n"
@@ -452,6 +453,22 @@ TEST(ContactExport, PinsOnABoltCircleMeetTheirSweptHolesOnTheirPoints) {
                         part.count * (2.0 * pi * part.r * 7.0 + 2.0 * part.r * part.r * pi);
     exportsValid(boltCircle(part.count, part.r, 20.0, part.placed), volume, kTolerance * area);
   }
+  // A pin mirrored onto the other side, and a plate mirrored upside down.
+  exportsValid(
+      "local plate = square{size={40, 20}, center=true} - circle(2):translate(-14, 0) - "
+      "circle(2):translate(14, 0)\n"
+      "local pin = cylinder{r=2, h=10}:translate(14, 0, -3)\n"
+      "return linear_extrude{plate, height=4} + pin + pin:mirror(1, 0, 0)",
+      3200.0 + 48.0 * pi, kTolerance * (2080.0 + 64.0 * pi));
+  exportsValid(
+      "local plate, pins = circle(20), {}\n"
+      "for i = 0, 5 do\n"
+      "  plate = plate - circle(2):translate(14, 0):rotate(i * 60 + 10)\n"
+      "  pins[#pins + 1] = cylinder{r=2, h=8}:translate(14, 0, -3):rotate(0, 0, i * 60 + 10)\n"
+      "end\n"
+      "return linear_extrude{plate, height=3}:mirror(0, 0, 1):translate(0, 0, 3) + "
+      "union(table.unpack(pins))",
+      1320.0 * pi, kTolerance * 1040.0 * pi);
 }
 
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
