@@ -46,6 +46,9 @@ class Primitive : public Solid {
   // std::invalid_argument (naming kind()) when the mesh would be too large
   // or cannot be a 2-manifold.
   TriangleMesh tessellate(double tolerance, const Bounds& region) const;
+  // The tolerance tessellate() asks of objectTessellate: `tolerance` over
+  // the most the frame stretches a length.
+  double objectTolerance(double tolerance) const;
 
   // Unit outward normal in world space at a world point on the given face.
   dvec3 normal(const dvec3& worldPoint, int face) const {

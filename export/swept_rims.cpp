@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include "primitives/cylinder.h"
 
@@ -12,6 +13,12 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
     if (auto* cylinder = dynamic_cast<const Cylinder*>(&solid)) {
       if (cylinder->r1() == cylinder->r2())
         cylinders_.push_back({placed(*cylinder).worldFromObject(), cylinder->r1()});
+      return;
+    }
+    if (auto* turn = dynamic_cast<const Revolution*>(&solid)) {
+      if (turn->angleDegrees() == 360.0)
+        turns_.push_back(
+            std::dynamic_pointer_cast<const Revolution>(turn->withFrame(placed(*turn))));
       return;
     }
     for (const SolidPtr& child : solid.children()) visit(*child);
@@ -47,6 +54,35 @@ std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep) const {
         {dvec2(m[3].x, m[3].y), cylinder.radius, turned ? dmat2(x.x, x.y, y.x, y.y) : dmat2(1.0)});
   }
   return rims;
+}
+
+std::optional<CirclePolygon> SweptRims::turnedWallPolygon(const Cylinder& cylinder,
+                                                          double tolerance) const {
+  if (cylinder.r1() != cylinder.r2()) return std::nullopt;
+  const double r = cylinder.r1();
+  // As in of(): rounding, and the evaluation frame's grid of 2⁻³⁰.
+  constexpr double kSlack = 1e-8;
+  for (const auto& turn : turns_) {
+    const glm::dmat4 m = turn->frame().objectFromWorld() * cylinder.frame().worldFromObject();
+    const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
+    // Upright on the turn's axis, its own axes a turn about it.
+    if (glm::length(z - glm::dvec3(0.0, 0.0, 1.0)) > kSlack || std::abs(x.z) > kSlack ||
+        std::abs(glm::length(x) - 1.0) > kSlack ||
+        glm::length(y - glm::dvec3(-x.y, x.x, 0.0)) > kSlack ||
+        glm::length(dvec2(m[3].x, m[3].y)) > 1e-9 * r + 0x1p-29)
+      continue;
+    const std::optional<int> steps =
+        turn->wallSteps(r, m[3].z, m[3].z + cylinder.height(), turn->objectTolerance(tolerance));
+    if (!steps) continue;
+    // The turn's ring k lies at 360°·k/steps in its frame: the cylinder's
+    // step k there, counted from its own x axis.
+    CirclePolygon polygon;
+    polygon.segments = *steps;
+    polygon.error = r * (1.0 - std::cos(std::numbers::pi / *steps));
+    polygon.phase = -std::atan2(x.y, x.x);
+    return polygon;
+  }
+  return std::nullopt;
 }
 
 }  // namespace csgray::detail

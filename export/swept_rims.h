@@ -13,14 +13,22 @@
 // partly outside its circle, and a flat face tangent to it from the inside
 // of a round hole (a rib standing in a ring) would then leave a gap where
 // the inscribed polygon leaves none.
+//
+// A rotate_extrude's rings are regular polygons of its own step count, so
+// there the cylinder gives way: a cylinder standing in a full turn's wall
+// of its radius takes that turn's rings (turnedWallPolygon).
 #pragma once
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "engine/affine.h"
 #include "engine/solid.h"
+#include "primitives/cylinder.h"
 #include "primitives/linear_extrusion.h"
+#include "primitives/revolution.h"
 
 namespace csgray::detail {
 
@@ -37,6 +45,15 @@ class SweptRims {
   // scaled, has no rim in its plane, and is left out.
   std::vector<CircleRim> of(const LinearExtrusion& sweep) const;
 
+  // The polygon a cylinder of the part (placed as the part's primitives
+  // are) takes where it stands in a wall of a full turn of the part (a
+  // rotate_extrude's ring around an axle of its bore): that turn's rings,
+  // turned as the cylinder is, so that the two meet on the same points to
+  // rounding (the union then makes their walls flush: aligned_walls.h).
+  // The cylinder must share the turn's axis, upright and not mirrored
+  // against it; nothing otherwise, or for a cone.
+  std::optional<CirclePolygon> turnedWallPolygon(const Cylinder& cylinder, double tolerance) const;
+
   bool empty() const { return cylinders_.empty(); }
 
  private:
@@ -45,6 +62,8 @@ class SweptRims {
     double radius;
   };
   std::vector<Rim> cylinders_;
+  // The part's full turns, each placed as the part's primitives are.
+  std::vector<std::shared_ptr<const Revolution>> turns_;
 };
 
 }  // namespace csgray::detail

@@ -3,6 +3,9 @@
 // radius may be zero for a cone, not both. Faces: 0 side, 1 bottom, 2 top.
 #pragma once
 
+#include <memory>
+#include <optional>
+
 #include "primitives/primitive_shape.h"
 #include "tessellation/tessellation.h"
 
@@ -15,6 +18,9 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   double r2() const { return r2_; }
   double height() const { return height_; }
   std::string kind() const override { return r1_ == r2_ ? "cylinder" : "cone"; }
+  // For export: this cylinder with both rims on `polygon` instead of the
+  // polygon of its radius (export/swept_rims.h: a full turn's ring).
+  std::shared_ptr<const Cylinder> withPolygon(const CirclePolygon& polygon) const;
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
@@ -29,7 +35,8 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   TriangleMesh rimsAndSides(const CirclePolygon rim[2], double tolerance) const;
 
   double r1_, r2_, height_;
-  double slope_;  // dr/dz
+  double slope_;                          // dr/dz
+  std::optional<CirclePolygon> polygon_;  // withPolygon's
 };
 
 }  // namespace csgray::detail

@@ -55,8 +55,19 @@ void zipSides(std::uint32_t n0, std::uint32_t n1, std::uint32_t first0, std::uin
 // put every triangle of one cap against every triangle of the other, and
 // CGAL's corefinement of such coplanar fans grows as n⁴ (a shaft on a hub,
 // r = 30: 40 s; as strips each triangle meets a few; docs/performance.md).
+std::shared_ptr<const Cylinder> Cylinder::withPolygon(const CirclePolygon& polygon) const {
+  auto copy = std::make_shared<Cylinder>(*this);
+  copy->polygon_ = polygon;
+  return copy;
+}
+
 TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
+  if (polygon_ && r1_ == r2_) {
+    requireTriangleBudget(kind(), 4.0 * polygon_->segments, tolerance);
+    const CirclePolygon both[2] = {*polygon_, *polygon_};
+    return rimsAndSides(both, tolerance);
+  }
   const CirclePolygon shared = circlePolygon(std::max(r1_, r2_), tolerance);
   requireTriangleBudget(kind(), 4.0 * shared.segments, tolerance);
   if (r1_ > 0.0 && r2_ > 0.0) {

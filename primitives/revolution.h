@@ -14,8 +14,11 @@
 // kSweepEndFace the one at its angle, then one per edge of the region.
 #pragma once
 
+#include <optional>
+
 #include "primitives/primitive_shape.h"
 #include "primitives/profile_sweep.h"
+#include "primitives/profile_sweep_tessellation.h"
 
 namespace csgray::detail {
 
@@ -33,6 +36,13 @@ class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
 
   bool firstBoundaryCutsShort() const override { return true; }
 
+  // For export: the steps of a full turn's mesh at `tolerance` (in its own
+  // frame), whose rings put their points at ρ·(cos, sin)(360°·k/steps), if
+  // the turn has a wall at ρ = radius (a loop's edge along the axis there)
+  // that overlaps z0..z1; nothing otherwise. A cylinder standing in that
+  // wall takes those rings (export/swept_rims.h).
+  std::optional<int> wallSteps(double radius, double z0, double z1, double tolerance) const;
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
@@ -42,6 +52,12 @@ class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
   TriangleMesh objectTessellate(double tolerance, const Bounds& region) const override;
 
  private:
+  // The loops as the mesh takes them, and its steps about the axis.
+  struct Turned {
+    SweepLoops loops;
+    int steps;
+  };
+  Turned turned(double tolerance) const;
   bool inWedge(const dvec3& p) const;
   // objectSpans, or with firstOnly only as far as the first boundary
   // (SweptRegion::spans).

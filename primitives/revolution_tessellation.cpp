@@ -23,7 +23,7 @@ namespace csgray::detail {
 // step. With an angle under 360° the loops at both ends of the turn are
 // the wedge's flat faces, triangulated as an extrusion's caps are; a full
 // turn closes on itself.
-TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const {
+Revolution::Turned Revolution::turned(double tolerance) const {
   requireTolerance(kind(), tolerance);
   SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "rotate_extrude");
   const double axisSlack = 1e-12 * swept_->size();
@@ -55,7 +55,29 @@ TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
   const int steps = arcSegments(reach, angle_, half, least);
   requireTriangleBudget(kind(), 2.0 * double(points) * (steps + 1), tolerance);
-  return revolvedLoops(loops, angleDegrees_, steps, fullTurn_);
+  return {std::move(loops), steps};
+}
+
+TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const {
+  const Turned made = turned(tolerance);
+  return revolvedLoops(made.loops, angleDegrees_, made.steps, fullTurn_);
+}
+
+// A wall: an edge of a loop at ρ = radius at both ends (to a part in 10⁹),
+// whose stretch of z overlaps z0..z1 by more than a point.
+std::optional<int> Revolution::wallSteps(double radius, double z0, double z1,
+                                         double tolerance) const {
+  if (!fullTurn_) return std::nullopt;
+  const Turned made = turned(tolerance);
+  auto atRadius = [&](const dvec2& u) { return std::abs(u.x - radius) <= 1e-9 * radius; };
+  for (const auto& loop : made.loops)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const dvec2 &u = loop[i], &v = loop[(i + 1) % loop.size()];
+      if (atRadius(u) && atRadius(v) &&
+          std::min(std::max(u.y, v.y), z1) > std::max(std::min(u.y, v.y), z0))
+        return made.steps;
+    }
+  return std::nullopt;
 }
 
 }  // namespace csgray::detail

@@ -31,6 +31,11 @@ double largestStretch(const glm::dmat3& m) {
 
 }  // namespace
 
+double Primitive::objectTolerance(double tolerance) const {
+  if (frame_.isIdentity()) return tolerance;
+  return tolerance / largestStretch(glm::dmat3(frame_.worldFromObject()));
+}
+
 TriangleMesh Primitive::tessellate(double tolerance, const Bounds& region) const {
   if (frame_.isIdentity()) return objectTessellate(tolerance, region);
   Bounds objectRegion;
@@ -44,7 +49,7 @@ TriangleMesh Primitive::tessellate(double tolerance, const Bounds& region) const
     objectRegion = region;
   }
   const glm::dmat3 linear(frame_.worldFromObject());
-  TriangleMesh mesh = objectTessellate(tolerance / largestStretch(linear), objectRegion);
+  TriangleMesh mesh = objectTessellate(objectTolerance(tolerance), objectRegion);
   for (dvec3& p : mesh.points) p = frame_.pointToWorld(p);
   // A mirroring frame turns the triangles inside out.
   if (glm::determinant(linear) < 0.0) mesh.flip();

@@ -62,6 +62,9 @@ struct CirclePolygon {
   double out = 1.0;
   double shift = 0.0;
   double error = 0.0;  // how far the polygon of the radius it was made for strays
+  // The angle of step 0 from +x: 0 but for a cylinder that takes a turned
+  // revolution's ring (export/swept_rims.h).
+  double phase = 0.0;
   // The distance from the axis of step s's point, for a circle of radius rho.
   double radiusAt(double rho, std::uint32_t s) const {
     return rho * out * (1.0 + shift * (double((s * 7919u) % 17u) - 8.0) / 8.0);
@@ -69,7 +72,7 @@ struct CirclePolygon {
   // Step s's point for a circle of radius rho about the origin, the steps
   // counted counter-clockwise from +x.
   glm::dvec2 pointAt(double rho, std::uint32_t s) const {
-    const double theta = 2.0 * std::numbers::pi * s / segments;
+    const double theta = phase + 2.0 * std::numbers::pi * s / segments;
     const double r = radiusAt(rho, s);
     return {r * std::cos(theta), r * std::sin(theta)};
   }

@@ -580,6 +580,9 @@ class Evaluator {
       std::vector<CircleRim> rims = rims_->of(*sweep);
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
+    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_)
+      if (const auto polygon = rims_->turnedWallPolygon(*cylinder, tolerance_))
+        return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
     return shape.tessellate(tolerance_, region);
   }
 
@@ -1109,8 +1112,12 @@ class Evaluator {
 
   // Walls of two pieces a hair apart along an axis made flush (a pin in a
   // swept hole, each placed by its own frame: aligned_walls.h), among the
-  // pieces in doubles, before any is glued or united.
-  static void alignWalls(std::vector<Piece>& pieces) {
+  // pieces in doubles, before any is glued or united. In a part turned as
+  // a whole the frames' entries were snapped to a grid of 2⁻³⁰
+  // (EvaluationFrame), which moves a point by a few times that times its
+  // distance from the origin, and two walls placed by different frames
+  // that far apart are made flush too.
+  void alignWalls(std::vector<Piece>& pieces) const {
     std::vector<TriangleMesh*> meshes;
     std::vector<Piece*> owners;
     double reach = 0.0;
@@ -1119,6 +1126,8 @@ class Evaluator {
       meshes.push_back(&piece.doubles->mesh);
       owners.push_back(&piece);
       reach = std::max(reach, hair(piece.box));
+      const double size = std::ldexp(hair(piece.box), 40);  // its largest coordinate
+      if (!frame_.identity) reach = std::max(reach, 0x1p-28 * (1.0 + size));
     }
     const std::vector<bool> moved = alignAxisLines(meshes, reach);
     for (std::size_t i = 0; i < owners.size(); ++i) {

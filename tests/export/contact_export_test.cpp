@@ -471,6 +471,25 @@ TEST(ContactExport, PinsOnABoltCircleMeetTheirSweptHolesOnTheirPoints) {
       1320.0 * pi, kTolerance * 1040.0 * pi);
 }
 
+TEST(ContactExport, AnAxleInATurnedRingsBoreMeetsItOnItsPoints) {
+  // A ring turned by rotate_extrude around an axle of its bore: the
+  // ring's regular polygons and the axle's own polygon left crevices 1
+  // deep. The axle now takes the ring's polygons, also turned about its
+  // axis and with the whole part turned and moved. Volumes by Pappus.
+  const double pi = kPi;
+  exportsValid(
+      "return rotate_extrude{square{size={10, 5}}:translate(6, 0)} + "
+      "cylinder{r=6, h=15}:translate(0, 0, -5)",
+      1640.0 * pi, kTolerance * 792.0 * pi);
+  const char* wheel =
+      "local wheel = rotate_extrude{square{size={14, 6}}:translate(6, 0) - "
+      "circle(1.5):translate(16, 3)}\n"
+      "local axle = cylinder{r=6, h=20}:translate(0, 0, -7):rotate(0, 0, 23)\n";
+  for (const char* placed : {"", ":rotate(10, 20, 30):translate(1.1, 2.3, 0.7)"})
+    exportsValid(std::string(wheel) + "return (wheel + axle)" + placed,
+                 2904.0 * pi - 72.0 * pi * pi, kTolerance * (1208.0 * pi + 96.0 * pi * pi));
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as
