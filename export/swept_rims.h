@@ -22,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include "engine/affine.h"
@@ -34,8 +35,8 @@ namespace csgray::detail {
 
 class SweptRims {
  public:
-  // The part's cylinders (not cones), each in the frame `placed` gives it
-  // (the frame the export tessellates it in).
+  // The part's cylinders (not cones) that do not only cut, each in the
+  // frame `placed` gives it (the frame the export tessellates it in).
   SweptRims(const Solid& part, const std::function<Affine(const Primitive&)>& placed);
 
   // The rims, in the extrusion's plane, of the cylinders whose frame
@@ -51,8 +52,10 @@ class SweptRims {
   // turned as the cylinder is, so that the two meet on the same points to
   // rounding (the union then makes their walls flush: aligned_walls.h).
   // The cylinder must share the turn's axis, upright and not mirrored
-  // against it; nothing otherwise, or for a cone.
-  std::optional<CirclePolygon> turnedWallPolygon(const Cylinder& cylinder, double tolerance) const;
+  // against it; nothing otherwise, for a cone, or for a cylinder that
+  // only cuts. `original` is the part's primitive that `cylinder` places.
+  std::optional<CirclePolygon> turnedWallPolygon(const Primitive& original,
+                                                 const Cylinder& cylinder, double tolerance) const;
 
   bool empty() const { return cylinders_.empty(); }
 
@@ -61,7 +64,8 @@ class SweptRims {
     glm::dmat4 worldFromObject;
     double radius;
   };
-  std::vector<Rim> cylinders_;
+  std::vector<Rim> cylinders_;             // those that do not only cut
+  std::unordered_set<const Solid*> kept_;  // the same, by the part's primitive
   // The part's full turns, each placed as the part's primitives are.
   std::vector<std::shared_ptr<const Revolution>> turns_;
 };

@@ -581,7 +581,7 @@ class Evaluator {
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
     if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_)
-      if (const auto polygon = rims_->turnedWallPolygon(*cylinder, tolerance_))
+      if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
         return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
     return shape.tessellate(tolerance_, region);
   }
