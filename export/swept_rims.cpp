@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <numbers>
 
 #include "engine/boolean.h"
@@ -40,32 +41,44 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
   visit(part, false);
 }
 
+namespace {
+
+// Rounding of the frames' products, and the grid of 2⁻³⁰ the exporter
+// snaps the frames of a part turned as a whole to (EvaluationFrame).
+constexpr double kSlack = 1e-8;
+
+// A cylinder's x and y axes in the plane z = 0 of another frame, m taking
+// the cylinder's frame into that one: where its axis lies along that
+// frame's z axis (either way) and its x and y axes are a turn or a mirror
+// of the plane's (to kSlack); nothing where it is tilted or scaled.
+std::optional<dmat2> axesInPlane(const glm::dmat4& m) {
+  const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
+  const bool alongZ = std::abs(x.z) <= kSlack && std::abs(y.z) <= kSlack &&
+                      std::abs(z.x) <= kSlack && std::abs(z.y) <= kSlack &&
+                      std::abs(std::abs(z.z) - 1.0) <= kSlack;
+  if (!alongZ || std::abs(glm::length(x) - 1.0) > kSlack ||
+      std::abs(glm::length(y) - 1.0) > kSlack || std::abs(glm::dot(x, y)) > kSlack)
+    return std::nullopt;
+  return dmat2(x.x, x.y, y.x, y.y);
+}
+
+}  // namespace
+
 std::vector<CircleRim> SweptRims::of(const LinearExtrusion& sweep) const {
   std::vector<CircleRim> rims;
   if (!sweep.prism()) return rims;
-  // Rounding of the frames' products, and the grid of 2⁻³⁰ the exporter
-  // snaps the frames of a part turned as a whole to (EvaluationFrame).
-  constexpr double kSlack = 1e-8;
   for (const Rim& cylinder : cylinders_) {
-    // The cylinder in the sweep's frame: its axis must be the sweep's z
-    // axis (either way), and its x and y axes a turn or a mirror of the
-    // sweep's about it (to rounding), so that its rim is a circle in the
-    // sweep's plane with its points where flatten() puts them: bit for bit
-    // where the frames are the same, within rounding where the cylinder is
+    // The cylinder in the sweep's frame, its rim a circle in the sweep's
+    // plane with its points where flatten() puts them: bit for bit where
+    // the frames are the same, within rounding where the cylinder is
     // turned or mirrored (its points are then placed through its own axes,
     // as it places them).
     const glm::dmat4 m = sweep.frame().objectFromWorld() * cylinder.worldFromObject;
-    const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
-    const glm::dvec3 ex(1.0, 0.0, 0.0);
-    const bool planar = std::abs(x.z) <= kSlack && std::abs(y.z) <= kSlack &&
-                        std::abs(z.x) <= kSlack && std::abs(z.y) <= kSlack &&
-                        std::abs(std::abs(z.z) - 1.0) <= kSlack;
-    if (!planar || std::abs(glm::length(x) - 1.0) > kSlack ||
-        std::abs(glm::length(y) - 1.0) > kSlack || std::abs(glm::dot(x, y)) > kSlack)
-      continue;
-    const bool turned = glm::length(x - ex) > 1e-12 || glm::length(y - glm::dvec3(0, 1, 0)) > 1e-12;
-    rims.push_back(
-        {dvec2(m[3].x, m[3].y), cylinder.radius, turned ? dmat2(x.x, x.y, y.x, y.y) : dmat2(1.0)});
+    const std::optional<dmat2> axes = axesInPlane(m);
+    if (!axes) continue;
+    const dmat2 d = *axes - dmat2(1.0);
+    const bool turned = glm::length(d[0]) > 1e-12 || glm::length(d[1]) > 1e-12;
+    rims.push_back({dvec2(m[3].x, m[3].y), cylinder.radius, turned ? *axes : dmat2(1.0)});
   }
   return rims;
 }
@@ -75,15 +88,11 @@ std::optional<CirclePolygon> SweptRims::turnedWallPolygon(const Primitive& origi
                                                           double tolerance) const {
   if (cylinder.r1() != cylinder.r2() || !kept_.contains(&original)) return std::nullopt;
   const double r = cylinder.r1();
-  // As in of(): rounding, and the evaluation frame's grid of 2⁻³⁰.
-  constexpr double kSlack = 1e-8;
   for (const auto& turn : turns_) {
     const glm::dmat4 m = turn->frame().objectFromWorld() * cylinder.frame().worldFromObject();
-    const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
-    // Upright on the turn's axis, its own axes a turn about it.
-    if (glm::length(z - glm::dvec3(0.0, 0.0, 1.0)) > kSlack || std::abs(x.z) > kSlack ||
-        std::abs(glm::length(x) - 1.0) > kSlack ||
-        glm::length(y - glm::dvec3(-x.y, x.x, 0.0)) > kSlack ||
+    // On the turn's axis, upright, its own axes a turn about it.
+    const std::optional<dmat2> axes = axesInPlane(m);
+    if (!axes || m[2].z < 0.0 || glm::determinant(*axes) < 0.0 ||
         glm::length(dvec2(m[3].x, m[3].y)) > 1e-9 * r + 0x1p-29)
       continue;
     const std::optional<int> steps =
@@ -94,7 +103,7 @@ std::optional<CirclePolygon> SweptRims::turnedWallPolygon(const Primitive& origi
     CirclePolygon polygon;
     polygon.segments = *steps;
     polygon.error = r * (1.0 - std::cos(std::numbers::pi / *steps));
-    polygon.phase = -std::atan2(x.y, x.x);
+    polygon.phase = -std::atan2((*axes)[0].y, (*axes)[0].x);
     return polygon;
   }
   return std::nullopt;
