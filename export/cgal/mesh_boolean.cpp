@@ -336,8 +336,11 @@ class Evaluator {
     const Solid* origin = nullptr;  // the primitive or boolean it was made by
     std::size_t shape = 0;  // of a primitive's mesh: a hash of its points; 0 after a boolean
     // How far a contact's offset (corefine) moved some of its faces, at
-    // most: 0 while every face is where the model puts it.
+    // most: 0 while every face is where the model puts it; and how far it
+    // moved some into the solid (an intersection's operand shrunk, a
+    // cutter's faces in a difference grown), at most.
     double grown = 0.0;
+    double shrunk = 0.0;
     std::size_t faces() const {
       return doubles ? doubles->mesh.size() : std::size_t(mesh.number_of_faces());
     }
@@ -458,10 +461,13 @@ class Evaluator {
     // A contact's offset moved some of the minuend's faces off the
     // model's: a cut flush with such a face (a grid cell cut out next to
     // two cells that touch along an edge) would leave a sheet of that
-    // thickness, so the cutter grows past it.
-    if (minuend.grown > 0.0) {
+    // thickness, so the cutter grows past it. The same where the offset
+    // moved the cutter's own faces in (an intersection's operand shrunk
+    // off a point contact: a paraboloid clipped by a box its vertex
+    // touches, the box's top then flush with the minuend's).
+    if (const double moved = std::max(minuend.grown, cut.shrunk); moved > 0.0) {
       const dvec3 reach(tolerance_);
-      offsetMesh(exact(cut), minuend.grown + kContactOffset * tolerance_,
+      offsetMesh(exact(cut), moved + kContactOffset * tolerance_,
                  {minuend.box.lo - reach, minuend.box.hi + reach});
       cut.shape = 0;
     }
@@ -653,6 +659,17 @@ class Evaluator {
     return pieceOf(std::move(triangles), tagOf(*material), "intersection");
   }
 
+  // What a records of its moved faces after a = a op b, where the boolean
+  // itself moved b's faces by up to `moved` (a contact's offset or a
+  // perturbation: out of a union, into the result otherwise). A
+  // difference turns b's faces inside out: any move of them may be one
+  // into the result.
+  static void keepMoves(Piece& a, const Piece& b, Boolean::Op op, double moved = 0.0) {
+    a.grown = std::max(a.grown, b.grown) + moved;
+    const double bInto = op == Boolean::Op::Difference ? b.grown : b.shrunk;
+    a.shrunk = std::max(a.shrunk, bInto) + (op == Boolean::Op::Union ? 0.0 : moved);
+  }
+
   // Adds b's shells to a: their boxes are apart, so no face of one meets
   // the other.
   void join(Piece& a, Piece& b) {
@@ -664,7 +681,7 @@ class Evaluator {
     }
     a.box.include(b.box);
     a.shape = 0;
-    a.grown = std::max(a.grown, b.grown);
+    keepMoves(a, b, Boolean::Op::Union);
     ++stats_.merges;
   }
 
@@ -743,7 +760,7 @@ class Evaluator {
             ++stats_.glued;
             pieces[i].box.include(pieces[j].box);
             pieces[i].shape = 0;
-            pieces[i].grown = std::max(pieces[i].grown, pieces[j].grown);
+            keepMoves(pieces[i], pieces[j], Boolean::Op::Union);
             pieces[j] = Piece{};
             used[i] = used[j] = glued = true;
             break;
@@ -843,7 +860,7 @@ class Evaluator {
       ++stats_.glued;
       a.box.include(b.box);
       a.shape = 0;
-      a.grown = std::max(a.grown, b.grown);
+      keepMoves(a, b, Boolean::Op::Union);
       return;
     }
     ++stats_.corefinements;
@@ -873,8 +890,7 @@ class Evaluator {
         stats_.perturbed += perturbed;
         a.doubles = std::move(made);
         a.mesh = Mesh();
-        a.grown = std::max(a.grown, b.grown) +
-                  (perturbed ? kPerturbedReach * kContactOffset * tolerance_ : 0.0);
+        keepMoves(a, b, op, perturbed ? kPerturbedReach * kContactOffset * tolerance_ : 0.0);
         return boxAfter(a);
       }
     }
@@ -907,8 +923,8 @@ class Evaluator {
     }
     // The operands as they were, for another try.
     const Mesh keptA = a.mesh, keptB = b.mesh;
-    const double grown = std::max(a.grown, b.grown);
-    a.grown = grown;
+    const double grownBefore = a.grown, shrunkBefore = a.shrunk;
+    keepMoves(a, b, op);
     if (attempt(a, b, op)) {
       if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces) roundIfValid(a);
       return boxAfter(a);
@@ -947,7 +963,8 @@ class Evaluator {
       const dvec3 reach(tolerance_);
       if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a, {b.box.lo - reach, b.box.hi + reach});
       if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b, {a.box.lo - reach, a.box.hi + reach});
-      a.grown = grown + std::max(std::abs(offsets.a), std::abs(offsets.b));
+      a.grown = grownBefore, a.shrunk = shrunkBefore;
+      keepMoves(a, b, op, std::max(std::abs(offsets.a), std::abs(offsets.b)));
       if (attempt(a, b, op)) return boxAfter(a);
     }
     unresolved(a, b, op);

@@ -295,6 +295,19 @@ TEST(ContactExport, ACutFlushWithAFaceThatAContactMovedLeavesNoSheet) {
       8.0 + 24.0, 0.1);
 }
 
+TEST(ContactExport, ACutterThatAContactShrankStillCutsThroughAFlushFace) {
+  // The paraboloid's vertex touches the clip box's floor at a point: the
+  // intersection is made with the box shrunk by a hundredth of the
+  // tolerance, its top too, which the block's top is flush with. The
+  // cutter grows back past it: the cup is open, not sealed under a skin.
+  // Volume: the block less the paraboloid x² + y² <= 4z up to z = 4,
+  // 400 − ∫₀⁴ 4πz dz = 400 − 32π.
+  exportsValid(
+      "return box{size={10,10,4}}:translate(-5,-5,0) - "
+      "clip(elliptic_paraboloid{a=2, b=2}, {lo={-5,-5,0}, hi={5,5,4}})",
+      400.0 - 32.0 * kPi, 0.5);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
