@@ -341,6 +341,7 @@ class Evaluator {
     // cutter's faces in a difference grown), at most.
     double grown = 0.0;
     double shrunk = 0.0;
+    Bounds shrunkNear;  // where those faces moved in lie; empty if none did
     std::size_t faces() const {
       return doubles ? doubles->mesh.size() : std::size_t(mesh.number_of_faces());
     }
@@ -666,8 +667,31 @@ class Evaluator {
   // into the result.
   static void keepMoves(Piece& a, const Piece& b, Boolean::Op op, double moved = 0.0) {
     a.grown = std::max(a.grown, b.grown) + moved;
-    const double bInto = op == Boolean::Op::Difference ? b.grown : b.shrunk;
+    const bool difference = op == Boolean::Op::Difference;
+    const double bInto = difference ? b.grown : b.shrunk;
+    if (bInto > 0.0) a.shrunkNear.include(difference ? b.box : b.shrunkNear);
+    if (op != Boolean::Op::Union && moved > 0.0) a.shrunkNear.include(b.box);
     a.shrunk = std::max(a.shrunk, bInto) + (op == Boolean::Op::Union ? 0.0 : moved);
+  }
+
+  // A face of one operand of a union that a contact's offset moved into
+  // it (a hole cut again by a cutter moved off its wall) stands off an
+  // operand flush with it in the model (a pin of the hole's radius), which
+  // then stays a shell of its own: that operand grows past the gap, near
+  // the moved faces only.
+  void closeShrunkGaps(Piece& a, Piece& b) {
+    auto growNear = [&](Piece& grows, const Piece& moved) {
+      if (!(moved.shrunk > 0.0)) return false;
+      const dvec3 reach(tolerance_);
+      const Bounds near{moved.shrunkNear.lo - reach, moved.shrunkNear.hi + reach};
+      if (!grows.box.overlaps(near)) return false;
+      const double by = std::max(a.shrunk, b.shrunk) + kContactOffset * tolerance_;
+      offsetMesh(exact(grows), by, near);
+      grows.shape = 0;
+      grows.grown += by;
+      return true;
+    };
+    if (!growNear(b, a)) growNear(a, b);
   }
 
   // Adds b's shells to a: their boxes are apart, so no face of one meets
@@ -853,6 +877,7 @@ class Evaluator {
     // symmetric, so the larger mesh takes that place (a box united with a
     // grid of spheres copies the box's faces, not the spheres').
     if (op != Boolean::Op::Difference && b.faces() > a.faces()) std::swap(a, b);
+    if (op == Boolean::Op::Union) closeShrunkGaps(a, b);
     if (weldNearVertices(a, b, hairApart(a.box, b.box))) b.shape = 0;
     // Solids stacked face to face on the same triangles need no
     // corefinement (a frustum on the one below it).

@@ -308,6 +308,19 @@ TEST(ContactExport, ACutterThatAContactShrankStillCutsThroughAFlushFace) {
       400.0 - 32.0 * kPi, 0.5);
 }
 
+TEST(ContactExport, APinInAHoleCutAgainMeetsItsWall) {
+  // The ring's hole is cut again by a cylinder of its radius: the walls
+  // lie in one place, and the cut is made with the cutter moved off the
+  // wall, which widens the hole by a ten-thousandth. The pin of the same
+  // radius grows past that gap where it meets the ring: one shell.
+  // Volume: the ring π(10² − 5²)·4 and the pin π·5²·8.
+  exportsValid(
+      "local ring = linear_extrude{circle(10) - circle(5), height=4} - "
+      "cylinder{r=5, h=10}:translate(0,0,-3)\n"
+      "return ring + cylinder{r=5, h=8}",
+      kPi * 75.0 * 4.0 + kPi * 25.0 * 8.0, 3.0);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
