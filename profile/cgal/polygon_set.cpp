@@ -345,7 +345,8 @@ PlaneKernel::Point_2 exactPoint(const dvec2& p) {
   return {PlaneKernel::FT(p.x), PlaneKernel::FT(p.y)};
 }
 
-std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double ellipseTolerance) {
+std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double ellipseTolerance,
+                                                   const CornerWeld* weld) {
   // Bézier curves are not circle segments: polygons within the tolerance.
   for (const ProfileLoop& loop : curved.loops)
     for (const ProfileEdge& e : loop.edges) requireFinite(e);
@@ -356,15 +357,21 @@ std::vector<std::vector<CircleSegment>> exactLoops(const Profile& curved, double
     const auto addSegment = [&](const dvec2& a, const dvec2& b) {
       if (a != b) curves.emplace_back(exactPoint(a), exactPoint(b));
     };
-    for (std::size_t i = 0; i < loop.edges.size(); ++i) {
+    const std::size_t n = loop.edges.size();
+    const auto straight = [&](std::size_t i) {
+      return loop.edges[i % n].kind == ProfileEdge::Kind::Segment;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
       // Each edge starts where the one before it ends: a loop built in
       // doubles may miss that by a rounding error (an arc's end computed
       // from its angle), which would leave the arrangement a gap and drop
       // the loop.
       ProfileEdge e = loop.edges[i];
-      e.from = loop.edges[i == 0 ? loop.edges.size() - 1 : i - 1].to;
+      e.from = loop.edges[i == 0 ? n - 1 : i - 1].to;
       requireFinite(e);
       if (e.kind == ProfileEdge::Kind::Segment) {
+        if (weld && straight(i + n - 1)) e.from = (*weld)(e.from);
+        if (weld && straight(i + 1)) e.to = (*weld)(e.to);
         addSegment(e.from, e.to);
         continue;
       }
@@ -427,23 +434,25 @@ ArcPolygonSet evenOddSet(const std::vector<std::vector<CircleSegment>>& loops) {
   return filledSet(curves, FillRule::EvenOdd);
 }
 
-ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
+namespace {
+
+ArcPolygonSet weldedSetOf(const Region& region, double ellipseTolerance, const CornerWeld& weld) {
   if (region.op() == Region::Op::Leaf)
-    return evenOddSet(exactLoops(region.profile(), ellipseTolerance));
+    return evenOddSet(exactLoops(region.profile(), ellipseTolerance, &weld));
   const std::vector<RegionPtr>& operands = region.operands();
   if (region.op() == Region::Op::Union && operands.size() > 2) {
     // One aggregated join (CGAL's divide and conquer) rather than one join
     // per operand, each of which would sweep all that came before it again.
     std::vector<ArcPolygonWithHoles> pieces;
     for (const RegionPtr& operand : operands)
-      polygonSetOf(*operand, ellipseTolerance).polygons_with_holes(std::back_inserter(pieces));
+      weldedSetOf(*operand, ellipseTolerance, weld).polygons_with_holes(std::back_inserter(pieces));
     ArcPolygonSet set;
     if (!pieces.empty()) set.join(pieces.begin(), pieces.end());
     return set;
   }
-  ArcPolygonSet set = polygonSetOf(*operands.front(), ellipseTolerance);
+  ArcPolygonSet set = weldedSetOf(*operands.front(), ellipseTolerance, weld);
   for (std::size_t i = 1; i < operands.size(); ++i) {
-    const ArcPolygonSet other = polygonSetOf(*operands[i], ellipseTolerance);
+    const ArcPolygonSet other = weldedSetOf(*operands[i], ellipseTolerance, weld);
     switch (region.op()) {
       case Region::Op::Union:
         set.join(other);
@@ -459,6 +468,12 @@ ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
     }
   }
   return set;
+}
+
+}  // namespace
+
+ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance) {
+  return weldedSetOf(region, ellipseTolerance, CornerWeld(region, ellipseTolerance));
 }
 
 Profile profileOf(const ArcPolygonSet& set) {

@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "profile/corner_weld.h"
 #include "profile/region.h"
 
 namespace csgray::detail {
@@ -36,8 +37,12 @@ ArcPolygonSet evenOddSet(const std::vector<std::vector<CircleSegment>>& loops);
 // exactly), arcs of ellipses that are not circles as polygons within
 // ellipseTolerance. Throws std::invalid_argument for a coordinate that is
 // not a finite number.
-std::vector<std::vector<CircleSegment>> exactLoops(const Profile& profile, double ellipseTolerance);
+// With a weld, the corners between two of its straight edges that it
+// moves are taken where it moves them (profile/corner_weld.h).
+std::vector<std::vector<CircleSegment>> exactLoops(const Profile& profile, double ellipseTolerance,
+                                                   const CornerWeld* weld = nullptr);
 
+// The region's set, its corners welded (profile/corner_weld.h).
 ArcPolygonSet polygonSetOf(const Region& region, double ellipseTolerance);
 
 // The points about which closed chains of curves (each point left as

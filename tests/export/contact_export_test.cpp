@@ -321,6 +321,22 @@ TEST(ContactExport, APinInAHoleCutAgainMeetsItsWall) {
       kPi * 75.0 * 4.0 + kPi * 25.0 * 8.0, 3.0);
 }
 
+TEST(ContactExport, AHoneycombOfCellsSideBySideIsOneShell) {
+  // The cells' corners meet only to rounding (cos 60°, √3): welded in the
+  // plane, the region is one outline, and its sweep one shell of the
+  // cells' volume, 16 · 6√3 · 4.
+  exportsValid(
+      "local cells = {}\n"
+      "for i = 0, 3 do for j = 0, 3 do\n"
+      "  local hex = {}\n"
+      "  for k = 0, 5 do hex[#hex + 1] = {2 * math.cos(math.rad(60 * k)), "
+      "2 * math.sin(math.rad(60 * k))} end\n"
+      "  cells[#cells + 1] = polygon(hex):translate(3 * i, math.sqrt(3) * (2 * j + i % 2))\n"
+      "end end\n"
+      "return linear_extrude{union(table.unpack(cells)), height=4}",
+      16.0 * 6.0 * std::sqrt(3.0) * 4.0, 1e-6);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth

@@ -193,6 +193,31 @@ TEST(Region, SquaresSharingAnEdgeUniteIntoOneLoop) {
   EXPECT_DOUBLE_EQ(area(p), 2.0);
 }
 
+TEST(Region, CellsPlacedSideBySideInDoublesShareTheirEdges) {
+  // A honeycomb of 4 × 4 hexagons of radius 2, their corners at
+  // (2 cos 60k°, 2 sin 60k°) about centres 3 apart: neighbours' corners
+  // meet only to rounding (2 cos 60° is 1.0000000000000002, the next
+  // cell's corner 3 − 2 = 1). Welded, the union is one loop with no slit
+  // between the cells, its area 16 cells'.
+  std::vector<RegionPtr> cells;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const dvec2 centre(3.0 * i, std::sqrt(3.0) * (2 * j + i % 2));
+      std::vector<dvec2> corners;
+      for (int k = 0; k < 6; ++k)
+        corners.push_back(centre + 2.0 * dvec2(std::cos(k * kPi / 3.0), std::sin(k * kPi / 3.0)));
+      cells.push_back(polygon({corners}));
+    }
+  const RegionPtr honeycomb = Region::boolean(Region::Op::Union, cells);
+  const Profile p = evaluate(*honeycomb, kTolerance);
+  ASSERT_EQ(p.loops.size(), 1u);
+  expectClosed(p);
+  EXPECT_NEAR(area(p), 16.0 * 6.0 * std::sqrt(3.0), 1e-9);
+  // Every edge is at least a cell's edge long: no sliver edges.
+  for (const ProfileEdge& e : p.loops[0].edges) EXPECT_GT(glm::length(e.to - e.from), 1.9);
+  expectSameContainment(honeycomb, p);
+}
+
 TEST(Region, EvenOddPolygonWithAHole) {
   const RegionPtr r = polygon({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}});
   const Profile p = evaluate(*r, kTolerance);
