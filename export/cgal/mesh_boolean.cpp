@@ -34,6 +34,7 @@
 #include "export/cgal/stray_shells.h"
 #include "export/collinear_points.h"
 #include "export/grazed_faces.h"
+#include "export/merged_prisms.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
 #include "tessellation/tessellation.h"
@@ -1680,6 +1681,9 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // The mesh of each primitive is made in the world: instances multiplied out.
   if (solid.hasInstances())
     return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats, doubles);
+  // Prisms side by side are made as one, in the plane (export/merged_prisms.h).
+  if (const SolidPtr merged = prismsMerged(solid.shared_from_this()); merged.get() != &solid)
+    return meshOfSolid(*merged, tolerance, stored, stats, doubles);
   const Bounds box = EvaluationFrame(solid).evalBounds(solid.bounds());
   if (!box.empty() && !box.finite())
     throw std::invalid_argument(

@@ -1,0 +1,92 @@
+// Straight extrusions side by side in a union are merged into one
+// extrusion of their regions' union, and only those: one material, one
+// height, one plane, boxes that meet.
+#include "export/merged_prisms.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/boolean.h"
+#include "engine/instance.h"
+#include "primitives/linear_extrusion.h"
+#include "profile/region_evaluation.h"
+#include "script/script.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+// The primitives of a solid's tree.
+int primitivesOf(const Solid& solid) {
+  if (solid.children().empty()) return 1;
+  int n = 0;
+  for (const SolidPtr& child : solid.children()) n += primitivesOf(*child);
+  return n;
+}
+
+SolidPtr mergedOf(const std::string& source) {
+  return prismsMerged(flattened(test::solidOf(source)));
+}
+
+TEST(MergedPrisms, SquaresSideBySideAreOneExtrusionOfTheirUnion) {
+  const SolidPtr part = mergedOf(
+      "local s = {}\n"
+      "for i = 0, 3 do s[#s + 1] = linear_extrude{square(2), height = 3}:translate(2 * i, 0, 1) "
+      "end\n"
+      "return union(table.unpack(s))");
+  auto* prism = dynamic_cast<const LinearExtrusion*>(part.get());
+  ASSERT_NE(prism, nullptr) << part->kind();
+  EXPECT_DOUBLE_EQ(area(evaluate(*prism->region(), 1e-4)), 16.0);
+  EXPECT_DOUBLE_EQ(prism->height(), 3.0);
+  EXPECT_TRUE(part->contains({7.5, 1.0, 2.0}));
+  EXPECT_FALSE(part->contains({8.5, 1.0, 2.0}));
+  EXPECT_FALSE(part->contains({1.0, 1.0, 0.5}));  // below: the bottom stays at z = 1
+}
+
+TEST(MergedPrisms, CellsOfAPartTurnedAsAWholeMerge) {
+  // The frames are turned by 17° after the move: the moves between them,
+  // taken back into the first's plane, are the moves within it to rounding.
+  const SolidPtr part = mergedOf(
+      "local s = {}\n"
+      "for i = 0, 2 do s[#s + 1] = linear_extrude{square(2), height = 3}:translate(2 * i, 0, 0) "
+      "end\n"
+      "return union(table.unpack(s)):rotate(0, 0, 17):translate(5, 1, 0)");
+  EXPECT_EQ(primitivesOf(*part), 1);
+}
+
+TEST(MergedPrisms, OnlyLikeExtrusionsThatMeetMerge) {
+  // Another height, another material, another plane, a twist, boxes apart:
+  // each stays a solid of its own.
+  for (const char* other :
+       {"linear_extrude{square(2), height = 4}:translate(2, 0, 0)",
+        "linear_extrude{square(2), height = 3}:translate(2, 0, 0):material{color = {1, 0, 0}}",
+        "linear_extrude{square(2), height = 3}:translate(2, 0, 0.5)",
+        "linear_extrude{square(2), height = 3, twist = 10}:translate(2, 0, 0)",
+        "linear_extrude{square(2), height = 3}:translate(2.5, 0, 0)",
+        "linear_extrude{square(2), height = 3}:rotate(0, 90, 0):translate(4, 0, 0)"}) {
+    SCOPED_TRACE(other);
+    const SolidPtr part =
+        mergedOf(std::string("return linear_extrude{square(2), height = 3} + ") + other);
+    EXPECT_EQ(primitivesOf(*part), 2);
+  }
+}
+
+TEST(MergedPrisms, APartWithoutSuchPrismsIsLeftAsItIs) {
+  const SolidPtr part = flattened(
+      test::solidOf("return box(2) + cylinder{r = 1, h = 3} - sphere(1):translate(0, 0, 3)"));
+  EXPECT_EQ(prismsMerged(part), part);
+}
+
+TEST(MergedPrisms, PrismsUnderADifferenceMergeInTheirUnion) {
+  // The merged union keeps its place: the cut still cuts it.
+  const SolidPtr part = mergedOf(
+      "return (linear_extrude{square(2), height = 3} + "
+      "linear_extrude{square(2), height = 3}:translate(2, 0, 0)) - box(1)");
+  EXPECT_EQ(primitivesOf(*part), 2);
+  EXPECT_FALSE(part->contains({0.5, 0.5, 0.5}));
+  EXPECT_TRUE(part->contains({3.5, 1.0, 2.0}));
+}
+
+}  // namespace
+}  // namespace csgray::detail
