@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "engine/boolean.h"
 #include "primitives/linear_extrusion.h"
+#include "profile/region_evaluation.h"
 
 namespace csgray::detail {
 
@@ -63,6 +66,20 @@ RegionPtr inPlaneOf(const LinearExtrusion& a, const LinearExtrusion& b) {
   return b.region()->transformed(Affine2{dmat2(1.0), dvec2(offset.x, offset.y)});
 }
 
+// Does the region's boundary pass through one point twice (two loops,
+// or one loop with itself, meeting at a corner or a tangent point)? Its
+// sweep is then pinched along a line there, which the prisms apart, as
+// solids that touch, are not: such a group is left apart.
+bool pinched(const Region& region) {
+  const ProfileBounds& box = region.bounds();
+  const double size = std::max({1.0, box.hi.x - box.lo.x, box.hi.y - box.lo.y});
+  std::set<std::pair<double, double>> corners;
+  for (const ProfileLoop& loop : evaluate(region, 1e-6 * size).loops)
+    for (const ProfileEdge& e : loop.edges)
+      if (!corners.emplace(e.to.x, e.to.y).second) return true;
+  return false;
+}
+
 SolidPtr merged(const SolidPtr& solid) {
   const Boolean* node = solid->asBoolean();
   if (node == nullptr) return solid;
@@ -73,28 +90,37 @@ SolidPtr merged(const SolidPtr& solid) {
     changed = changed || operands.back() != child;
   }
   if (node->op() == Boolean::Op::Union) {
-    // Each group takes the place of its first prism.
+    // The group each operand joins (its first prism's among them), or
+    // none; a group that merges takes the place of its first prism.
+    constexpr std::size_t kNone = std::size_t(-1);
     std::vector<Group> groups;
-    std::vector<std::size_t> groupAt;
-    std::vector<SolidPtr> kept;
-    for (const SolidPtr& operand : operands) {
-      const LinearExtrusion* prism = prismOf(*operand);
-      auto joins = [&](Group& g) {
-        RegionPtr region = inPlaneOf(*g.first, *prism);
-        return region && g.take(std::move(region));
-      };
-      if (prism && std::any_of(groups.begin(), groups.end(), joins)) continue;
-      if (prism) {
-        groups.push_back({prism, {prism->region()}, prism->region()->bounds()});
-        groupAt.push_back(kept.size());
-      }
-      kept.push_back(operand);
+    std::vector<std::size_t> groupOf(operands.size(), kNone);
+    for (std::size_t i = 0; i < operands.size(); ++i) {
+      const LinearExtrusion* prism = prismOf(*operands[i]);
+      if (!prism) continue;
+      for (std::size_t g = 0; g < groups.size() && groupOf[i] == kNone; ++g)
+        if (RegionPtr region = inPlaneOf(*groups[g].first, *prism);
+            region && groups[g].take(std::move(region)))
+          groupOf[i] = g;
+      if (groupOf[i] != kNone) continue;
+      groupOf[i] = groups.size();
+      groups.push_back({prism, {prism->region()}, prism->region()->bounds()});
     }
-    if (kept.size() < operands.size()) {
-      for (std::size_t g = 0; g < groups.size(); ++g)
-        if (groups[g].regions.size() > 1)
-          kept[groupAt[g]] =
-              groups[g].first->sweepOf(Region::boolean(Region::Op::Union, groups[g].regions));
+    std::vector<SolidPtr> asOne(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      if (groups[g].regions.size() > 1) {
+        const RegionPtr region = Region::boolean(Region::Op::Union, groups[g].regions);
+        if (!pinched(*region)) asOne[g] = groups[g].first->sweepOf(region);
+      }
+    if (std::any_of(asOne.begin(), asOne.end(), [](const SolidPtr& m) { return m != nullptr; })) {
+      std::vector<SolidPtr> kept;
+      for (std::size_t i = 0; i < operands.size(); ++i) {
+        const std::size_t g = groupOf[i];
+        if (g == kNone || !asOne[g])
+          kept.push_back(operands[i]);
+        else if (operands[i].get() == groups[g].first)
+          kept.push_back(asOne[g]);
+      }
       return kept.size() == 1 ? kept[0] : unionOf(std::move(kept));
     }
   }

@@ -16,8 +16,10 @@ namespace csgray::detail {
 
 // The part with the straight linear extrusions among each union's
 // operands that share a material, a frame but for a move within their
-// profile plane, a bottom and a height merged into one extrusion of the
-// union of their regions; the part itself when there are none.
+// profile plane, a bottom and a height, and whose boxes meet, merged
+// into one extrusion of the union of their regions, where that union's
+// boundary does not pass through a point twice; the part itself when
+// there are none.
 SolidPtr prismsMerged(const SolidPtr& part);
 
 }  // namespace csgray::detail

@@ -1670,32 +1670,20 @@ bool hasOrderedOperands(const Solid& solid) {
 PartMesh meshInOrders(const Solid& solid, double tolerance, StoredCoordinate stored,
                       MeshBooleanStats& counts, bool doubles);
 
-}  // namespace
-
-const char* booleanInProgress() { return inProgress; }
-
-PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored,
-                     MeshBooleanStats* stats, bool doubles) {
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
-    throw std::invalid_argument("the tolerance must be a positive number");
-  // The mesh of each primitive is made in the world: instances multiplied out.
-  if (solid.hasInstances())
-    return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats, doubles);
-  // Prisms side by side are made as one, in the plane (export/merged_prisms.h).
-  if (const SolidPtr merged = prismsMerged(solid.shared_from_this()); merged.get() != &solid)
-    return meshOfSolid(*merged, tolerance, stored, stats, doubles);
+// The mesh of a part whose instances are multiplied out: in the orders
+// meshInOrders tries, and at last with the sweeps of touching regions
+// taken apart (export/sweeps_apart.h); where that fails too, the first
+// error.
+PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate stored,
+                        MeshBooleanStats& counts, bool doubles) {
   const Bounds box = EvaluationFrame(solid).evalBounds(solid.bounds());
   if (!box.empty() && !box.finite())
     throw std::invalid_argument(
         "the part is unbounded, or bounded only by half-spaces, whose reach csgray does not "
         "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
-  MeshBooleanStats local;
-  MeshBooleanStats& counts = stats ? *stats : local;
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
-    // A last try, with the sweeps of touching regions taken apart
-    // (export/sweeps_apart.h); where that fails too, the first error.
     SolidPtr apart;
     try {
       apart = sweepsTakenApart(solid.shared_from_this());
@@ -1710,6 +1698,31 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
     }
     throw;
   }
+}
+
+}  // namespace
+
+const char* booleanInProgress() { return inProgress; }
+
+PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stored,
+                     MeshBooleanStats* stats, bool doubles) {
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("the tolerance must be a positive number");
+  // The mesh of each primitive is made in the world: instances multiplied out.
+  if (solid.hasInstances())
+    return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats, doubles);
+  // Prisms side by side are made as one, in the plane (export/merged_prisms.h);
+  // where that fails (their regions touch at a point, which pinches the
+  // sweep), as the part has them.
+  MeshBooleanStats local;
+  MeshBooleanStats& counts = stats ? *stats : local;
+  if (const SolidPtr merged = prismsMerged(solid.shared_from_this()); merged.get() != &solid) {
+    try {
+      return meshOfFlatPart(*merged, tolerance, stored, counts, doubles);
+    } catch (const std::runtime_error&) {
+    }
+  }
+  return meshOfFlatPart(solid, tolerance, stored, counts, doubles);
 }
 
 namespace {

@@ -72,6 +72,20 @@ TEST(MergedPrisms, OnlyLikeExtrusionsThatMeetMerge) {
   }
 }
 
+TEST(MergedPrisms, PrismsWhoseRegionsWouldTouchAtAPointStayApart) {
+  // Squares corner to corner, discs side by side: the union's boundary
+  // would pass through the point of contact twice, and its sweep be
+  // pinched along a line there. Apart, they are solids that touch, which
+  // the booleans resolve.
+  for (const char* part : {"return linear_extrude{square(2), height = 3} + "
+                           "linear_extrude{square(2), height = 3}:translate(2, 2, 0)",
+                           "return linear_extrude{circle(1), height = 3} + "
+                           "linear_extrude{circle(1), height = 3}:translate(2, 0, 0)"}) {
+    SCOPED_TRACE(part);
+    EXPECT_EQ(primitivesOf(*mergedOf(part)), 2);
+  }
+}
+
 TEST(MergedPrisms, APartWithoutSuchPrismsIsLeftAsItIs) {
   const SolidPtr part = flattened(
       test::solidOf("return box(2) + cylinder{r = 1, h = 3} - sphere(1):translate(0, 0, 3)"));
