@@ -10,6 +10,7 @@
 #include "engine/boolean.h"
 #include "primitives/linear_extrusion.h"
 #include "profile/region_evaluation.h"
+#include "scene/material.h"
 
 namespace csgray::detail {
 
@@ -53,7 +54,9 @@ glm::dmat3 linearPart(const Primitive& p) { return glm::dmat3(p.frame().worldFro
 // b's region moved into a's profile plane, or nothing when b does not
 // stand as a does.
 RegionPtr inPlaneOf(const LinearExtrusion& a, const LinearExtrusion& b) {
-  if (a.material() != b.material() || a.bottom() != b.bottom() || a.height() != b.height() ||
+  const bool sameLook = a.material() == b.material() ||
+                        (a.material() && b.material() && *a.material() == *b.material());
+  if (!sameLook || a.bottom() != b.bottom() || a.height() != b.height() ||
       linearPart(a) != linearPart(b))
     return nullptr;
   const dvec3 at = dvec3(b.frame().worldFromObject()[3]);

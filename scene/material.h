@@ -49,6 +49,8 @@ struct Material {
     return texture ? texture->colorAt(texturePoint, textureNormal) : color;
   }
   bool refracts() const { return transparency > 0.0 && ior != 1.0; }
+  // The same look: every field equal, the same texture.
+  bool operator==(const Material&) const = default;
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;

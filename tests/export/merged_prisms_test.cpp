@@ -44,6 +44,16 @@ TEST(MergedPrisms, SquaresSideBySideAreOneExtrusionOfTheirUnion) {
   EXPECT_FALSE(part->contains({1.0, 1.0, 0.5}));  // below: the bottom stays at z = 1
 }
 
+TEST(MergedPrisms, CellsGivenTheSameLookEachMerge) {
+  // Each cell given its material on its own: equal materials, not one.
+  const SolidPtr part = mergedOf(
+      "local s = {}\n"
+      "for i = 0, 2 do s[#s + 1] = linear_extrude{square(2), height = 3}:translate(2 * i, 0, 0)"
+      ":material{color = {1, 0.5, 0}} end\n"
+      "return union(table.unpack(s))");
+  EXPECT_EQ(primitivesOf(*part), 1);
+}
+
 TEST(MergedPrisms, CellsOfAPartTurnedAsAWholeMerge) {
   // The frames are turned by 17° after the move: the moves between them,
   // taken back into the first's plane, are the moves within it to rounding.
