@@ -34,7 +34,7 @@
 #include "export/cgal/stray_shells.h"
 #include "export/collinear_points.h"
 #include "export/grazed_faces.h"
-#include "export/merged_prisms.h"
+#include "export/merged_sweeps.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
 #include "tessellation/tessellation.h"
@@ -1711,12 +1711,11 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // The mesh of each primitive is made in the world: instances multiplied out.
   if (solid.hasInstances())
     return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats, doubles);
-  // Prisms side by side are made as one, in the plane (export/merged_prisms.h);
-  // where that fails (their regions touch at a point, which pinches the
-  // sweep), as the part has them.
+  // Sweeps side by side are made as one, in the plane (export/merged_sweeps.h);
+  // should that fail, the part is made as it has them.
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  if (const SolidPtr merged = prismsMerged(solid.shared_from_this()); merged.get() != &solid) {
+  if (const SolidPtr merged = sweepsMerged(solid.shared_from_this()); merged.get() != &solid) {
     try {
       return meshOfFlatPart(*merged, tolerance, stored, counts, doubles);
     } catch (const std::runtime_error&) {

@@ -1,7 +1,8 @@
-// Straight extrusions side by side in a union are merged into one
-// extrusion of their regions' union, and only those: one material, one
-// height, one plane, boxes that meet.
-#include "export/merged_prisms.h"
+// Sweeps side by side in a union are merged into one sweep of their
+// regions' union, and only those: straight extrusions of one height on
+// one plane, turns of one angle about one axis; one material, boxes that
+// meet, no point where the union touches itself.
+#include "export/merged_sweeps.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include "engine/boolean.h"
 #include "engine/instance.h"
 #include "primitives/linear_extrusion.h"
+#include "primitives/revolution.h"
 #include "profile/region_evaluation.h"
 #include "script/script.h"
 #include "test_support.h"
@@ -26,10 +28,10 @@ int primitivesOf(const Solid& solid) {
 }
 
 SolidPtr mergedOf(const std::string& source) {
-  return prismsMerged(flattened(test::solidOf(source)));
+  return sweepsMerged(flattened(test::solidOf(source)));
 }
 
-TEST(MergedPrisms, SquaresSideBySideAreOneExtrusionOfTheirUnion) {
+TEST(MergedSweeps, SquaresSideBySideAreOneExtrusionOfTheirUnion) {
   const SolidPtr part = mergedOf(
       "local s = {}\n"
       "for i = 0, 3 do s[#s + 1] = linear_extrude{square(2), height = 3}:translate(2 * i, 0, 1) "
@@ -44,7 +46,7 @@ TEST(MergedPrisms, SquaresSideBySideAreOneExtrusionOfTheirUnion) {
   EXPECT_FALSE(part->contains({1.0, 1.0, 0.5}));  // below: the bottom stays at z = 1
 }
 
-TEST(MergedPrisms, CellsGivenTheSameLookEachMerge) {
+TEST(MergedSweeps, CellsGivenTheSameLookEachMerge) {
   // Each cell given its material on its own: equal materials, not one.
   const SolidPtr part = mergedOf(
       "local s = {}\n"
@@ -54,7 +56,7 @@ TEST(MergedPrisms, CellsGivenTheSameLookEachMerge) {
   EXPECT_EQ(primitivesOf(*part), 1);
 }
 
-TEST(MergedPrisms, CellsOfAPartTurnedAsAWholeMerge) {
+TEST(MergedSweeps, CellsOfAPartTurnedAsAWholeMerge) {
   // The frames are turned by 17° after the move: the moves between them,
   // taken back into the first's plane, are the moves within it to rounding.
   const SolidPtr part = mergedOf(
@@ -65,7 +67,7 @@ TEST(MergedPrisms, CellsOfAPartTurnedAsAWholeMerge) {
   EXPECT_EQ(primitivesOf(*part), 1);
 }
 
-TEST(MergedPrisms, OnlyLikeExtrusionsThatMeetMerge) {
+TEST(MergedSweeps, OnlyLikeExtrusionsThatMeetMerge) {
   // Another height, another material, another plane, a twist, boxes apart:
   // each stays a solid of its own.
   for (const char* other :
@@ -82,7 +84,7 @@ TEST(MergedPrisms, OnlyLikeExtrusionsThatMeetMerge) {
   }
 }
 
-TEST(MergedPrisms, PrismsWhoseRegionsWouldTouchAtAPointStayApart) {
+TEST(MergedSweeps, PrismsWhoseRegionsWouldTouchAtAPointStayApart) {
   // Squares corner to corner, discs side by side: the union's boundary
   // would pass through the point of contact twice, and its sweep be
   // pinched along a line there. Apart, they are solids that touch, which
@@ -96,13 +98,39 @@ TEST(MergedPrisms, PrismsWhoseRegionsWouldTouchAtAPointStayApart) {
   }
 }
 
-TEST(MergedPrisms, APartWithoutSuchPrismsIsLeftAsItIs) {
-  const SolidPtr part = flattened(
-      test::solidOf("return box(2) + cylinder{r = 1, h = 3} - sphere(1):translate(0, 0, 3)"));
-  EXPECT_EQ(prismsMerged(part), part);
+TEST(MergedSweeps, TheStepsOfATurnedPartAreOneTurn) {
+  // A stepped shaft: a disc, a collar on it, a shaft on that, each a
+  // rotate_extrude of its own moved along the axis.
+  const SolidPtr part = mergedOf(
+      "return rotate_extrude{square{size = {20, 4}}} + "
+      "rotate_extrude{square{size = {8, 6}}}:translate(0, 0, 4) + "
+      "rotate_extrude{square{size = {3, 20}}}:translate(0, 0, 10)");
+  auto* turn = dynamic_cast<const Revolution*>(part.get());
+  ASSERT_NE(turn, nullptr) << part->kind();
+  EXPECT_DOUBLE_EQ(area(evaluate(*turn->region(), 1e-4)), 80.0 + 48.0 + 60.0);
+  EXPECT_TRUE(part->contains({0.0, 7.5, 9.5}));
+  EXPECT_FALSE(part->contains({0.0, 8.5, 9.5}));
+  EXPECT_TRUE(part->contains({0.0, 2.5, 29.5}));
 }
 
-TEST(MergedPrisms, PrismsUnderADifferenceMergeInTheirUnion) {
+TEST(MergedSweeps, TurnsOfOtherAnglesOrAxesStayApart) {
+  for (const char* other : {"rotate_extrude{square{size = {8, 6}}, angle = 90}:translate(0, 0, 4)",
+                            "rotate_extrude{square{size = {8, 6}}}:translate(1, 0, 4)",
+                            "linear_extrude{square{size = {8, 6}}, height = 4}"}) {
+    SCOPED_TRACE(other);
+    EXPECT_EQ(primitivesOf(*mergedOf(
+                  std::string("return rotate_extrude{square{size = {20, 4}}} + ") + other)),
+              2);
+  }
+}
+
+TEST(MergedSweeps, APartWithoutSuchPrismsIsLeftAsItIs) {
+  const SolidPtr part = flattened(
+      test::solidOf("return box(2) + cylinder{r = 1, h = 3} - sphere(1):translate(0, 0, 3)"));
+  EXPECT_EQ(sweepsMerged(part), part);
+}
+
+TEST(MergedSweeps, PrismsUnderADifferenceMergeInTheirUnion) {
   // The merged union keeps its place: the cut still cuts it.
   const SolidPtr part = mergedOf(
       "return (linear_extrude{square(2), height = 3} + "
