@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
-#include <set>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <numbers>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -40,27 +42,19 @@ Sweep sweepOf(const Solid& solid) {
   return {};
 }
 
-// The sweeps that merge with a first one: their regions moved into the
-// first's profile plane, and the box of those.
-struct Group {
-  Sweep first;
-  std::vector<RegionPtr> regions;
-  ProfileBounds box;
+// Do two boxes in the plane meet (within a hair)?
+bool meet(const ProfileBounds& a, const ProfileBounds& b) {
+  const double hair = kHair * std::max({1.0, std::abs(a.lo.x), std::abs(a.lo.y), std::abs(a.hi.x),
+                                        std::abs(a.hi.y)});
+  return !(b.lo.x > a.hi.x + hair || b.hi.x < a.lo.x - hair || b.lo.y > a.hi.y + hair ||
+           b.hi.y < a.lo.y - hair);
+}
 
-  // Takes the region if its box meets the group's (within a hair):
-  // sweeps apart are joined without a boolean anyway.
-  bool take(RegionPtr region) {
-    const ProfileBounds& b = region->bounds();
-    const double hair = kHair * std::max({1.0, std::abs(box.lo.x), std::abs(box.lo.y),
-                                          std::abs(box.hi.x), std::abs(box.hi.y)});
-    if (b.lo.x > box.hi.x + hair || b.hi.x < box.lo.x - hair || b.lo.y > box.hi.y + hair ||
-        b.hi.y < box.lo.y - hair)
-      return false;
-    box.include(b);
-    regions.push_back(std::move(region));
-    return true;
-  }
-};
+// The root of i's set in a disjoint-set forest (path halving).
+std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
 
 glm::dmat3 linearPart(const Primitive& p) { return glm::dmat3(p.frame().worldFromObject()); }
 
@@ -101,30 +95,88 @@ RegionPtr inPlaneOf(const Sweep& a, const Sweep& b) {
   return region->transformed(Affine2{dmat2(1.0), move});
 }
 
-// Does the region's boundary pass through one point twice (two loops,
-// or one loop with itself, meeting at a corner or a tangent point)? Its
-// sweep is then pinched along a line there (a circle there, turned),
-// which the sweeps apart, as solids that touch, are not: such a group is
-// left apart.
+// Is p on the edge away from its ends (within a hair)? The evaluated
+// loops hold segments and circular arcs only.
+bool insideOfEdge(const ProfileEdge& e, const dvec2& p, double hair) {
+  if (glm::length(p - e.from) <= hair || glm::length(p - e.to) <= hair) return false;
+  if (e.kind == ProfileEdge::Kind::Segment) {
+    const dvec2 d = e.to - e.from;
+    const double t = glm::dot(p - e.from, d) / glm::dot(d, d);
+    return t > 0.0 && t < 1.0 && glm::length(e.from + t * d - p) <= hair;
+  }
+  if (e.kind != ProfileEdge::Kind::Arc) return false;
+  const double r = glm::length(e.axes[0]);
+  if (!(std::abs(glm::length(p - e.center) - r) <= hair)) return false;
+  // The angle of p on the arc's circle, from angle0 the way it sweeps.
+  const dvec2 unit = glm::inverse(e.axes) * (p - e.center);
+  const double sweep = e.angle1 - e.angle0;
+  double along = std::atan2(unit.y, unit.x) - e.angle0;
+  const double turn = 2.0 * std::numbers::pi;
+  along = std::fmod(along, turn);
+  if (sweep > 0.0 && along < 0.0) along += turn;
+  if (sweep < 0.0 && along > 0.0) along -= turn;
+  return along / sweep > 0.0 && along / sweep < 1.0;
+}
+
+// Does the region's boundary pass through one point twice: two corners
+// at one point, or a corner on another edge (loops that meet at a point,
+// a hole's corner on the outline, tangent circles)? Its sweep is then
+// pinched along a line there (a circle there, turned), which the sweeps
+// apart, as solids that touch, are not: such a group is left apart.
 bool pinched(const Region& region) {
   const ProfileBounds& box = region.bounds();
-  const double size = std::max({1.0, box.hi.x - box.lo.x, box.hi.y - box.lo.y});
-  std::set<std::pair<double, double>> corners;
-  for (const ProfileLoop& loop : evaluate(region, 1e-6 * size).loops)
-    for (const ProfileEdge& e : loop.edges)
-      if (!corners.emplace(e.to.x, e.to.y).second) return true;
+  const double size = std::max({1.0, box.hi.x - box.lo.x, box.hi.y - box.lo.y, std::abs(box.lo.x),
+                                std::abs(box.lo.y), std::abs(box.hi.x), std::abs(box.hi.y)});
+  const double hair = kHair * size;
+  const Profile evaluated = evaluate(region, 1e-6 * size);
+  std::vector<dvec2> corners;
+  struct Reach {
+    ProfileBounds box;
+    const ProfileEdge* edge;
+  };
+  std::vector<Reach> edges;
+  for (const ProfileLoop& loop : evaluated.loops)
+    for (const ProfileEdge& e : loop.edges) {
+      corners.push_back(e.to);
+      Reach reach{{}, &e};
+      reach.box.include(e.from);
+      reach.box.include(e.to);
+      if (e.kind == ProfileEdge::Kind::Arc) {
+        const double r = glm::length(e.axes[0]);
+        reach.box.include(e.center - dvec2(r));
+        reach.box.include(e.center + dvec2(r));
+      }
+      edges.push_back(reach);
+    }
+  const auto byX = [](const dvec2& a, const dvec2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  };
+  std::sort(corners.begin(), corners.end(), byX);
+  if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) return true;
+  // A sweep along x: the edges whose boxes reach each corner's x.
+  std::sort(edges.begin(), edges.end(),
+            [](const Reach& a, const Reach& b) { return a.box.lo.x < b.box.lo.x; });
+  std::vector<const Reach*> active;
+  std::size_t next = 0;
+  for (const dvec2& p : corners) {
+    while (next < edges.size() && edges[next].box.lo.x <= p.x + hair)
+      active.push_back(&edges[next++]);
+    std::erase_if(active, [&](const Reach* r) { return r->box.hi.x < p.x - hair; });
+    for (const Reach* r : active)
+      if (p.y >= r->box.lo.y - hair && p.y <= r->box.hi.y + hair && insideOfEdge(*r->edge, p, hair))
+        return true;
+  }
   return false;
 }
 
-// The group's sweep of the union of its regions, or nothing where that
-// union is pinched or cannot be swept (a turned region that meets the
-// axis at a point only).
-SolidPtr sweptAsOne(const Group& group) {
-  if (group.regions.size() < 2) return nullptr;
-  const RegionPtr region = Region::boolean(Region::Op::Union, group.regions);
+// The sweep of the union of the regions, made as `first` is, or nothing
+// where that union is pinched or cannot be swept (a turned region that
+// meets the axis at a point only).
+SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions) {
+  const RegionPtr region = Region::boolean(Region::Op::Union, std::move(regions));
   if (pinched(*region)) return nullptr;
   try {
-    return group.first.sweep->sweepOf(region);
+    return first.sweep->sweepOf(region);
   } catch (const std::invalid_argument&) {
     return nullptr;
   }
@@ -140,33 +192,52 @@ SolidPtr merged(const SolidPtr& solid) {
     changed = changed || operands.back() != child;
   }
   if (node->op() == Boolean::Op::Union) {
-    // The group each operand joins (its first sweep's among them), or
-    // none; a group that merges takes the place of its first sweep.
-    constexpr std::size_t kNone = std::size_t(-1);
-    std::vector<Group> groups;
-    std::vector<std::size_t> groupOf(operands.size(), kNone);
-    for (std::size_t i = 0; i < operands.size(); ++i) {
-      const Sweep sweep = sweepOf(*operands[i]);
-      if (!sweep.primitive) continue;
-      for (std::size_t g = 0; g < groups.size() && groupOf[i] == kNone; ++g)
-        if (RegionPtr region = inPlaneOf(groups[g].first, sweep);
-            region && groups[g].take(std::move(region)))
-          groupOf[i] = g;
-      if (groupOf[i] != kNone) continue;
-      groupOf[i] = groups.size();
-      const RegionPtr& region = sweep.sweep->sweptRegion();
-      groups.push_back({sweep, {region}, region->bounds()});
+    // Each sweep's region in the plane of the first sweep it is alike
+    // (its class), and the sets of those whose boxes meet, directly or
+    // through others (whatever the order the union lists them in).
+    const std::size_t n = operands.size();
+    std::vector<Sweep> sweeps(n);
+    std::vector<RegionPtr> regions(n);
+    std::vector<std::size_t> parent(n);
+    std::vector<std::size_t> classOf(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      parent[i] = classOf[i] = i;
+      sweeps[i] = sweepOf(*operands[i]);
+      if (!sweeps[i].primitive) continue;
+      regions[i] = sweeps[i].sweep->sweptRegion();
+      for (std::size_t j = 0; j < i; ++j)
+        if (regions[j] && classOf[j] == j) {
+          if (RegionPtr moved = inPlaneOf(sweeps[j], sweeps[i])) {
+            regions[i] = std::move(moved);
+            classOf[i] = j;
+            break;
+          }
+        }
     }
-    std::vector<SolidPtr> asOne(groups.size());
-    for (std::size_t g = 0; g < groups.size(); ++g) asOne[g] = sweptAsOne(groups[g]);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (regions[i] && regions[j] && classOf[i] == classOf[j] &&
+            meet(regions[i]->bounds(), regions[j]->bounds()))
+          parent[rootOf(parent, i)] = rootOf(parent, j);
+    // Each set of two or more, swept as one, takes the place of its first.
+    std::vector<std::vector<std::size_t>> members(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (regions[i]) members[rootOf(parent, i)].push_back(i);
+    std::vector<SolidPtr> asOne(n);
+    for (std::size_t root = 0; root < n; ++root) {
+      if (members[root].size() < 2) continue;
+      std::vector<RegionPtr> set;
+      for (std::size_t i : members[root]) set.push_back(regions[i]);
+      asOne[root] = sweptAsOne(sweeps[classOf[root]], std::move(set));
+    }
     if (std::any_of(asOne.begin(), asOne.end(), [](const SolidPtr& m) { return m != nullptr; })) {
       std::vector<SolidPtr> kept;
-      for (std::size_t i = 0; i < operands.size(); ++i) {
-        const std::size_t g = groupOf[i];
-        if (g == kNone || !asOne[g])
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t root = regions[i] ? rootOf(parent, i) : i;
+        if (!asOne[root])
           kept.push_back(operands[i]);
-        else if (operands[i].get() == groups[g].first.primitive)
-          kept.push_back(asOne[g]);
+        else if (members[root].front() == i)
+          kept.push_back(asOne[root]);
       }
       return kept.size() == 1 ? kept[0] : unionOf(std::move(kept));
     }

@@ -1718,7 +1718,7 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   if (const SolidPtr merged = sweepsMerged(solid.shared_from_this()); merged.get() != &solid) {
     try {
       return meshOfFlatPart(*merged, tolerance, stored, counts, doubles);
-    } catch (const std::runtime_error&) {
+    } catch (const std::exception&) {  // (a merged sweep's mesh refused: the part's own error)
     }
   }
   return meshOfFlatPart(solid, tolerance, stored, counts, doubles);

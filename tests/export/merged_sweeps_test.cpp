@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "engine/boolean.h"
@@ -95,6 +96,41 @@ TEST(MergedSweeps, PrismsWhoseRegionsWouldTouchAtAPointStayApart) {
                            "linear_extrude{circle(1), height = 3}:translate(2, 0, 0)"}) {
     SCOPED_TRACE(part);
     EXPECT_EQ(primitivesOf(*mergedOf(part)), 2);
+  }
+}
+
+TEST(MergedSweeps, ACornerOnAnotherLoopsEdgeIsAPointOfContactToo) {
+  // A letter A of two slanted strokes and a bar: the strokes meet only at
+  // the apex, where the hole under it touches the outline's top edge.
+  const SolidPtr part = mergedOf(
+      "local l = polygon({{0, 0}, {1, 0}, {2.5, 6}, {1.5, 6}})\n"
+      "local r = polygon({{4, 0}, {5, 0}, {3.5, 6}, {2.5, 6}})\n"
+      "local bar = square{size = {3, 0.8}}:translate(1, 2)\n"
+      "return union(linear_extrude{l, height = 1}, linear_extrude{r, height = 1}, "
+      "linear_extrude{bar, height = 1})");
+  EXPECT_EQ(primitivesOf(*part), 3);
+}
+
+TEST(MergedSweeps, SweepsMeetThroughOthersInAnyOrder) {
+  // A frame of a bottom bar, a top bar and two sides: the bars do not
+  // meet each other, the sides join them. Whatever the order of the
+  // union, the four are one (a square less a triangle, no point of
+  // contact), not the first three, whose union would touch itself at
+  // the sides' meeting point.
+  const char* bottom = "linear_extrude{square{size = {4, 1}}, height = 1}";
+  const char* top = "linear_extrude{square{size = {4, 1}}:translate(0, 3), height = 1}";
+  const char* left = "linear_extrude{polygon({{0, 1}, {1, 1}, {2, 3}, {0, 3}}), height = 1}";
+  const char* right = "linear_extrude{polygon({{3, 1}, {4, 1}, {4, 3}, {2, 3}}), height = 1}";
+  for (const auto& order :
+       {std::array{bottom, top, left, right}, std::array{left, right, bottom, top},
+        std::array{top, left, bottom, right}}) {
+    const std::string source = std::string("return union(") + order[0] + ", " + order[1] + ", " +
+                               order[2] + ", " + order[3] + ")";
+    SCOPED_TRACE(source);
+    const SolidPtr part = mergedOf(source);
+    ASSERT_EQ(primitivesOf(*part), 1);
+    EXPECT_DOUBLE_EQ(area(evaluate(*dynamic_cast<const LinearExtrusion&>(*part).region(), 1e-4)),
+                     14.0);
   }
 }
 
