@@ -1613,10 +1613,18 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
     // A mesh made with booleans in doubles whose slivers were not all
     // is made again with CGAL's instead (meshTryingDoubles): CGAL's hole
     // filling met NaNs on one (OpenSCAD's example001).
+    // CGAL's repair may also drop what it cannot mend: of six wedges
+    // united about one edge, two whole wedges went, and the mesh was valid.
+    // It is taken only where the volume changes by no more than the reach
+    // over the surface; else the crossing stays and the export fails.
     if (!defect.valid() && counts.inDoubles == 0) {
+      const double before = part.mesh.volume(), area = part.mesh.area();
       removeCrossings(roundedMesh(), reach);
-      part = partFrom(roundedMesh());
-      defect = meshDefect(part.mesh);
+      PartMesh repaired = partFrom(roundedMesh());
+      if (std::abs(repaired.mesh.volume() - before) <= reach * area) {
+        part = std::move(repaired);
+        defect = meshDefect(part.mesh);
+      }
     }
   }
   counts.checkSeconds =

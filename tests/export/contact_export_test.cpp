@@ -355,6 +355,23 @@ TEST(ContactExport, AHoneycombOfCellsExtrudedEachOnItsOwnIsOneShell) {
                kHoneycombVolume, 1e-6);
 }
 
+TEST(ContactExport, WedgesAboutOneEdgeKeepTheirVolume) {
+  // Eight wedges of 22.5° every 45°, each a linear_extrude of its own,
+  // meet only along the axis. CGAL's repair of the crossings the contacts
+  // left there dropped seven of them in one order of the union, and the
+  // mesh, one wedge, was valid; such a repair is refused, and another
+  // order makes the part whole. Volume: 8 · ½ · 10² · sin 22.5° · 2.
+  exportsValid(
+      "local parts = {}\n"
+      "for i = 0, 7 do\n"
+      "  local a, b = math.rad(45 * i), math.rad(45 * i + 22.5)\n"
+      "  parts[#parts + 1] = linear_extrude{polygon({{0, 0}, {10 * math.cos(a), 10 * "
+      "math.sin(a)}, {10 * math.cos(b), 10 * math.sin(b)}}), height = 2}\n"
+      "end\n"
+      "return union(table.unpack(parts))",
+      8.0 * 100.0 * std::sin(kPi / 8.0), 1.0);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
