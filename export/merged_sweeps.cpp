@@ -58,7 +58,7 @@ std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t i) {
 
 glm::dmat3 linearPart(const Primitive& p) { return glm::dmat3(p.frame().worldFromObject()); }
 
-// Do the two sweep alike but for their regions?
+// Are the two sweeps alike but for their regions?
 bool alike(const Sweep& a, const Sweep& b) {
   if (a.turned != b.turned) return false;
   const MaterialPtr &ma = a.primitive->material(), &mb = b.primitive->material();
