@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
-#include <glm/geometric.hpp>
-#include <glm/matrix.hpp>
-#include <numbers>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -13,6 +10,7 @@
 #include "engine/boolean.h"
 #include "primitives/linear_extrusion.h"
 #include "primitives/revolution.h"
+#include "profile/pinch_points.h"
 #include "profile/region_evaluation.h"
 #include "scene/material.h"
 
@@ -95,86 +93,13 @@ RegionPtr inPlaneOf(const Sweep& a, const Sweep& b) {
   return region->transformed(Affine2{dmat2(1.0), move});
 }
 
-// Is p on the edge away from its ends (within a hair)? The evaluated
-// loops hold segments and circular arcs only.
-bool insideOfEdge(const ProfileEdge& e, const dvec2& p, double hair) {
-  if (glm::length(p - e.from) <= hair || glm::length(p - e.to) <= hair) return false;
-  if (e.kind == ProfileEdge::Kind::Segment) {
-    const dvec2 d = e.to - e.from;
-    const double t = glm::dot(p - e.from, d) / glm::dot(d, d);
-    return t > 0.0 && t < 1.0 && glm::length(e.from + t * d - p) <= hair;
-  }
-  if (e.kind != ProfileEdge::Kind::Arc) return false;
-  const double r = glm::length(e.axes[0]);
-  if (!(std::abs(glm::length(p - e.center) - r) <= hair)) return false;
-  // The angle of p on the arc's circle, from angle0 the way it sweeps.
-  const dvec2 unit = glm::inverse(e.axes) * (p - e.center);
-  const double sweep = e.angle1 - e.angle0;
-  double along = std::atan2(unit.y, unit.x) - e.angle0;
-  const double turn = 2.0 * std::numbers::pi;
-  along = std::fmod(along, turn);
-  if (sweep > 0.0 && along < 0.0) along += turn;
-  if (sweep < 0.0 && along > 0.0) along -= turn;
-  return along / sweep > 0.0 && along / sweep < 1.0;
-}
-
-// Does the region's boundary pass through one point twice: two corners
-// at one point, or a corner on another edge (loops that meet at a point,
-// a hole's corner on the outline, tangent circles)? Its sweep is then
-// pinched along a line there (a circle there, turned), which the sweeps
-// apart, as solids that touch, are not: such a group is left apart.
-bool pinched(const Region& region) {
-  const ProfileBounds& box = region.bounds();
-  const double size = std::max({1.0, box.hi.x - box.lo.x, box.hi.y - box.lo.y, std::abs(box.lo.x),
-                                std::abs(box.lo.y), std::abs(box.hi.x), std::abs(box.hi.y)});
-  const double hair = kHair * size;
-  const Profile evaluated = evaluate(region, 1e-6 * size);
-  std::vector<dvec2> corners;
-  struct Reach {
-    ProfileBounds box;
-    const ProfileEdge* edge;
-  };
-  std::vector<Reach> edges;
-  for (const ProfileLoop& loop : evaluated.loops)
-    for (const ProfileEdge& e : loop.edges) {
-      corners.push_back(e.to);
-      Reach reach{{}, &e};
-      reach.box.include(e.from);
-      reach.box.include(e.to);
-      if (e.kind == ProfileEdge::Kind::Arc) {
-        const double r = glm::length(e.axes[0]);
-        reach.box.include(e.center - dvec2(r));
-        reach.box.include(e.center + dvec2(r));
-      }
-      edges.push_back(reach);
-    }
-  const auto byX = [](const dvec2& a, const dvec2& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  };
-  std::sort(corners.begin(), corners.end(), byX);
-  if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) return true;
-  // A sweep along x: the edges whose boxes reach each corner's x.
-  std::sort(edges.begin(), edges.end(),
-            [](const Reach& a, const Reach& b) { return a.box.lo.x < b.box.lo.x; });
-  std::vector<const Reach*> active;
-  std::size_t next = 0;
-  for (const dvec2& p : corners) {
-    while (next < edges.size() && edges[next].box.lo.x <= p.x + hair)
-      active.push_back(&edges[next++]);
-    std::erase_if(active, [&](const Reach* r) { return r->box.hi.x < p.x - hair; });
-    for (const Reach* r : active)
-      if (p.y >= r->box.lo.y - hair && p.y <= r->box.hi.y + hair && insideOfEdge(*r->edge, p, hair))
-        return true;
-  }
-  return false;
-}
-
 // The sweep of the union of the regions, made as `first` is, or nothing
 // where that union is pinched or cannot be swept (a turned region that
 // meets the axis at a point only).
-SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions) {
+SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions, bool evenTouching) {
   const RegionPtr region = Region::boolean(Region::Op::Union, std::move(regions));
-  if (pinched(*region)) return nullptr;
+  if (!evenTouching && touchesItself(evaluate(*region, evaluationTolerance(*region))))
+    return nullptr;
   try {
     return first.sweep->sweepOf(region);
   } catch (const std::invalid_argument&) {
@@ -182,13 +107,13 @@ SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions) {
   }
 }
 
-SolidPtr merged(const SolidPtr& solid) {
+SolidPtr merged(const SolidPtr& solid, bool evenTouching) {
   const Boolean* node = solid->asBoolean();
   if (node == nullptr) return solid;
   bool changed = false;
   std::vector<SolidPtr> operands;
   for (const SolidPtr& child : node->children()) {
-    operands.push_back(merged(child));
+    operands.push_back(merged(child, evenTouching));
     changed = changed || operands.back() != child;
   }
   if (node->op() == Boolean::Op::Union) {
@@ -228,7 +153,7 @@ SolidPtr merged(const SolidPtr& solid) {
       if (members[root].size() < 2) continue;
       std::vector<RegionPtr> set;
       for (std::size_t i : members[root]) set.push_back(regions[i]);
-      asOne[root] = sweptAsOne(sweeps[classOf[root]], std::move(set));
+      asOne[root] = sweptAsOne(sweeps[classOf[root]], std::move(set), evenTouching);
     }
     if (std::any_of(asOne.begin(), asOne.end(), [](const SolidPtr& m) { return m != nullptr; })) {
       std::vector<SolidPtr> kept;
@@ -247,6 +172,8 @@ SolidPtr merged(const SolidPtr& solid) {
 
 }  // namespace
 
-SolidPtr sweepsMerged(const SolidPtr& part) { return merged(part); }
+SolidPtr sweepsMerged(const SolidPtr& part, bool evenTouching) {
+  return merged(part, evenTouching);
+}
 
 }  // namespace csgray::detail

@@ -23,6 +23,8 @@ namespace csgray::detail {
 // pinch the sweep), and that are either straight linear extrusions of
 // one bottom and height, moved within their profile plane, or
 // rotate_extrudes of one angle, moved along their axis.
-SolidPtr sweepsMerged(const SolidPtr& part);
+// With evenTouching, a union that touches itself at a point is taken too
+// (for export/opened_pinches.h, which opens it there).
+SolidPtr sweepsMerged(const SolidPtr& part, bool evenTouching = false);
 
 }  // namespace csgray::detail

@@ -35,6 +35,7 @@
 #include "export/collinear_points.h"
 #include "export/grazed_faces.h"
 #include "export/merged_sweeps.h"
+#include "export/opened_pinches.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
 #include "tessellation/tessellation.h"
@@ -614,8 +615,10 @@ class Evaluator {
   static Piece pieceOf(TriangleMesh triangles, std::uint32_t tag, const std::string& kind) {
     Piece piece;
     if (triangles.empty()) return piece;
+    // (A sweep of a region that touches itself at a point: the export's
+    // last tries take it apart or open it there.)
     if (!closedManifold(triangles))
-      throw std::logic_error(kind + ": its tessellation is not a 2-manifold");
+      throw std::runtime_error(kind + ": its tessellation is not a 2-manifold");
     piece.box = triangles.bounds();
     for (const dvec3& p : triangles.points)
       for (double x : {p.x, p.y, p.z})
@@ -1692,17 +1695,29 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
+    // The last tries: each made on the part of the one before; whatever
+    // stops them, the first error stands.
     SolidPtr apart;
     try {
       apart = sweepsTakenApart(solid.shared_from_this());
-    } catch (const std::invalid_argument&) {
+      if (apart.get() != &solid) {
+        PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
+        counts.sweepsApart = true;
+        return part;
+      }
+    } catch (const std::exception&) {
     }
-    if (!apart || apart.get() == &solid) throw;
+    // Sweeps side by side merged even where that touches itself, and such
+    // sweeps opened at those points (export/opened_pinches.h).
     try {
-      PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
-      counts.sweepsApart = true;
-      return part;
-    } catch (const std::exception&) {  // whatever stops the last try, the first error stands
+      const SolidPtr opened =
+          pinchesOpened(sweepsMerged(solid.shared_from_this(), true), kContactOffset * tolerance);
+      if (opened.get() != &solid) {
+        PartMesh part = meshInOrders(*opened, tolerance, stored, counts, doubles);
+        counts.pinchesOpened = true;
+        return part;
+      }
+    } catch (const std::exception&) {
     }
     throw;
   }

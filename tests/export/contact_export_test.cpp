@@ -372,6 +372,27 @@ TEST(ContactExport, WedgesAboutOneEdgeKeepTheirVolume) {
       8.0 * 100.0 * std::sin(kPi / 8.0), 1.0);
 }
 
+TEST(ContactExport, AHoleTangentToTheOutlineIsSweptApart) {
+  // The plate's region touches itself where each hole meets the rim: its
+  // sweep's mesh is no 2-manifold there, and the last try sweeps the
+  // region's operands apart (a disc less two discs), which the booleans
+  // resolve. Volume: 3π(20² − 2·2²).
+  exportsValid(
+      "return linear_extrude{circle(20) - circle(2):translate(18, 0) - "
+      "circle(2):translate(-18, 0), height = 3}",
+      3.0 * kPi * (400.0 - 8.0), 6.0);
+}
+
+TEST(ContactExport, PrismsCornerToCornerAreOpenedThere) {
+  // Two squares' prisms that meet along one edge only: the union in 3D
+  // fails there, and the last try sweeps their union opened at the corner
+  // by a hundredth of the tolerance. Volume: 2 · 5² · 3.
+  exportsValid(
+      "return linear_extrude{square(5), height = 3} + "
+      "linear_extrude{square(5):translate(5, 5), height = 3}",
+      150.0, 0.05);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth

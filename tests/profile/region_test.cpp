@@ -15,6 +15,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "profile/pinch_points.h"
 #include "profile/region_evaluation.h"
 #include "tessellation/tessellation.h"
 
@@ -216,6 +217,19 @@ TEST(Region, CellsPlacedSideBySideInDoublesShareTheirEdges) {
   // Every edge is at least a cell's edge long: no sliver edges.
   for (const ProfileEdge& e : p.loops[0].edges) EXPECT_GT(glm::length(e.to - e.from), 1.9);
   expectSameContainment(honeycomb, p);
+}
+
+TEST(Region, PointsWhereARegionTouchesItself) {
+  const auto touches = [](const RegionPtr& r) { return touchesItself(evaluate(*r, kTolerance)); };
+  EXPECT_TRUE(touches(unite(rect(0, 0, 1, 1), rect(1, 1, 2, 2))));  // corner to corner
+  EXPECT_TRUE(
+      touches(subtract(disc({0, 0}, 2), disc({1.5, 0}, 0.5))));   // a hole tangent to the rim
+  EXPECT_TRUE(touches(unite(disc({0, 0}, 1), disc({2, 0}, 1))));  // tangent discs
+  EXPECT_TRUE(touches(
+      subtract(rect(0, 0, 4, 4), polygon({{{1, 1}, {3, 1}, {2, 4}}}))));  // a corner on an edge
+  EXPECT_FALSE(touches(unite(rect(0, 0, 1, 1), rect(1, 0, 2, 1))));       // an edge shared
+  EXPECT_FALSE(touches(subtract(disc({0, 0}, 2), disc({1, 0}, 0.5))));    // a hole inside
+  EXPECT_FALSE(touches(unite(disc({0, 0}, 1), disc({3, 0}, 1))));         // apart
 }
 
 TEST(Region, EvenOddPolygonWithAHole) {
