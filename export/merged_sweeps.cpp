@@ -94,8 +94,9 @@ RegionPtr inPlaneOf(const Sweep& a, const Sweep& b) {
 }
 
 // The sweep of the union of the regions, made as `first` is, or nothing
-// where that union is pinched or cannot be swept (a turned region that
-// meets the axis at a point only).
+// where that union touches itself at a point (unless evenTouching: its
+// sweep would be pinched there, profile/pinch_points.h) or cannot be
+// swept (a turned region that meets the axis at a point only).
 SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions, bool evenTouching) {
   const RegionPtr region = Region::boolean(Region::Op::Union, std::move(regions));
   if (!evenTouching && touchesItself(evaluate(*region, evaluationTolerance(*region))))
