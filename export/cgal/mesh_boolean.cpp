@@ -1695,11 +1695,11 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
-    // The last tries: each made on the part of the one before; whatever
-    // stops them, the first error stands.
-    SolidPtr apart;
+    // The last tries, each from the part as given; whatever stops them,
+    // the first error stands. Sweeps of touching regions taken apart
+    // (export/sweeps_apart.h):
     try {
-      apart = sweepsTakenApart(solid.shared_from_this());
+      const SolidPtr apart = sweepsTakenApart(solid.shared_from_this());
       if (apart.get() != &solid) {
         PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
         counts.sweepsApart = true;
@@ -1707,8 +1707,9 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
       }
     } catch (const std::exception&) {
     }
-    // Sweeps side by side merged even where that touches itself, and such
-    // sweeps opened at those points (export/opened_pinches.h).
+    // sweeps side by side merged even where that touches itself, and
+    // sweeps of regions that touch themselves opened there
+    // (export/opened_pinches.h):
     try {
       const SolidPtr opened =
           pinchesOpened(sweepsMerged(solid.shared_from_this(), true), kContactOffset * tolerance);
