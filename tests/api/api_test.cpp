@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "csgray/csgray.h"
+#include "../io/scratch_folder.h"
 
 namespace {
 
@@ -444,9 +445,7 @@ TEST(ApiExport, DefectsAndFailuresAreTyped) {
 class ApiFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              ("csgray_api_test_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    folder_ = csgray::test::scratchPathFor("csgray_api_test_");
     std::filesystem::remove_all(folder_);
     std::filesystem::create_directories(folder_);
   }
@@ -492,8 +491,9 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
     const ErrorCode expected =
         std::string(name) == "garbage.stl" ? ErrorCode::IoError : ErrorCode::InvalidArgument;
     EXPECT_EQ(errorOf([&] { Solid::fromMeshFile(path(name)); }).first, expected);
-    if (std::string(name) != "open.obj")
+    if (std::string(name) != "open.obj") {
       EXPECT_EQ(errorOf([&] { csgray::readMesh(path(name)); }).first, expected);
+    }
   }
   EXPECT_EQ(csgray::readMesh(path("open.obj")).triangles.size(), 1u);
   EXPECT_EQ(errorOf([&] { csgray::writeImage(image, path("no/such/folder/x.png")); }).first,

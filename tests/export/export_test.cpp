@@ -21,6 +21,7 @@
 #include "export/cgal/mesh_validity.h"
 #include "export/printed_part.h"
 #include "io/image_file.h"
+#include "io/scratch_folder.h"
 #include "meshio/mesh_import.h"
 #include "meshio/mesh_reader.h"
 #include "meshio/mesh_writer.h"
@@ -37,9 +38,7 @@ constexpr double kPi = std::numbers::pi;
 struct TempFolder {
   fs::path path;
   TempFolder() {
-    path = fs::temp_directory_path() /
-           ("csgray_export_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    path = csgray::test::scratchPathFor("csgray_export_test_");
     fs::remove_all(path);
     fs::create_directories(path);
   }

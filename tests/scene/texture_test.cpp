@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "io/image_file.h"
+#include "io/scratch_folder.h"
 #include "test_support.h"
 
 namespace csgray::detail {
@@ -554,9 +555,7 @@ double encodeSrgb(double v) {
 class ReadTextureImage : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              ("csgray_texture_test_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    folder_ = csgray::test::scratchPathFor("csgray_texture_test_");
     std::filesystem::create_directories(folder_);
   }
   void TearDown() override { std::filesystem::remove_all(folder_); }

@@ -18,6 +18,7 @@
 #include "engine/instance.h"
 #include "engine/primitive.h"
 #include "io/image_file.h"
+#include "io/scratch_folder.h"
 #include "script/script.h"
 #include "test_support.h"
 
@@ -402,9 +403,7 @@ TEST(ScriptTexture, BadParametersAreErrors) {
 class ImageTextureFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() /
-            ("csgray_script_api_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    root_ = csgray::test::scratchPathFor("csgray_script_api_");
     fs::remove_all(root_);
     fs::create_directories(root_ / "scripts" / "sub");
     writePng(root_ / "x.png");

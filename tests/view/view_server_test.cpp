@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "check/part_check.h"
+#include "io/scratch_folder.h"
 #include "meshio/part_file_bytes.h"
 #include "raytrace/renderer.h"
 #include "view/file_watcher.h"
@@ -48,9 +49,7 @@ class ViewServerTest : public testing::Test {
     return tools;
   }
   void start(const std::string& source, PartTools tools = meshTools()) {
-    folder_ =
-        fs::temp_directory_path() / ("csgray_view_test_" + std::to_string(::getpid()) + "_" +
-                                     testing::UnitTest::GetInstance()->current_test_info()->name());
+    folder_ = csgray::test::scratchPathFor("csgray_view_test_");
     fs::create_directories(folder_);
     script_ = (folder_ / "part.lua").string();
     write(source);
