@@ -35,8 +35,9 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
   requireTolerance(kind(), tolerance);
   // Circles a cylinder stands on take its rim polygon (flatten()), at the
   // whole tolerance, as the cylinder's: the sides are straight prisms.
+  bool pinched = false;
   SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude",
-                                prism() ? rims_ : std::vector<CircleRim>{}, tolerance);
+                                prism() ? rims_ : std::vector<CircleRim>{}, tolerance, &pinched);
   auto measure = [&](double& reach, double& longest, std::size_t& points) {
     reach = longest = 0.0;
     points = 0;
@@ -113,6 +114,7 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
   requireTriangleBudget(kind(), 2.0 * double(points) * slices + 2.0 * double(points), tolerance);
 
   TriangleMesh mesh;
+  mesh.pinched = pinched;
   SweepLevels levels(slices + 1);
   for (int k = 0; k <= slices; ++k) {
     const double zeta = double(k) / slices;

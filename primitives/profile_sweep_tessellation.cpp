@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "engine/degrees.h"
+#include "profile/pinch_points.h"
 #include "profile/region_evaluation.h"
 #include "tessellation/loop_crossings.h"
 #include "tessellation/polygon_triangulation.h"
@@ -214,11 +215,12 @@ double signedArea2(const std::vector<dvec2>& loop) {
 }
 
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
-                      std::span<const CircleRim> rims, double rimTolerance) {
+                      std::span<const CircleRim> rims, double rimTolerance, bool* pinched) {
   // Evaluated exactly (circles stay circles through the booleans), then
   // flattened: loops that neither cross nor share an edge, outer ones
   // counter-clockwise, holes clockwise.
   const Profile evaluated = evaluate(region, tolerance);
+  if (pinched) *pinched = touchesItself(evaluated);
   auto loopsOf = [&](std::span<const CircleRim> on) {
     SweepLoops loops;
     for (std::vector<dvec2>& loop : flatten(evaluated, tolerance, on, rimTolerance))

@@ -22,9 +22,12 @@ using SweepLoops = std::vector<std::vector<dvec2>>;
 // loops within `tolerance` of its edges (arcs by the sagitta rule; arcs on
 // `rims`, on a cylinder's rim polygon at rimTolerance: flatten()), outer
 // loops counter-clockwise, holes clockwise, none crossing another. Throws
-// std::invalid_argument naming kind for a region without area.
+// std::invalid_argument naming kind for a region without area. pinched,
+// if given, is set to whether the region touches itself at a point
+// (profile/pinch_points.h).
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
-                      std::span<const CircleRim> rims = {}, double rimTolerance = 0.0);
+                      std::span<const CircleRim> rims = {}, double rimTolerance = 0.0,
+                      bool* pinched = nullptr);
 
 // Triangles covering the polygon set (loops as sweepLoops makes them),
 // counter-clockwise in the plane: triangle(a, b, c) gets ids[loop][point]

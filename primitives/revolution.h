@@ -56,6 +56,7 @@ class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
   struct Turned {
     SweepLoops loops;
     int steps;
+    bool pinched;  // the region touches itself at a point
   };
   Turned turned(double tolerance) const;
   bool inWedge(const dvec3& p) const;

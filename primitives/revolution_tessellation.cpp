@@ -25,7 +25,9 @@ namespace csgray::detail {
 // turn closes on itself.
 Revolution::Turned Revolution::turned(double tolerance) const {
   requireTolerance(kind(), tolerance);
-  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "rotate_extrude");
+  bool pinched = false;
+  SweepLoops loops =
+      sweepLoops(*swept_->region(), 0.5 * tolerance, "rotate_extrude", {}, 0.0, &pinched);
   const double axisSlack = 1e-12 * swept_->size();
   double reach = 0.0;
   std::size_t points = 0;
@@ -55,12 +57,14 @@ Revolution::Turned Revolution::turned(double tolerance) const {
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
   const int steps = arcSegments(reach, angle_, half, least);
   requireTriangleBudget(kind(), 2.0 * double(points) * (steps + 1), tolerance);
-  return {std::move(loops), steps};
+  return {std::move(loops), steps, pinched};
 }
 
 TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const {
   const Turned made = turned(tolerance);
-  return revolvedLoops(made.loops, angleDegrees_, made.steps, fullTurn_);
+  TriangleMesh mesh = revolvedLoops(made.loops, angleDegrees_, made.steps, fullTurn_);
+  mesh.pinched = made.pinched;
+  return mesh;
 }
 
 // A wall: an edge of a loop at ρ = radius at both ends (to a part in 10⁹),

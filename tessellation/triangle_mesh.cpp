@@ -11,6 +11,7 @@ void TriangleMesh::append(const TriangleMesh& other) {
   triangles.reserve(triangles.size() + other.triangles.size());
   for (const Triangle& t : other.triangles)
     triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  pinched = pinched || other.pinched;
 }
 
 void TriangleMesh::flip() {

@@ -16,6 +16,11 @@ struct TriangleMesh {
   std::vector<dvec3> points;
   // Counter-clockwise seen from outside: (b − a) × (c − a) points out.
   std::vector<Triangle> triangles;
+  // A sweep of a region that touches itself at a point
+  // (profile/pinch_points.h): the solid is pinched along a line there,
+  // where the mesh has two points at one place, or faces that cross where
+  // polygons of tangent circles meet. The export's booleans refuse it.
+  bool pinched = false;
 
   std::size_t size() const { return triangles.size(); }
   bool empty() const { return triangles.empty(); }

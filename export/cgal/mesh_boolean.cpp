@@ -517,7 +517,19 @@ class Evaluator {
     ++stats_.primitives;
     TriangleMesh triangles = tessellation(primitive, region);
     countTriangles(triangles.size());
+    refusePinched(triangles, primitive);
     return pieceOf(std::move(triangles), tagOf(primitive.material()), primitive.kind());
+  }
+
+  // A sweep of a region that touches itself at a point is pinched along a
+  // line (TriangleMesh::pinched), and CGAL's corefinement, whose operands
+  // must not touch themselves, ran without end on one (a bowtie polygon's
+  // sweep beside a box touching its corners). Such a sweep fails here
+  // instead, before any boolean, and the last tries (meshOfFlatPart) take
+  // it apart or open it there.
+  static void refusePinched(const TriangleMesh& triangles, const Primitive& primitive) {
+    if (triangles.pinched)
+      throw std::runtime_error(primitive.kind() + ": its region touches itself at a point");
   }
 
   // The operands' pieces, in their order, as evaluate makes them one by
@@ -545,6 +557,7 @@ class Evaluator {
       if (!tessellated(i)) return;
       try {
         triangles[i] = tessellation(*primitives[i], regions[i]);
+        refusePinched(triangles[i], *primitives[i]);
       } catch (...) {
         failed[i] = std::current_exception();
       }

@@ -393,6 +393,18 @@ TEST(ContactExport, PrismsCornerToCornerAreOpenedThere) {
       150.0, 0.05);
 }
 
+TEST(ContactExport, ABowtieBesideABoxTouchingItsCornersIsOpenedThere) {
+  // A polygon through (2, 2) twice (two triangles corner to corner) swept,
+  // beside a box that its two other corners touch: CGAL's corefinement,
+  // given the pinched sweep, ran without end. The sweep is refused before
+  // any boolean, and the last try opens it at the pinch. Volume: the two
+  // triangles (4 each) and the box (16), 2 high.
+  exportsValid(
+      "return linear_extrude{polygon({{0, 0}, {4, 0}, {2, 2}, {4, 4}, {0, 4}, {2, 2}}), "
+      "height = 2} + box{size = {4, 4, 2}}:translate(4, 0, 0)",
+      48.0, 0.05);
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
