@@ -13,6 +13,7 @@
 #include "engine/boolean.h"
 #include "engine/primitive.h"
 #include "engine/span_list.h"
+#include "export/cgal/mesh_boolean.h"
 
 namespace csgray::detail {
 
@@ -63,6 +64,13 @@ class GridTracer {
     };
     std::vector<Hit> exact;
     double length = 0.0;
+    // Is the gap after span k narrower than a contact's offset? The export
+    // may close such a gap (solids placed less than the file's step apart),
+    // so its two faces need not be in the mesh.
+    auto closableGap = [&](std::uint32_t k) {
+      return k + 1 < spans.size() && std::isfinite(spans[k].out.t) &&
+             spans[k + 1].in.t - spans[k].out.t <= kContactOffset * options_.tolerance;
+    };
     for (std::uint32_t k = 0; k < spans.size(); ++k) {
       const Span& s = spans[k];
       if (!std::isfinite(s.in.t) || !std::isfinite(s.out.t)) {
@@ -76,6 +84,7 @@ class GridTracer {
       exact.push_back({s.in.t, nIn});
       exact.push_back({s.out.t, nOut});
       for (const Boundary* b : {&s.in, &s.out}) {
+        if (b == &s.in ? k > 0 && closableGap(k - 1) : closableGap(k)) continue;
         // The triangles this ray crosses bound the boundary's distance
         // from the mesh; CGAL finds the nearest of all only where that
         // bound is more than the tolerance.

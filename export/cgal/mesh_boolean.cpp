@@ -46,10 +46,6 @@ namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// How far operands that touch are moved to resolve the contact, in
-// tolerances: far above the rounding of a file's floats at a part's size
-// (7.6·10⁻⁶ at 100 mm), far below what a printer makes.
-constexpr double kContactOffset = 0.01;
 // How far from the point of a defect a primitive's box may end and the
 // error still name it, in tolerances: the point CGAL's self-intersection
 // test gives is where two faces cross, which can lie some tolerances from
@@ -352,9 +348,10 @@ class Evaluator {
 
   // order: the order it meets operands in, and whether it refuses to cut
   // where an operand touches itself (see meshOfSolid).
+  // stored: how the file rounds a coordinate (null: not at all).
   Evaluator(double tolerance, const EvaluationFrame& frame, MeshBooleanStats& stats,
-            const EvaluationOrder& order)
-      : tolerance_(tolerance), frame_(frame), stats_(stats), order_(order) {}
+            const EvaluationOrder& order, StoredCoordinate stored)
+      : tolerance_(tolerance), frame_(frame), stats_(stats), order_(order), stored_(stored) {}
 
   bool refusedPinch() const { return refusedPinch_; }
 
@@ -1109,20 +1106,33 @@ class Evaluator {
     return std::max({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) * 0x1p-40;
   }
 
+  // The step between neighbouring coordinates of the file near the box:
+  // the least m·2⁻ᵏ that moves the rounding of m, its largest coordinate
+  // (a float's: m·2⁻²⁴ or so); 0 when the file keeps every double.
+  double storedStep(const Bounds& box) const {
+    if (!stored_ || box.empty()) return 0.0;
+    const double m = std::ldexp(hair(box), 40);
+    for (int k = 52; k > 0; --k)
+      if (const double d = std::ldexp(m, -k); stored_(m + d) != stored_(m)) return d;
+    return m;
+  }
+
   // Solids stacked at a height computed in doubles (a box 0.3 high with
   // another on it at 0.1 + 0.2) stand a unit in the last place off the
   // face they stand on: their boxes are apart, so a union would join them
   // without a boolean, and the file's rounding would then put the two
-  // faces in one place, crossing. Where b's box is apart from a's by no
-  // more than a hair across one axis-aligned plane, and meets it on the
-  // other two axes, b's points within a hair of that side of its box are
-  // moved onto a's side, which moves them by two hairs at most: the solids
-  // then stand on each other exactly, and the union corefines or glues
-  // them as it does solids stacked exactly. Both must be in doubles, so
-  // that a's side is where its points are.
-  static void closeHairGap(const Piece& a, Piece& b) {
+  // faces in one place, crossing. The same for solids placed less than the
+  // file's step apart (a float's, 10⁻⁶ at 10: a tooth at 10 + 10⁻⁷ beside
+  // a plate ending at 10), which the file cannot keep apart. Where b's box
+  // is apart from a's by no more than that across one axis-aligned plane,
+  // and meets it on the other two axes, b's points within that of that
+  // side of its box are moved onto a's side, which moves them by twice
+  // that at most: the solids then stand on each other exactly, and the
+  // union corefines or glues them as it does solids stacked exactly. Both
+  // must be in doubles, so that a's side is where its points are.
+  void closeHairGap(const Piece& a, Piece& b) const {
     if (!a.doubles || !b.doubles || a.box.empty() || b.box.empty() || a.box.overlaps(b.box)) return;
-    const double reach = std::max(hair(a.box), hair(b.box));
+    const double reach = std::max(gapClosed(a.box), gapClosed(b.box));
     int axis = -1;
     bool above = false;
     for (int k = 0; k < 3; ++k) {
@@ -1142,19 +1152,24 @@ class Evaluator {
     b.shape = 0;
   }
 
-  // closeHairGap for every pair of the pieces whose boxes come within a
-  // hair of each other, before any is glued or united (which would take it
-  // out of doubles: a stack of plates 0.1 thick at i·0.1, glued where they
-  // meet exactly, kept the one gap at 0.6). The pairs are found by a sweep
-  // along x over the boxes grown by a hair, so that a part of thousands of
-  // pieces (a Sierpinski tetrahedron's) tests its neighbours only.
-  static void closeHairGaps(std::vector<Piece>& pieces) {
+  // The widest gap between two pieces' sides that closeHairGap closes: a
+  // hair, or the file's step, whichever is wider.
+  double gapClosed(const Bounds& box) const { return std::max(hair(box), storedStep(box)); }
+
+  // closeHairGap for every pair of the pieces whose boxes come within
+  // gapClosed of each other, before any is glued or united (which would
+  // take it out of doubles: a stack of plates 0.1 thick at i·0.1, glued
+  // where they meet exactly, kept the one gap at 0.6). The pairs are found
+  // by a sweep along x over the boxes grown by that, so that a part of
+  // thousands of pieces (a Sierpinski tetrahedron's) tests its neighbours
+  // only.
+  void closeHairGaps(std::vector<Piece>& pieces) const {
     std::vector<std::size_t> order;
     double reach = 0.0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       if (!pieces[i].doubles || pieces[i].box.empty()) continue;
       order.push_back(i);
-      reach = std::max(reach, hair(pieces[i].box));
+      reach = std::max(reach, gapClosed(pieces[i].box));
     }
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return pieces[a].box.lo.x < pieces[b].box.lo.x;
@@ -1162,8 +1177,8 @@ class Evaluator {
     for (std::size_t i = 0; i < order.size(); ++i)
       for (std::size_t j = i + 1; j < order.size(); ++j) {
         Piece &a = pieces[order[i]], &b = pieces[order[j]];
-        // A snap moves a side by two hairs at most: boxes sorted by where
-        // they began stay within that of their order.
+        // A snap moves a side by twice the reach at most: boxes sorted by
+        // where they began stay within that of their order.
         if (b.box.lo.x > a.box.hi.x + 3.0 * reach) break;
         closeHairGap(a, b);
       }
@@ -1338,6 +1353,7 @@ class Evaluator {
   std::size_t triangles_ = 0;  // tessellated so far
   MeshBooleanStats& stats_;
   EvaluationOrder order_;
+  StoredCoordinate stored_;
   bool refusedPinch_ = false;
   std::unordered_map<const Material*, std::uint32_t> tags_;
   std::optional<SweptRims> rims_;
@@ -1559,7 +1575,7 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
   // (examples/dxf_flange.lua, 4 of 8 shifts) though not in the check.
   EvaluationOrder evaluationOrder = order;
   evaluationOrder.perturb = storedAs(stored, 1.0 + 0x1p-21) != 1.0;
-  Evaluator evaluator(tolerance, frame, counts, evaluationOrder);
+  Evaluator evaluator(tolerance, frame, counts, evaluationOrder, stored);
   auto piece = [&] {
     try {
       return evaluator.evaluate(solid, box);

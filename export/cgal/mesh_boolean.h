@@ -14,6 +14,12 @@
 
 namespace csgray::detail {
 
+// How far operands that touch are moved to resolve the contact, in
+// tolerances (docs/cli.md, "Contacts"): far above the rounding of a file's
+// floats at a part's size (7.6·10⁻⁶ at 100 mm), far below what a printer
+// makes. Solids placed closer than that may be joined across the gap.
+constexpr double kContactOffset = 0.01;
+
 // What the evaluation did, for --stats and the benchmarks.
 struct MeshBooleanStats {
   std::size_t primitives = 0;     // primitives tessellated

@@ -274,6 +274,27 @@ TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
   }
 }
 
+TEST(ContactExport, SolidsCloserThanTheFilesStepAreOneShell) {
+  // Teeth 10⁻⁷ short of a plate's side at y = 10, where a float's step is
+  // 9.5·10⁻⁷: their boxes are apart, and joined without a boolean, the
+  // file's rounding put the facing sides in one place, crossing. The gap
+  // is closed instead, and the check lets a gap narrower than a contact's
+  // offset go. In doubles the gap stays: two shells.
+  const std::string source =
+      "local parts = {box{size = {10, 10, 2}}}\n"
+      "for i = 0, 4 do parts[#parts + 1] = box{size = {1, 2, 2}}:translate(2 * i + 0.5, "
+      "10 + 1e-7, 0) end\n"
+      "return union(parts)";
+  const SolidPtr solid = part(source);
+  const TriangleMesh mesh =
+      meshOfSolid(*solid, kTolerance, storedCoordinate(MeshFormat::Stl, false)).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_NEAR(mesh.volume(), 200.0 + 5 * 4.0, 1e-4);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  EXPECT_EQ(meshShells(meshOfSolid(*solid, kTolerance).mesh).count, 6u);
+}
+
 TEST(ContactExport, ACutWhosePiecesTouchAlongAnEdgeGoesThrough) {
   // Two cutters touch along the edge x = y = 5: the block's material that
   // meets there is cut apart, so that the mesh stays a 2-manifold.
