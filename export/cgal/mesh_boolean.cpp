@@ -996,17 +996,30 @@ class Evaluator {
         tries = {{0.0, -delta}};
         break;
     }
+    // Both operands grown alike can meet again where they are alike: two
+    // octahedra sharing an edge, each grown, have one's corner at the end
+    // of the edge on the other's face, which the union keeps as a touch
+    // and the file's rounding turns into faces that cross. A try whose
+    // result touches itself near the contact gives way to the next; the
+    // first that CGAL made stands if every try does.
+    const dvec3 reach(tolerance_);
+    const Bounds contact = hairApart(a.box, b.box);
+    const Bounds near(contact.lo - reach, contact.hi + reach);
+    std::optional<Piece> touching;
     for (const Offsets& offsets : tries) {
       a.mesh = keptA;
       b.mesh = keptB;
-      const dvec3 reach(tolerance_);
       if (offsets.a != 0.0) offsetMesh(a.mesh, offsets.a, {b.box.lo - reach, b.box.hi + reach});
       if (offsets.b != 0.0) offsetMesh(b.mesh, offsets.b, {a.box.lo - reach, a.box.hi + reach});
       a.grown = grownBefore, a.shrunk = shrunkBefore;
       keepMoves(a, b, op, std::max(std::abs(offsets.a), std::abs(offsets.b)));
-      if (attempt(a, b, op)) return boxAfter(a);
+      if (!attempt(a, b, op)) continue;
+      if (!storedTogetherNear(a.mesh, near)) return boxAfter(a);
+      if (!touching) touching = a;
     }
-    unresolved(a, b, op);
+    if (!touching) unresolved(a, b, op);
+    a = std::move(*touching);
+    boxAfter(a);
   }
 
   // A boolean in doubles that declined for want of general position (the
@@ -1296,6 +1309,19 @@ class Evaluator {
       if ((*side)(mesh.point(group.front())) == CGAL::ON_BOUNDARY) return true;
     }
     return false;
+  }
+
+  // Has the mesh two vertices within `near` that the file puts in one
+  // place (its rounding, or doubles')?
+  bool storedTogetherNear(const Mesh& mesh, const Bounds& near) const {
+    std::vector<dvec3> points;
+    for (auto v : mesh.vertices())
+      if (const dvec3 p = pointOf(mesh, v); near.contains(p))
+        points.emplace_back(storedAs(stored_, p.x), storedAs(stored_, p.y), storedAs(stored_, p.z));
+    std::sort(points.begin(), points.end(), [](const dvec3& a, const dvec3& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    });
+    return std::adjacent_find(points.begin(), points.end()) != points.end();
   }
 
   // a = a op b by exactBoolean; false when CGAL cannot make a 2-manifold,

@@ -426,6 +426,25 @@ TEST(ContactExport, ABowtieBesideABoxTouchingItsCornersIsOpenedThere) {
       48.0, 0.05);
 }
 
+TEST(ContactExport, OctahedraSharingAnEdgeAreJoinedAlongIt) {
+  // Both grown by a hundredth of the tolerance, each octahedron's corner
+  // at an end of the shared edge lay on the other's grown face, and the
+  // file's floats put two vertices in one place there: the export failed.
+  // Now one grows alone. Volume: two octahedra of r = 1, 4/3 each, and
+  // the bridge.
+  for (const char* source : {"return octahedron{r=1} + octahedron{r=1}:translate(1, 1, 0)",
+                             "return octahedron{r=1} + octahedron{r=1}:translate(1, 0, 1)"}) {
+    SCOPED_TRACE(source);
+    const SolidPtr solid = part(source);
+    const TriangleMesh mesh =
+        meshOfSolid(*solid, kTolerance, storedCoordinate(MeshFormat::Stl, false)).mesh;
+    EXPECT_EQ(meshDefect(mesh).text, "");
+    EXPECT_EQ(meshShells(mesh).count, 1u);
+    EXPECT_NEAR(mesh.volume(), 8.0 / 3.0, 0.01 * kTolerance * mesh.area() * 2);
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  }
+}
+
 TEST(ContactExport, ACheckerboardOfBoxesTouchingAlongEdges) {
   // Four boxes, every pair touching along an edge: the volume is the
   // boxes', plus the bridges (each union's operands grow by a hundredth
