@@ -997,11 +997,11 @@ class Evaluator {
         break;
     }
     // Both operands grown alike can meet again where they are alike: two
-    // octahedra sharing an edge, each grown, have one's corner at the end
-    // of the edge on the other's face, which the union keeps as a touch
-    // and the file's rounding turns into faces that cross. A try whose
-    // result touches itself near the contact gives way to the next; the
-    // first that CGAL made stands if every try does.
+    // octahedra sharing an edge, each grown, have one's corner at an end
+    // of the edge on the other's grown face, and the union vertices there
+    // that the file's rounding puts in one place, where faces then cross.
+    // A try whose result has such vertices near the contact gives way to
+    // the next; the first that CGAL made stands if every try does.
     const dvec3 reach(tolerance_);
     const Bounds contact = hairApart(a.box, b.box);
     const Bounds near(contact.lo - reach, contact.hi + reach);
