@@ -30,8 +30,12 @@ void clip(const Polygon& in, const dvec3& normal, double offset, Polygon& out) {
 
 }  // namespace
 
-GrazeTest::GrazeTest(const TriangleMesh& minuend, double tolerance)
-    : minuend_(minuend), tolerance_(tolerance), seen_(minuend.size(), 0) {
+GrazeTest::GrazeTest(const TriangleMesh& minuend, double tolerance,
+                     std::function<bool(const dvec3&)> inside)
+    : minuend_(minuend),
+      tolerance_(tolerance),
+      inside_(std::move(inside)),
+      seen_(minuend.size(), 0) {
   boxes_.reserve(minuend.size());
   for (const TriangleMesh::Triangle& t : minuend.triangles) {
     Bounds box;
@@ -94,6 +98,7 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
     // How far beyond the face the minuend reaches within its prism and
     // slab; past the tolerance, the face cuts into it.
     double reach = 0.0;
+    dvec3 furthest(0.0);
     for (std::uint32_t i : nearby) {
       const TriangleMesh::Triangle& t = minuend_.triangles[i];
       const dvec3 p[3] = {minuend_.points[t[0]], minuend_.points[t[1]], minuend_.points[t[2]]};
@@ -120,10 +125,13 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
       }
       clip(polygon, face.normal, face.offset + loose, clipped);
       for (const dvec3& q : clipped)
-        reach = std::max(reach, glm::dot(face.normal, q) - face.offset);
+        if (const double d = glm::dot(face.normal, q) - face.offset; d > reach) {
+          reach = d;
+          furthest = q;
+        }
       if (reach > tolerance) break;
     }
-    if (reach > 0.0 && reach <= tolerance) {
+    if (reach > 0.0 && reach <= tolerance && !inside_(furthest - 0.5 * reach * face.normal)) {
       planes[j].offset = face.offset + reach + 0.1 * tolerance;
       moved = true;
     }

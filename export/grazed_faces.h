@@ -11,10 +11,15 @@
 // has not. The mesh of an exact solid never strays more than the
 // tolerance from it, so a face with no more than that of the minuend
 // beyond it is grazed, not cut into: moving it out past that sliver
-// changes the part by less than the tolerance and leaves no fin.
+// changes the part by less than the tolerance and leaves no fin. Unless
+// the exact solid itself reaches past the face: a skin thinner than the
+// tolerance over a cavity (a pocket cut 10⁻³ short of the top), or a slab
+// that thin (a box less itself moved by 10⁻³) is the model's, and moving
+// the face out would cut it away.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tessellation/tessellation.h"
@@ -25,16 +30,19 @@ namespace csgray::detail {
 // The minuend's triangles, held for the cutters of one difference.
 class GrazeTest {
  public:
-  GrazeTest(const TriangleMesh& minuend, double tolerance);
+  // inside: is a point (in the mesh's frame) inside the exact minuend?
+  GrazeTest(const TriangleMesh& minuend, double tolerance,
+            std::function<bool(const dvec3&)> inside);
 
   // The cutter is the convex polytope of the planes (normal·p <= offset,
   // unit normals) within `box`. For each plane, the minuend's triangles
   // are taken where they lie within the face's prism (every other plane,
   // loosened by twice the tolerance) and less than twice the tolerance
   // beyond the plane; if what lies beyond reaches no further than the
-  // tolerance, the plane moves out a tenth of the tolerance past it. Each
-  // plane is judged against the planes as they were. Returns whether any
-  // moved.
+  // tolerance, the plane moves out a tenth of the tolerance past it, unless
+  // the exact minuend holds the point halfway there from the mesh's point
+  // that reaches furthest. Each plane is judged against the planes as they
+  // were. Returns whether any moved.
   bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const;
 
  private:
@@ -46,6 +54,7 @@ class GrazeTest {
 
   const TriangleMesh& minuend_;
   double tolerance_;
+  std::function<bool(const dvec3&)> inside_;
   std::vector<Bounds> boxes_;  // the triangles' boxes
   Bounds whole_;               // the minuend's box
   int cells_ = 1;              // a side of the grid

@@ -403,7 +403,7 @@ class Evaluator {
         // Whatever is cut away is cut from the minuend's mesh, which may
         // reach past the region: the cutters are meshed over all of it.
         std::vector<Piece> cutters = evaluateAll(operands.subspan(1), minuend.box);
-        clearGrazedCutters(operands.subspan(1), cutters, minuend);
+        clearGrazedCutters(*operands[0], operands.subspan(1), cutters, minuend);
         order_.arrange(cutters);
         const bool primitives =
             cutters.size() > 1 && std::all_of(cutters.begin(), cutters.end(),
@@ -426,7 +426,7 @@ class Evaluator {
             stats_.corefinements - stats_.inDoubles > byCgal) {
           const MeshBooleanStats before = stats_;
           std::vector<Piece> each = evaluateAll(operands.subspan(1), minuend.box);
-          clearGrazedCutters(operands.subspan(1), each, minuend);
+          clearGrazedCutters(*operands[0], operands.subspan(1), each, minuend);
           order_.arrange(each);
           Piece oneByOne = minuend;
           doublesOnly_ = true;
@@ -476,9 +476,10 @@ class Evaluator {
 
   // Each flat cutter (a box, a half-space, a convex polyhedron) whose
   // faces the minuend only grazes, made again with those faces moved
-  // clear of it (export/grazed_faces.h). cutters[i] is operands[i]'s.
-  void clearGrazedCutters(std::span<const SolidPtr> operands, std::vector<Piece>& cutters,
-                          const Piece& minuend) {
+  // clear of it (export/grazed_faces.h). cutters[i] is operands[i]'s;
+  // minuendSolid is the exact solid whose mesh is minuend.
+  void clearGrazedCutters(const Solid& minuendSolid, std::span<const SolidPtr> operands,
+                          std::vector<Piece>& cutters, const Piece& minuend) {
     std::optional<TriangleMesh> exactMinuend;  // in doubles, made once if needed
     std::optional<GrazeTest> test;
     for (std::size_t i = 0; i < operands.size(); ++i) {
@@ -490,7 +491,9 @@ class Evaluator {
       if (!planes) continue;
       if (!test) {
         if (!minuend.doubles) exactMinuend = trianglesOf(minuend.mesh, true);
-        test.emplace(minuend.doubles ? minuend.doubles->mesh : *exactMinuend, tolerance_);
+        test.emplace(
+            minuend.doubles ? minuend.doubles->mesh : *exactMinuend, tolerance_,
+            [&](const dvec3& p) { return minuendSolid.contains(frame_.worldFromEval * p); });
       }
       if (!test->clearGrazedFaces(*planes, cutter.box)) continue;
       // The moved faces stay within twice the tolerance of the old.

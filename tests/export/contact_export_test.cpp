@@ -529,6 +529,33 @@ TEST(ContactExport, ABoxAsWideAsTheCylinderItHalvesLeavesNoFins) {
   }
 }
 
+TEST(ContactExport, AFlatFaceNearACuttersSideIsTheModelsNotAGraze) {
+  // A pocket cut 10⁻³ short of the top (an epsilon with the wrong sign)
+  // leaves a skin that thin over a closed cavity, and a box less itself
+  // moved by 10⁻³ leaves a slab that thin. Both lie within the tolerance
+  // past the cutter's side, as a curved part's mesh does where the side
+  // only grazes it, and the side was moved out past them: the cavity
+  // became a through hole, and the slab nothing ("the part is empty").
+  // The exact part holds them, so the side stays.
+  struct Case {
+    const char* source;
+    double volume;
+    std::size_t shells;
+  };
+  for (const Case& c : {Case{"return box(10) - box{size={4, 4, 10 - 2e-3}}:translate(3, 3, 1e-3)",
+                             1000.0 - 16.0 * (10.0 - 2e-3), 2u},
+                        Case{"return box(10) - box(10):translate(1e-3, 0, 0)", 0.1, 1u}}) {
+    SCOPED_TRACE(c.source);
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*part(c.source), kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(stats.grazes, 0u);
+    EXPECT_EQ(meshDefect(mesh).text, "");
+    EXPECT_EQ(meshShells(mesh).count, c.shells);
+    EXPECT_NEAR(mesh.volume(), c.volume, 1e-9);
+    EXPECT_TRUE(test::checksOut(*part(c.source), kTolerance));
+  }
+}
+
 TEST(ContactExport, ASweptCircleMeetsACylinderOfItsRadiusOnItsPoints) {
   // A sweep flattened its circles by a rule of its own, and a cylinder of
   // the same radius beside it (a ring around a boss, a pin through a
