@@ -229,9 +229,23 @@ SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
   };
   SweepLoops loops = loopsOf(rims);
   // A cylinder's rim polygon lies partly outside its circle: where the
-  // region comes within that of itself (two circles tangent in a heart's
-  // cusp), the loops would cross, and the inscribed polygons are taken.
-  if (!rims.empty() && loopsMeet(loops)) loops = loopsOf({});
+  // region comes within that of itself (a hole tangent to the outline, two
+  // holes that overlap, each with its pin), the loops cross. They are
+  // filled as they wind (positiveFill): a hole's polygon that reaches past
+  // the outline opens it there, by less than the tolerance, and the hole
+  // stays the polygon of the pin in it, which fills it without crevices.
+  // Where that still meets itself (two circles tangent in a heart's cusp),
+  // the inscribed polygons are taken.
+  if (!rims.empty() && loopsMeet(loops)) {
+    std::vector<std::array<dvec2, 2>> segments;
+    for (const auto& loop : loops)
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        segments.push_back({loop[i], loop[(i + 1) % loop.size()]});
+    SweepLoops filled;
+    for (std::vector<dvec2>& loop : flatten(positiveFill(segments), tolerance))
+      if (loop.size() >= 3 && signedArea2(loop) != 0.0) filled.push_back(std::move(loop));
+    loops = !filled.empty() && !loopsMeet(filled) ? std::move(filled) : loopsOf({});
+  }
   if (loops.empty())
     throw std::invalid_argument(std::string(kind) + ": the region has no area to export");
   return loops;

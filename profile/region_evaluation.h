@@ -29,6 +29,10 @@ Profile evaluate(const Region& region, double ellipseTolerance);
 // the arrangement of the segments, each edge counting the segments along
 // it by their direction.
 Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments);
+// The same for the points about which they wind a positive number of
+// times: counterclockwise outlines less clockwise holes, where the holes
+// may reach past the outlines.
+Profile positiveFill(std::span<const std::array<dvec2, 2>> segments);
 
 // The tolerance to evaluate a region within (its offsets, hulls and area)
 // when the user gives none: a ten-millionth of its size, at which an

@@ -491,7 +491,9 @@ Profile positiveWindingFill(const std::vector<CircleSegment>& curves) {
   return profileOfPolygons(filledPolygons(countedPieces(curves), FillRule::Positive));
 }
 
-Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
+namespace {
+
+Profile segmentsFilled(std::span<const std::array<dvec2, 2>> segments, FillRule rule) {
   std::vector<CountedPiece> pieces;
   pieces.reserve(segments.size());
   for (const auto& [from, to] : segments) {
@@ -499,7 +501,17 @@ Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
     requireFinite(to, "point");
     if (from != to) addPieces(CircleSegment(exactPoint(from), exactPoint(to)), 1, pieces);
   }
-  return profileOfPolygons(filledPolygons(pieces, FillRule::NonZero));
+  return profileOfPolygons(filledPolygons(pieces, rule));
+}
+
+}  // namespace
+
+Profile nonZeroFill(std::span<const std::array<dvec2, 2>> segments) {
+  return segmentsFilled(segments, FillRule::NonZero);
+}
+
+Profile positiveFill(std::span<const std::array<dvec2, 2>> segments) {
+  return segmentsFilled(segments, FillRule::Positive);
 }
 
 }  // namespace csgray::detail

@@ -648,6 +648,23 @@ TEST(ContactExport, PinsOnABoltCircleMeetTheirSweptHolesOnTheirPoints) {
       1320.0 * pi, kTolerance * 1040.0 * pi);
 }
 
+TEST(ContactExport, PinsInHolesNearerThanTheToleranceMeetTheirWalls) {
+  // Two holes 0.005 apart, each with its pin: the holes' rim polygons,
+  // which lie partly outside their circles, crossed there, and the sweep
+  // took inscribed polygons instead, which left crevices between the pins
+  // and the walls (the check found the mesh 1 off the part). The crossing
+  // polygons are filled as they wind, and the holes keep the pins'
+  // polygons. Volume: the plate and the pins' 5 outside it.
+  exportsValid(
+      "local prof = square{size={30, 16}}\nlocal pins = {}\n"
+      "for _, x in ipairs({10, 14.005}) do\n"
+      "  prof = prof - circle(2):translate(x, 8)\n"
+      "  pins[#pins + 1] = cylinder{r=2, h=8}:translate(x, 8, -2)\n"
+      "end\n"
+      "return linear_extrude{prof, height=3} + union(pins)",
+      30 * 16 * 3 + 2 * kPi * 4 * 5, kTolerance * 1500.0);
+}
+
 TEST(ContactExport, AnAxleInATurnedRingsBoreMeetsItOnItsPoints) {
   // A ring turned by rotate_extrude around an axle of its bore: the
   // ring's regular polygons and the axle's own polygon left crevices 1
