@@ -583,6 +583,27 @@ TEST(Check, PartsApartInAUnionAreNotACut) {
   EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
 }
 
+TEST(Check, TheLettersOfAWordAreItsPiecesNotACut) {
+  // One sweep of a region of loops apart: each outer loop a piece. "ij"
+  // is four (two stems, two dots); a box beside it is one more, and a
+  // plate under the letters joins them all into one.
+  for (const auto& [source, pieces] : std::vector<std::pair<std::string, std::size_t>>{
+           {"return linear_extrude{text{\"ij\", size=10}, height=2}", 4u},
+           {"return linear_extrude{text{\"ij\", size=10}, height=2} + "
+            "box(3):translate(30, 0, 0)",
+            5u},
+           {"return linear_extrude{text{\"ij\", size=10}, height=2} + "
+            "box{size={20, 20, 1}}:translate(-5, -5, -1)",
+            1u}}) {
+    SCOPED_TRACE(source);
+    const Scene scene = script(source);
+    const CheckReport report = checkPart(*scene.objects[0], quick());
+    EXPECT_EQ(report.modelPieces, pieces);
+    EXPECT_EQ(report.shells, pieces);
+    EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
+  }
+}
+
 TEST(Check, ThinWallsAndNarrowGapsAreMeasured) {
   // A cup whose floor is 0.3 thick, beside a block 0.25 away.
   const SolidPtr cup = differenceOf({box({10, 10, 5}), box({8, 8, 5}, {1, 1, 0.3})});
