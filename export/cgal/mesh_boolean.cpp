@@ -1218,6 +1218,11 @@ class Evaluator {
       reach = std::max(reach, hair(piece.box));
       const double size = std::ldexp(hair(piece.box), 40);  // its largest coordinate
       if (!frame_.identity) reach = std::max(reach, 0x1p-28 * (1.0 + size));
+      // A mesh read from a file (an STL's floats): a wall of the part it
+      // was exported from lies up to half a float's step from where it
+      // was, and a pin made again of that wall's radius that far off it.
+      if (frame_.identity && inFloats(piece.doubles->mesh))
+        reach = std::max(reach, 0x1p-22 * (1.0 + size));
     }
     const std::vector<bool> moved = alignAxisLines(meshes, reach);
     for (std::size_t i = 0; i < owners.size(); ++i) {
@@ -1225,6 +1230,13 @@ class Evaluator {
       owners[i]->box = meshes[i]->bounds();
       owners[i]->shape = 0;
     }
+  }
+
+  // Is every coordinate of the mesh a float?
+  static bool inFloats(const TriangleMesh& mesh) {
+    return std::all_of(mesh.points.begin(), mesh.points.end(), [](const dvec3& p) {
+      return p.x == double(float(p.x)) && p.y == double(float(p.y)) && p.z == double(float(p.z));
+    });
   }
 
   // Where the boxes overlap or come within a hair of each other, grown by

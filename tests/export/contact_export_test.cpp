@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <glm/geometric.hpp>
 #include <memory>
 #include <numbers>
@@ -17,6 +18,7 @@
 #include "engine/boolean.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
+#include "io/scratch_folder.h"
 #include "meshio/mesh_writer.h"
 #include "script/script.h"
 #include "tessellation/mesh_shells.h"
@@ -663,6 +665,34 @@ TEST(ContactExport, PinsInHolesNearerThanTheToleranceMeetTheirWalls) {
       "end\n"
       "return linear_extrude{prof, height=3} + union(pins)",
       30 * 16 * 3 + 2 * kPi * 4 * 5, kTolerance * 1500.0);
+}
+
+TEST(ContactExport, APinThroughTheBoreOfAnImportedTubeMeetsItsWall) {
+  // A tube exported to STL and read back, with a pin of its bore's radius
+  // through it: the bore's points are the file's floats, half a float's
+  // step off the pin's polygon, and the walls crossed at a sliver's angle
+  // (the export failed, "self-intersecting"). Walls that near are made
+  // flush when a mesh's points are all floats. Volume: the tube and the
+  // pin, which has nothing in common with it.
+  const std::filesystem::path folder = csgray::test::scratchPathFor("csgray_contact_test_");
+  std::filesystem::create_directories(folder);
+  const std::string tube = (folder / "tube.stl").string();
+  writeMeshFile(tube,
+                meshOfSolid(*part("return cylinder{r=5, h=4} - "
+                                  "cylinder{r=3, h=6}:translate(0, 0, -1)"),
+                            kTolerance, storedCoordinate(MeshFormat::Stl, false)),
+                false);
+  ScriptOptions options = test::exampleOptions();
+  options.folder = folder.string();
+  const Scene scene =
+      runScript("return mesh{file=\"tube.stl\"} + cylinder{r=3, h=6}:translate(0, 0, -1)",
+                "part.lua", options);
+  const TriangleMesh mesh =
+      meshOfSolid(*scene.objects[0], kTolerance, storedCoordinate(MeshFormat::Stl, false)).mesh;
+  std::filesystem::remove_all(folder);
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_NEAR(mesh.volume(), kPi * (25 - 9) * 4 + kPi * 9 * 6, kTolerance * 400.0);
 }
 
 TEST(ContactExport, AnAxleInATurnedRingsBoreMeetsItOnItsPoints) {
