@@ -1218,9 +1218,10 @@ class Evaluator {
       reach = std::max(reach, hair(piece.box));
       const double size = std::ldexp(hair(piece.box), 40);  // its largest coordinate
       if (!frame_.identity) reach = std::max(reach, 0x1p-28 * (1.0 + size));
-      // A mesh read from a file (an STL's floats): a wall of the part it
-      // was exported from lies up to half a float's step from where it
-      // was, and a pin made again of that wall's radius that far off it.
+      // A mesh whose points are all floats, as a file's are (an STL read
+      // back): a wall of the part it was exported from lies up to half a
+      // float's step from where it was, and a pin made again of that
+      // wall's radius that far off it.
       if (frame_.identity && inFloats(piece.doubles->mesh))
         reach = std::max(reach, 0x1p-22 * (1.0 + size));
     }
