@@ -1123,14 +1123,18 @@ class Evaluator {
   }
 
   // The step between neighbouring coordinates of the file near the box:
-  // the least m·2⁻ᵏ that moves the rounding of m, its largest coordinate
-  // (a float's: m·2⁻²⁴ or so); 0 when the file keeps every double.
+  // about the least m·2⁻ᵏ that moves the rounding of m, its largest
+  // coordinate (a float's: m·2⁻²⁴ or so), found by bisection on k; 0 when
+  // the file keeps every double.
   double storedStep(const Bounds& box) const {
     if (!stored_ || box.empty()) return 0.0;
     const double m = std::ldexp(hair(box), 40);
-    for (int k = 52; k > 0; --k)
-      if (const double d = std::ldexp(m, -k); stored_(m + d) != stored_(m)) return d;
-    return m;
+    int moves = 1, stays = 53;  // m·2⁻¹ moves the rounding; m·2⁻⁵³ does not
+    while (stays - moves > 1) {
+      const int k = (moves + stays) / 2;
+      (stored_(m + std::ldexp(m, -k)) != stored_(m) ? moves : stays) = k;
+    }
+    return std::ldexp(m, -moves);
   }
 
   // Solids stacked at a height computed in doubles (a box 0.3 high with
@@ -1146,9 +1150,9 @@ class Evaluator {
   // that at most: the solids then stand on each other exactly, and the
   // union corefines or glues them as it does solids stacked exactly. Both
   // must be in doubles, so that a's side is where its points are.
-  void closeHairGap(const Piece& a, Piece& b) const {
+  // reach: the wider of gapClosed for the two.
+  static void closeHairGap(const Piece& a, Piece& b, double reach) {
     if (!a.doubles || !b.doubles || a.box.empty() || b.box.empty() || a.box.overlaps(b.box)) return;
-    const double reach = std::max(gapClosed(a.box), gapClosed(b.box));
     int axis = -1;
     bool above = false;
     for (int k = 0; k < 3; ++k) {
@@ -1181,11 +1185,13 @@ class Evaluator {
   // only.
   void closeHairGaps(std::vector<Piece>& pieces) const {
     std::vector<std::size_t> order;
+    std::vector<double> closed(pieces.size(), 0.0);
     double reach = 0.0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       if (!pieces[i].doubles || pieces[i].box.empty()) continue;
       order.push_back(i);
-      reach = std::max(reach, gapClosed(pieces[i].box));
+      closed[i] = gapClosed(pieces[i].box);
+      reach = std::max(reach, closed[i]);
     }
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return pieces[a].box.lo.x < pieces[b].box.lo.x;
@@ -1196,7 +1202,7 @@ class Evaluator {
         // A snap moves a side by twice the reach at most: boxes sorted by
         // where they began stay within that of their order.
         if (b.box.lo.x > a.box.hi.x + 3.0 * reach) break;
-        closeHairGap(a, b);
+        closeHairGap(a, b, std::max(closed[order[i]], closed[order[j]]));
       }
   }
 
@@ -1221,8 +1227,9 @@ class Evaluator {
       // A mesh whose points are all floats, as a file's are (an STL read
       // back): a wall of the part it was exported from lies up to half a
       // float's step from where it was, and a pin made again of that
-      // wall's radius that far off it.
-      if (frame_.identity && inFloats(piece.doubles->mesh))
+      // wall's radius that far off it. (Only for a file, which keeps no
+      // more than that; a mesh in doubles keeps such walls apart.)
+      if (stored_ && frame_.identity && inFloats(piece.doubles->mesh))
         reach = std::max(reach, 0x1p-22 * (1.0 + size));
     }
     const std::vector<bool> moved = alignAxisLines(meshes, reach);
