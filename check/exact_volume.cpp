@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "check/check_report.h"
@@ -28,6 +29,7 @@ RayGrid::RayGrid(const Bounds& box, int axis, int n, std::uint64_t seed)
     : lo_(box.lo), axis_(axis), u_((axis + 1) % 3), v_((axis + 2) % 3), seed_(seed) {
   along_[axis] = 1.0;
   du_ = box.size()[u_] / n;
+  length_ = box.size()[axis];
   dv_ = box.size()[v_] / n;
 }
 
@@ -50,7 +52,7 @@ RayGrid::Volume RayGrid::volume(const std::vector<double>& lengths) const {
   double variance = 0.0;
   for (std::size_t k = 0; k + 1 < lengths.size(); k += 2)
     variance += std::pow(cell * (lengths[k] - lengths[k + 1]), 2);
-  made.sigma = std::sqrt(variance);
+  made.sigma = std::max(std::sqrt(variance), cell * length_);
   return made;
 }
 

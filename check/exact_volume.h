@@ -24,7 +24,10 @@ class RayGrid {
   Ray ray(int i, int j) const;
 
   // The grid's volume from its rays' lengths inside the solid (ray (i, j)
-  // at i·n + j), and the standard deviation of that estimate.
+  // at i·n + j), and the standard deviation of that estimate: at least one
+  // cell's column through the box, since a part thinner than a cell (a
+  // crescent 10⁻⁵ wide) may fall between all the rays of one grid and
+  // across many of another's.
   struct Volume {
     double volume = 0.0;
     double sigma = 0.0;
@@ -35,6 +38,7 @@ class RayGrid {
   dvec3 lo_, along_{0.0};
   int axis_, u_, v_;  // along axis_, across u_ and v_
   double du_, dv_;    // the cells' sides
+  double length_;     // the box's along axis_
   std::uint64_t seed_;
 };
 

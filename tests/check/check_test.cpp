@@ -583,6 +583,17 @@ TEST(Check, PartsApartInAUnionAreNotACut) {
   EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
 }
 
+TEST(Check, ACrescentThinnerThanACellIsMeasuredWithinItsGrids) {
+  // A cylinder less itself moved by 10⁻⁵: a crescent 10⁻³ in volume that
+  // the grid along the axis may miss with every ray, while the two across
+  // it cross it. The grids' spread is allowed a cell's column at least.
+  const Scene scene = script("local c = cylinder{r=5, h=10}\nreturn c - c:translate(1e-5, 0, 0)\n");
+  const CheckReport report = checkPart(*scene.objects[0], quick());
+  EXPECT_TRUE(report.gridsAgree()) << checkReportText(report, "part");
+  EXPECT_NEAR(report.meshVolume, 2 * 5 * 1e-5 * 10, 1e-5);
+  EXPECT_TRUE(report.ok()) << checkReportText(report, "part");
+}
+
 TEST(Check, TheLettersOfAWordAreItsPiecesNotACut) {
   // One sweep of a region of loops apart: each outer loop a piece. "ij"
   // is four (two stems, two dots); a box beside it is one more, and a
