@@ -25,9 +25,7 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
       return;
     }
     if (auto* turn = dynamic_cast<const Revolution*>(&solid)) {
-      if (turn->angleDegrees() == 360.0)
-        turns_.push_back(
-            std::dynamic_pointer_cast<const Revolution>(turn->withFrame(placed(*turn))));
+      turns_.push_back(std::dynamic_pointer_cast<const Revolution>(turn->withFrame(placed(*turn))));
       return;
     }
     auto* boolean = dynamic_cast<const Boolean*>(&solid);

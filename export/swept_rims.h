@@ -15,8 +15,10 @@
 // the inscribed polygon leaves none.
 //
 // A rotate_extrude's rings are regular polygons of its own step count, so
-// there the cylinder gives way: a cylinder standing in a full turn's wall
-// of its radius takes that turn's rings (turnedWallPolygon).
+// there the cylinder gives way: a cylinder standing in a turn's wall of
+// its radius takes that turn's rings (turnedWallPolygon), and where the
+// turn is not whole, those of the whole turn whose share it is
+// (Revolution::wallSteps: 270°, three quarters of one).
 #pragma once
 
 #include <functional>
@@ -47,7 +49,7 @@ class SweptRims {
   std::vector<CircleRim> of(const LinearExtrusion& sweep) const;
 
   // The polygon a cylinder of the part (placed as the part's primitives
-  // are) takes where it stands in a wall of a full turn of the part (a
+  // are) takes where it stands in a wall of a turn of the part (a
   // rotate_extrude's ring around an axle of its bore): that turn's rings,
   // turned as the cylinder is, so that the two meet on the same points to
   // rounding (the union then makes their walls flush: aligned_walls.h).

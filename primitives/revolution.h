@@ -36,11 +36,13 @@ class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
 
   bool firstBoundaryCutsShort() const override { return true; }
 
-  // For export: the steps of a full turn's mesh at `tolerance` (in its own
-  // frame), whose rings put their points at ρ·(cos, sin)(360°·k/steps), if
-  // the turn has a wall at ρ = radius (a loop's edge along the axis there)
-  // that overlaps z0..z1; nothing otherwise. A cylinder standing in that
-  // wall takes those rings (export/swept_rims.h).
+  // For export: the steps of a full turn whose rings put their points at
+  // ρ·(cos, sin)(360°·k/steps), as this turn's mesh at `tolerance` (in its
+  // own frame) does over its angle (a turn through a share of 360°, p/q
+  // with q ≤ 24, takes a multiple of p steps: those of a whole turn of
+  // steps·q/p), if the turn has a wall at ρ = radius (a loop's edge along
+  // the axis there) that overlaps z0..z1; nothing otherwise. A cylinder
+  // standing in that wall takes those rings (export/swept_rims.h).
   std::optional<int> wallSteps(double radius, double z0, double z1, double tolerance) const;
 
  protected:

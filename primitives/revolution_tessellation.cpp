@@ -14,6 +14,20 @@
 
 namespace csgray::detail {
 
+namespace {
+
+// p and q (q ≤ 24) with angle = 360°·p/q, or nothing for an angle that is
+// no such share of a turn.
+std::optional<std::pair<int, int>> shareOfATurn(double degrees) {
+  for (int q = 1; q <= 24; ++q) {
+    const double p = degrees * q / 360.0;
+    if (std::abs(p - std::round(p)) <= 1e-9 * q) return std::pair(int(std::round(p)), q);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 // The region's loops (within half the tolerance, outer ones counter-
 // clockwise in the (ρ, z) plane, so that the solid lies to their left)
 // turned about the axis in steps of the sagitta rule for the largest
@@ -55,7 +69,13 @@ Revolution::Turned Revolution::turned(double tolerance) const {
       }
   const double half = 0.5 * tolerance;
   const int least = std::max(3, int(std::ceil(8.0 * angle_ / (2.0 * std::numbers::pi))));
-  const int steps = arcSegments(reach, angle_, half, least);
+  int steps = arcSegments(reach, angle_, half, least);
+  // A turn through 360°·p/q takes a multiple of p steps, so that its steps
+  // are those of a whole turn of steps·q/p: a cylinder standing in its wall
+  // can then take that turn's polygon (wallSteps), whatever the angle's
+  // share (270°: a multiple of 3).
+  if (const auto share = shareOfATurn(angleDegrees_); share && !fullTurn_)
+    steps = (steps + share->first - 1) / share->first * share->first;
   requireTriangleBudget(kind(), 2.0 * double(points) * (steps + 1), tolerance);
   return {std::move(loops), steps, pinched};
 }
@@ -71,15 +91,18 @@ TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const
 // whose stretch of z overlaps z0..z1 by more than a point.
 std::optional<int> Revolution::wallSteps(double radius, double z0, double z1,
                                          double tolerance) const {
-  if (!fullTurn_) return std::nullopt;
+  const std::optional<std::pair<int, int>> share = shareOfATurn(angleDegrees_);
+  if (!fullTurn_ && !share) return std::nullopt;
   const Turned made = turned(tolerance);
+  // The steps of the whole turn that this one's are a share of.
+  const int whole = fullTurn_ ? made.steps : made.steps / share->first * share->second;
   auto atRadius = [&](const dvec2& u) { return std::abs(u.x - radius) <= 1e-9 * radius; };
   for (const auto& loop : made.loops)
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const dvec2 &u = loop[i], &v = loop[(i + 1) % loop.size()];
       if (atRadius(u) && atRadius(v) &&
           std::min(std::max(u.y, v.y), z1) > std::max(std::min(u.y, v.y), z0))
-        return made.steps;
+        return whole;
     }
   return std::nullopt;
 }

@@ -714,6 +714,24 @@ TEST(ContactExport, AnAxleInATurnedRingsBoreMeetsItOnItsPoints) {
                  2904.0 * pi - 72.0 * pi * pi, kTolerance * (1208.0 * pi + 96.0 * pi * pi));
 }
 
+TEST(ContactExport, AnAxleInATurnedSectorsBoreMeetsItOnItsPoints) {
+  // A sector turned through a share of a whole turn (270°, 90°, 100°)
+  // around an axle of its inner radius: the axle kept its own polygon and
+  // left crevices 1 deep. The sector's steps are now a multiple of the
+  // share's numerator, those of a whole turn, whose polygon the axle
+  // takes. Volume: the sector's share of the ring, and the axle.
+  for (double degrees : {270.0, 90.0, 100.0}) {
+    SCOPED_TRACE(degrees);
+    const std::string source =
+        "return rotate_extrude{polygon{{10, 0}, {20, 0}, {20, 5}, {10, "
+        "5}}, angle = " +
+        std::to_string(degrees) + "} + cylinder{r = 10, h = 5}";
+    const double share = degrees / 360.0;
+    exportsValid(source, 5 * kPi * (300 * share + 100),
+                 kTolerance * (2 * kPi * (300 * share + 100) + 2 * kPi * 20 * 5 + 200));
+  }
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as
