@@ -21,7 +21,8 @@ namespace {
 std::optional<std::pair<int, int>> shareOfATurn(double degrees) {
   for (int q = 1; q <= 24; ++q) {
     const double p = degrees * q / 360.0;
-    if (std::abs(p - std::round(p)) <= 1e-9 * q) return std::pair(int(std::round(p)), q);
+    if (std::round(p) >= 1.0 && std::abs(p - std::round(p)) <= 1e-9 * q)
+      return std::pair(int(std::round(p)), q);
   }
   return std::nullopt;
 }

@@ -730,6 +730,14 @@ TEST(ContactExport, AnAxleInATurnedSectorsBoreMeetsItOnItsPoints) {
     exportsValid(source, 5 * kPi * (300 * share + 100),
                  kTolerance * (2 * kPi * (300 * share + 100) + 2 * kPi * 20 * 5 + 200));
   }
+  // An angle too small to be such a share (it rounds to none of 360°)
+  // keeps its own steps. Pappus: the square's area times its centre's path.
+  const TriangleMesh tiny =
+      meshOfSolid(*part("return rotate_extrude{polygon{{10, 0}, {20, 0}, {20, 5}, {10, 5}}, "
+                        "angle = 1e-8}"),
+                  kTolerance)
+          .mesh;
+  EXPECT_NEAR(tiny.volume(), 50.0 * 15.0 * 1e-8 * kPi / 180.0, 1e-12);
 }
 
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
