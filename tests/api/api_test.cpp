@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "csgray/csgray.h"
 #include "../io/scratch_folder.h"
+#include "csgray/csgray.h"
 
 namespace {
 
