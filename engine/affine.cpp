@@ -54,7 +54,11 @@ Affine Affine::rotation(double radians, const dvec3& axis) {
   glm::dmat4 m(1.0);
   for (int col = 0; col < 3; ++col)
     for (int row = 0; row < 3; ++row) m[col][row] = (1.0 - c) * k[row] * k[col];
-  for (int i = 0; i < 3; ++i) m[i][i] += c;
+  // About a coordinate axis, that axis's own entry c + (1 − c)·1 rounds
+  // to a neighbour of 1 for some angles (95°, 105°, 125°, ...), which
+  // would tilt a hole turned about the plate's axis off the plate's face;
+  // it is exactly 1.
+  for (int i = 0; i < 3; ++i) m[i][i] = k[i] * k[i] == 1.0 ? 1.0 : m[i][i] + c;
   // [k]× has rows (0, −kz, ky), (kz, 0, −kx), (−ky, kx, 0); glm is
   // column-major, m[col][row].
   m[1][0] -= s * k.z, m[2][0] += s * k.y;

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "engine/boolean.h"
 #include "primitives/box.h"
@@ -150,6 +151,22 @@ TEST(TransformNormals, EllipsoidNormalUsesInverseTranspose) {
 }
 
 // ------------------------------------------------------------------ rotation
+
+// A turn about a coordinate axis leaves that coordinate exactly as it was,
+// for every whole degree: Rodrigues' c + (1 − c)·1 rounds off 1 at 95°,
+// 105°, ..., which tilted a hole turned about a plate's axis off the
+// plate's face.
+TEST(TransformRotation, ATurnAboutAnAxisKeepsThatCoordinate) {
+  for (int degrees = 0; degrees < 360; ++degrees)
+    for (int axis = 0; axis < 3; ++axis) {
+      SCOPED_TRACE(std::to_string(degrees) + "° about axis " + std::to_string(axis));
+      dvec3 k(0.0);
+      k[axis] = 1.0;
+      const Affine turn = Affine::rotation(degrees * kPi / 180.0, k);
+      dvec3 p(0.3, 5.0, -7.25);
+      EXPECT_EQ(turn.pointToWorld(p)[axis], p[axis]);
+    }
+}
 
 // A 90° turn about z maps (x, y, z) to (-y, x, z): Box(1, 2, 3) goes to
 // x in [-2, 0], y in [0, 1], z in [0, 3]; its +x face (1) now faces +y and

@@ -1259,6 +1259,23 @@ TEST(ContactExport, ARegionThatTouchesTheAxisAtAPointIsRefusedSayingSo) {
   }
 }
 
+TEST(ContactExport, HolesTurnedOntoABoltCircleFlushWithThePlatesFace) {
+  // Cutters from z = -5 to the plate's face at 5, turned into place about
+  // the plate's axis by angles whose turn once rounded z off its plane.
+  // A cylinder r = 30, 5 high, less three holes r = 2.5 (their polygons
+  // within the tolerance of the circle).
+  const double exact = kPi * 5 * (30 * 30 - 3 * 2.5 * 2.5);
+  exportsValid(
+      "local plate = cylinder{r=30, h=5}\n"
+      "local holes = {}\n"
+      "for _, a in ipairs{95, 105, 125} do\n"
+      "  holes[#holes + 1] = cylinder{r=2.5, h=10, center=true}:translate(22, 0, 0):rotate(0, 0, "
+      "a)\n"
+      "end\n"
+      "return difference(plate, holes)",
+      exact, kTolerance * 5 * 2 * kPi * (30 + 3 * 2.5));
+}
+
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
   // examples/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
   // 1 deep.
