@@ -38,6 +38,7 @@
 #include "export/opened_pinches.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
+#include "export/upright_cylinders.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -602,9 +603,14 @@ class Evaluator {
       std::vector<CircleRim> rims = rims_->of(*sweep);
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
-    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_)
-      if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
-        return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
+    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape)) {
+      if (rims_)
+        if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
+          return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
+      if (const auto upright = uprightFrame(*cylinder, cylinder->frame()))
+        return std::dynamic_pointer_cast<const Primitive>(cylinder->withFrame(*upright))
+            ->tessellate(tolerance_, region);
+    }
     return shape.tessellate(tolerance_, region);
   }
 

@@ -1276,6 +1276,24 @@ TEST(ContactExport, HolesTurnedOntoABoltCircleFlushWithThePlatesFace) {
       exact, kTolerance * 5 * 2 * kPi * (30 + 3 * 2.5));
 }
 
+TEST(ContactExport, AnAxleTurnedTheOtherWayFromItsWheelFillsTheBore) {
+  // A wheel (a rim r = 8 to 10 and two crossed spokes 2 wide, 3 thick, a
+  // bore r = 2) turned onto the y axis one way, an axle of the bore's
+  // radius the other: the axle's polygon, mirrored, was a hair off the
+  // bore's, and the union crossed itself (or crashed CGAL).
+  const double spoke = 2.0 * (std::sqrt(63.0) + 64.0 * std::asin(1.0 / 8.0));  // |y| ≤ 1 in r ≤ 8
+  const double boreOfSpokes = 2.0 * (2.0 * std::sqrt(3.0) + 4.0 * kPi / 3.0) - 4.0;
+  const double wheel = 3.0 * (kPi * (100.0 - 64.0) + 2.0 * spoke - 4.0 - boreOfSpokes);
+  const double axle = kPi * 4.0 * 10.0;  // the bore it fills is empty
+  // The chord error over a surface of less than 1000.
+  exportsValid(
+      "local w = cylinder{r=10, h=3, center=true} - cylinder{r=8, h=10, center=true}\n"
+      "w = w + box{size={18, 2, 3}, center=true} + box{size={2, 18, 3}, center=true}\n"
+      "return (w - cylinder{r=2, h=10, center=true}):rotate(90, 0, 0)\n"
+      "       + cylinder{r=2, h=10}:rotate(-90, 0, 0)",
+      wheel + axle, kTolerance * 1000.0);
+}
+
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
   // examples/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
   // 1 deep.
