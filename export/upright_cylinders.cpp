@@ -19,33 +19,31 @@ int axisOf(const glm::dvec4& column) {
 
 }  // namespace
 
-std::optional<Affine> uprightFrame(const Cylinder& cylinder, const Affine& frame) {
-  if (cylinder.r1() != cylinder.r2()) return std::nullopt;
+std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const Affine& frame) {
   const glm::dmat4& m = frame.worldFromObject();
-  const int zAxis = axisOf(m[2]);
-  if (zAxis < 0 || m[2][zAxis] > 0.0) return std::nullopt;
-  // Half a turn about the object's x axis maps (x, y, z) to (x, −y, h − z),
-  // about its y axis to (−x, y, h − z); both map the cylinder onto itself.
-  // The one taken keeps a column that points along a positive axis, so
-  // that the upright frame is the bore's when the bore's frame is a
-  // coordinate frame.
-  int kept = -1;
-  for (int c = 0; c < 2 && kept < 0; ++c) {
-    const int axis = axisOf(m[c]);
-    if (axis >= 0 && m[c][axis] > 0.0) kept = c;
-  }
-  if (kept < 0) return std::nullopt;
   glm::dmat4 upright = m;
-  upright[1 - kept] = -m[1 - kept];
-  upright[2] = -m[2];
+  bool reversed[3] = {false, false, false};
+  for (int c = 0; c < 3; ++c) {
+    const int axis = axisOf(m[c]);
+    if (axis < 0) return nullptr;
+    reversed[c] = m[c][axis] < 0.0;
+    if (reversed[c]) upright[c] = -m[c];
+  }
+  if (!reversed[0] && !reversed[1] && !reversed[2]) return nullptr;
+  // (x, y, z) → (−x, y, z) and (x, −y, z) map a frustum onto itself, and
+  // (x, y, h − z) onto the one with its radii swapped; that moves the
+  // origin to the top rim.
   const double h = cylinder.height();
-  upright[3] = m * glm::dvec4(0.0, 0.0, h, 1.0);
+  if (reversed[2]) upright[3] = m * glm::dvec4(0.0, 0.0, h, 1.0);
   const Affine turned = Affine::fromMatrix(upright);
   // The rims where they were, bit for bit.
-  if (turned.pointToWorld(dvec3(0.0, 0.0, h)) != frame.pointToWorld(dvec3(0.0)) ||
-      turned.pointToWorld(dvec3(0.0)) != frame.pointToWorld(dvec3(0.0, 0.0, h)))
-    return std::nullopt;
-  return turned;
+  const dvec3 bottom = frame.pointToWorld(dvec3(0.0)), top = frame.pointToWorld(dvec3(0.0, 0.0, h));
+  if (turned.pointToWorld(dvec3(0.0)) != (reversed[2] ? top : bottom) ||
+      turned.pointToWorld(dvec3(0.0, 0.0, h)) != (reversed[2] ? bottom : top))
+    return nullptr;
+  const SolidPtr placed =
+      reversed[2] ? cylinder.withRadiiSwapped()->withFrame(turned) : cylinder.withFrame(turned);
+  return std::static_pointer_cast<const Cylinder>(placed);
 }
 
 }  // namespace csgray::detail

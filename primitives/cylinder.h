@@ -21,6 +21,10 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   // For export: this cylinder with both rims on `polygon` instead of the
   // polygon of its radius (export/swept_rims.h: a full turn's ring).
   std::shared_ptr<const Cylinder> withPolygon(const CirclePolygon& polygon) const;
+  // This frustum with its radii swapped (r2 at the bottom), in the same
+  // frame: turned upside down, it is the same solid
+  // (export/upright_cylinders.h).
+  std::shared_ptr<const Cylinder> withRadiiSwapped() const;
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;

@@ -61,6 +61,13 @@ std::shared_ptr<const Cylinder> Cylinder::withPolygon(const CirclePolygon& polyg
   return copy;
 }
 
+std::shared_ptr<const Cylinder> Cylinder::withRadiiSwapped() const {
+  auto copy = std::make_shared<Cylinder>(*this);
+  std::swap(copy->r1_, copy->r2_);
+  copy->slope_ = -slope_;
+  return copy;
+}
+
 TriangleMesh Cylinder::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
   if (polygon_ && r1_ == r2_) {

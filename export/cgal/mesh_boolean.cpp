@@ -584,33 +584,38 @@ class Evaluator {
     return pieces;
   }
 
-  // The frame a primitive is tessellated in: the evaluation's.
+  // The primitive as it is tessellated: in the evaluation's frame, where
+  // a cylinder or cone turned upside down or mirrored is placed the right
+  // way up (export/upright_cylinders.h). Null where that is the primitive
+  // as it is.
+  std::shared_ptr<const Primitive> placedPrimitive(const Primitive& primitive) const {
+    const Affine frame = frame_.identity ? primitive.frame() : frame_.evalFrame(primitive.frame());
+    if (auto* cylinder = dynamic_cast<const Cylinder*>(&primitive))
+      if (auto upright = uprightCylinder(*cylinder, frame)) return upright;
+    if (frame_.identity) return nullptr;
+    return std::dynamic_pointer_cast<const Primitive>(primitive.withFrame(frame));
+  }
+
+  // The frame a primitive is tessellated in.
   Affine placedFrame(const Primitive& primitive) const {
-    return frame_.identity ? primitive.frame() : frame_.evalFrame(primitive.frame());
+    const auto placed = placedPrimitive(primitive);
+    return placed ? placed->frame() : primitive.frame();
   }
 
   // The primitive's triangles within the region, in the evaluation's frame;
   // an extrusion's circles that a cylinder of the part stands on on that
   // cylinder's rim polygon (export/swept_rims.h).
   TriangleMesh tessellation(const Primitive& primitive, const Bounds& region) const {
-    std::shared_ptr<const Primitive> placed;
-    if (!frame_.identity)
-      placed = std::dynamic_pointer_cast<const Primitive>(
-          primitive.withFrame(frame_.evalFrame(primitive.frame())));
+    const std::shared_ptr<const Primitive> placed = placedPrimitive(primitive);
     const Primitive& shape = placed ? *placed : primitive;
     if (auto* sweep = dynamic_cast<const LinearExtrusion*>(&shape);
         sweep && rims_ && !rims_->empty()) {
       std::vector<CircleRim> rims = rims_->of(*sweep);
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
-    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape)) {
-      if (rims_)
-        if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
-          return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
-      if (const auto upright = uprightFrame(*cylinder, cylinder->frame()))
-        return std::dynamic_pointer_cast<const Primitive>(cylinder->withFrame(*upright))
-            ->tessellate(tolerance_, region);
-    }
+    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_)
+      if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
+        return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
     return shape.tessellate(tolerance_, region);
   }
 

@@ -1276,22 +1276,37 @@ TEST(ContactExport, HolesTurnedOntoABoltCircleFlushWithThePlatesFace) {
       exact, kTolerance * 5 * 2 * kPi * (30 + 3 * 2.5));
 }
 
-TEST(ContactExport, AnAxleTurnedTheOtherWayFromItsWheelFillsTheBore) {
+TEST(ContactExport, AnAxleTurnedOrMirroredAgainstItsWheelFillsTheBore) {
   // A wheel (a rim r = 8 to 10 and two crossed spokes 2 wide, 3 thick, a
-  // bore r = 2) turned onto the y axis one way, an axle of the bore's
-  // radius the other: the axle's polygon, mirrored, was a hair off the
-  // bore's, and the union crossed itself (or crashed CGAL).
+  // bore r = 2) and an axle of the bore's radius turned the other way, or
+  // mirrored: the axle's polygon, mirrored, was a hair off the bore's, and
+  // the union crossed itself (or crashed CGAL).
   const double spoke = 2.0 * (std::sqrt(63.0) + 64.0 * std::asin(1.0 / 8.0));  // |y| ≤ 1 in r ≤ 8
   const double boreOfSpokes = 2.0 * (2.0 * std::sqrt(3.0) + 4.0 * kPi / 3.0) - 4.0;
   const double wheel = 3.0 * (kPi * (100.0 - 64.0) + 2.0 * spoke - 4.0 - boreOfSpokes);
   const double axle = kPi * 4.0 * 10.0;  // the bore it fills is empty
-  // The chord error over a surface of less than 1000.
-  exportsValid(
+  const std::string wheelSource =
       "local w = cylinder{r=10, h=3, center=true} - cylinder{r=8, h=10, center=true}\n"
       "w = w + box{size={18, 2, 3}, center=true} + box{size={2, 18, 3}, center=true}\n"
-      "return (w - cylinder{r=2, h=10, center=true}):rotate(90, 0, 0)\n"
-      "       + cylinder{r=2, h=10}:rotate(-90, 0, 0)",
-      wheel + axle, kTolerance * 1000.0);
+      "w = w - cylinder{r=2, h=10, center=true}\n";
+  for (const char* assembly :
+       {"return w:rotate(90, 0, 0) + cylinder{r=2, h=10}:rotate(-90, 0, 0)",
+        "return w + cylinder{r=2, h=10}:mirror(0, 1, 0):translate(0, 0, -1)",
+        "return w + cylinder{r=2, h=10}:mirror(0, 0, 1):translate(0, 0, 1)",
+        "return w + cylinder{r=2, h=10}:rotate(0, 0, 180):translate(0, 0, -1)"})
+    // The chord error over a surface of less than 1000.
+    exportsValid(wheelSource + assembly, wheel + axle, kTolerance * 1000.0);
+}
+
+TEST(ContactExport, APinUpsideDownInASweptHoleMeetsItsWall) {
+  // A plate 40 × 40 × 5 swept with a hole r = 3, and a pin 10 long turned
+  // half a turn about x into it: the sweep's hole takes the pin's polygon
+  // as the pin is cut, upright.
+  exportsValid(
+      "local plate = linear_extrude{square{size={40, 40}, center=true} - circle(3), height=5}\n"
+      "return plate + cylinder{r=3, h=10}:rotate(180, 0, 0):translate(0, 0, 7)",
+      40.0 * 40.0 * 5.0 + kPi * 9.0 * 5.0,
+      kTolerance * (2 * 1600.0 + 4 * 40 * 5 + 2 * kPi * 3 * 10));
 }
 
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {

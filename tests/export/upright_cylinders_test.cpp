@@ -1,0 +1,104 @@
+// A cylinder or cone turned upside down or mirrored is the same solid
+// placed upright and unmirrored, and it is cut on the points of one placed
+// so from the start: an axle turned the other way meets its bore's points.
+#include "export/upright_cylinders.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numbers>
+#include <vector>
+
+#include "engine/bounds.h"
+#include "tessellation/triangle_mesh.h"
+
+namespace csgray::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTolerance = 0.01;
+
+std::shared_ptr<const Cylinder> frustum(double r1, double r2, double h, const Affine& frame) {
+  return std::static_pointer_cast<const Cylinder>(
+      Primitive::create<Cylinder>(r1, r2, h)->withFrame(frame));
+}
+
+// The points of the primitive's mesh, sorted.
+std::vector<dvec3> pointsOf(const Primitive& primitive) {
+  std::vector<dvec3> points = primitive.tessellate(kTolerance, Bounds::everything()).points;
+  std::sort(points.begin(), points.end(), [](const dvec3& a, const dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  });
+  return points;
+}
+
+struct Turned {
+  const char* what;
+  Affine frame;    // places the frustum from z = 0 to 10 upside down or mirrored
+  Affine upright;  // places it upright over the same place
+  bool swapped;    // its radii swapped
+};
+
+TEST(UprightCylinders, TurnedOrMirroredFrustumsAreCutOnTheUprightOnesPoints) {
+  const Affine down = Affine::translation(dvec3(0, 0, -10));
+  const std::vector<Turned> cases = {
+      {"half a turn about x", Affine::rotation(kPi, dvec3(1, 0, 0)), down, true},
+      {"half a turn about y", Affine::rotation(kPi, dvec3(0, 1, 0)), down, true},
+      {"half a turn about z", Affine::rotation(kPi, dvec3(0, 0, 1)), Affine(), false},
+      {"mirrored in y", Affine::mirror(dvec3(0, 1, 0)), Affine(), false},
+      {"mirrored in z", Affine::mirror(dvec3(0, 0, 1)), down, true},
+  };
+  for (const Turned& c : cases)
+    for (const auto& [r1, r2] : {std::pair(2.0, 2.0), std::pair(2.0, 4.5)}) {
+      SCOPED_TRACE(std::string(c.what) + (r1 == r2 ? ", a cylinder" : ", a cone"));
+      const auto turned = frustum(r1, r2, 10.0, c.frame);
+      const auto upright = uprightCylinder(*turned, turned->frame());
+      ASSERT_NE(upright, nullptr);
+      // The same solid.
+      for (const dvec3& p : {dvec3(0, 0, 0.5), dvec3(1.9, 0, 5), dvec3(0, 1.95, 9.5),
+                             dvec3(2.1, 0, 1), dvec3(0, 0, 10.5), dvec3(4.4, 0, 9.9)}) {
+        const dvec3 q = c.frame.pointToWorld(p);
+        EXPECT_EQ(upright->contains(q), turned->contains(q)) << q.x << " " << q.y << " " << q.z;
+      }
+      // Cut on the points of the frustum placed upright there.
+      const auto expected =
+          c.swapped ? frustum(r2, r1, 10.0, c.upright) : frustum(r1, r2, 10.0, c.upright);
+      EXPECT_EQ(pointsOf(*upright), pointsOf(*expected));
+    }
+}
+
+TEST(UprightCylinders, FrustumsTurnedOppositeWaysAreCutOnTheSamePoints) {
+  // Along +x from x = 0 to 10: a quarter turn about y one way, and a
+  // quarter turn the other way from x = 10 back to 0. Neither is upright;
+  // both are placed in the one frame whose axes point along +z, +y, +x.
+  for (const auto& [r1, r2] : {std::pair(2.0, 2.0), std::pair(2.0, 4.5)}) {
+    SCOPED_TRACE(r1 == r2 ? "a cylinder" : "a cone");
+    const auto one = frustum(r1, r2, 10.0, Affine::rotation(kPi / 2, dvec3(0, 1, 0)));
+    const auto other = frustum(
+        r2, r1, 10.0,
+        Affine::rotation(-kPi / 2, dvec3(0, 1, 0)).then(Affine::translation(dvec3(10, 0, 0))));
+    const auto a = uprightCylinder(*one, one->frame()), b = uprightCylinder(*other, other->frame());
+    ASSERT_NE(a, nullptr);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(pointsOf(*a), pointsOf(*b));
+  }
+}
+
+TEST(UprightCylinders, UprightTiltedOrRoundingFrustumsAreLeftAsTheyAre) {
+  const auto none = [](const Affine& frame) {
+    const auto c = frustum(2.0, 2.0, 0.7, frame);
+    return uprightCylinder(*c, c->frame()) == nullptr;
+  };
+  EXPECT_TRUE(none(Affine()));
+  EXPECT_TRUE(none(Affine::translation(dvec3(1, -2, 3))));
+  EXPECT_TRUE(none(Affine::rotation(kPi / 4, dvec3(1, 0, 0))));  // tilted
+  EXPECT_TRUE(none(Affine::rotation(kPi, dvec3(1, 2, 0))));  // upside down, x and y off the axes
+  // Upside down from z = 0.1: its bottom rim would land at
+  // (0.1 − 0.7) + 0.7 = 0.09999999999999998.
+  const Affine flipped = Affine::rotation(kPi, dvec3(1, 0, 0));
+  EXPECT_TRUE(none(flipped.then(Affine::translation(dvec3(0, 0, 0.1)))));
+  EXPECT_FALSE(none(flipped.then(Affine::translation(dvec3(0, 0, 0.3)))));
+}
+
+}  // namespace
+}  // namespace csgray::detail
