@@ -129,7 +129,22 @@ struct EvaluationFrame {
     return Affine::fromMatrix(m);
   }
   Bounds evalBounds(const Bounds& b) const {
-    if (identity || !b.finite()) return b;
+    if (identity || b.empty()) return b;
+    if (!b.finite()) {
+      // An unbounded solid's box (a half-space's): each side of it in the
+      // evaluation's frame from the sides it is made of, by interval
+      // arithmetic; a side it does not depend on adds nothing.
+      Bounds out{dvec3(0.0), dvec3(0.0)};
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+          const double m = evalFromWorld[c][r];
+          if (m == 0.0) continue;
+          const double lo = m * b.lo[c], hi = m * b.hi[c];
+          out.lo[r] += std::min(lo, hi);
+          out.hi[r] += std::max(lo, hi);
+        }
+      return out;
+    }
     Bounds out;
     for (int i = 0; i < 8; ++i)
       out.include(evalFromWorld *

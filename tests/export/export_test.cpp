@@ -236,6 +236,18 @@ const VolumeCase kVolumeCases[] = {
      "half_space{normal={0, 0, 1}, offset=5}, half_space{normal={0, 0, -1}, offset=5}, "
      "half_space{normal={1, 1, 1}, offset=5}})",
      1000.0 - 1000.0 / 6.0},
+    // A turned solid first: the part is evaluated in its frame, where the
+    // half-space's box must be turned too (it was not, and the half
+    // cylinder came out 0.05).
+    {"lying_cylinder_cut_by_a_half_space",
+     "return cylinder{r=1, h=2}:rotate(0, 90, 0) * half_space{normal={0, 0, 1}}", kPi},
+    {"lying_cylinder_cut_by_a_slanted_half_space",
+     "return cylinder{r=1, h=2}:rotate(90, 0, 0) * half_space{normal={0, 1, 1}, offset=-1}",
+     // y + z ≤ −1 on the cylinder along −y from y = 0 to −2, r = 1: the
+     // disc at y = −u keeps z ≤ u − 1, an area A(u − 1) where A(t) is the
+     // unit disc's below height t; ∫₀² A(u − 1) du = ∫₋₁¹ A(t) dt = π,
+     // as A(t) + A(−t) = π.
+     kPi},
 };
 
 INSTANTIATE_TEST_SUITE_P(Primitives, ExportVolume, ::testing::ValuesIn(kVolumeCases),
