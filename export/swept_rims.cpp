@@ -10,7 +10,9 @@
 
 namespace csgray::detail {
 
-SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primitive&)>& placed) {
+SweptRims::SweptRims(
+    const Solid& part,
+    const std::function<std::shared_ptr<const Primitive>(const Primitive&)>& placed) {
   // A cylinder that only ever cuts (an operand of a difference after its
   // first) gains nothing from a shared polygon: a hole cut again where the
   // sweep has one is the same hole with either polygon, and walls in one
@@ -18,14 +20,15 @@ SweptRims::SweptRims(const Solid& part, const std::function<Affine(const Primiti
   // cylinders: 0.7 s, and 1.4 s with shared polygons).
   std::function<void(const Solid&, bool)> visit = [&](const Solid& solid, bool cutting) {
     if (auto* cylinder = dynamic_cast<const Cylinder*>(&solid)) {
-      if (cylinder->r1() == cylinder->r2() && !cutting) {
-        cylinders_.push_back({placed(*cylinder).worldFromObject(), cylinder->r1()});
+      const auto shape = std::static_pointer_cast<const Cylinder>(placed(*cylinder));
+      if (shape->r1() == shape->r2() && !cutting) {
+        cylinders_.push_back({shape->frame().worldFromObject(), shape->r1()});
         kept_.insert(cylinder);
       }
       return;
     }
     if (auto* turn = dynamic_cast<const Revolution*>(&solid)) {
-      turns_.push_back(std::dynamic_pointer_cast<const Revolution>(turn->withFrame(placed(*turn))));
+      turns_.push_back(std::static_pointer_cast<const Revolution>(placed(*turn)));
       return;
     }
     auto* boolean = dynamic_cast<const Boolean*>(&solid);

@@ -37,9 +37,11 @@ namespace csgray::detail {
 
 class SweptRims {
  public:
-  // The part's cylinders (not cones) that do not only cut, each in the
-  // frame `placed` gives it (the frame the export tessellates it in).
-  SweptRims(const Solid& part, const std::function<Affine(const Primitive&)>& placed);
+  // The part's cylinders (not cones) that do not only cut, each as
+  // `placed` gives it (as the export tessellates it: in the evaluation's
+  // frame, upright and unscaled where it can be, export/upright_cylinders.h).
+  SweptRims(const Solid& part,
+            const std::function<std::shared_ptr<const Primitive>(const Primitive&)>& placed);
 
   // The rims, in the extrusion's plane, of the cylinders whose frame
   // differs from the extrusion's (which must be placed as the cylinders

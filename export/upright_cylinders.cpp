@@ -1,6 +1,10 @@
 #include "export/upright_cylinders.h"
 
+#include <algorithm>
+#include <cmath>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 namespace csgray::detail {
 
@@ -21,29 +25,55 @@ int axisOf(const glm::dvec4& column) {
 
 std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const Affine& frame) {
   const glm::dmat4& m = frame.worldFromObject();
+  const int zAxis = axisOf(m[2]), xAxis = axisOf(m[0]), yAxis = axisOf(m[1]);
+  if (zAxis < 0) return nullptr;
+  const double height = std::abs(m[2][zAxis]);
+  const bool down = m[2][zAxis] < 0.0;
   glm::dmat4 upright = m;
-  bool reversed[3] = {false, false, false};
-  for (int c = 0; c < 3; ++c) {
-    const int axis = axisOf(m[c]);
-    if (axis < 0) return nullptr;
-    reversed[c] = m[c][axis] < 0.0;
-    if (reversed[c]) upright[c] = -m[c];
+  upright[2] = glm::dvec4(0.0);
+  upright[2][zAxis] = 1.0;
+  double radial = 1.0;
+  if (xAxis >= 0 && yAxis >= 0) {
+    // Its own x and y along the other two axes in their order: a turn of
+    // a quarter about its axis, and a mirror that swaps x and y, map it
+    // onto itself too.
+    radial = std::abs(m[0][xAxis]);
+    if (std::abs(m[1][yAxis]) != radial) return nullptr;  // an elliptic cylinder
+    if (radial == 1.0 && height == 1.0 && !down && m[0][xAxis] > 0.0 && m[1][yAxis] > 0.0 &&
+        xAxis < yAxis)
+      return nullptr;
+    upright[0] = upright[1] = glm::dvec4(0.0);
+    upright[0][std::min(xAxis, yAxis)] = 1.0;
+    upright[1][std::max(xAxis, yAxis)] = 1.0;
+  } else {
+    // Turned about its axis by another angle (a pin turned onto a bolt
+    // circle), which stays: a reversed axis is undone by half a turn
+    // about its own x (turned over by rotate(180, 0, 0)), or where the
+    // frame mirrors, by reversing the axis alone (mirrored across its
+    // base); a mirror otherwise by reversing its own x (mirror(1, 0, 0)).
+    if (m[0][zAxis] != 0.0 || m[1][zAxis] != 0.0) return nullptr;
+    const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
+    if (!down && !mirrored && height == 1.0) return nullptr;
+    if (down && !mirrored) upright[1] = -m[1];
+    if (!down && mirrored) upright[0] = -m[0];
   }
-  if (!reversed[0] && !reversed[1] && !reversed[2]) return nullptr;
   // (x, y, z) → (−x, y, z) and (x, −y, z) map a frustum onto itself, and
-  // (x, y, h − z) onto the one with its radii swapped; that moves the
-  // origin to the top rim.
+  // (x, y, h − z) onto the one with its radii swapped, which stands where
+  // the top rim was; a scale of x and y alike is one of the radii, of z
+  // one of the height.
   const double h = cylinder.height();
-  if (reversed[2]) upright[3] = m * glm::dvec4(0.0, 0.0, h, 1.0);
-  const Affine turned = Affine::fromMatrix(upright);
+  upright[3] = down ? m * glm::dvec4(0.0, 0.0, h, 1.0) : m[3];
+  const Affine placed = Affine::fromMatrix(upright);
+  const double r1 = radial * (down ? cylinder.r2() : cylinder.r1());
+  const double r2 = radial * (down ? cylinder.r1() : cylinder.r2());
+  const double length = height * h;
   // The rims where they were, bit for bit.
   const dvec3 bottom = frame.pointToWorld(dvec3(0.0)), top = frame.pointToWorld(dvec3(0.0, 0.0, h));
-  if (turned.pointToWorld(dvec3(0.0)) != (reversed[2] ? top : bottom) ||
-      turned.pointToWorld(dvec3(0.0, 0.0, h)) != (reversed[2] ? bottom : top))
+  if (placed.pointToWorld(dvec3(0.0)) != (down ? top : bottom) ||
+      placed.pointToWorld(dvec3(0.0, 0.0, length)) != (down ? bottom : top))
     return nullptr;
-  const SolidPtr placed =
-      reversed[2] ? cylinder.withRadiiSwapped()->withFrame(turned) : cylinder.withFrame(turned);
-  return std::static_pointer_cast<const Cylinder>(placed);
+  return std::static_pointer_cast<const Cylinder>(
+      cylinder.withSize(r1, r2, length)->withFrame(placed));
 }
 
 }  // namespace csgray::detail

@@ -61,10 +61,11 @@ std::shared_ptr<const Cylinder> Cylinder::withPolygon(const CirclePolygon& polyg
   return copy;
 }
 
-std::shared_ptr<const Cylinder> Cylinder::withRadiiSwapped() const {
+std::shared_ptr<const Cylinder> Cylinder::withSize(double r1, double r2, double height) const {
   auto copy = std::make_shared<Cylinder>(*this);
-  std::swap(copy->r1_, copy->r2_);
-  copy->slope_ = -slope_;
+  copy->r1_ = r1, copy->r2_ = r2, copy->height_ = height;
+  copy->slope_ = (r2 - r1) / height;
+  copy->polygon_.reset();
   return copy;
 }
 

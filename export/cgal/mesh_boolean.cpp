@@ -376,7 +376,11 @@ class Evaluator {
   // operations above it cut away.
   Piece evaluate(const Solid& solid, const Bounds& outer) {
     // The first call is the part's: its cylinders, for its extrusions.
-    if (!rims_) rims_.emplace(solid, [this](const Primitive& p) { return placedFrame(p); });
+    if (!rims_)
+      rims_.emplace(solid, [this](const Primitive& p) {
+        auto placed = placedPrimitive(p);
+        return placed ? placed : std::static_pointer_cast<const Primitive>(p.shared_from_this());
+      });
     const Bounds region = outer.intersected(frame_.evalBounds(solid.bounds()));
     if (region.empty()) return {};
     if (auto* primitive = dynamic_cast<const Primitive*>(&solid)) {
@@ -609,12 +613,6 @@ class Evaluator {
       if (auto upright = uprightCylinder(*cylinder, frame)) return upright;
     if (frame_.identity) return nullptr;
     return std::dynamic_pointer_cast<const Primitive>(primitive.withFrame(frame));
-  }
-
-  // The frame a primitive is tessellated in.
-  Affine placedFrame(const Primitive& primitive) const {
-    const auto placed = placedPrimitive(primitive);
-    return placed ? placed->frame() : primitive.frame();
   }
 
   // The primitive's triangles within the region, in the evaluation's frame;

@@ -1309,6 +1309,50 @@ TEST(ContactExport, APinUpsideDownInASweptHoleMeetsItsWall) {
       kTolerance * (2 * 1600.0 + 4 * 40 * 5 + 2 * kPi * 3 * 10));
 }
 
+TEST(ContactExport, PinsTurnedOverOrAboutTheirAxesMeetTheirHolesWalls) {
+  // A pin of a hole's radius that is turned another way than its hole:
+  // a quarter about its own axis; turned over, then onto a bolt circle
+  // with the hole; mirrored, then so. Each crossed its hole's faces.
+  exportsValid(
+      "return box{size={10, 10, 2}, center=true} - cylinder{r=3, h=2, center=true}\n"
+      "       + cylinder{r=3, h=4, center=true}:rotate(0, 0, 90)",
+      200.0 + kPi * 9.0 * 2.0, kTolerance * (2 * 100.0 + 4 * 20.0 + 2 * kPi * 3 * 4));
+  for (const char* pin : {"cylinder{r=3, h=8, center=true}:rotate(180, 0, 0)",
+                          "cylinder{r=3, h=8, center=true}:mirror(1, 0, 0)"})
+    exportsValid(
+        "return box{size={20, 20, 4}, center=true}\n"
+        "       - cylinder{r=3, h=4, center=true}:translate(5, 0, 0):rotate(0, 0, 60)\n"
+        "       + " +
+            std::string(pin) + ":translate(5, 0, 0):rotate(0, 0, 60)",
+        1600.0 + kPi * 9.0 * 4.0, kTolerance * (2 * 400.0 + 4 * 80.0 + 2 * kPi * 3 * 8));
+  // A tee: a bore along x and a branch of its radius along +y from its
+  // axis, turned there the other way; the branch leaves half of the two
+  // bores' common 16 r³ / 3 (Steinmetz) to the through bore.
+  exportsValid(
+      "return box{size={20, 20, 20}}:translate(0, -10, -10)\n"
+      "       - cylinder{r=3, h=20}:rotate(0, 90, 0)\n"
+      "       - cylinder{r=3, h=10}:rotate(-90, 0, 0):translate(10, 0, 0)",
+      8000.0 - kPi * 9.0 * 30.0 + 8.0 * 27.0 / 3.0, kTolerance * (6 * 400.0 + 2 * kPi * 3 * 30));
+}
+
+TEST(ContactExport, ScaledPinsMeetTheirHolesWalls) {
+  // Pins scaled to a hole's radius take the polygon of that radius: r = 5
+  // scaled by 1.2 through a swept plate's hole r = 6; r = 3 scaled by 2
+  // (and 3 along its axis) in a ring's bore r = 6. With the polygons of
+  // their own radii scaled, crevices were left that the check found.
+  exportsValid(
+      "local plate = linear_extrude{square{size={40, 40}, center=true} - circle(6), height=5}\n"
+      "return plate + cylinder{r=5, h=10}:scale(1.2, 1.2, 1)",
+      40.0 * 40.0 * 5.0 + kPi * 36.0 * 5.0,
+      kTolerance * (2 * 1600.0 + 4 * 40 * 5 + 2 * kPi * 6 * 10));
+  exportsValid(
+      "return (cylinder{r=10, h=5} - cylinder{r=6, h=20, center=true}) + cylinder{r=3, "
+      "h=4}:scale(2, "
+      "2, 3)",
+      kPi * ((100.0 - 36.0) * 5.0 + 36.0 * 12.0),
+      kTolerance * (2 * kPi * 10 * 5 + 2 * kPi * 100 + 2 * kPi * 6 * 12));
+}
+
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {
   // examples/pixel_knob.lua: a knob r = 15, 10 high, less 13 pixels 2 × 2,
   // 1 deep.

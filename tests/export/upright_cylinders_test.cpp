@@ -47,6 +47,13 @@ TEST(UprightCylinders, TurnedOrMirroredFrustumsAreCutOnTheUprightOnesPoints) {
       {"half a turn about z", Affine::rotation(kPi, dvec3(0, 0, 1)), Affine(), false},
       {"mirrored in y", Affine::mirror(dvec3(0, 1, 0)), Affine(), false},
       {"mirrored in z", Affine::mirror(dvec3(0, 0, 1)), down, true},
+      // Then turned onto a bolt circle: the pin placed there upright.
+      {"half a turn about x, then 60° about z",
+       Affine::rotation(kPi, dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))),
+       down.then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))), true},
+      {"mirrored in x, then turned 60° about z",
+       Affine::mirror(dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))),
+       Affine::rotation(kPi / 3, dvec3(0, 0, 1)), false},
   };
   for (const Turned& c : cases)
     for (const auto& [r1, r2] : {std::pair(2.0, 2.0), std::pair(2.0, 4.5)}) {
@@ -84,6 +91,23 @@ TEST(UprightCylinders, FrustumsTurnedOppositeWaysAreCutOnTheSamePoints) {
   }
 }
 
+TEST(UprightCylinders, AScaleOfXAndYAlikeIsOneOfTheRadii) {
+  // r = 3 to 1.5, 4 high, scaled by 2 across and 3 along its axis, upside
+  // down: the frustum r = 3 to 6, 12 high, standing where its top was.
+  const Affine frame = Affine::scaling(dvec3(2, 2, 3)).then(Affine::rotation(kPi, dvec3(1, 0, 0)));
+  const auto scaled = frustum(3.0, 1.5, 4.0, frame);
+  const auto upright = uprightCylinder(*scaled, scaled->frame());
+  ASSERT_NE(upright, nullptr);
+  EXPECT_EQ(upright->r1(), 3.0);
+  EXPECT_EQ(upright->r2(), 6.0);
+  EXPECT_EQ(upright->height(), 12.0);
+  EXPECT_EQ(pointsOf(*upright),
+            pointsOf(*frustum(3.0, 6.0, 12.0, Affine::translation(dvec3(0, 0, -12)))));
+  // An elliptic cylinder stays as it is.
+  const auto elliptic = frustum(3.0, 3.0, 4.0, Affine::scaling(dvec3(2, 1, 1)));
+  EXPECT_EQ(uprightCylinder(*elliptic, elliptic->frame()), nullptr);
+}
+
 TEST(UprightCylinders, UprightTiltedOrRoundingFrustumsAreLeftAsTheyAre) {
   const auto none = [](const Affine& frame) {
     const auto c = frustum(2.0, 2.0, 0.7, frame);
@@ -92,7 +116,8 @@ TEST(UprightCylinders, UprightTiltedOrRoundingFrustumsAreLeftAsTheyAre) {
   EXPECT_TRUE(none(Affine()));
   EXPECT_TRUE(none(Affine::translation(dvec3(1, -2, 3))));
   EXPECT_TRUE(none(Affine::rotation(kPi / 4, dvec3(1, 0, 0))));  // tilted
-  EXPECT_TRUE(none(Affine::rotation(kPi, dvec3(1, 2, 0))));  // upside down, x and y off the axes
+  EXPECT_TRUE(none(Affine::rotation(1.0, dvec3(1, 2, 3))));      // tilted, none of its axes on one
+  EXPECT_TRUE(none(Affine::rotation(kPi / 3, dvec3(0, 0, 1))));  // turned about its axis only
   // Upside down from z = 0.1: its bottom rim would land at
   // (0.1 − 0.7) + 0.7 = 0.09999999999999998.
   const Affine flipped = Affine::rotation(kPi, dvec3(1, 0, 0));
