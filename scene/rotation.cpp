@@ -1,12 +1,17 @@
 #include "scene/rotation.h"
 
+#include <cmath>
 #include <numbers>
 
 namespace csgray::detail {
 
 namespace {
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+// An angle is first taken to (−180°, 180°] (exactly: IEEE's remainder),
+// so that one turn written two ways (370° and 10°, −350° and 10°) is one
+// matrix bit for bit, and a hole and its pin turned so meet on the same
+// points; ±a keep their exact mirror images (cos is even, sin odd).
+double radians(double degrees) { return std::remainder(degrees, 360.0) * std::numbers::pi / 180.0; }
 
 }  // namespace
 
