@@ -129,7 +129,8 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
         counts.merges, counts.glued, counts.repairs, counts.repairs == 1 ? "" : "s",
         counts.contacts, counts.contacts == 1 ? "" : "s", counts.grazes,
         counts.grazes == 1 ? "" : "s", counts.strayShells, counts.strayShells == 1 ? "" : "s",
-        counts.sweepsApart      ? "; made on a last try, sweeps of touching regions taken apart"
+        counts.holesFilled   ? "; made on a last try, holes that pins of their radius fill left out"
+        : counts.sweepsApart ? "; made on a last try, sweeps of touching regions taken apart"
         : counts.pinchesOpened  ? "; made on a last try, regions that touch themselves opened there"
         : counts.reordered == 0 ? ""
         : counts.reordered == 1 ? "; made on a second try, each union's operands in reverse order"

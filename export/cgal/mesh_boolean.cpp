@@ -33,6 +33,7 @@
 #include "export/cgal/rounded_repair.h"
 #include "export/cgal/stray_shells.h"
 #include "export/collinear_points.h"
+#include "export/filled_holes.h"
 #include "export/grazed_faces.h"
 #include "export/merged_sweeps.h"
 #include "export/opened_pinches.h"
@@ -1798,8 +1799,18 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
     // The last tries, each from the part as given; whatever stops them,
-    // the first error stands. Sweeps of touching regions taken apart
-    // (export/sweeps_apart.h):
+    // the first error stands. Holes that pins of their radius fill left
+    // out (export/filled_holes.h):
+    try {
+      const SolidPtr filled = filledHolesDropped(solid.shared_from_this());
+      if (filled.get() != &solid) {
+        PartMesh part = meshInOrders(*filled, tolerance, stored, counts, doubles);
+        counts.holesFilled = true;
+        return part;
+      }
+    } catch (const std::exception&) {
+    }
+    // Sweeps of touching regions taken apart (export/sweeps_apart.h):
     try {
       const SolidPtr apart = sweepsTakenApart(solid.shared_from_this());
       if (apart.get() != &solid) {

@@ -33,6 +33,7 @@ struct MeshBooleanStats {
   std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
   std::size_t strayShells = 0;    // slivers outside the exact part, removed
   std::size_t grazes = 0;         // flat cutters moved clear of a part they only graze
+  bool holesFilled = false;       // made on a last try, holes that pins fill left out
   bool sweepsApart = false;       // made on a last try, sweeps of touching regions taken apart
   bool pinchesOpened = false;     // made on a last try, regions that touch themselves opened
   // 0: made with the operands in the script's order; 1: reversed, on a

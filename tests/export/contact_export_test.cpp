@@ -1335,6 +1335,26 @@ TEST(ContactExport, PinsTurnedOverOrAboutTheirAxesMeetTheirHolesWalls) {
       8000.0 - kPi * 9.0 * 30.0 + 8.0 * 27.0 / 3.0, kTolerance * (6 * 400.0 + 2 * kPi * 3 * 30));
 }
 
+TEST(ContactExport, APinThroughABoreCutFlushWithBothFacesFillsIt) {
+  // A tube r = 5, 2 long, its bore cut flush with both faces, and a pin
+  // of the bore's radius through it from 1 below to 1 above: for bores
+  // r = 1 and 3 no contact's offset made the union a 2-manifold. Also a
+  // countersink refilled by its own frustum.
+  for (double r : {1.0, 3.0}) {
+    const std::string rs = std::to_string(r);
+    exportsValid("return cylinder{r=5, h=2} - cylinder{r=" + rs + ", h=2}\n" +
+                     "       + cylinder{r=" + rs + ", h=4}:translate(0, 0, -1)",
+                 kPi * (25.0 * 2.0 + r * r * 2.0),
+                 kTolerance * (2 * kPi * 25 + 2 * kPi * 5 * 2 + 2 * kPi * r * 4));
+  }
+  // A box 10 × 10 × 3 less a frustum r = 1 to 3 through it, plus that
+  // frustum: the box.
+  exportsValid(
+      "return box{size={10, 10, 3}}:translate(-5, -5, 0) - cylinder{r1=1, r2=3, h=3}\n"
+      "       + cylinder{r1=1, r2=3, h=3}",
+      300.0, kTolerance * (2 * 100.0 + 4 * 30.0));
+}
+
 TEST(ContactExport, ScaledPinsMeetTheirHolesWalls) {
   // Pins scaled to a hole's radius take the polygon of that radius: r = 5
   // scaled by 1.2 through a swept plate's hole r = 6; r = 3 scaled by 2
