@@ -27,24 +27,21 @@ std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const 
   const glm::dmat4& m = frame.worldFromObject();
   const int zAxis = axisOf(m[2]), xAxis = axisOf(m[0]), yAxis = axisOf(m[1]);
   if (zAxis < 0) return nullptr;
-  const double height = std::abs(m[2][zAxis]);
   const bool down = m[2][zAxis] < 0.0;
   glm::dmat4 upright = m;
-  upright[2] = glm::dvec4(0.0);
-  upright[2][zAxis] = 1.0;
-  double radial = 1.0;
+  upright[2] = down ? -m[2] : m[2];
   if (xAxis >= 0 && yAxis >= 0) {
     // Its own x and y along the other two axes in their order: a turn of
     // a quarter about its axis, and a mirror that swaps x and y, map it
-    // onto itself too.
-    radial = std::abs(m[0][xAxis]);
+    // onto itself too. Their scales stay in the frame, where those of
+    // the solids scaled with it are (a part scaled as a whole: a sweep's
+    // hole takes its pin's rim as the two are placed).
+    const double radial = std::abs(m[0][xAxis]);
     if (std::abs(m[1][yAxis]) != radial) return nullptr;  // an elliptic cylinder
-    if (radial == 1.0 && height == 1.0 && !down && m[0][xAxis] > 0.0 && m[1][yAxis] > 0.0 &&
-        xAxis < yAxis)
-      return nullptr;
+    if (!down && m[0][xAxis] > 0.0 && m[1][yAxis] > 0.0 && xAxis < yAxis) return nullptr;
     upright[0] = upright[1] = glm::dvec4(0.0);
-    upright[0][std::min(xAxis, yAxis)] = 1.0;
-    upright[1][std::max(xAxis, yAxis)] = 1.0;
+    upright[0][std::min(xAxis, yAxis)] = radial;
+    upright[1][std::max(xAxis, yAxis)] = radial;
   } else {
     // Turned about its axis by another angle (a pin turned onto a bolt
     // circle), which stays: a reversed axis is undone by half a turn
@@ -53,27 +50,25 @@ std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const 
     // base); a mirror otherwise by reversing its own x (mirror(1, 0, 0)).
     if (m[0][zAxis] != 0.0 || m[1][zAxis] != 0.0) return nullptr;
     const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
-    if (!down && !mirrored && height == 1.0) return nullptr;
+    if (!down && !mirrored) return nullptr;
     if (down && !mirrored) upright[1] = -m[1];
     if (!down && mirrored) upright[0] = -m[0];
   }
   // (x, y, z) → (−x, y, z) and (x, −y, z) map a frustum onto itself, and
   // (x, y, h − z) onto the one with its radii swapped, which stands where
-  // the top rim was; a scale of x and y alike is one of the radii, of z
-  // one of the height.
+  // the top rim was.
   const double h = cylinder.height();
   upright[3] = down ? m * glm::dvec4(0.0, 0.0, h, 1.0) : m[3];
   const Affine placed = Affine::fromMatrix(upright);
-  const double r1 = radial * (down ? cylinder.r2() : cylinder.r1());
-  const double r2 = radial * (down ? cylinder.r1() : cylinder.r2());
-  const double length = height * h;
   // The rims where they were, bit for bit.
   const dvec3 bottom = frame.pointToWorld(dvec3(0.0)), top = frame.pointToWorld(dvec3(0.0, 0.0, h));
   if (placed.pointToWorld(dvec3(0.0)) != (down ? top : bottom) ||
-      placed.pointToWorld(dvec3(0.0, 0.0, length)) != (down ? bottom : top))
+      placed.pointToWorld(dvec3(0.0, 0.0, h)) != (down ? bottom : top))
     return nullptr;
-  return std::static_pointer_cast<const Cylinder>(
-      cylinder.withSize(r1, r2, length)->withFrame(placed));
+  const SolidPtr shape = down
+                             ? cylinder.withSize(cylinder.r2(), cylinder.r1(), h)->withFrame(placed)
+                             : cylinder.withFrame(placed);
+  return std::static_pointer_cast<const Cylinder>(shape);
 }
 
 }  // namespace csgray::detail

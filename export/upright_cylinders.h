@@ -7,8 +7,7 @@
 // left faces that cross. The same cylinder turned the right way up
 // (standing where its top rim was) and not mirrored has the bore's points;
 // so has a countersink's cone on its screw's shank, turned with it, and a
-// pin turned a quarter about its own axis. A cylinder scaled to a radius
-// is cut on the polygon of that radius, as a cylinder of that radius is.
+// pin turned a quarter about its own axis.
 #pragma once
 
 #include <memory>
@@ -19,15 +18,17 @@
 namespace csgray::detail {
 
 // `cylinder` (a cylinder or a cone frustum) as placed by `frame`, made the
-// same solid in the one frame of its axis's direction where `frame`'s axes
-// lie along coordinate axes: its axis along +x, +y or +z (where `frame`
-// has it reversed, it stands on its top rim, its radii swapped), its own
-// x and y along the other two in their order (x before y before z), and
-// a scale of x and y alike or of z taken into its radii or height. Null
-// when the frame is that already, an axis does not lie along a coordinate
-// axis, x and y are scaled apart (an elliptic cylinder), or the rims would
-// not land on exactly the same planes (the height added to the bottom's
-// coordinate and taken off again rounds).
+// same solid in the one frame of its axis's direction where `frame`'s
+// axes lie along coordinate axes: its axis along +x, +y or +z (where
+// `frame` has it reversed, it stands on its top rim, its radii swapped),
+// its own x and y along the other two in their order (x before y before
+// z), each scaled as `frame` scales it. Where its x and y lie off the
+// axes (turned about its axis by another angle), a reversed axis or a
+// mirror is undone by turning it over about its own x or reversing that.
+// Null when the frame is that already, its axis does not lie along a
+// coordinate axis, x and y are scaled apart (an elliptic cylinder), or
+// the rims would not land on exactly the same planes (the height added to
+// the bottom's coordinate and taken off again rounds).
 std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const Affine& frame);
 
 }  // namespace csgray::detail

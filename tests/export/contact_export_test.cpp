@@ -1355,22 +1355,17 @@ TEST(ContactExport, APinThroughABoreCutFlushWithBothFacesFillsIt) {
       300.0, kTolerance * (2 * 100.0 + 4 * 30.0));
 }
 
-TEST(ContactExport, ScaledPinsMeetTheirHolesWalls) {
-  // Pins scaled to a hole's radius take the polygon of that radius: r = 5
-  // scaled by 1.2 through a swept plate's hole r = 6; r = 3 scaled by 2
-  // (and 3 along its axis) in a ring's bore r = 6. With the polygons of
-  // their own radii scaled, crevices were left that the check found.
+TEST(ContactExport, APartScaledAsAWholeKeepsItsPinsInTheirHoles) {
+  // A swept disc r = 20 with a hole r = 2 turned 10° onto a circle of 14,
+  // 4 thick, and a pin through it from 3 below, all scaled by 1.5: the
+  // sweep's hole takes the pin's rim as the two are placed, scaled.
+  const double s = 1.5;
   exportsValid(
-      "local plate = linear_extrude{square{size={40, 40}, center=true} - circle(6), height=5}\n"
-      "return plate + cylinder{r=5, h=10}:scale(1.2, 1.2, 1)",
-      40.0 * 40.0 * 5.0 + kPi * 36.0 * 5.0,
-      kTolerance * (2 * 1600.0 + 4 * 40 * 5 + 2 * kPi * 6 * 10));
-  exportsValid(
-      "return (cylinder{r=10, h=5} - cylinder{r=6, h=20, center=true}) + cylinder{r=3, "
-      "h=4}:scale(2, "
-      "2, 3)",
-      kPi * ((100.0 - 36.0) * 5.0 + 36.0 * 12.0),
-      kTolerance * (2 * kPi * 10 * 5 + 2 * kPi * 100 + 2 * kPi * 6 * 12));
+      "local disc = linear_extrude{circle(20) - circle(2):translate(14, 0):rotate(10), height=4}\n"
+      "local pin = cylinder{r=2, h=10}:translate(14, 0, -3):rotate(0, 0, 10)\n"
+      "return (disc + pin):scale(1.5)",
+      s * s * s * kPi * (400.0 * 4.0 + 4.0 * 6.0),
+      s * s * kTolerance * (2 * kPi * 400 + 2 * kPi * 20 * 4 + 2 * kPi * 2 * 10));
 }
 
 TEST(ContactExport, ThePixelKnobIsCutThroughWherePixelsMeet) {

@@ -91,19 +91,22 @@ TEST(UprightCylinders, FrustumsTurnedOppositeWaysAreCutOnTheSamePoints) {
   }
 }
 
-TEST(UprightCylinders, AScaleOfXAndYAlikeIsOneOfTheRadii) {
-  // r = 3 to 1.5, 4 high, scaled by 2 across and 3 along its axis, upside
-  // down: the frustum r = 3 to 6, 12 high, standing where its top was.
-  const Affine frame = Affine::scaling(dvec3(2, 2, 3)).then(Affine::rotation(kPi, dvec3(1, 0, 0)));
-  const auto scaled = frustum(3.0, 1.5, 4.0, frame);
-  const auto upright = uprightCylinder(*scaled, scaled->frame());
+TEST(UprightCylinders, ItsScaleStaysInItsFrame) {
+  // r = 3 to 1.5, 4 high, scaled by 2 across and 3 along its axis, turned
+  // over: the frustum r = 1.5 to 3 scaled so, standing where its top was
+  // (a sweep scaled with it then takes its rim as the two are placed).
+  const Affine scale = Affine::scaling(dvec3(2, 2, 3));
+  const auto turned = frustum(3.0, 1.5, 4.0, scale.then(Affine::rotation(kPi, dvec3(1, 0, 0))));
+  const auto upright = uprightCylinder(*turned, turned->frame());
   ASSERT_NE(upright, nullptr);
-  EXPECT_EQ(upright->r1(), 3.0);
-  EXPECT_EQ(upright->r2(), 6.0);
-  EXPECT_EQ(upright->height(), 12.0);
+  EXPECT_EQ(upright->r1(), 1.5);
+  EXPECT_EQ(upright->r2(), 3.0);
+  EXPECT_EQ(upright->height(), 4.0);
   EXPECT_EQ(pointsOf(*upright),
-            pointsOf(*frustum(3.0, 6.0, 12.0, Affine::translation(dvec3(0, 0, -12)))));
-  // An elliptic cylinder stays as it is.
+            pointsOf(*frustum(1.5, 3.0, 4.0, scale.then(Affine::translation(dvec3(0, 0, -12))))));
+  // Scaled but upright: as it is; an elliptic cylinder too.
+  const auto scaled = frustum(3.0, 3.0, 4.0, scale);
+  EXPECT_EQ(uprightCylinder(*scaled, scaled->frame()), nullptr);
   const auto elliptic = frustum(3.0, 3.0, 4.0, Affine::scaling(dvec3(2, 1, 1)));
   EXPECT_EQ(uprightCylinder(*elliptic, elliptic->frame()), nullptr);
 }
