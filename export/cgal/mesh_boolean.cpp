@@ -1798,40 +1798,28 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
-    // The last tries, each from the part as given; whatever stops them,
-    // the first error stands. Holes that pins of their radius fill left
-    // out (export/filled_holes.h):
-    try {
-      const SolidPtr filled = filledHolesDropped(solid.shared_from_this());
-      if (filled.get() != &solid) {
-        PartMesh part = meshInOrders(*filled, tolerance, stored, counts, doubles);
-        counts.holesFilled = true;
-        return part;
+    // The last tries, each from the part as given, rewritten; whatever
+    // stops them, the first error stands: holes that pins of their radius
+    // fill left out (export/filled_holes.h); sweeps of touching regions
+    // taken apart (export/sweeps_apart.h); sweeps side by side merged even
+    // where that touches itself, and sweeps of regions that touch
+    // themselves opened there (export/opened_pinches.h).
+    const SolidPtr part = solid.shared_from_this();
+    const std::pair<std::function<SolidPtr()>, bool MeshBooleanStats::*> lastTries[] = {
+        {[&] { return filledHolesDropped(part); }, &MeshBooleanStats::holesFilled},
+        {[&] { return sweepsTakenApart(part); }, &MeshBooleanStats::sweepsApart},
+        {[&] { return pinchesOpened(sweepsMerged(part, true), kContactOffset * tolerance); },
+         &MeshBooleanStats::pinchesOpened},
+    };
+    for (const auto& [rewritten, made] : lastTries) {
+      try {
+        const SolidPtr changed = rewritten();
+        if (changed.get() == &solid) continue;
+        PartMesh mesh = meshInOrders(*changed, tolerance, stored, counts, doubles);
+        counts.*made = true;
+        return mesh;
+      } catch (const std::exception&) {
       }
-    } catch (const std::exception&) {
-    }
-    // Sweeps of touching regions taken apart (export/sweeps_apart.h):
-    try {
-      const SolidPtr apart = sweepsTakenApart(solid.shared_from_this());
-      if (apart.get() != &solid) {
-        PartMesh part = meshInOrders(*apart, tolerance, stored, counts, doubles);
-        counts.sweepsApart = true;
-        return part;
-      }
-    } catch (const std::exception&) {
-    }
-    // sweeps side by side merged even where that touches itself, and
-    // sweeps of regions that touch themselves opened there
-    // (export/opened_pinches.h):
-    try {
-      const SolidPtr opened =
-          pinchesOpened(sweepsMerged(solid.shared_from_this(), true), kContactOffset * tolerance);
-      if (opened.get() != &solid) {
-        PartMesh part = meshInOrders(*opened, tolerance, stored, counts, doubles);
-        counts.pinchesOpened = true;
-        return part;
-      }
-    } catch (const std::exception&) {
     }
     throw;
   }
