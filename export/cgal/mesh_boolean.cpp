@@ -39,6 +39,7 @@
 #include "export/opened_pinches.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
+#include "export/turned_balls.h"
 #include "export/upright_cylinders.h"
 #include "tessellation/tessellation.h"
 
@@ -606,12 +607,15 @@ class Evaluator {
 
   // The primitive as it is tessellated: in the evaluation's frame, where
   // a cylinder or cone turned upside down or mirrored is placed the right
-  // way up (export/upright_cylinders.h). Null where that is the primitive
-  // as it is.
+  // way up (export/upright_cylinders.h), and a ball turned or mirrored
+  // unturned (export/turned_balls.h). Null where that is the primitive as
+  // it is.
   std::shared_ptr<const Primitive> placedPrimitive(const Primitive& primitive) const {
     const Affine frame = frame_.identity ? primitive.frame() : frame_.evalFrame(primitive.frame());
     if (auto* cylinder = dynamic_cast<const Cylinder*>(&primitive))
       if (auto upright = uprightCylinder(*cylinder, frame)) return upright;
+    if (auto* ball = dynamic_cast<const Sphere*>(&primitive))
+      if (auto unturned = unturnedBall(*ball, frame)) return unturned;
     if (frame_.identity) return nullptr;
     return std::dynamic_pointer_cast<const Primitive>(primitive.withFrame(frame));
   }

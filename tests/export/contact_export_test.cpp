@@ -1355,6 +1355,19 @@ TEST(ContactExport, APinThroughABoreCutFlushWithBothFacesFillsIt) {
       300.0, kTolerance * (2 * 100.0 + 4 * 30.0));
 }
 
+TEST(ContactExport, ABallTurnedOrMirroredInACupOfItsRadiusFillsIt) {
+  // A plate 10 × 10 × 2 below z = 0 less a ball r = 3 about the origin,
+  // and that ball turned or mirrored put back: the plate and the ball,
+  // less the segment of the ball the plate held, π ∫₋₂⁰ (9 − z²) dz.
+  const double exact = 200.0 + 4.0 / 3.0 * kPi * 27.0 - kPi * (18.0 - 8.0 / 3.0);
+  for (const char* ball :
+       {"sphere(3):rotate(180, 0, 0)", "sphere(3):mirror(1, 0, 0)", "sphere(3):rotate(0, 0, 37)"})
+    exportsValid(std::string("return box{size={10, 10, 2}}:translate(-5, -5, -2) - sphere(3)\n"
+                             "       + ") +
+                     ball,
+                 exact, kTolerance * (2 * 100.0 + 4 * 20.0 + 4 * kPi * 9));
+}
+
 TEST(ContactExport, APartScaledAsAWholeKeepsItsPinsInTheirHoles) {
   // A swept disc r = 20 with a hole r = 2 turned 10° onto a circle of 14,
   // 4 thick, and a pin through it from 3 below, all scaled by 1.5: the
