@@ -39,7 +39,7 @@ class SweptRims {
  public:
   // The part's cylinders (not cones) that do not only cut, each as
   // `placed` gives it (as the export tessellates it: in the evaluation's
-  // frame, upright and unscaled where it can be, export/upright_cylinders.h).
+  // frame, upright and unmirrored where it can be, export/upright_cylinders.h).
   SweptRims(const Solid& part,
             const std::function<std::shared_ptr<const Primitive>(const Primitive&)>& placed);
 

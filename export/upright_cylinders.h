@@ -26,9 +26,10 @@ namespace csgray::detail {
 // axes (turned about its axis by another angle), a reversed axis or a
 // mirror is undone by turning it over about its own x or reversing that.
 // Null when the frame is that already, its axis does not lie along a
-// coordinate axis, x and y are scaled apart (an elliptic cylinder), or
-// the rims would not land on exactly the same planes (the height added to
-// the bottom's coordinate and taken off again rounds).
+// coordinate axis, its x and y lie along axes but are scaled apart (an
+// elliptic cylinder), they lie off the axes and nothing is reversed or
+// mirrored, or the rims would not land on exactly the same planes (the
+// height added to the bottom's coordinate and taken off again rounds).
 std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const Affine& frame);
 
 }  // namespace csgray::detail

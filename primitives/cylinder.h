@@ -23,7 +23,7 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   std::shared_ptr<const Cylinder> withPolygon(const CirclePolygon& polygon) const;
   // This frustum with other radii and height, in the same frame and of the
   // same material: placed by another frame, the same solid again
-  // (export/upright_cylinders.h: turned upside down, or unscaled).
+  // (export/upright_cylinders.h: turned upside down, its radii swapped).
   std::shared_ptr<const Cylinder> withSize(double r1, double r2, double height) const;
 
  protected:
