@@ -65,9 +65,8 @@ std::shared_ptr<const Cylinder> uprightCylinder(const Cylinder& cylinder, const 
   if (placed.pointToWorld(dvec3(0.0)) != (down ? top : bottom) ||
       placed.pointToWorld(dvec3(0.0, 0.0, h)) != (down ? bottom : top))
     return nullptr;
-  const SolidPtr shape = down
-                             ? cylinder.withSize(cylinder.r2(), cylinder.r1(), h)->withFrame(placed)
-                             : cylinder.withFrame(placed);
+  const SolidPtr shape =
+      down ? cylinder.withRadiiSwapped()->withFrame(placed) : cylinder.withFrame(placed);
   return std::static_pointer_cast<const Cylinder>(shape);
 }
 

@@ -21,10 +21,10 @@ class Cylinder : public PrimitiveShape<Cylinder> {
   // For export: this cylinder with both rims on `polygon` instead of the
   // polygon of its radius (export/swept_rims.h: a full turn's ring).
   std::shared_ptr<const Cylinder> withPolygon(const CirclePolygon& polygon) const;
-  // This frustum with other radii and height, in the same frame and of the
-  // same material: placed by another frame, the same solid again
-  // (export/upright_cylinders.h: turned upside down, its radii swapped).
-  std::shared_ptr<const Cylinder> withSize(double r1, double r2, double height) const;
+  // This frustum with its radii swapped (r2 at the bottom), in the same
+  // frame and of the same material: turned upside down, the same solid
+  // again (export/upright_cylinders.h).
+  std::shared_ptr<const Cylinder> withRadiiSwapped() const;
 
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;

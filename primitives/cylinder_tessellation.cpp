@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "primitives/cylinder.h"
@@ -61,10 +62,10 @@ std::shared_ptr<const Cylinder> Cylinder::withPolygon(const CirclePolygon& polyg
   return copy;
 }
 
-std::shared_ptr<const Cylinder> Cylinder::withSize(double r1, double r2, double height) const {
+std::shared_ptr<const Cylinder> Cylinder::withRadiiSwapped() const {
   auto copy = std::make_shared<Cylinder>(*this);
-  copy->r1_ = r1, copy->r2_ = r2, copy->height_ = height;
-  copy->slope_ = (r2 - r1) / height;
+  std::swap(copy->r1_, copy->r2_);
+  copy->slope_ = -slope_;
   copy->polygon_.reset();
   return copy;
 }
