@@ -2,8 +2,8 @@
 -- swept from a 2D profile with a bore and six holes on a bolt circle, and
 -- each pin, a cylinder of the hole's radius, is turned into place about
 -- the flange's axis. For export each hole is cut into its pin's own
--- polygon, turned as the pin is, and the walls the two share are made
--- flush, so the mesh is one solid with no crevice round the pins
+-- polygon, and the walls the two share are made flush, so the mesh is
+-- one solid with no crevice round the pins
 -- (docs/cli.md, "Contacts").
 --   csgray render examples/dowel_flange.lua -o dowel_flange.png
 --   csgray export examples/dowel_flange.lua -o dowel_flange.stl

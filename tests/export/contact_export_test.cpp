@@ -93,11 +93,13 @@ TEST(ContactExport, FrustumsStackedOnSharedRims) {
 // ---- Along an edge, at a point --------------------------------------------------
 
 TEST(ContactExport, SolidsStackedOnTheSameFacesAreGluedNotCorefined) {
-  // A shaft on a hub of its radius, and two frustums on a shared rim of
-  // nearby radii (one rung of the segment ladder): their faces in the
-  // plane of contact are the same triangles, which the union drops.
+  // A shaft on a hub of its radius (turned about its axis by 1° or not),
+  // and two frustums on a shared rim of nearby radii (one rung of the
+  // segment ladder): their faces in the plane of contact are the same
+  // triangles, which the union drops.
   for (const char* source :
        {"return cylinder{r=30, h=30} + cylinder{r=30, h=30}:translate(0, 0, 30)",
+        "return cylinder{r=8, h=10} + cylinder{r=8, h=10}:rotate(0, 0, 1):translate(0, 0, 10)",
         "return cylinder{r1=20, r2=20.5, h=2} + cylinder{r1=20.5, r2=21.5, h=2}:translate(0, 0, 2)",
         "return (cylinder{r=5, h=2} + cylinder{r=5, h=3}:translate(0, 0, 2)):rotate(90, 30, 0)"}) {
     SCOPED_TRACE(source);
@@ -129,7 +131,7 @@ TEST(ContactExport, AGridOfCubesIsOneSolid) {
 
 TEST(ContactExport, SolidsStackedOnFacesThatDifferAreCorefined) {
   // The same segments but another radius, a smaller box on a larger one,
-  // a cylinder turned about its axis: the faces in the plane differ, so
+  // a cylinder scaled a little across: the faces in the plane differ, so
   // the glue refuses and the corefinement makes the union.
   const double h = 10;
   struct Case {
@@ -141,8 +143,8 @@ TEST(ContactExport, SolidsStackedOnFacesThatDifferAreCorefined) {
       {"return cylinder{r=30, h=10} + cylinder{r=29.9, h=10}:translate(0, 0, 10)",
        kPi * (30 * 30 + 29.9 * 29.9) * h, kTolerance * 4 * kPi * 30 * (30 + h)},
       {"return box(10) + box(4):translate(3, 3, 10)", 1000.0 + 64.0, 1e-9},
-      {"return cylinder{r=8, h=10} + cylinder{r=8, h=10}:rotate(0, 0, 1):translate(0, 0, 10)",
-       kPi * 64 * 2 * h, kTolerance * 4 * kPi * 8 * (8 + h)},
+      {"return cylinder{r=8, h=10} + cylinder{r=8, h=10}:scale(1.01, 1, 1):translate(0, 0, 10)",
+       kPi * 64 * 2.01 * h, kTolerance * 4 * kPi * 8 * (8 + h)},
   };
   for (const Case& c : cases) {
     MeshBooleanStats stats;
@@ -1311,12 +1313,17 @@ TEST(ContactExport, APinUpsideDownInASweptHoleMeetsItsWall) {
 
 TEST(ContactExport, PinsTurnedOverOrAboutTheirAxesMeetTheirHolesWalls) {
   // A pin of a hole's radius that is turned another way than its hole:
-  // a quarter about its own axis; turned over, then onto a bolt circle
-  // with the hole; mirrored, then so. Each crossed its hole's faces.
-  exportsValid(
-      "return box{size={10, 10, 2}, center=true} - cylinder{r=3, h=2, center=true}\n"
-      "       + cylinder{r=3, h=4, center=true}:rotate(0, 0, 90)",
-      200.0 + kPi * 9.0 * 2.0, kTolerance * (2 * 100.0 + 4 * 20.0 + 2 * kPi * 3 * 4));
+  // a quarter about its own axis, or 33.3° or 95° (its polygon then left
+  // crevices in the hole's), or mirrored across a diagonal; turned over,
+  // then onto a bolt circle with the hole; mirrored, then so. Each
+  // crossed its hole's faces or left crevices.
+  for (const char* turn :
+       {"rotate(0, 0, 90)", "rotate(0, 0, 33.3)", "rotate(0, 0, 95)", "mirror(1, 1, 0)"})
+    exportsValid(
+        "return box{size={10, 10, 2}, center=true} - cylinder{r=3, h=2, center=true}\n"
+        "       + cylinder{r=3, h=4, center=true}:" +
+            std::string(turn),
+        200.0 + kPi * 9.0 * 2.0, kTolerance * (2 * 100.0 + 4 * 20.0 + 2 * kPi * 3 * 4));
   for (const char* pin : {"cylinder{r=3, h=8, center=true}:rotate(180, 0, 0)",
                           "cylinder{r=3, h=8, center=true}:mirror(1, 0, 0)"})
     exportsValid(

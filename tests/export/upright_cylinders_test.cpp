@@ -47,13 +47,15 @@ TEST(UprightCylinders, TurnedOrMirroredFrustumsAreCutOnTheUprightOnesPoints) {
       {"half a turn about z", Affine::rotation(kPi, dvec3(0, 0, 1)), Affine(), false},
       {"mirrored in y", Affine::mirror(dvec3(0, 1, 0)), Affine(), false},
       {"mirrored in z", Affine::mirror(dvec3(0, 0, 1)), down, true},
-      // Then turned onto a bolt circle: the pin placed there upright.
+      // Then turned about its axis: placed there upright and unturned.
       {"half a turn about x, then 60° about z",
-       Affine::rotation(kPi, dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))),
-       down.then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))), true},
+       Affine::rotation(kPi, dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))), down,
+       true},
       {"mirrored in x, then turned 60° about z",
-       Affine::mirror(dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))),
-       Affine::rotation(kPi / 3, dvec3(0, 0, 1)), false},
+       Affine::mirror(dvec3(1, 0, 0)).then(Affine::rotation(kPi / 3, dvec3(0, 0, 1))), Affine(),
+       false},
+      {"turned 33.3° about z", Affine::rotation(33.3 * kPi / 180, dvec3(0, 0, 1)), Affine(), false},
+      {"mirrored across the diagonal x = y", Affine::mirror(dvec3(1, 1, 0)), Affine(), false},
   };
   for (const Turned& c : cases)
     for (const auto& [r1, r2] : {std::pair(2.0, 2.0), std::pair(2.0, 4.5)}) {
@@ -111,6 +113,27 @@ TEST(UprightCylinders, ItsScaleStaysInItsFrame) {
   EXPECT_EQ(uprightCylinder(*elliptic, elliptic->frame()), nullptr);
 }
 
+TEST(UprightCylinders, TurnedAboutItsAxisItKeepsItsScaleBitForBit) {
+  // Scaled by 2.5 across, then turned about its axis by angles whose sines
+  // and cosines round: unturned, its radius is 2.5 times its own exactly,
+  // the radius of a hole scaled so and not turned.
+  const Affine scale = Affine::scaling(dvec3(2.5, 2.5, 1));
+  const auto hole = frustum(2.0, 2.0, 4.0, scale);
+  for (double degrees : {1.0, 33.3, 95.0, 137.0, 200.0, 301.7}) {
+    SCOPED_TRACE(degrees);
+    const auto pin =
+        frustum(2.0, 2.0, 4.0, scale.then(Affine::rotation(degrees * kPi / 180, dvec3(0, 0, 1))));
+    const auto upright = uprightCylinder(*pin, pin->frame());
+    ASSERT_NE(upright, nullptr);
+    EXPECT_EQ(pointsOf(*upright), pointsOf(*hole));
+  }
+  // An elliptic cylinder turned about its axis stays turned.
+  const auto elliptic =
+      frustum(2.0, 2.0, 4.0,
+              Affine::scaling(dvec3(2, 1, 1)).then(Affine::rotation(kPi / 5, dvec3(0, 0, 1))));
+  EXPECT_EQ(uprightCylinder(*elliptic, elliptic->frame()), nullptr);
+}
+
 TEST(UprightCylinders, UprightTiltedOrRoundingFrustumsAreLeftAsTheyAre) {
   const auto none = [](const Affine& frame) {
     const auto c = frustum(2.0, 2.0, 0.7, frame);
@@ -120,7 +143,6 @@ TEST(UprightCylinders, UprightTiltedOrRoundingFrustumsAreLeftAsTheyAre) {
   EXPECT_TRUE(none(Affine::translation(dvec3(1, -2, 3))));
   EXPECT_TRUE(none(Affine::rotation(kPi / 4, dvec3(1, 0, 0))));  // tilted
   EXPECT_TRUE(none(Affine::rotation(1.0, dvec3(1, 2, 3))));      // tilted, none of its axes on one
-  EXPECT_TRUE(none(Affine::rotation(kPi / 3, dvec3(0, 0, 1))));  // turned about its axis only
   // Upside down from z = 0.1: its bottom rim would land at
   // (0.1 − 0.7) + 0.7 = 0.09999999999999998.
   const Affine flipped = Affine::rotation(kPi, dvec3(1, 0, 0));
