@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tessellation/triangle_mesh.h"
@@ -27,5 +28,13 @@ struct ShellApproach {
 };
 
 ShellApproach nearestShells(const TriangleMesh& mesh, const MeshShells& shells);
+
+// The shells within `distance` of each other (a vertex of one within it of
+// a vertex or a face of another: solids that touch, kept apart by a hair)
+// joined into groups: for each shell number, the least shell number of its
+// group. Nothing where the pairs ran past a budget, before all were seen.
+std::optional<std::vector<std::uint32_t>> shellGroupsWithin(const TriangleMesh& mesh,
+                                                            const MeshShells& shells,
+                                                            double distance);
 
 }  // namespace csgray::detail

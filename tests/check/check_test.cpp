@@ -575,12 +575,45 @@ TEST(Check, ASlotThatCutsThePartInTwoIsWarnedOf) {
   EXPECT_NE(w.message.find("within 0.16 of each other"), std::string::npos) << w.message;
 }
 
-TEST(Check, PartsApartInAUnionAreNotACut) {
-  const Scene scene = script("return box(10) + box(10):translate(20, 0, 0)\n");
+// The part's mesh falls into `shells` shells, the model is `pieces`
+// pieces, and more shells than pieces (and only that) is warned of.
+void expectPieces(const std::string& source, std::size_t shells, std::size_t pieces) {
+  SCOPED_TRACE(source);
+  const Scene scene = script(source);
   const CheckReport report = checkPart(*scene.objects[0], quick());
-  EXPECT_EQ(report.shells, 2u);
-  EXPECT_EQ(report.modelPieces, 2u);
-  EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
+  EXPECT_EQ(report.shells, shells);
+  EXPECT_EQ(report.modelPieces, pieces);
+  EXPECT_EQ(hasWarning(report, "separate shells"), shells > pieces)
+      << checkReportText(report, "part");
+}
+
+TEST(Check, PartsApartInAUnionAreNotACut) {
+  expectPieces("return box(10) + box(10):translate(20, 0, 0)\n", 2, 2);
+}
+
+TEST(Check, PartsInsideEachOthersBoxesThatDoNotTouchAreApart) {
+  // Printed in place: a ring around a rod it does not touch, two links of
+  // a chain, a pin with its head in a sleeve on a plate, 0.3 clear of it.
+  // Their boxes overlap, yet each is a piece of its own, and no cut.
+  expectPieces(
+      "return (cylinder{r=10, h=2, center=true} - cylinder{r=8, h=4, center=true})\n"
+      "       + cylinder{r=3, h=20, center=true}",
+      2, 2);
+  expectPieces(
+      "local link = torus{R=5, r=1}\nreturn link + link:rotate(90, 0, 0):translate(5, 0, 0)", 2, 2);
+  expectPieces(
+      "local sleeve = cylinder{r=4, h=10}:translate(10, 10, 2)\n"
+      "              - cylinder{r=2.3, h=12}:translate(10, 10, 1)\n"
+      "local pin = cylinder{r=2, h=10}:translate(10, 10, 2.5)\n"
+      "          + cylinder{r=3.5, h=1}:translate(10, 10, 12.5)\n"
+      "return box{size={20, 20, 2}} + sleeve + pin",
+      2, 2);
+}
+
+TEST(Check, SolidsKeptApartWhereTheyTouchAreOnePiece) {
+  // A cone's tip on a box: the export keeps the two a hair apart, two
+  // shells of one piece, and says so.
+  expectPieces("return box{size={10, 10, 2}} + cone{r1=0, r2=3, h=4}:translate(5, 5, 2)", 2, 1);
 }
 
 TEST(Check, ACrescentThinnerThanACellIsMeasuredWithinItsGrids) {
@@ -598,21 +631,13 @@ TEST(Check, TheLettersOfAWordAreItsPiecesNotACut) {
   // One sweep of a region of loops apart: each outer loop a piece. "ij"
   // is four (two stems, two dots); a box beside it is one more, and a
   // plate under the letters joins them all into one.
-  for (const auto& [source, pieces] : std::vector<std::pair<std::string, std::size_t>>{
-           {"return linear_extrude{text{\"ij\", size=10}, height=2}", 4u},
-           {"return linear_extrude{text{\"ij\", size=10}, height=2} + "
-            "box(3):translate(30, 0, 0)",
-            5u},
-           {"return linear_extrude{text{\"ij\", size=10}, height=2} + "
-            "box{size={20, 20, 1}}:translate(-5, -5, -1)",
-            1u}}) {
-    SCOPED_TRACE(source);
-    const Scene scene = script(source);
-    const CheckReport report = checkPart(*scene.objects[0], quick());
-    EXPECT_EQ(report.modelPieces, pieces);
-    EXPECT_EQ(report.shells, pieces);
-    EXPECT_FALSE(hasWarning(report, "separate shells")) << checkReportText(report, "part");
-  }
+  expectPieces("return linear_extrude{text{\"ij\", size=10}, height=2}", 4, 4);
+  expectPieces(
+      "return linear_extrude{text{\"ij\", size=10}, height=2} + box(3):translate(30, 0, 0)", 5, 5);
+  expectPieces(
+      "return linear_extrude{text{\"ij\", size=10}, height=2} + "
+      "box{size={20, 20, 1}}:translate(-5, -5, -1)",
+      1, 1);
 }
 
 TEST(Check, ThinWallsAndNarrowGapsAreMeasured) {
