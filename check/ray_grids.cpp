@@ -180,26 +180,36 @@ class GridTracer {
       Boundary boundary;
       bool entering;
     };
+    // Operands of a union that share a face or stand on one another are
+    // ordinary modelling, which the export joins: only a difference's or
+    // an intersection's faces that coincide change what the part is, and a
+    // union's operands are only looked into, those the ray meets found
+    // through its tree (a union of thousands, met by each grid ray).
+    // Cutters of a difference that meet each other only make one larger
+    // cutter; what matters is where they meet what they cut.
+    auto* boolean = dynamic_cast<const Boolean*>(&node);
+    const bool union_ = boolean && boolean->op() == Boolean::Op::Union;
     std::vector<Mark> marks;
     SpanList spans;
-    for (std::uint32_t i = 0; i < operands.size(); ++i) {
-      const Solid& operand = *operands[i];
-      if (!operand.bounds().hitBy(ray)) continue;
+    auto scan = [&](std::uint32_t i, const Solid& operand) {
       operand.spans(ray, spans);
       for (const Span& s : spans) {
         if (s.length() <= epsilon_ && std::isfinite(s.in.t)) zeroLength(s, ray, tally);
+        if (union_) continue;
         if (std::isfinite(s.in.t)) marks.push_back({s.in.t, i, s.in, true});
         if (std::isfinite(s.out.t)) marks.push_back({s.out.t, i, s.out, false});
       }
       scanOperands(operand, ray, tally);
+    };
+    if (union_) {
+      boolean->forEachOperandHitBy(ray, [&](const Solid& operand) {
+        scan(0, operand);
+        return true;
+      });
+      return;
     }
-    // Operands of a union that share a face or stand on one another are
-    // ordinary modelling, which the export joins: only a difference's or
-    // an intersection's faces that coincide change what the part is.
-    // Cutters of a difference that meet each other only make one larger
-    // cutter; what matters is where they meet what they cut.
-    auto* boolean = dynamic_cast<const Boolean*>(&node);
-    if (boolean && boolean->op() == Boolean::Op::Union) return;
+    for (std::uint32_t i = 0; i < operands.size(); ++i)
+      if (operands[i]->bounds().hitBy(ray)) scan(i, *operands[i]);
     const bool difference = boolean && boolean->op() == Boolean::Op::Difference;
     std::sort(marks.begin(), marks.end(), [](const Mark& a, const Mark& b) { return a.t < b.t; });
     for (std::size_t a = 0; a < marks.size(); ++a)

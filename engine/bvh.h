@@ -46,6 +46,13 @@ class Bvh {
   template <class Visit>
   void traverse(const Ray& ray, double& tMax, Visit&& visit) const;
 
+  // Calls visit(item) for every item whose box holds p, or comes within
+  // `slack` of it (a box rounded inward by a hair still holds its solid's
+  // points), unbounded items first; visit returns false to stop. No
+  // allocation.
+  template <class Visit>
+  void forEachHolding(const dvec3& p, double slack, Visit&& visit) const;
+
   static constexpr int kWidth = 4;
 
  private:
@@ -137,6 +144,41 @@ void Bvh::traverse(const Ray& ray, double& tMax, Visit&& visit) const {
       if (top == 0) return;
       e = stack[--top];
     } while (e.t > tMax);
+  }
+}
+
+template <class Visit>
+void Bvh::forEachHolding(const dvec3& p, double slack, Visit&& visit) const {
+  for (std::uint32_t item : unbounded_)
+    if (!visit(item)) return;
+  if (nodes_.empty()) return;
+  auto holds = [&](const dvec3& lo, const dvec3& hi) {
+    for (int a = 0; a < 3; ++a)
+      if (!(p[a] >= lo[a] - slack && p[a] <= hi[a] + slack)) return false;
+    return true;
+  };
+  if (items_.size() == 1) {
+    if (holds(onlyBox_.lo, onlyBox_.hi)) visit(items_[0]);
+    return;
+  }
+  // Nodes whose box holds p, waiting to be opened: each pushes at most
+  // four, and the tree is at most kMaxDepth deep.
+  std::uint32_t stack[kWidth * kMaxDepth + 1];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    for (int c = 0; c < kWidth; ++c) {
+      if (!holds(dvec3(node.lo[0][c], node.lo[1][c], node.lo[2][c]),
+                 dvec3(node.hi[0][c], node.hi[1][c], node.hi[2][c])))
+        continue;
+      if (node.count[c] == kInner) {
+        stack[top++] = node.first[c];
+        continue;
+      }
+      for (std::uint32_t i = node.first[c]; i < node.first[c] + node.count[c]; ++i)
+        if (!visit(items_[i])) return;
+    }
   }
 }
 

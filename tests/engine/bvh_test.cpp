@@ -71,6 +71,29 @@ TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesTheRayMeets) {
   }
 }
 
+TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesHoldAPoint) {
+  std::mt19937_64 rng(11);
+  for (int n : {1, 2, 3, 7, 64, 1000}) {
+    std::vector<Bounds> boxes = randomBoxes(rng, n);
+    boxes.push_back(Bounds{});              // empty: never visited
+    boxes.push_back(Bounds::everything());  // unbounded: always visited
+    Bvh bvh(boxes);
+    for (int r = 0; r < 300; ++r) {
+      // Points anywhere, and on a box's corner (held: boxes are closed).
+      const dvec3 p = r % 4 == 0 ? boxes[r % n].hi : randomPoint(rng, kWorld);
+      std::set<std::uint32_t> expected, visited;
+      for (std::uint32_t i = 0; i < std::uint32_t(n); ++i)
+        if (boxes[i].contains(p)) expected.insert(i);
+      expected.insert(std::uint32_t(n + 1));
+      bvh.forEachHolding(p, 0.0, [&](std::uint32_t item) {
+        EXPECT_TRUE(visited.insert(item).second) << "item " << item << " visited twice";
+        return true;
+      });
+      ASSERT_EQ(visited, expected) << "n = " << n << ", point " << r;
+    }
+  }
+}
+
 // Trees of one to five boxes (one bounded box takes a path of its own)
 // visit a box with the entry t of its slab test, also for rays parallel to
 // an axis that run in the plane of a face (0·inf in the test).
@@ -222,6 +245,35 @@ TEST(BooleanBvh, SpansEqualThePlainFoldOnRandomRays) {
         if (::testing::Test::HasFailure())
           FAIL() << "op " << int(op) << ", n = " << n << ", ray " << r;
       }
+    }
+  }
+}
+
+TEST(BooleanBvh, ContainsEqualsThePlainFoldAtRandomPoints) {
+  // A union, and a difference of many cutters, asked through the tree,
+  // against every operand asked in turn.
+  std::mt19937_64 rng(12);
+  for (Boolean::Op op : {Boolean::Op::Union, Boolean::Op::Difference}) {
+    for (int n : {3, 40, 400}) {
+      std::vector<SolidPtr> operands = randomSolids(rng, n, op == Boolean::Op::Union);
+      if (op == Boolean::Op::Difference)
+        operands.insert(
+            operands.begin(),
+            Primitive::create<Box>(dvec3(14.0))->transformed(Affine::translation(dvec3(-7.0))));
+      Boolean node(op, operands);
+      int inside = 0;
+      for (int r = 0; r < 2000; ++r) {
+        const dvec3 p = randomPoint(rng, kWorld);
+        bool expected = op == Boolean::Op::Difference && operands[0]->contains(p);
+        for (std::size_t i = op == Boolean::Op::Difference ? 1 : 0; i < operands.size(); ++i)
+          if (operands[i]->contains(p)) expected = op == Boolean::Op::Union;
+        ASSERT_EQ(node.contains(p), expected)
+            << "op " << int(op) << ", n = " << n << ", point " << r;
+        inside += expected;
+      }
+      // (The union's half-spaces may fill the whole box.)
+      EXPECT_GT(inside, 0);
+      if (op == Boolean::Op::Difference) EXPECT_LT(inside, 2000);
     }
   }
 }
