@@ -37,6 +37,16 @@ std::vector<Bounds> randomBoxes(std::mt19937_64& rng, int n) {
   return boxes;
 }
 
+// n random boxes, then an empty one (never visited) at n, an unbounded
+// one (always visited) at n + 1 and one unbounded along z at n + 2.
+std::vector<Bounds> randomBoxesAndOthers(std::mt19937_64& rng, int n) {
+  std::vector<Bounds> boxes = randomBoxes(rng, n);
+  boxes.push_back(Bounds{});
+  boxes.push_back(Bounds::everything());
+  boxes.push_back({dvec3(0, 0, -kInfinity), dvec3(1, 1, kInfinity)});
+  return boxes;
+}
+
 Ray randomRay(std::mt19937_64& rng) {
   return Ray(randomPoint(rng, Bounds{dvec3(-15.0), dvec3(15.0)}), randomDirection(rng));
 }
@@ -44,10 +54,7 @@ Ray randomRay(std::mt19937_64& rng) {
 TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesTheRayMeets) {
   std::mt19937_64 rng(1);
   for (int n : {1, 2, 3, 7, 64, 1000}) {
-    std::vector<Bounds> boxes = randomBoxes(rng, n);
-    boxes.push_back(Bounds{});              // empty: never visited
-    boxes.push_back(Bounds::everything());  // unbounded: always visited
-    boxes.push_back({dvec3(0, 0, -kInfinity), dvec3(1, 1, kInfinity)});  // unbounded on z
+    const std::vector<Bounds> boxes = randomBoxesAndOthers(rng, n);
     Bvh bvh(boxes);
     for (int r = 0; r < 300; ++r) {
       Ray ray = randomRay(rng);
@@ -74,17 +81,16 @@ TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesTheRayMeets) {
 TEST(Bvh, VisitsExactlyTheItemsWhoseBoxesHoldAPoint) {
   std::mt19937_64 rng(11);
   for (int n : {1, 2, 3, 7, 64, 1000}) {
-    std::vector<Bounds> boxes = randomBoxes(rng, n);
-    boxes.push_back(Bounds{});              // empty: never visited
-    boxes.push_back(Bounds::everything());  // unbounded: always visited
+    const std::vector<Bounds> boxes = randomBoxesAndOthers(rng, n);
     Bvh bvh(boxes);
     for (int r = 0; r < 300; ++r) {
       // Points anywhere, and on a box's corner (held: boxes are closed).
       const dvec3 p = r % 4 == 0 ? boxes[r % n].hi : randomPoint(rng, kWorld);
       std::set<std::uint32_t> expected, visited;
-      for (std::uint32_t i = 0; i < std::uint32_t(n); ++i)
-        if (boxes[i].contains(p)) expected.insert(i);
-      expected.insert(std::uint32_t(n + 1));
+      // Unbounded items are visited whatever the point, the empty box never.
+      for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (i != std::uint32_t(n) && (!boxes[i].finite() || boxes[i].contains(p)))
+          expected.insert(i);
       bvh.forEachHolding(p, 0.0, [&](std::uint32_t item) {
         EXPECT_TRUE(visited.insert(item).second) << "item " << item << " visited twice";
         return true;
