@@ -93,8 +93,10 @@ TriangleMesh repairMesh(const TriangleMesh& mesh, std::string& report) {
   note(report, faces - surface.number_of_faces(), "removed", "degenerate face", "degenerate faces");
 
   // Shells face out and cavities in; that needs closed shells that do not
-  // cross, which is left for the validity check to say otherwise.
-  if (CGAL::is_closed(surface) && !PMP::does_self_intersect(surface)) {
+  // cross, which is left for the validity check to say otherwise. Nothing
+  // may be left (every face degenerate): CGAL's orientation then crashes.
+  if (surface.number_of_faces() > 0 && CGAL::is_closed(surface) &&
+      !PMP::does_self_intersect(surface)) {
     std::vector<std::pair<Surface::Vertex_index, Surface::Vertex_index>> firstEdge;
     for (auto f : surface.faces())
       firstEdge.emplace_back(surface.source(surface.halfedge(f)),

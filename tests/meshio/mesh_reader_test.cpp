@@ -570,6 +570,19 @@ TEST(MeshRepair, AnOpenMeshStaysRefused) {
   EXPECT_EQ(importError("open.obj", true).rfind("open.obj: open: ", 0), 0u);
 }
 
+TEST(MeshRepair, AMeshOfNothingButDegenerateFacesIsLeftEmpty) {
+  // Four faces whose corners are one point: the repair removes them all,
+  // and the empty mesh is not oriented (CGAL crashed on it).
+  TriangleMesh point;
+  for (int i = 0; i < 3; ++i) point.points.push_back(dvec3(1.0));
+  for (int i = 0; i < 4; ++i) point.triangles.push_back({0, 1, 2});
+  std::string report;
+  const TriangleMesh mesh = repairMesh(point, report);
+  EXPECT_TRUE(mesh.empty());
+  EXPECT_EQ(report.rfind("merged 2 duplicated vertices", 0), 0u) << report;
+  EXPECT_EQ(meshDefect(mesh).kind, MeshDefect::Kind::Empty) << meshDefect(mesh).text;
+}
+
 // ---- mesh{} in a script --------------------------------------------------------
 
 class MeshScript : public ::testing::Test {
