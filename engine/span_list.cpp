@@ -96,12 +96,15 @@ void merge(Op op, const SpanList& a, const SpanList& b, SpanList& out) {
     double last = std::isinf(t) ? t : t + kSameT * std::abs(t);
     bool wasA = inA;
     Boundary lastA, lastB;
-    while (!ca.done() && ca.t() <= last) {
+    // "Not after" rather than "at or before": a NaN boundary (a solid of
+    // 10³⁰⁰ seen from as far) is taken with everything after it, where
+    // "at or before" took nothing and the sweep never ended.
+    while (!ca.done() && !(ca.t() > last)) {
       lastA = ca.boundary();
       inA = !inA;
       ++ca.index;
     }
-    while (!cb.done() && cb.t() <= last) {
+    while (!cb.done() && !(cb.t() > last)) {
       lastB = cb.boundary();
       if (op == Op::Difference) lastB.flip = !lastB.flip;
       inB = !inB;

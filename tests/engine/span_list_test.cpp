@@ -423,6 +423,29 @@ TEST(SpanList, UnboundedEnds) {
   EXPECT_TRUE(out.empty());
 }
 
+// A boundary at NaN (a solid of 10³⁰⁰ seen from as far away) is not in
+// order with anything: the booleans still end, each list's boundaries from
+// it on taken together, and the result has as many boundaries as the lists.
+TEST(SpanList, BooleansOfANaNBoundaryEnd) {
+  const double nan = std::nan("");
+  for (const Intervals& withNaN :
+       {Intervals{{nan, 2}}, Intervals{{0, nan}}, Intervals{{0, 1}, {nan, nan}, {4, 5}}})
+    for (const Intervals& other : {Intervals{{0.5, 3}}, Intervals{{-1, 0.5}, {1.5, 6}}}) {
+      const SpanList a = makeList(withNaN, tagA()), b = makeList(other, tagB());
+      SpanList out;
+      unite(a, b, out);
+      EXPECT_LE(out.size(), a.size() + b.size());
+      unite(b, a, out);
+      EXPECT_LE(out.size(), a.size() + b.size());
+      intersect(a, b, out);
+      EXPECT_LE(out.size(), a.size() + b.size());
+      subtract(a, b, out);
+      EXPECT_LE(out.size(), a.size() + b.size());
+      subtract(b, a, out);
+      EXPECT_LE(out.size(), a.size() + b.size());
+    }
+}
+
 TEST(SpanList, ValidDetectsBrokenInvariants) {
   EXPECT_TRUE(SpanList().valid());
   EXPECT_TRUE(makeList({{0, 1}, {2, 3}}, tagA()).valid());
