@@ -48,6 +48,11 @@ int serveView(const ViewOptions& options) {
                  "csgray: warning: listening on %s: other machines on the network can see this "
                  "part and set its parameters\n",
                  options.address.c_str());
+  // The page shows the script's error too, and the part once it is fixed
+  // and saved; the terminal says so at once (a misspelt file name).
+  if (const std::string error = session.state().error; !error.empty())
+    std::fprintf(stderr, "csgray: warning: %s; the page shows the part once it is saved\n",
+                 error.c_str());
   std::printf("csgray: viewing %s at %s (Ctrl-C to stop)\n", options.script.c_str(),
               server->url().c_str());
   std::fflush(stdout);
