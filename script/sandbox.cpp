@@ -31,11 +31,13 @@ constexpr std::size_t kLongestMessage = 2000;
 
 std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
-// The name of the function nearest `name` (two edits at most) among the
-// string keys of the table on top of the stack whose values are functions,
-// written with `prefix` ("math."), or `nearest` if none is nearer. Ties go
-// to the first name in alphabetical order: a table's own order follows a
-// hash that is seeded anew every run.
+// The name of the function nearest `name` among the string keys of the
+// table on top of the stack whose values are functions, written with
+// `prefix` ("math."), or `nearest` if none is nearer: one edit away, or two
+// from a name of six letters or more or one that starts with the same
+// letter ("sqar", "square"; two edits make "wood" of "load").
+// Ties go to the first name in alphabetical order: a table's own order
+// follows a hash that is seeded anew every run.
 void nearestFunction(lua_State* L, const std::string& name, std::string& nearest, std::size_t& best,
                      const std::string& prefix = "") {
   lua_pushnil(L);
@@ -43,7 +45,8 @@ void nearestFunction(lua_State* L, const std::string& name, std::string& nearest
     if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
       const std::string key = lua_tostring(L, -2), candidate = prefix + key;
       const std::size_t d = editDistance(name, key);
-      if (d < best || (d == best && !nearest.empty() && candidate < nearest))
+      const bool near = d <= 1 || name.size() >= 6 || name.front() == key.front();
+      if (near && (d < best || (d == best && !nearest.empty() && candidate < nearest)))
         best = d, nearest = candidate;
     }
     lua_pop(L, 1);
@@ -58,6 +61,15 @@ void nearestFunction(lua_State* L, const std::string& name, std::string& nearest
 // field ("math.sine(x)": "(field 'sine')"), the nearest library function. Reads
 // tables only, so it is safe after any error.
 std::string unknownCallHint(lua_State* L, const std::string& message) {
+  // The libraries the sandbox leaves out, called or indexed.
+  for (const char* closed : {"io", "os", "package", "require", "debug", "coroutine", "load",
+                             "loadfile", "dofile", "collectgarbage"})
+    for (const char* use : {"call", "index"})
+      if (message.find(std::string("attempt to ") + use + " a nil value (global '" + closed +
+                       "')") != std::string::npos)
+        return std::string("; ") + closed +
+               " is not available: scripts run in a sandbox, without files, processes or "
+               "loaded code (docs/script.md, \"The sandbox\")";
   static const std::string kNil = "attempt to call a nil value (";
   const std::size_t at = message.find(kNil);
   if (at == std::string::npos) return "";

@@ -321,6 +321,21 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
             "part.lua:1: attempt to call a nil value (field 'frobnicate')");
   EXPECT_EQ(scriptError("return sphere(1):frobnicate()"),
             "part.lua:1: attempt to call a nil value (method 'frobnicate')");
+  // Two edits from a short name make another word ("wood" of "load"); the
+  // libraries the sandbox leaves out are said to be left out.
+  EXPECT_EQ(scriptError("return loop(1)"),
+            "part.lua:1: attempt to call a nil value (global 'loop')");
+  EXPECT_NE(scriptError("return sqar(1)").find("did you mean square?"), std::string::npos);
+  EXPECT_EQ(scriptError("return load(\"x\")"),
+            "part.lua:1: attempt to call a nil value (global 'load'); load is not available: "
+            "scripts run in a sandbox, without files, processes or loaded code (docs/script.md, "
+            "\"The sandbox\")");
+  for (const char* use : {"io.open(\"part.stl\")", "os.execute(\"ls\")", "require(\"x\")",
+                          "dofile(\"x.lua\")", "debug.getinfo(1)"})
+    EXPECT_NE(scriptError(std::string("local x = ") + use + "\nreturn sphere(1)")
+                  .find("is not available: scripts run in a sandbox"),
+              std::string::npos)
+        << use;
   EXPECT_NO_THROW(solidOf("local r = radius or 2\nreturn sphere(r)"));
 }
 
