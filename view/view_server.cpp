@@ -18,11 +18,20 @@ void reply(httplib::Response& response, int status, const std::string& line) {
 
 class ViewServer final : public HttpServer {
  public:
+  static constexpr int kThreads = 64;
+
   ViewServer(ViewService& service, const std::string& address, int port)
       : service_(service), address_(address) {
     // Frames, the long poll, picks and the page's own files at once; a
-    // browser keeps a few connections open.
-    server_.new_task_queue = [] { return new httplib::ThreadPool(16); };
+    // browser keeps a few connections open. Each connection holds a
+    // thread while it sends its request or waits between requests: a
+    // client that opens connections and sends half a request held all of
+    // 16 threads for cpp-httplib's 5 s, and the page waited (20 such
+    // connections: 8.5 s). Idle threads cost little; a request must come
+    // within 2 s.
+    server_.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+    server_.set_read_timeout(2, 0);
+    server_.set_keep_alive_timeout(2);
     // A reply is written as headers, then body: with Nagle's algorithm the
     // body waits for the client's delayed ACK of the headers, 40 ms on
     // Linux, which halved the frames per second of a drag.
