@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "cli/commands.h"
+#include "cli/warning.h"
 #include "scene/value_checks.h"
 #include "script/script.h"
 
@@ -44,7 +45,7 @@ int error(const std::string& message, int status, bool cut = false) {
     if (i < message.size()) line += ' ';
     word = i + 1;
   }
-  std::cerr << "csgray: error: " << line << "\n";
+  std::cerr << "csgray: error: " << terminalLine(line) << "\n";
   return status;
 }
 

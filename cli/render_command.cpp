@@ -18,6 +18,7 @@
 #include "cli/heap_reserve.h"
 #include "cli/number_checks.h"
 #include "cli/progress.h"
+#include "cli/warning.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
 #include "io/image_formats.h"
@@ -230,11 +231,11 @@ int watchRender(const RenderArguments& arguments, const PartScript& script) {
       watched.clear();
     } catch (const DefineError& e) {
       if (first) throw;  // the command line's -D: as without --watch
-      std::fprintf(stderr, "csgray: error: %s\n", e.what());
+      std::fprintf(stderr, "csgray: error: %s\n", terminalLine(e.what()).c_str());
     } catch (const CLI::ValidationError&) {
       throw;  // the options, not the script
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "csgray: error: %s\n", e.what());
+      std::fprintf(stderr, "csgray: error: %s\n", terminalLine(e.what()).c_str());
     }
     // After a failure, the files the last good run read stay watched too.
     watched.insert(watched.end(), files->begin(), files->end());

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/printable_token.h"
 #include "io/input_file.h"
 #include "io/png_reader.h"
 #include "io/srgb.h"
@@ -64,8 +65,7 @@ HeightMap heightMapOfText(const std::string& text, const std::string& name) {
       if (error != std::errc() || stop != token.data() + token.size() || token.empty() ||
           !std::isfinite(v))
         throw std::invalid_argument(name + ":" + std::to_string(line) + ": '" +
-                                    std::string(row.substr(i, std::min<std::size_t>(j - i, 40))) +
-                                    "' is not a number");
+                                    printableToken(row.substr(i, j - i), 40) + "' is not a number");
       values.push_back(v);
       i = j;
       while (i < row.size() && blank(row[i])) ++i;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "engine/printable_token.h"
 #include "io/input_file.h"
 #include "meshio/reader_common.h"
 #include "tessellation/polygon_triangulation.h"
@@ -22,12 +23,7 @@ namespace mesh_reading {
   throw std::invalid_argument(where + ": " + what);
 }
 
-std::string shown(std::string_view token) {
-  std::string out = "\"";
-  for (char c : token.substr(0, 32)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
-  if (token.size() > 32) out += "...";
-  return out + "\"";
-}
+std::string shown(std::string_view token) { return "\"" + printableToken(token, 32) + "\""; }
 
 std::string numberText(double value) {
   char text[32];

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "engine/degrees.h"
+#include "engine/printable_token.h"
 #include "profile/b_spline.h"
 #include "profile/region_evaluation.h"
 
@@ -179,7 +180,7 @@ class DxfReader {
       auto [end, error] = std::from_chars(codeText.data(), codeText.data() + codeText.size(), code);
       if (error != std::errc() || end != codeText.data() + codeText.size())
         fail(codeLine, "expected a group code (a whole number), found '" +
-                           std::string(codeText.substr(0, 40)) + "'");
+                           printableToken(codeText, 40) + "'");
       if (!nextLine(value)) fail(codeLine, "group code " + std::to_string(code) + " has no value");
       lastLine_ = line;
       if (code == 999) continue;  // a comment
@@ -210,9 +211,9 @@ class DxfReader {
     auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (error != std::errc() || end != s.data() + s.size() || s.empty())
       fail(g.line + 1, "expected a number for group code " + std::to_string(g.code) + ", found '" +
-                           std::string(g.value.substr(0, 40)) + "'");
+                           printableToken(g.value, 40) + "'");
     if (!std::isfinite(v) || std::abs(v) > 1e15)
-      fail(g.line + 1, "the number " + std::string(g.value) + " is too large");
+      fail(g.line + 1, "the number " + printableToken(g.value, 40) + " is too large");
     return v;
   }
 
@@ -298,7 +299,7 @@ class DxfReader {
     } else if (r.type == "INSERT") {
       insert(r, into);
     } else {
-      fail(r.line, std::string(r.type) +
+      fail(r.line, printableToken(r.type, 40) +
                        " entities are not supported (LINE, LWPOLYLINE, POLYLINE, ARC, CIRCLE, "
                        "ELLIPSE, SPLINE and INSERT are)");
     }

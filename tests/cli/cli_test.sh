@@ -21,6 +21,7 @@ printf 'while true do end\n' > "$work/loop.lua"
 printf 'return box(1) +\n' > "$work/syntax.lua"
 printf 'error({})\n' > "$work/table_error.lua"
 printf 'error("first\\nsecond")\n' > "$work/multiline.lua"
+printf 'error("\\27[2J\\27[31mred")\n' > "$work/escape.lua"
 printf 'return half_space{normal={0, 0, 1}}\n' > "$work/unbounded.lua"
 # Backtracking in C, where no Lua instruction is counted: only the
 # script time limit ends it.
@@ -114,6 +115,9 @@ expect_failure "table error" "$work/out.png" render "$work/table_error.lua" -o "
 expect_in_stderr "table error" "table_error.lua:1: error(table) without a message"
 expect_failure "multi-line error" "$work/out.png" render "$work/multiline.lua" -o "$work/out.png"
 expect_in_stderr "multi-line error" "multiline.lua:1: first second"
+# An escape sequence in a script's error cannot clear the terminal.
+expect_failure "escape in an error" "$work/out.png" render "$work/escape.lua" -o "$work/out.png"
+expect_in_stderr "escape in an error" "escape.lua:1: ?[2J?[31mred"
 expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"
 expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
 expect_failure "NaN timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout nan

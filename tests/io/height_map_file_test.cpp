@@ -41,6 +41,7 @@ TEST(HeightMap, TextRowsCommentsAndShortRows) {
   EXPECT_EQ(map.at(1, 1), 5.0);
   EXPECT_EQ(map.at(1, 2), 0.0);  // filled up, as OpenSCAD does
   EXPECT_EQ(error("1 2\n3 4\n5 six\n"), "map.dat:3: 'six' is not a number");
+  EXPECT_EQ(error(std::string("1 2\n3\0" "4\n", 7)), "map.dat:2: '3?4' is not a number");
   EXPECT_EQ(error("1 2 3\n"),
             "a height map needs at least 2 rows and 2 columns of heights, got 1 × 3");
 }
