@@ -40,16 +40,22 @@ Affine Affine::scaling(const dvec3& factors) {
 }
 
 Affine Affine::rotation(double radians, const dvec3& axis) {
-  double len = glm::length(axis);
-  if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(radians))
+  if (!std::isfinite(radians))
     throw std::invalid_argument("rotation needs a finite angle and a non-zero axis");
-  // Rodrigues' formula R = cI + s[k]× + (1 − c)kkᵀ. cos and sin of a
-  // multiple of 90° come out as 6e-17 instead of 0: they are made exact,
-  // so that a part turned by 90° keeps its faces on exact planes (and
-  // flush faces flush, for the exporter's booleans).
+  // cos and sin of a multiple of 90° come out as 6e-17 instead of 0: they
+  // are made exact, so that a part turned by 90° keeps its faces on exact
+  // planes (and flush faces flush, for the exporter's booleans).
   double c = std::cos(radians), s = std::sin(radians);
   if (std::abs(c) < 1e-15) c = 0.0, s = s > 0.0 ? 1.0 : -1.0;
   if (std::abs(s) < 1e-15) s = 0.0, c = c > 0.0 ? 1.0 : -1.0;
+  return rotation(c, s, axis);
+}
+
+Affine Affine::rotation(double c, double s, const dvec3& axis) {
+  double len = glm::length(axis);
+  if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(c) || !std::isfinite(s))
+    throw std::invalid_argument("rotation needs a finite angle and a non-zero axis");
+  // Rodrigues' formula R = cI + s[k]× + (1 − c)kkᵀ.
   const dvec3 k = axis / len;
   glm::dmat4 m(1.0);
   for (int col = 0; col < 3; ++col)

@@ -22,6 +22,9 @@ class Affine {
   static Affine scaling(const dvec3& factors);
   // Rotation by angle (radians) about a unit axis through the origin.
   static Affine rotation(double radians, const dvec3& axis);
+  // The same turn given by its cosine and sine (a point of the unit
+  // circle), which the caller may know exactly (engine/degrees.h).
+  static Affine rotation(double cosine, double sine, const dvec3& axis);
   // Reflection in the plane through the origin with the given normal.
   static Affine mirror(const dvec3& normal);
 

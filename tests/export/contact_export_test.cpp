@@ -1332,6 +1332,14 @@ TEST(ContactExport, PinsTurnedOverOrAboutTheirAxesMeetTheirHolesWalls) {
         "       + " +
             std::string(pin) + ":translate(5, 0, 0):rotate(0, 0, 60)",
         1600.0 + kPi * 9.0 * 4.0, kTolerance * (2 * 400.0 + 4 * 80.0 + 2 * kPi * 3 * 8));
+  // Turned to 135° and mirrored in x onto a hole turned to 45°: the
+  // centres agree only where the two turns' sines and cosines do.
+  exportsValid(
+      "return box{size={20, 20, 4}, center=true}\n"
+      "       - cylinder{r=3, h=4, center=true}:translate(5, 0, 0):rotate(0, 0, 45)\n"
+      "       + cylinder{r=3, h=8, center=true}:translate(5, 0, 0):rotate(0, 0, 135)"
+      ":mirror(1, 0, 0)",
+      1600.0 + kPi * 9.0 * 4.0, kTolerance * (2 * 400.0 + 4 * 80.0 + 2 * kPi * 3 * 8));
   // A tee: a bore along x and a branch of its radius along +y from its
   // axis, turned there the other way; the branch leaves half of the two
   // bores' common 16 r³ / 3 (Steinmetz) to the through bore.

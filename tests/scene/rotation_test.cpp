@@ -43,5 +43,24 @@ TEST(Rotation, OppositeTurnsAreMirrorImages) {
   }
 }
 
+TEST(Rotation, TurnsMirroredAcrossAQuarterShareTheirSinesAndCosines) {
+  // A turn by 180° − a is a turn by a mirrored in x: its cosine the other's
+  // negated, its sine the same, bit for bit (a pin turned to 135° and
+  // mirrored fills a hole turned to 45°); so are a and 90° − a, their sine
+  // and cosine swapped. 30° and 60° have the exact half.
+  for (double degrees : {10.0, 30.0, 33.0, 45.0, 60.0, 72.5, 89.0}) {
+    SCOPED_TRACE(std::to_string(degrees));
+    const glm::dmat4 a = rotationDegrees(dvec3(0.0, 0.0, degrees)).worldFromObject();
+    const glm::dmat4 b = rotationDegrees(dvec3(0.0, 0.0, 180.0 - degrees)).worldFromObject();
+    const glm::dmat4 c = rotationDegrees(dvec3(0.0, 0.0, 90.0 - degrees)).worldFromObject();
+    EXPECT_EQ(a[0][0], -b[0][0]);
+    EXPECT_EQ(a[0][1], b[0][1]);
+    EXPECT_EQ(a[0][0], c[0][1]);
+    EXPECT_EQ(a[0][1], c[0][0]);
+  }
+  EXPECT_EQ(rotationDegrees(dvec3(0.0, 0.0, 60.0)).worldFromObject()[0][0], 0.5);
+  EXPECT_EQ(rotationDegrees(dvec3(30.0, 0.0, 0.0)).worldFromObject()[2][1], -0.5);
+}
+
 }  // namespace
 }  // namespace csgray::detail
