@@ -27,8 +27,8 @@ class ViewServer final : public HttpServer {
     // thread while it sends its request or waits between requests: a
     // client that opens connections and sends half a request held all of
     // 16 threads for cpp-httplib's 5 s, and the page waited (20 such
-    // connections: 8.5 s). Idle threads cost little; a request must come
-    // within 2 s.
+    // connections: 8.5 s). Idle threads cost little; a connection that
+    // sends nothing for 2 s is closed.
     server_.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
     server_.set_read_timeout(2, 0);
     server_.set_keep_alive_timeout(2);
