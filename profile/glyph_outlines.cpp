@@ -414,7 +414,13 @@ RegionPtr textRegion(const TextLayout& layout) {
   }
   if (contours.empty()) {
     if (layout.blankMakesNothing) return nullptr;
-    fail(quoted(layout.text) + " has no outline (only spaces)");
+    // Spaces have no outline; letters without one come from a damaged font.
+    const bool blank = std::all_of(layout.text.begin(), layout.text.end(), [](char c) {
+      return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    });
+    fail(quoted(layout.text) + (blank ? " has no outline (only spaces)"
+                                      : " has no outline in the font " + quoted(layout.font) +
+                                            ": its glyphs are empty (is the font file damaged?)"));
   }
 
   // From font units to the size, then aligned.
