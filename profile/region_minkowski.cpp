@@ -1,6 +1,7 @@
 // The Minkowski sum of two regions (region_evaluation.h), exact in the
 // cases OpenSCAD's 2D minkowski() is used for: a shape rounded by a
 // circle (an offset), and two convex shapes one of which is a polygon.
+#include <algorithm>
 #include <cmath>
 #include <glm/matrix.hpp>
 #include <numbers>
@@ -48,11 +49,14 @@ bool convex(const RegionPtr& region, const Profile& p, double tolerance) {
 
 Profile minkowskiSum(const RegionPtr& a, const RegionPtr& b, double tolerance) {
   const Profile pa = evaluate(*a, tolerance), pb = evaluate(*b, tolerance);
-  // Rounding by a circle is the offset by its radius, moved by its centre.
+  // Rounding by a circle is the offset by its radius, moved by its centre:
+  // the shape's offset{r=}, at the shape's own tolerance. The circle is an
+  // exact arc; its own, finer tolerance (a hundredth of a letter's, for a
+  // small circle) made the offset of a letter's curves take minutes.
   for (auto [shape, circle] : {std::pair(&a, circleOf(pb)), std::pair(&b, circleOf(pa))})
     if (circle)
       return offsetRounded(*(*shape)->transformed({dmat2(1.0), circle->center}), circle->r,
-                           tolerance);
+                           std::max(tolerance, evaluationTolerance(**shape)));
   // Two convex shapes: the hull of copies of one at the other's corners.
   const bool polygonA = straight(pa), polygonB = straight(pb);
   if ((polygonA || polygonB) && convex(a, pa, tolerance) && convex(b, pb, tolerance)) {

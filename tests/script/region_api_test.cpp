@@ -328,6 +328,17 @@ TEST(ScriptRegion, OffsetsAndHullsAreAnalytic) {
   expectArea("hull{square(1), square(1):translate(3, 3)}", 7);
 }
 
+TEST(ScriptRegion, ALetterPlusACircleIsItsRoundedOffset) {
+  // minkowski of a region and a circle is its offset{r=}, at the region's
+  // own tolerance: the same region, whose area is the offset's. (At the
+  // small circle's finer tolerance the letter's curves took minutes.)
+  EXPECT_NO_THROW(
+      sceneOf("local o = text{\"o\", size=10}\n"
+              "local a, b = minkowski(o, circle(1.5)):area(), o:offset{r=1.5}:area()\n"
+              "assert(a == b and a > o:area(), a .. ' against ' .. b)\n"
+              "return square(1)"));
+}
+
 // import_dxf{}, import_svg{} and height_map{} read files beside the
 // script, by its rules, and name the file and its line when it is wrong.
 TEST(ScriptRegion, DrawingsAndHeightMapsFromFiles) {
