@@ -12,6 +12,7 @@
 #include "primitives/cgal/point_hull.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/cylinder.h"
+#include "primitives/linear_extrusion.h"
 #include "primitives/mesh_solid.h"
 #include "primitives/rounded_polytope.h"
 #include "primitives/sphere.h"
@@ -64,9 +65,36 @@ std::vector<dvec3> cornersOf(const Primitive& p) {
     corners = convex->vertices();
   } else if (const auto* mesh = dynamic_cast<const MeshSolid*>(&p)) {
     corners = mesh->points();
+  } else if (const auto* sweep = dynamic_cast<const LinearExtrusion*>(&p);
+             sweep && sweep->twistDegrees() == 0.0 && sweep->scale().x == sweep->scale().y) {
+    // Untwisted and scaled alike on both axes, a polygon's sides sweep
+    // planes: the corners at the bottom, and scaled at the top.
+    const Region& region = *sweep->region();
+    const double z0 = sweep->bottom(), z1 = z0 + sweep->height(), s = sweep->scale().x;
+    for (const ProfileLoop& loop : evaluate(region, evaluationTolerance(region)).loops)
+      for (const ProfileEdge& e : loop.edges) {
+        if (e.kind != ProfileEdge::Kind::Segment) return {};  // curved: no corners
+        corners.push_back({e.from.x, e.from.y, z0});
+        if (s > 0.0) corners.push_back({s * e.from.x, s * e.from.y, z1});
+      }
+    if (s == 0.0) corners.push_back({0.0, 0.0, z1});  // a pyramid's apex
   }
   for (dvec3& c : corners) c = p.frame().pointToWorld(c);
   return corners;
+}
+
+// The volume of a primitive convexPolytopeOf must not exceed with its
+// hull, where its corners need not be convex: a mesh's, or an extrusion's
+// (a frustum of similar sections, h (A + √(A·s²A) + s²A) / 3).
+std::optional<double> volumeToHold(const Primitive& p) {
+  const double det = std::abs(glm::determinant(glm::dmat3(p.frame().worldFromObject())));
+  if (const auto* mesh = dynamic_cast<const MeshSolid*>(&p)) return mesh->volume() * det;
+  if (const auto* sweep = dynamic_cast<const LinearExtrusion*>(&p)) {
+    const Region& region = *sweep->region();
+    const double a = area(evaluate(region, evaluationTolerance(region))), s = sweep->scale().x;
+    return sweep->height() * a * (1.0 + s + s * s) / 3.0 * det;
+  }
+  return std::nullopt;
 }
 
 // The volume of a solid polytope: a cone from the origin over each face,
@@ -89,11 +117,8 @@ std::optional<Polytope> convexPolytopeOf(const Primitive& p) {
   std::vector<dvec3> corners = cornersOf(p);
   if (corners.empty()) return std::nullopt;
   Polytope hull = pointHull(corners);
-  if (const auto* mesh = dynamic_cast<const MeshSolid*>(&p)) {
-    double meshVolume =
-        mesh->volume() * std::abs(glm::determinant(glm::dmat3(p.frame().worldFromObject())));
-    if (hull.dimension < 3 || volumeOf(hull) > meshVolume * (1.0 + 1e-9)) return std::nullopt;
-  }
+  if (const std::optional<double> own = volumeToHold(p))
+    if (hull.dimension < 3 || volumeOf(hull) > *own * (1.0 + 1e-9)) return std::nullopt;
   return hull;
 }
 

@@ -15,7 +15,9 @@
 #include "engine/primitive.h"
 #include "primitives/cgal/point_hull.h"
 #include "primitives/convex_polyhedron.h"
+#include "primitives/linear_extrusion.h"
 #include "primitives/rounded_polytope.h"
+#include "profile/shapes.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
 #include "scene/shapes.h"
@@ -101,6 +103,25 @@ TEST(Minkowski, BoxAndBallIsExact) {
   EXPECT_FALSE(sum->contains(dvec3(2.0, 0.0, 1.5) + (r + 1e-9) * glm::normalize(dvec3(0, 1, 1))));
   EXPECT_TRUE(sum->contains(dvec3(2.0, -1.0, 1.5 + r - 1e-9)));
   EXPECT_FALSE(sum->contains(dvec3(2.0, -1.0, 1.5 + r + 1e-9)));
+}
+
+TEST(Minkowski, AConvexPolygonExtrudedIsAPolytope) {
+  // A square 3 × 2 extruded 1 high is the box: plus a ball, the rounded
+  // box. Extruded to a point (scale 0), a pyramid of 3 · 2 · 1 / 3, whose
+  // hull is itself. An L-shaped polygon extruded is not convex, and is
+  // refused.
+  const double r = 0.5;
+  const RegionPtr rectangle = rectangleRegion("rectangle", 3.0, 2.0, false);
+  const SolidPtr prism = Primitive::create<LinearExtrusion>(rectangle, 1.0, false, 0.0, dvec2(1.0));
+  expectVolume(*minkowskiShape({prism, ball(r)}), roundedBoxVolume(dvec3(3.0, 2.0, 1.0), r), 1e-4);
+  const SolidPtr pyramid =
+      Primitive::create<LinearExtrusion>(rectangle, 1.0, false, 0.0, dvec2(0.0));
+  expectVolume(*hullShape({pyramid}), 2.0, 1e-4);
+  const RegionPtr ell = polygonRegion(
+      {dvec2(0, 0), dvec2(3, 0), dvec2(3, 1), dvec2(1, 1), dvec2(1, 3), dvec2(0, 3)}, {});
+  EXPECT_THROW(minkowskiShape(
+                   {Primitive::create<LinearExtrusion>(ell, 1.0, false, 0.0, dvec2(1.0)), ball(r)}),
+               std::invalid_argument);
 }
 
 TEST(Minkowski, ExportsOneValidMesh) {
