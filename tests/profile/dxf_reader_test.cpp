@@ -233,8 +233,8 @@ TEST(DxfReader, BadFilesAreOneLineErrors) {
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n" + line(0, 0, 1, 1)),
             "part.dxf:16: the file ends inside the ENTITIES section (is it cut short?)");
   // A NUL byte in an entity's name: shown, not the end of the message.
-  EXPECT_EQ(error(drawing(entity(std::string("CIR\0CLE", 7), {{8, "0"}}))).rfind(
-                "part.dxf:7: CIR?CLE entities are not supported", 0),
+  EXPECT_EQ(error(drawing(entity(std::string("CIR\0CLE", 7), {{8, "0"}})))
+                .rfind("part.dxf:7: CIR?CLE entities are not supported", 0),
             0u);
   EXPECT_EQ(error(drawing(entity("3DFACE", {{8, "0"}}))),
             "part.dxf:7: 3DFACE entities are not supported (LINE, LWPOLYLINE, POLYLINE, ARC, "
