@@ -1,19 +1,17 @@
 #include "cli/warning.h"
 
+#include <algorithm>
 #include <iostream>
+
+#include "engine/printable_token.h"
 
 namespace csgray::detail {
 
 std::string terminalLine(std::string_view text) {
   std::string line(text);
-  for (char& c : line) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n' || c == '\r')
-      c = ' ';
-    else if (byte < 0x20 || byte == 0x7f)
-      c = '?';
-  }
-  return line;
+  std::replace_if(
+      line.begin(), line.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return printableToken(line, line.size());
 }
 
 void printWarning(const std::string& message) {

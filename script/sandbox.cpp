@@ -45,7 +45,8 @@ void nearestFunction(lua_State* L, const std::string& name, std::string& nearest
     if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
       const std::string key = lua_tostring(L, -2), candidate = prefix + key;
       const std::size_t d = editDistance(name, key);
-      const bool near = d <= 1 || name.size() >= 6 || name.front() == key.front();
+      const bool near = d <= 1 || name.size() >= 6 ||
+                        (!name.empty() && !key.empty() && name.front() == key.front());
       if (near && (d < best || (d == best && !nearest.empty() && candidate < nearest)))
         best = d, nearest = candidate;
     }
