@@ -19,8 +19,16 @@ namespace csgray::detail {
 
 // The half-spaces whose intersection is `primitive` placed by `frame`
 // (normal·p <= offset, unit normals), or nothing for a primitive that is
-// not a box, a half-space, a convex polyhedron or a Platonic solid.
+// not a box, a half-space, a convex polyhedron, a Platonic solid or an
+// untwisted linear_extrude of a convex polygon scaled alike on both axes.
 std::optional<std::vector<BoundingPlane>> boundingPlanes(const Primitive& primitive,
+                                                         const Affine& frame);
+
+// The planes of a straight extrusion (linear_extrude without twist or
+// scale) of any region, placed by `frame`: its bottom cap, its top cap,
+// then the four sides of its region's box, which bound the caps' faces
+// but are not faces of the extrusion. Nothing for any other primitive.
+std::optional<std::vector<BoundingPlane>> prismCapPlanes(const Primitive& primitive,
                                                          const Affine& frame);
 
 }  // namespace csgray::detail

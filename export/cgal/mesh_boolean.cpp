@@ -498,33 +498,58 @@ class Evaluator {
 
   // Each flat cutter (a box, a half-space, a convex polyhedron) whose
   // faces the minuend only grazes, made again with those faces moved
-  // clear of it (export/grazed_faces.h). cutters[i] is operands[i]'s;
+  // clear of it (export/grazed_faces.h); and each straight extrusion
+  // whose caps it only grazes (letters engraved from a rod's tangent
+  // plane), with those caps moved. cutters[i] is operands[i]'s;
   // minuendSolid is the exact solid whose mesh is minuend.
   void clearGrazedCutters(const Solid& minuendSolid, std::span<const SolidPtr> operands,
                           std::vector<Piece>& cutters, const Piece& minuend) {
     std::optional<TriangleMesh> exactMinuend;  // in doubles, made once if needed
     std::optional<GrazeTest> test;
-    for (std::size_t i = 0; i < operands.size(); ++i) {
-      auto* primitive = dynamic_cast<const Primitive*>(operands[i].get());
-      Piece& cutter = cutters[i];
-      if (!primitive || cutter.empty() || !cutter.box.overlaps(minuend.box)) continue;
-      std::optional<std::vector<BoundingPlane>> planes =
-          boundingPlanes(*primitive, frame_.evalFrame(primitive->frame()));
-      if (!planes) continue;
+    auto grazeTest = [&]() -> const GrazeTest& {
       if (!test) {
         if (!minuend.doubles) exactMinuend = trianglesOf(minuend.mesh, true);
         test.emplace(
             minuend.doubles ? minuend.doubles->mesh : *exactMinuend, tolerance_,
             [&](const dvec3& p) { return minuendSolid.contains(frame_.worldFromEval * p); });
       }
-      if (!test->clearGrazedFaces(*planes, cutter.box)) continue;
-      // The moved faces stay within twice the tolerance of the old.
-      const dvec3 margin(0.01 * glm::length(cutter.box.size()) + 2.0 * tolerance_);
-      Piece cleared =
-          pieceOf(convexPolytopeMesh(*planes, {cutter.box.lo - margin, cutter.box.hi + margin}),
-                  tagOf(primitive->material()), primitive->kind());
-      cleared.origin = primitive;
-      cutter = std::move(cleared);
+      return *test;
+    };
+    for (std::size_t i = 0; i < operands.size(); ++i) {
+      auto* primitive = dynamic_cast<const Primitive*>(operands[i].get());
+      Piece& cutter = cutters[i];
+      if (!primitive || cutter.empty() || !cutter.box.overlaps(minuend.box)) continue;
+      const Affine frame = frame_.evalFrame(primitive->frame());
+      if (std::optional<std::vector<BoundingPlane>> planes = boundingPlanes(*primitive, frame)) {
+        if (!grazeTest().clearGrazedFaces(*planes, cutter.box)) continue;
+        // The moved faces stay within twice the tolerance of the old.
+        const dvec3 margin(0.01 * glm::length(cutter.box.size()) + 2.0 * tolerance_);
+        cutter =
+            pieceOf(convexPolytopeMesh(*planes, {cutter.box.lo - margin, cutter.box.hi + margin}),
+                    tagOf(primitive->material()), primitive->kind());
+      } else if (std::optional<std::vector<BoundingPlane>> caps = prismCapPlanes(*primitive, frame);
+                 caps && cutter.doubles) {
+        const std::vector<BoundingPlane> before = *caps;
+        if (!grazeTest().clearGrazedFaces(*caps, cutter.box)) continue;
+        // A cap moves out along its normal, its points with it: the sides
+        // stay flat, as each of their top edges moves by one vector.
+        TriangleMesh moved = cutter.doubles->mesh;
+        bool any = false;
+        for (int cap = 0; cap < 2; ++cap) {
+          const BoundingPlane& was = before[cap];
+          const double by = (*caps)[cap].offset - was.offset;
+          if (!(by > 0.0)) continue;
+          const double on = 1e-9 * glm::length(cutter.box.size());
+          for (dvec3& p : moved.points)
+            if (std::abs(glm::dot(was.normal, p) - was.offset) <= on) p += by * was.normal;
+          any = true;
+        }
+        if (!any) continue;
+        cutter = pieceOf(std::move(moved), tagOf(primitive->material()), primitive->kind());
+      } else {
+        continue;
+      }
+      cutter.origin = primitive;
       ++stats_.grazes;
     }
   }

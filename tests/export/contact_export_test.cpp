@@ -794,6 +794,59 @@ TEST(ContactExport, ARibTangentInsideASweptRingLeavesNoGap) {
       pi * 175 * 4 + 160 - 4.0 * 2.0 / 90.0, kTolerance * (2 * 175 * pi + 140 * pi + 232));
 }
 
+// How many of the mesh's triangles the vertical line through p meets above
+// height z: p inside a triangle's shadow on the xy plane by the signs of
+// the three edge functions, at the height of the plane through it.
+int facesAbove(const TriangleMesh& mesh, const dvec2& p, double z) {
+  int count = 0;
+  for (const TriangleMesh::Triangle& t : mesh.triangles) {
+    const dvec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    auto edge = [&](const dvec3& u, const dvec3& v) {
+      return (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+    };
+    const double wa = edge(b, c), wb = edge(c, a), wc = edge(a, b), sum = wa + wb + wc;
+    const bool within = (wa >= 0 && wb >= 0 && wc >= 0) || (wa <= 0 && wb <= 0 && wc <= 0);
+    if (within && sum != 0.0 && (wa * a.z + wb * b.z + wc * c.z) / sum > z) ++count;
+  }
+  return count;
+}
+
+TEST(ContactExport, APocketCutFromARodsTangentPlaneByAnExtrusionLeavesNoSkin) {
+  // OpenSCAD's translate([0, 0, R - d]) linear_extrude(d): a pocket whose
+  // top is the plane tangent to a rod (r = 10, along x) at its highest
+  // line. The rod's mesh reaches a little past that plane, and the cut
+  // left a skin of it over the pocket, which failed the check; a box
+  // there did not. A convex polygon's extrusion and an L's (the letters
+  // of an engraving) now have the top moved clear as a box's side is.
+  // Removed: ∫∫ (√(100 − y²) − 8) dx dy over the region placed at
+  // (4, −2); G is the integral in y (a circle's area under a chord).
+  auto g = [](double y) {
+    return (y * std::sqrt(100.0 - y * y) + 100.0 * std::asin(y / 10.0)) / 2.0 - 8.0 * y;
+  };
+  struct Case {
+    const char* region;
+    double removed;
+    dvec2 inside;  // a point of the region, placed
+  };
+  const Case cases[] = {
+      {"square(4)", 4.0 * (g(2) - g(-2)), {6.0, 0.1}},
+      {"polygon{{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}}",
+       4.0 * (g(-1) - g(-2)) + 1.0 * (g(2) - g(-1)),
+       {4.5, 0.1}},
+  };
+  for (const Case& c : cases) {
+    const std::string source = std::string("return cylinder{r=10, h=12}:rotate(0, 90, 0) - ") +
+                               "linear_extrude{" + c.region + ", height=2}:translate(4, -2, 8)";
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
+    EXPECT_EQ(stats.grazes, 1u) << source;
+    // Nothing over the pocket's floor (z = 8) where the rod was highest.
+    EXPECT_EQ(facesAbove(mesh, c.inside, 8.0 + 1e-9), 0) << source;
+    exportsValid(source, kPi * 100.0 * 12.0 - c.removed,
+                 kTolerance * (2 * kPi * 10 * 12 + 2 * kPi * 100));
+  }
+}
+
 TEST(ContactExport, AHemisphereCutByABoxAsWideAsTheBall) {
   // The box's sides touch the ball's equator, and its bottom the south
   // pole: the ball's mesh, a little outside the sphere, kept slivers below
