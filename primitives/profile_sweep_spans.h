@@ -4,13 +4,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace csgray::detail {
 
 namespace sweep_detail {
 
-// Does the segment a–b meet the box lo–hi (closed)? The slab test in 2D.
-inline bool segmentMeetsBox(const dvec2& a, const dvec2& b, const dvec2& lo, const dvec2& hi) {
+// How far a segment's slab test may misplace it: the rounding of its
+// ends' coordinates, a few units in the last place of the larger. A
+// scale-0 extrusion's straight image of a ray runs from the region out to
+// 10¹² times its size (its window stops just below the apex), and a ray
+// through a corner then passed by both edges' boxes there, the corner's
+// crossing lost (a ray along the axis of a pyramid's mirror image over
+// the line from its centre to a corner found nothing).
+inline double segmentSlack(const dvec2& a, const dvec2& b) {
+  return 8.0 * std::numeric_limits<double>::epsilon() *
+         std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
+}
+
+// Does the segment a–b meet the box lo–hi (closed, grown by the segment's
+// slack)? The slab test in 2D.
+inline bool segmentMeetsBox(const dvec2& a, const dvec2& b, const dvec2& boxLo,
+                            const dvec2& boxHi) {
+  const dvec2 lo = boxLo - dvec2(segmentSlack(a, b)), hi = boxHi + dvec2(segmentSlack(a, b));
   double t0 = 0.0, t1 = 1.0;
   for (int axis = 0; axis < 2; ++axis) {
     const double d = b[axis] - a[axis];
@@ -51,14 +67,15 @@ class SweepSegmentTest {
  public:
   SweepSegmentTest() = default;
   SweepSegmentTest(const dvec2& a, const dvec2& b)
-      : a_(a), lo_(glm::min(a, b)), hi_(glm::max(a, b)) {
+      : a_(a), lo_(glm::min(a, b)), hi_(glm::max(a, b)), slack_(sweep_detail::segmentSlack(a, b)) {
     for (int axis = 0; axis < 2; ++axis) {
       const double d = b[axis] - a[axis];
       flat_[axis] = d == 0.0;
       inverse_[axis] = flat_[axis] ? 0.0 : 1.0 / d;
     }
   }
-  bool meets(const dvec2& lo, const dvec2& hi) const {
+  bool meets(const dvec2& boxLo, const dvec2& boxHi) const {
+    const dvec2 lo = boxLo - dvec2(slack_), hi = boxHi + dvec2(slack_);
     if (!sweep_detail::boxesMeet(lo_, hi_, lo, hi)) return false;
     double t0 = 0.0, t1 = 1.0;
     for (int axis = 0; axis < 2; ++axis) {
@@ -74,6 +91,7 @@ class SweepSegmentTest {
 
  private:
   dvec2 a_{0.0}, lo_{0.0}, hi_{0.0}, inverse_{0.0};
+  double slack_ = 0.0;  // sweep_detail::segmentSlack
   bool flat_[2] = {true, true};
 };
 

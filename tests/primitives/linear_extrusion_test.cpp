@@ -76,6 +76,33 @@ TEST(LinearExtrusion, RaysAlongTheAxesHitThePrism) {
   EXPECT_FALSE(holed->contains(dvec3(0.9, 0.9, 0.6)));
 }
 
+TEST(LinearExtrusion, RaysAlongThePyramidsAxisOverItsCornersHitIt) {
+  // A scale of 0 makes a pyramid: a ray along the axis at distance ρ from
+  // it, over the line from the centre to a corner, is inside for a height
+  // of h (1 − ρ/r). The ray's image in the profile plane runs out from the
+  // point to 10¹² times the region's size, and through the corner: a ray
+  // going down, as over the mirror image of a pyramid, lost the corner's
+  // crossing to that far end's rounding and found nothing.
+  const double r = 9.5, h = 10.0;
+  std::vector<dvec2> corners;
+  for (int k = 0; k < 6; ++k)
+    corners.push_back(r * dvec2(std::cos(k * kPi / 3), std::sin(k * kPi / 3)));
+  auto pyramid = extrude(test::regionOf({test::polygonLoop(corners)}), h, 0.0, dvec2(0.0));
+  for (const dvec2& corner : corners)
+    for (int step = 1; step < 100; ++step)
+      for (const double off : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6}) {
+        // Over the line to the corner, or a hair to either side of it.
+        const dvec2 p = corner * (step / 100.0) + off * dvec2(-corner.y, corner.x) / r;
+        const double inside = h * (1.0 - step / 100.0);
+        for (const double dz : {1.0, -1.0}) {
+          const Ray ray(dvec3(p, dz > 0 ? -0.02 : h + 0.02), dvec3(0, 0, dz));
+          const SpanList spans = test::spansOf(*pyramid, ray);
+          ASSERT_EQ(spans.size(), 1u) << p.x << ", " << p.y << " dz " << dz;
+          EXPECT_NEAR(spans[0].length(), inside, 1e-5) << p.x << ", " << p.y << " dz " << dz;
+        }
+      }
+}
+
 // OpenSCAD's convention: a positive twist turns the profile clockwise seen
 // from +z, so a bar along +x ends along −y after a quarter turn.
 TEST(LinearExtrusion, PositiveTwistTurnsClockwise) {
