@@ -236,13 +236,43 @@ std::vector<std::vector<typename Mesh::Vertex_index>> coincidentVertices(
 // by giving each of them a vertex of its own there, at one place, which the
 // validity check rightly finds touching. Each such vertex is moved by delta
 // into its own solid, so that the contact becomes a gap of about 2·delta.
-// The moved points are rounded as the file will store them. Returns how
-// many were moved.
+// Where instead the empty sides touch (a countersink's tip on the plate's
+// far face, two cutters corner to corner), the vertices' faces are the two
+// sides of a wall of no thickness: moved into the solid they would cross,
+// so each moves out of it, and the wall becomes about 2·delta thick. A
+// vertex's faces face the others' across a gap when their mean outward
+// normal points towards the others' neighbours. The moved points are
+// rounded as the file will store them. Returns how many were moved.
 template <class Mesh>
 std::size_t separateCoincidentVertices(Mesh& mesh, double delta, StoredCoordinate stored) {
   std::vector<std::pair<typename Mesh::Vertex_index, dvec3>> moved;
-  for (const auto& group : coincidentVertices(mesh))
-    for (auto v : group) moved.emplace_back(v, pointOf(mesh, v) + vertexOffset(mesh, v, -delta));
+  for (const auto& group : coincidentVertices(mesh)) {
+    // Each vertex's faces' mean outward normal, and its neighbours' mean.
+    std::vector<dvec3> normals, middles;
+    for (auto v : group) {
+      dvec3 normal(0.0), middle(0.0);
+      int count = 0;
+      for (auto h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh)) {
+        middle += pointOf(mesh, mesh.source(h));
+        ++count;
+        if (mesh.face(h) == Mesh::null_face()) continue;
+        const auto f = mesh.halfedge(mesh.face(h));
+        const dvec3 a = pointOf(mesh, mesh.source(f)), b = pointOf(mesh, mesh.target(f)),
+                    c = pointOf(mesh, mesh.target(mesh.next(f)));
+        const dvec3 n = glm::cross(b - a, c - a);
+        if (const double length = glm::length(n); length > 0.0) normal += n / length;
+      }
+      normals.push_back(normal);
+      middles.push_back(count > 0 ? middle / double(count) : pointOf(mesh, v));
+    }
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      double facing = 0.0;
+      for (std::size_t j = 0; j < group.size(); ++j)
+        if (j != i) facing += glm::dot(normals[i], middles[j] - middles[i]);
+      const double by = facing < 0.0 ? delta : -delta;
+      moved.emplace_back(group[i], pointOf(mesh, group[i]) + vertexOffset(mesh, group[i], by));
+    }
+  }
   for (auto& [v, q] : moved)
     mesh.point(v) =
         typename Mesh::Point(storedAs(stored, q.x), storedAs(stored, q.y), storedAs(stored, q.z));

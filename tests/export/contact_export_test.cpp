@@ -227,6 +227,31 @@ TEST(ContactExport, ATipOnAFaceIsSplit) {
   }
 }
 
+TEST(ContactExport, ACutterWhoseTipTouchesTheFarFaceLeavesAWallThere) {
+  // A countersink whose tip lies on the plate's far face, from either side,
+  // and two pockets corner to corner: the part's empty sides touch at a
+  // point. Each side's vertex there was moved into the part, as solids
+  // that touch at a point are kept apart, and the two crossed ("faces
+  // cross", "self-intersecting"). They move out of it: a wall of a
+  // fiftieth of the tolerance closes the tip, and the pockets are cavities
+  // of their own.
+  const double cone = kPi * 16.0 * 5.0 / 3.0;  // π r² h / 3
+  for (const char* source :
+       {"return box{size={20, 20, 5}} - cone{r=4, h=5}:mirror(0, 0, 1):translate(10, 10, 5)",
+        "return box{size={20, 20, 5}} - cone{r=4, h=5}:translate(10, 10, 0)"}) {
+    // The cone's polygon lies within the tolerance of its side, π r l.
+    const TriangleMesh mesh =
+        exportsValid(source, 2000.0 - cone, kTolerance * kPi * 4 * std::sqrt(41.0));
+    EXPECT_EQ(meshShells(mesh).count, 1u) << source;
+  }
+  const TriangleMesh mesh =
+      exportsValid("return box(10) - box(2):translate(3, 3, 3) - box(2):translate(5, 5, 5)",
+                   1000.0 - 16.0, 0.01);
+  const MeshShells shells = meshShells(mesh);
+  EXPECT_EQ(shells.count, 3u);
+  EXPECT_EQ(shells.cavities, 2u);
+}
+
 TEST(ContactExport, SolidsStackedAtAHeightComputedInDoublesAreOneShell) {
   // 0.1 + 0.2 is 0.30000000000000004: the upper solid stood a unit in the
   // last place above the lower one's top, they were joined without a
