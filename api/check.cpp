@@ -37,7 +37,7 @@ CheckReport reportOf(const detail::CheckReport& r) {
   made.summary = detail::checkReportText(r, "check()");
   made.failure = r.failure;
   if (!r.failure.empty()) return made;
-  made.mesh = {r.meshOk(), r.triangles, r.meshDefect, r.shells, r.modelPieces};
+  made.mesh = {r.meshOk(), r.triangles, r.meshDefect, r.shells, r.cavities, r.modelPieces};
   made.classification.ok = r.classificationOk();
   made.classification.points = r.points;
   made.classification.agree = r.agree;

@@ -110,8 +110,10 @@ std::string checkReportText(const CheckReport& r, const std::string& name) {
   s << "  mesh            " << mark(r.meshOk()) << "  " << r.triangles << " triangles: "
     << (r.meshDefect.empty() ? "closed, 2-manifold, outward, no self-intersections" : r.meshDefect)
     << "\n";
-  s << "  shells                  " << r.shells << " (the model is " << r.modelPieces << " piece"
-    << (r.modelPieces == 1 ? "" : "s") << ")\n";
+  s << "  shells                  " << r.shells;
+  if (r.cavities > 0)
+    s << ", " << r.cavities << (r.cavities == 1 ? " of them a cavity" : " of them cavities");
+  s << " (the model is " << r.modelPieces << " piece" << (r.modelPieces == 1 ? "" : "s") << ")\n";
   if (r.points == 0 && r.options.samples > 0) {
     s << "  classification  " << mark(false)
       << "  not done: the mesh is not a closed 2-manifold, so it has no inside\n";
@@ -167,7 +169,8 @@ std::string checkReportJson(const CheckReport& r, const std::string& name) {
   }
   s << ",\n  \"mesh\": {\"ok\": " << (r.meshOk() ? "true" : "false")
     << ", \"triangles\": " << r.triangles << ", \"defect\": " << jsonString(r.meshDefect)
-    << ", \"shells\": " << r.shells << ", \"model_pieces\": " << r.modelPieces << "}";
+    << ", \"shells\": " << r.shells << ", \"cavities\": " << r.cavities
+    << ", \"model_pieces\": " << r.modelPieces << "}";
   s << ",\n  \"classification\": {\"ok\": " << (r.classificationOk() ? "true" : "false")
     << ", \"points\": " << r.points << ", \"agree\": " << r.agree << ", \"in_band\": " << r.inBand
     << ", \"disagree\": " << r.disagreementCount << ", \"disagreements\": [";

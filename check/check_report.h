@@ -63,10 +63,12 @@ struct CheckReport {
   std::string failure;     // the part could not be meshed, or the check not run
   std::string meshDefect;  // empty: closed, 2-manifold, outward, no self-intersections
   std::size_t triangles = 0;
-  // Separate shells of the mesh, and the pieces the model is meant to be:
-  // its objects, and the operands of a union whose boxes keep apart. More
-  // shells than pieces warn of a cut that goes through (docs/check.md).
+  // Separate shells of the mesh, those of them that bound cavities, and
+  // the pieces the model is meant to be: its objects, and the operands of
+  // a union whose boxes keep apart. More shells than pieces, cavities
+  // aside, warn of a cut that goes through (docs/check.md).
   std::size_t shells = 0;
+  std::size_t cavities = 0;
   std::size_t modelPieces = 0;
 
   // Random points in the box, classified by the exact model and by CGAL.

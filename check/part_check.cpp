@@ -52,6 +52,7 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
   report.meshDefect = meshDefect(mesh).text;
   const MeshShells shells = meshShells(mesh);
   report.shells = shells.count;
+  report.cavities = shells.cavities;
   solid.prepare();
   // Shells within twice the tolerance of each other are solids that
   // touch; a point that deep inside a face lies inside its solid.

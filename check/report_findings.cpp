@@ -41,10 +41,11 @@ void reportFindings(const GridTally& tally, const TriangleMesh& mesh, const Mesh
       << limit;
     report.warnings.push_back({kind, m.str(), s->location, 1});
   };
-  if (report.shells > report.modelPieces) {
+  // A cavity's shell is the inside of a piece, not a piece.
+  if (const std::size_t pieces = report.shells - report.cavities; pieces > report.modelPieces) {
     const ShellApproach near = nearestShells(mesh, shells);
     std::ostringstream m;
-    m << "the export falls into " << report.shells << " separate shells, more than the "
+    m << "the export falls into " << pieces << " separate pieces, more than the "
       << report.modelPieces << " piece" << (report.modelPieces == 1 ? "" : "s")
       << " the model is made of: two come within " << near.distance << " of each other at "
       << pointText(0.5 * (near.a + near.b))

@@ -36,6 +36,13 @@ MeshShells meshShells(const TriangleMesh& mesh) {
     }
     shells.shellOfPoint[v] = number[r];
   }
+  // Signed volumes by the divergence theorem: a tetrahedron from the origin
+  // on each triangle, a·(b × c)/6.
+  std::vector<double> volume(next, 0.0);
+  for (const TriangleMesh::Triangle& t : mesh.triangles)
+    volume[shells.shellOfPoint[t[0]]] +=
+        glm::dot(mesh.points[t[0]], glm::cross(mesh.points[t[1]], mesh.points[t[2]])) / 6.0;
+  for (double v : volume) shells.cavities += v < 0.0;
   return shells;
 }
 

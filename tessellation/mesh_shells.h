@@ -13,6 +13,9 @@ namespace csgray::detail {
 
 struct MeshShells {
   std::size_t count = 0;
+  // Of those, the shells that bound a cavity (inside another shell, facing
+  // inwards: their signed volume is negative): not pieces of their own.
+  std::size_t cavities = 0;
   std::vector<std::uint32_t> shellOfPoint;  // by point index; unused points get their own
 };
 

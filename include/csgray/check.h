@@ -47,7 +47,9 @@ struct CheckReport {
     bool ok = false;
     std::size_t triangles = 0;
     std::string defect;  // empty: closed, 2-manifold, outward, no self-intersections
-    std::size_t shells = 0, modelPieces = 0;
+    std::size_t shells = 0;
+    std::size_t cavities = 0;  // of the shells, those that face inwards: walls of cavities
+    std::size_t modelPieces = 0;
   } mesh;
   struct ClassificationItem {
     bool ok = false;

@@ -575,15 +575,18 @@ TEST(Check, ASlotThatCutsThePartInTwoIsWarnedOf) {
   EXPECT_NE(w.message.find("within 0.16 of each other"), std::string::npos) << w.message;
 }
 
-// The part's mesh falls into `shells` shells, the model is `pieces`
-// pieces, and more shells than pieces (and only that) is warned of.
-void expectPieces(const std::string& source, std::size_t shells, std::size_t pieces) {
+// The part's mesh falls into `shells` shells, `cavities` of them the
+// walls of cavities, the model is `pieces` pieces, and more shells than
+// pieces, cavities aside, (and only that) is warned of.
+void expectPieces(const std::string& source, std::size_t shells, std::size_t pieces,
+                  std::size_t cavities = 0) {
   SCOPED_TRACE(source);
   const Scene scene = script(source);
   const CheckReport report = checkPart(*scene.objects[0], quick());
   EXPECT_EQ(report.shells, shells);
+  EXPECT_EQ(report.cavities, cavities);
   EXPECT_EQ(report.modelPieces, pieces);
-  EXPECT_EQ(hasWarning(report, "separate shells"), shells > pieces)
+  EXPECT_EQ(hasWarning(report, "separate shells"), shells - cavities > pieces)
       << checkReportText(report, "part");
 }
 
@@ -608,6 +611,16 @@ TEST(Check, PartsInsideEachOthersBoxesThatDoNotTouchAreApart) {
       "          + cylinder{r=3.5, h=1}:translate(10, 10, 12.5)\n"
       "return box{size={20, 20, 2}} + sleeve + pin",
       2, 2);
+}
+
+TEST(Check, ACavityIsTheInsideOfAPieceNotAPiece) {
+  // A hollow ball is two shells, the inner one facing inwards: one piece,
+  // and no cut (it was warned of as one, and --strict failed it). So is a
+  // block with two cavities; a ball inside the hollow ball's cavity is a
+  // piece of its own.
+  expectPieces("return sphere(10) - sphere(8)", 2, 1, 1);
+  expectPieces("return box(10) - box(2):translate(2, 2, 2) - box(2):translate(6, 6, 6)", 3, 1, 2);
+  expectPieces("return sphere(10) - sphere(8) + sphere(5)", 3, 2, 1);
 }
 
 TEST(Check, SolidsKeptApartWhereTheyTouchAreOnePiece) {
