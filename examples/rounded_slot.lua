@@ -29,7 +29,13 @@ local handle = hull(sphere(3):translate(x / 2 - 12, y / 2, t), sphere(3):transla
 local pad = linear_extrude{minkowski(square{size={12, 8}}, regular_polygon{n=8, r=2}), height=1.5}
   :translate(5, y / 2 - 4, t)
 
-local part = difference(plate + handle + pad, {slot(x / 2, y * 0.2), slot(x / 2, y * 0.8)})
+-- A corner guard: an L of straight edges, not convex, grown by an octagon
+-- (the L moved, each of its edges swept over the octagon), extruded.
+local L = square{size={16, 3}} + square{size={3, 12}}
+local guard = linear_extrude{minkowski(L, regular_polygon{n=8, r=1}), height=2}
+  :translate(x - 22, 5, t)
+
+local part = difference(plate + handle + pad + guard, {slot(x / 2, y * 0.2), slot(x / 2, y * 0.8)})
 return scene{
   objects = {part:material{color={0.7, 0.72, 0.75}, specular=0.6, shininess=60}},
   camera  = camera{eye={x * 1.2, -y * 1.6, 70}, look_at={x / 2, y / 2, 0}, fov=40},

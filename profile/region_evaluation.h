@@ -87,8 +87,12 @@ Profile offsetDelta(const Region& region, double delta, bool chamfer, double ell
 Profile hull(std::span<const RegionPtr> regions, double ellipseTolerance);
 // The Minkowski sum a ⊕ b (every sum of a point of a and one of b), exact
 // where one is a circle (the other's rounded offset, moved by the
-// centre) or both are convex and one is a polygon (the hull of copies of
-// the other at its corners); anything else is refused.
+// centre), both are convex and one is a polygon (the hull of copies of
+// the other at its corners), or one is convex and the other a polygon
+// (that one moved, with each of its edges swept over the convex one);
+// where that other has arcs, they are cut into segments within a part in
+// 10⁴ of its size first. Two shapes neither of which is convex are
+// refused.
 Profile minkowskiSum(const RegionPtr& a, const RegionPtr& b, double ellipseTolerance);
 
 }  // namespace csgray::detail

@@ -335,10 +335,36 @@ TEST(HullScript, RegionPlusCircleIsItsRoundedOffset) {
       "       r:area())\n"
       "return linear_extrude(s, {height=1})",
       "part.lua");
+  // A shape of straight edges that is not convex, with a convex one: the
+  // shape moved, and each of its edges swept over the other. An L of three
+  // unit squares and a unit square make a square of 3 less its far corner;
+  // a square of 10 with a hole of 4 and a disc-ended bar keep a hole.
+  runScript(
+      "local L = square(2) - square(1):translate(1, 1)\n"
+      "local m = minkowski(L, square(1))\n"
+      "assert(math.abs(m:area() - 8) < 1e-9, m:area())\n"
+      "local ring = square(10) - square(4):translate(3, 3)\n"
+      "local bar = hull(circle(0.5), circle(0.5):translate(1, 0))\n"
+      "local r = minkowski(ring, bar)\n"
+      // Outside, 12 by 11 with corners rounded by 0.5; the hole shrinks
+      // by the bar's length across and its width both ways: 2 by 3.
+      "local outside = 12 * 11 - (4 - math.pi) * 0.25\n"
+      "assert(math.abs(r:area() - (outside - 2 * 3)) < 1e-9, r:area())\n"
+      // A ring and a unit square: the disc of 5 grown (its area, the
+      // square's and the mixed term 5 · 4), less the hole: the points whose
+      // square lies in the disc of 3, the four discs at its corners met. The
+      // arcs are cut within 10⁻⁴ of the ring's size: the area within that
+      // times the ring's perimeter.
+      "local ringSum = minkowski(circle(5) - circle(3), square(1))\n"
+      "local hole = intersection(circle(3), circle(3):translate(1, 0), circle(3):translate(0, 1),\n"
+      "                          circle(3):translate(1, 1))\n"
+      "local want = math.pi * 25 + 1 + 5 * 4 - hole:area()\n"
+      "assert(math.abs(ringSum:area() - want) < 16 * math.pi * 1e-3, ringSum:area() - want)\n"
+      "return linear_extrude(m, {height=1})",
+      "part.lua");
   EXPECT_EQ(scriptError("local L = square(2) - square(1):translate(1, 1)\n"
-                        "return minkowski(L, square(1))"),
-            "part.lua:2: minkowski: of two regions, one must be a circle, or both convex and one "
-            "a polygon");
+                        "return minkowski(L, L)"),
+            "part.lua:2: minkowski: of two regions, one must be convex or a circle");
 }
 
 TEST(HullScript, ErrorsNameTheLine) {
