@@ -34,9 +34,13 @@ std::shared_ptr<const LinearExtrusion> LinearExtrusion::withRims(
 TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
   // Circles a cylinder stands on take its rim polygon (flatten()), at the
-  // whole tolerance, as the cylinder's: the sides are straight prisms.
+  // whole tolerance, as the cylinder's: the sides are straight prisms. A
+  // scale above 1 stretches the polygons' chords with the profile, so they
+  // are cut that much finer (a ring flared to twice its size and twisted
+  // was 1.3 tolerances off at the top).
   bool pinched = false;
-  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance, "linear_extrude",
+  const double grown = std::max({1.0, scale_.x, scale_.y});
+  SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance / grown, "linear_extrude",
                                 prism() ? rims_ : std::vector<CircleRim>{}, tolerance, &pinched);
   auto measure = [&](double& reach, double& longest, std::size_t& points) {
     reach = longest = 0.0;
@@ -69,7 +73,7 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
     // side quad over an edge of length ℓ turned by Δθ between slices,
     // which bends it out of its plane by at most Δθ·ℓ/4: longer edges
     // are split.
-    const double stretch = std::max({1.0, scale_.x, scale_.y});
+    const double stretch = grown;
     const double r = reach * stretch;
     slices = arcSegments(r, std::abs(twist_), 0.5 * half, 1);
     requireTriangleBudget(kind(), 2.0 * double(points) * slices, tolerance);

@@ -13,6 +13,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "check_support.h"
 #include "engine/boolean.h"
 #include "export/cgal/mesh_validity.h"
 #include "primitives/box.h"
@@ -267,6 +268,21 @@ TEST(LinearExtrusion, NormalsFaceOutward) {
     ASSERT_TRUE(p);
     test::expectOutwardUnitNormals(*p, 1e-9, 500, 7);
   }
+}
+
+TEST(LinearExtrusion, FlaredExtrusionsAreMeshedWithinTheTolerance) {
+  // A scale above 1 stretches the polygons of the region's circles with
+  // the profile: cut for the base, their chords were up to 1.4 tolerances
+  // off the exact sides at the top (a tube flared to three times its
+  // size, a cone opening to four, flared and twisted rings).
+  const std::string sources[] = {
+      "return linear_extrude{circle{r=10} - circle{r=8}, height=50, scale=3}",
+      "return linear_extrude{circle{r=10}, height=20, scale=4}",
+      "return linear_extrude{circle{r=10} - circle{r=8}, height=50, twist=90, scale=2}",
+      "return linear_extrude{square{size=10, center=true} - circle{r=3}, height=30, twist=120, "
+      "scale=2.5}"};
+  for (const std::string& source : sources)
+    EXPECT_TRUE(test::checksOut(*test::solidOf(source), 0.01)) << source;
 }
 
 TEST(LinearExtrusion, MeshesAreValidSolids) {
