@@ -104,6 +104,14 @@ int heightMap(lua_State* L) {
     if (map.rows >= 2 && map.columns >= 2) {
       const std::size_t triangles =
           4 * (map.rows - 1) * (map.columns - 1) + 4 * (map.rows + map.columns);
+      // A map that could not be built even alone says so, with its file.
+      const std::size_t limit = Sandbox::of(L).memoryLimit();
+      if (triangles > limit / kBuildBytesPerTriangle)
+        throw std::invalid_argument(*file + ": a map of " + std::to_string(map.columns) + " x " +
+                                    std::to_string(map.rows) + " heights takes about " +
+                                    std::to_string(triangles * kBuildBytesPerTriangle >> 20) +
+                                    " MiB to build, more than the script's memory limit of " +
+                                    std::to_string(limit >> 20) + " MiB");
       Sandbox::of(L).charge(L, triangles * kBuildBytesPerTriangle);
       Sandbox::of(L).release(triangles * kBuildBytesPerTriangle);
     }

@@ -35,6 +35,8 @@ class Sandbox {
   void charge(lua_State* L, std::size_t bytes);
   // Gives back what charge() counted, when the holder is collected.
   void release(std::size_t bytes) { used_ -= std::min(bytes, used_); }
+  // The cap charge() holds the script's memory to, in bytes.
+  std::size_t memoryLimit() const { return limits_.memoryBytes; }
 
   // C++ objects that the script's values share (held_objects.h): each is
   // counted once, from when a value first holds it until it is destroyed.

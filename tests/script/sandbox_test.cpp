@@ -208,8 +208,11 @@ TEST(Sandbox, AHeightMapPastTheMemoryLimitStopsBeforeItsMesh) {
   const auto error = [&](const std::string& source) {
     return test::scriptError(source, options, "evil.lua");
   };
+  // A map that could not be built within the limit even alone names its
+  // file and what it would take.
   EXPECT_EQ(error("local s = sphere(1)\nreturn height_map{file='hill.png'}"),
-            "evil.lua:2: script exceeded the memory limit of 64 MiB");
+            "evil.lua:2: height_map: hill.png: a map of 180 x 180 heights takes about 98 MiB to "
+            "build, more than the script's memory limit of 64 MiB");
   EXPECT_EQ(loads, 1);
   options.loadImage = [](const std::string&) {
     TextureImage image;
