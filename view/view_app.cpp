@@ -3,7 +3,11 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <memory>
+#include <mutex>
 #include <thread>
 
 #include "view/file_watcher.h"
@@ -30,10 +34,45 @@ void openBrowser(const std::string& url) {
   std::thread([pid] { waitpid(pid, nullptr, 0); }).detach();
 }
 
+// A line on standard error if the work it is held over takes longer than
+// `seconds` (a slow script's first run, before the page can be served), so
+// that the terminal is not silent meanwhile.
+class NoticeIfSlow {
+ public:
+  NoticeIfSlow(std::string line, double seconds)
+      : thread_([this, seconds, line = std::move(line)] {
+          std::unique_lock lock(mutex_);
+          if (!done_.wait_for(lock, std::chrono::duration<double>(seconds),
+                              [this] { return finished_; }))
+            std::fprintf(stderr, "%s\n", line.c_str());
+        }) {}
+  ~NoticeIfSlow() {
+    {
+      std::lock_guard lock(mutex_);
+      finished_ = true;
+    }
+    done_.notify_one();
+    thread_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_;
+  bool finished_ = false;
+  std::thread thread_;
+};
+
+std::unique_ptr<ViewSession> firstRun(const ViewOptions& options) {
+  NoticeIfSlow notice("csgray: running " + options.script + "; the page is served once it has run",
+                      options.slowRunSeconds);
+  return std::make_unique<ViewSession>(options.script, options.scriptOptions, options.threads);
+}
+
 }  // namespace
 
 int serveView(const ViewOptions& options) {
-  ViewSession session(options.script, options.scriptOptions, options.threads);
+  const std::unique_ptr<ViewSession> first = firstRun(options);
+  ViewSession& session = *first;
   FileWatcher watcher([&] {
     session.reload();
     watcher.watch(session.state().files);

@@ -18,6 +18,9 @@ struct ViewOptions {
   int port = 0;       // 0: a free one
   bool open = false;  // open the page in the browser (xdg-open)
   int threads = 0;    // 0: one per core
+  // A first run of the script longer than this says so on standard error
+  // before the page is served.
+  double slowRunSeconds = 1.0;
   // Makes the web server (makeViewServer of view_server.h, which the
   // command line loads from a module).
   std::function<std::unique_ptr<HttpServer>(ViewService&, const std::string& address, int port)>
