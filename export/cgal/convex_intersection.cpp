@@ -42,8 +42,8 @@ std::optional<std::vector<BoundingPlane>> extrusionPlanes(const LinearExtrusion&
   for (const ProfileEdge& e : edges) {
     const dvec3 a(e.from, z0), b(e.to, z0), top(s * e.from, z1);
     dvec3 normal = glm::normalize(glm::cross(b - a, top - a));
+    if (!std::isfinite(normal.x)) return std::nullopt;  // an edge of no length
     if (glm::dot(normal, inside - a) > 0.0) normal = -normal;
-    if (!std::isfinite(normal.x)) return std::nullopt;
     planes.push_back({normal, glm::dot(normal, a)});
   }
   return planes;
