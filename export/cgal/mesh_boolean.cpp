@@ -1052,8 +1052,7 @@ class Evaluator {
     const double grownBefore = a.grown, shrunkBefore = a.shrunk;
     keepMoves(a, b, op);
     if (attempt(a, b, op)) {
-      if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces)
-        roundIfValid(a, kCollinearReach * tolerance_);
+      if (order_.doubles && a.mesh.number_of_faces() < kPerturbedFaces) roundIfValid(a);
       return boxAfter(a);
     }
     // CGAL cannot make a 2-manifold: the operands touch along an edge (or
@@ -1167,27 +1166,8 @@ class Evaluator {
   // (removeDegenerateFaces), which moves no other point, and the piece is
   // kept in doubles if that leaves it valid; else it stays exact, and
   // every boolean it goes into is CGAL's.
-  //
-  // First, the points the corefinement left on straight creases that hold
-  // no shape (collinear_points.h: a box's diagonal across a post's foot)
-  // are dropped, within `reach`: rounded, such a point tilts the faces it
-  // is a corner of off their plane by a unit in the last place, and a
-  // solid whose faces lie in that plane (a collar of the post's radius
-  // around it) then met them as faces that cross at a sliver's angle, not
-  // as faces that coincide, and the union kept both walls.
-  static void roundIfValid(Piece& piece, double reach) {
+  static void roundIfValid(Piece& piece) {
     Mesh& mesh = piece.mesh;
-    {
-      DoubleMesh dropped{trianglesOf(mesh), {}};
-      const auto exactTags = tagsOf(std::as_const(mesh));
-      for (auto f : mesh.faces()) dropped.tags.push_back(exactTags[f]);
-      if (dropCollinearPoints(dropped.mesh, dropped.tags, reach) > 0 &&
-          meshDefect(dropped.mesh).valid()) {
-        piece.doubles = std::move(dropped);
-        mesh = Mesh();
-        return;
-      }
-    }
     const TriangleMesh rounded = trianglesOf(mesh);
     const MeshDefect defect = meshDefect(rounded);
     if (defect.valid()) {

@@ -537,24 +537,6 @@ double extreme(const TriangleMesh& mesh, int axis, double sign) {
   return sign * most;
 }
 
-TEST(ContactExport, ACollarAroundAPostOnAPlateLeavesNoWallInside) {
-  // A post with a turned collar of its radius, both on a plate, the plate
-  // written first (as OpenSCAD's parts are). The plate's diagonal crosses
-  // the post's foot, and the union made a point there on the crease; once
-  // rounded to doubles it tilted the post's faces off their plane by a unit
-  // in the last place, and the collar's wall, in that plane, then met them
-  // as faces that cross: the union kept both walls inside the part, which
-  // failed the check. Plate, post 5 × 20, collar 5 to 8 × 3.
-  const double volume = 40.0 * 40.0 * 3.0 + kPi * 25.0 * 20.0 + kPi * (64.0 - 25.0) * 3.0;
-  const double slack = kTolerance * (2 * 40 * 40 + 2 * kPi * 5 * 20 + 2 * kPi * 8 * 3);
-  const std::string plate = "box{size={40, 40, 3}, center=true}:translate(0, 0, -1.5)";
-  const std::string post = "cylinder{r=5, h=20}";
-  const std::string collar = "rotate_extrude{square{size={3, 3}}:translate(5, 0)}";
-  for (const std::string& source : {"return " + plate + " + " + post + " + " + collar,
-                                    "return " + post + " + (" + plate + " + " + collar + ")"})
-    exportsValid(source, volume, slack);
-}
-
 TEST(ContactExport, ABoxAsWideAsTheCylinderItHalvesLeavesNoFins) {
   // The box's sides touch the cylinder along four lines above z = 5; the
   // cylinder's mesh, whose points lie outside the circle, pokes past them,
