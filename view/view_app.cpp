@@ -42,8 +42,10 @@ class NoticeIfSlow {
   NoticeIfSlow(std::string line, double seconds)
       : thread_([this, seconds, line = std::move(line)] {
           std::unique_lock lock(mutex_);
-          if (!done_.wait_for(lock, std::chrono::duration<double>(seconds),
-                              [this] { return finished_; }))
+          // No time at all: said whatever the work did meanwhile (else a
+          // quick run could finish before this thread looked).
+          if (seconds <= 0.0 || !done_.wait_for(lock, std::chrono::duration<double>(seconds),
+                                                [this] { return finished_; }))
             std::fprintf(stderr, "%s\n", line.c_str());
         }) {}
   ~NoticeIfSlow() {

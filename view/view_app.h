@@ -19,7 +19,7 @@ struct ViewOptions {
   bool open = false;  // open the page in the browser (xdg-open)
   int threads = 0;    // 0: one per core
   // A first run of the script longer than this says so on standard error
-  // before the page is served.
+  // before the page is served (with 0, every first run says so).
   double slowRunSeconds = 1.0;
   // Makes the web server (makeViewServer of view_server.h, which the
   // command line loads from a module).
