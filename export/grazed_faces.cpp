@@ -99,6 +99,9 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
     // slab; past the tolerance, the face cuts into it.
     double reach = 0.0;
     dvec3 furthest(0.0);
+    // Points of the parts of triangles beyond the face, moved onto it:
+    // where the exact minuend would reach past it if it does.
+    std::vector<dvec3> over;
     for (std::uint32_t i : nearby) {
       const TriangleMesh::Triangle& t = minuend_.triangles[i];
       const dvec3 p[3] = {minuend_.points[t[0]], minuend_.points[t[1]], minuend_.points[t[2]]};
@@ -129,12 +132,30 @@ bool GrazeTest::clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bound
           reach = d;
           furthest = q;
         }
+      // A grid of points on each triangle of the part's fan, on the face.
+      constexpr int kSteps = 6;
+      for (std::size_t k = 1; k + 1 < clipped.size(); ++k)
+        for (int a = 0; a <= kSteps; ++a)
+          for (int b = 0; a + b <= kSteps; ++b) {
+            const dvec3 q = (double(a) * clipped[0] + double(b) * clipped[k] +
+                             double(kSteps - a - b) * clipped[k + 1]) /
+                            double(kSteps);
+            over.push_back(q - (glm::dot(face.normal, q) - face.offset) * face.normal);
+          }
       if (reach > tolerance) break;
     }
-    if (reach > 0.0 && reach <= tolerance && !inside_(furthest - 0.5 * reach * face.normal)) {
-      planes[j].offset = face.offset + reach + 0.1 * tolerance;
-      moved = true;
-    }
+    if (!(reach > 0.0 && reach <= tolerance) || inside_(furthest - 0.5 * reach * face.normal))
+      continue;
+    // A skin thinner than the mesh's bulge (a pocket's top 0.002 inside a
+    // rod's tangent plane) lies over the face where the mesh does, but the
+    // point halfway to the mesh's furthest one may lie past it: the face's
+    // own points a hair outwards, under the parts beyond it, are asked too.
+    const double hairOut = 1e-9 * glm::length(box.size());
+    if (std::any_of(over.begin(), over.end(),
+                    [&](const dvec3& p) { return inside_(p + hairOut * face.normal); }))
+      continue;
+    planes[j].offset = face.offset + reach + 0.1 * tolerance;
+    moved = true;
   }
   return moved;
 }

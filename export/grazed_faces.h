@@ -41,8 +41,10 @@ class GrazeTest {
   // beyond the plane; if what lies beyond reaches no further than the
   // tolerance, the plane moves out a tenth of the tolerance past it, unless
   // the exact minuend holds the point halfway there from the mesh's point
-  // that reaches furthest. Each plane is judged against the planes as they
-  // were. Returns whether any moved.
+  // that reaches furthest, or a point of the face a hair outwards under a
+  // grid of points of what lies beyond it (a skin thinner than the mesh's
+  // bulge). Each plane is judged against the planes as they were. Returns
+  // whether any moved.
   bool clearGrazedFaces(std::vector<BoundingPlane>& planes, const Bounds& box) const;
 
  private:

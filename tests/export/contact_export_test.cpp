@@ -872,6 +872,26 @@ TEST(ContactExport, APocketCutFromARodsTangentPlaneByAnExtrusionLeavesNoSkin) {
   }
 }
 
+TEST(ContactExport, APocketTopJustInsideARodsTangentPlaneKeepsTheSkinOverIt) {
+  // The same pockets with their top 0.002 inside the tangent plane: the
+  // rod keeps a skin that thin over a strip of the pocket (0.4 wide), the
+  // model's. The mesh's polygon bulges past the exact circle by more than
+  // that, and the point halfway to its furthest point lay outside the rod,
+  // so the top was moved through the skin (the check failed, a box's top
+  // too). The face's own points under the bulge are asked as well.
+  for (const char* cutter :
+       {"box{4, 4, 2}", "linear_extrude{square(4), height=2}",
+        "linear_extrude{polygon{{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}}, height=2}"}) {
+    const std::string source = std::string("return cylinder{r=10, h=12}:rotate(0, 90, 0) - ") +
+                               cutter + ":translate(4, -2, 8 - 0.002)";
+    MeshBooleanStats stats;
+    const SolidPtr solid = part(source);
+    meshOfSolid(*solid, kTolerance, nullptr, &stats);
+    EXPECT_EQ(stats.grazes, 0u) << source;
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance)) << source;
+  }
+}
+
 TEST(ContactExport, AHemisphereCutByABoxAsWideAsTheBall) {
   // The box's sides touch the ball's equator, and its bottom the south
   // pole: the ball's mesh, a little outside the sphere, kept slivers below
