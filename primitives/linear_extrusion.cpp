@@ -317,6 +317,20 @@ struct TwistedPath {
 
 }  // namespace
 
+std::optional<std::vector<std::vector<dvec2>>> LinearExtrusion::polygonLoops() const {
+  if (twist_ != 0.0 || scale_.x != scale_.y) return std::nullopt;
+  const Region& region = *swept_->region();
+  std::vector<std::vector<dvec2>> loops;
+  for (const ProfileLoop& loop : evaluate(region, evaluationTolerance(region)).loops) {
+    loops.emplace_back();
+    for (const ProfileEdge& e : loop.edges) {
+      if (e.kind != ProfileEdge::Kind::Segment) return std::nullopt;
+      loops.back().push_back(e.from);
+    }
+  }
+  return loops;
+}
+
 SolidPtr LinearExtrusion::sweepOf(RegionPtr region) const {
   return placedAs(std::make_shared<LinearExtrusion>(std::move(region), height_, z0_ != 0.0,
                                                     twistDegrees_, scale_));

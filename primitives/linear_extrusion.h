@@ -14,6 +14,9 @@
 // kSweepEndFace the top, then one per edge of the region (profile_sweep.h).
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include "primitives/primitive_shape.h"
 #include "primitives/profile_sweep.h"
 #include "profile/region_evaluation.h"
@@ -42,6 +45,11 @@ class LinearExtrusion : public PrimitiveShape<LinearExtrusion>, public RegionSwe
 
   // Straight: no twist, and a scale of 1 (its sides are prisms).
   bool prism() const { return twist_ == 0.0 && scale_.x == 1.0 && scale_.y == 1.0; }
+  // The region's loops as their corners (each loop's points in order, the
+  // first not repeated) where every edge is a segment and the sides are
+  // planes (no twist, one scale on both axes): a polyhedron's, for hulls
+  // and flat cutters. Nothing for a curved region or other sides.
+  std::optional<std::vector<std::vector<dvec2>>> polygonLoops() const;
   // A copy whose export cuts the region's circles that are among `rims`
   // (in its plane) on those cylinders' rim polygons (flatten()), as a
   // prism: the exporter gives it the circles that the part's cylinders

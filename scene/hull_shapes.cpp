@@ -65,17 +65,16 @@ std::vector<dvec3> cornersOf(const Primitive& p) {
     corners = convex->vertices();
   } else if (const auto* mesh = dynamic_cast<const MeshSolid*>(&p)) {
     corners = mesh->points();
-  } else if (const auto* sweep = dynamic_cast<const LinearExtrusion*>(&p);
-             sweep && sweep->twistDegrees() == 0.0 && sweep->scale().x == sweep->scale().y) {
-    // Untwisted and scaled alike on both axes, a polygon's sides sweep
-    // planes: the corners at the bottom, and scaled at the top.
-    const Region& region = *sweep->region();
+  } else if (const auto* sweep = dynamic_cast<const LinearExtrusion*>(&p)) {
+    // A polygon's sides sweep planes: the corners at the bottom, and
+    // scaled at the top.
+    const auto loops = sweep->polygonLoops();
+    if (!loops) return {};  // curved or twisted: no corners
     const double z0 = sweep->bottom(), z1 = z0 + sweep->height(), s = sweep->scale().x;
-    for (const ProfileLoop& loop : evaluate(region, evaluationTolerance(region)).loops)
-      for (const ProfileEdge& e : loop.edges) {
-        if (e.kind != ProfileEdge::Kind::Segment) return {};  // curved: no corners
-        corners.push_back({e.from.x, e.from.y, z0});
-        if (s > 0.0) corners.push_back({s * e.from.x, s * e.from.y, z1});
+    for (const std::vector<dvec2>& loop : *loops)
+      for (const dvec2& u : loop) {
+        corners.push_back({u.x, u.y, z0});
+        if (s > 0.0) corners.push_back({s * u.x, s * u.y, z1});
       }
     if (s == 0.0) corners.push_back({0.0, 0.0, z1});  // a pyramid's apex
   }

@@ -19,28 +19,24 @@ namespace {
 // the polygon, through the edge at the bottom and its scaled copy at the
 // top. Nothing for any other extrusion.
 std::optional<std::vector<BoundingPlane>> extrusionPlanes(const LinearExtrusion& sweep) {
-  if (sweep.twistDegrees() != 0.0 || sweep.scale().x != sweep.scale().y) return std::nullopt;
-  const Region& region = *sweep.region();
-  const Profile profile = evaluate(region, evaluationTolerance(region));
-  if (profile.loops.size() != 1) return std::nullopt;
-  const std::vector<ProfileEdge>& edges = profile.loops[0].edges;
-  if (edges.size() < 3) return std::nullopt;
+  const auto loops = sweep.polygonLoops();
+  if (!loops || loops->size() != 1 || (*loops)[0].size() < 3) return std::nullopt;
+  const std::vector<dvec2>& corners = (*loops)[0];
+  const std::size_t n = corners.size();
   // One counterclockwise loop (evaluate's outer loops are) that turns left
   // at every corner is convex.
   dvec2 centroid(0.0);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const ProfileEdge& e = edges[i];
-    const ProfileEdge& next = edges[(i + 1) % edges.size()];
-    if (e.kind != ProfileEdge::Kind::Segment) return std::nullopt;
-    const dvec2 d0 = e.to - e.from, d1 = next.to - next.from;
+  for (std::size_t i = 0; i < n; ++i) {
+    const dvec2 d0 = corners[(i + 1) % n] - corners[i];
+    const dvec2 d1 = corners[(i + 2) % n] - corners[(i + 1) % n];
     if (d0.x * d1.y - d0.y * d1.x < 0.0) return std::nullopt;
-    centroid += e.from / double(edges.size());
+    centroid += corners[i] / double(n);
   }
   const double z0 = sweep.bottom(), z1 = z0 + sweep.height(), s = sweep.scale().x;
   const dvec3 inside(centroid * (1.0 + s) / 2.0, (z0 + z1) / 2.0);
   std::vector<BoundingPlane> planes{{dvec3(0.0, 0.0, -1.0), -z0}, {dvec3(0.0, 0.0, 1.0), z1}};
-  for (const ProfileEdge& e : edges) {
-    const dvec3 a(e.from, z0), b(e.to, z0), top(s * e.from, z1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const dvec3 a(corners[i], z0), b(corners[(i + 1) % n], z0), top(s * corners[i], z1);
     dvec3 normal = glm::normalize(glm::cross(b - a, top - a));
     if (!std::isfinite(normal.x)) return std::nullopt;  // an edge of no length
     if (glm::dot(normal, inside - a) > 0.0) normal = -normal;
