@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "engine/boolean.h"
+#include "engine/degrees.h"
 #include "primitives/cylinder.h"
 
 namespace csgray::detail {
@@ -106,6 +107,60 @@ std::optional<CirclePolygon> SweptRims::turnedWallPolygon(const Primitive& origi
     polygon.error = r * (1.0 - std::cos(std::numbers::pi / *steps));
     polygon.phase = -std::atan2((*axes)[0].y, (*axes)[0].x);
     return polygon;
+  }
+  return std::nullopt;
+}
+
+std::optional<CirclePolygon> SweptRims::turnedEndPolygon(const Cylinder& cylinder,
+                                                         double tolerance) const {
+  if (cylinder.r1() != cylinder.r2()) return std::nullopt;
+  const double r = cylinder.r1(), h = cylinder.height();
+  for (const auto& turn : turns_) {
+    const double angle = turn->angleDegrees();
+    if (!(angle < 360.0)) continue;
+    const glm::dmat4 inTurn = turn->frame().objectFromWorld() * cylinder.frame().worldFromObject();
+    // Each end face in turn, turned into the plane y = 0 with the region's
+    // plane (ρ, z) as (x, z): the turn's wedge then lies at y > 0 beside
+    // the start face, and at y < 0 beside the end face.
+    for (const double at : {0.0, angle}) {
+      const dvec2 cs = unitCircleDegrees(at);
+      glm::dmat4 unturn(1.0);
+      unturn[0] = glm::dvec4(cs.x, -cs.y, 0.0, 0.0);
+      unturn[1] = glm::dvec4(cs.y, cs.x, 0.0, 0.0);
+      const glm::dmat4 m = unturn * inTurn;
+      const glm::dvec3 x(m[0]), y(m[1]), z(m[2]), o(m[3]);
+      // Square on the face: the cylinder's axis along ±y, its own x and y
+      // axes unit vectors in the plane.
+      const double size = r + h + glm::length(o);
+      const bool square = std::abs(z.x) <= kSlack && std::abs(z.z) <= kSlack &&
+                          std::abs(std::abs(z.y) - 1.0) <= kSlack && std::abs(x.y) <= kSlack &&
+                          std::abs(y.y) <= kSlack && std::abs(glm::length(x) - 1.0) <= kSlack &&
+                          std::abs(glm::length(y) - 1.0) <= kSlack &&
+                          std::abs(glm::dot(x, y)) <= kSlack;
+      if (!square) continue;
+      // The end on the face, the other end outside the wedge.
+      const glm::dvec3 top = o + h * z;
+      const double outward = at == 0.0 ? -1.0 : 1.0;
+      glm::dvec3 foot;
+      if (std::abs(o.y) <= kSlack * size && top.y * outward > 0.0)
+        foot = o;
+      else if (std::abs(top.y) <= kSlack * size && o.y * outward > 0.0)
+        foot = top;
+      else
+        continue;
+      const dvec2 center(foot.x, foot.z);
+      if (!(center.x - r > 0.0)) continue;
+      const auto loop = turn->circleLoop(center, r, turn->objectTolerance(tolerance));
+      if (!loop) continue;
+      // The loop's point at loop->phase about the centre, in the
+      // cylinder's own angles: its x and y axes are orthonormal in (x, z).
+      const dvec2 d(std::cos(loop->phase), std::sin(loop->phase));
+      CirclePolygon polygon;
+      polygon.segments = loop->segments;
+      polygon.error = r * (1.0 - std::cos(std::numbers::pi / loop->segments));
+      polygon.phase = std::atan2(glm::dot(dvec2(y.x, y.z), d), glm::dot(dvec2(x.x, x.z), d));
+      return polygon;
+    }
   }
   return std::nullopt;
 }

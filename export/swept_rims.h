@@ -18,7 +18,13 @@
 // there the cylinder gives way: a cylinder standing in a turn's wall of
 // its radius takes that turn's rings (turnedWallPolygon), and where the
 // turn is not whole, those of the whole turn whose share it is
-// (Revolution::wallSteps: 270°, three quarters of one).
+// (Revolution::wallSteps: 270°, three quarters of one). A cylinder
+// standing square on an end face of a turn that is not whole, on a circle
+// of its region (a pipe's straight leg on its bend), takes that circle's
+// polygon in the turn's mesh (Revolution::circleLoop), so that the leg's
+// end and the bend's face meet point for point to rounding, in whatever
+// plane the face lies; the union then glues them there
+// (export/cgal/glued_caps.h).
 #pragma once
 
 #include <functional>
@@ -61,6 +67,18 @@ class SweptRims {
   std::optional<CirclePolygon> turnedWallPolygon(const Primitive& original,
                                                  const Cylinder& cylinder, double tolerance) const;
 
+  // The polygon a cylinder of the part takes where one of its ends lies
+  // on an end face of a turn that is not whole (a pipe's straight leg on
+  // its bend), on a circle of the turn's region: that circle's polygon in
+  // the turn's mesh (Revolution::circleLoop), turned as the cylinder is,
+  // so that the cylinder's end and the turn's face have the same points
+  // to rounding (the union glues them: export/cgal/glued_caps.h). The
+  // cylinder must stand square on the face, outside the turn's wedge,
+  // unscaled; nothing otherwise, or for a cone. (A cylinder that cuts
+  // takes it too: the bore of a pipe's leg, united with the bend's bore.)
+  // `cylinder` is placed as the part's primitives are.
+  std::optional<CirclePolygon> turnedEndPolygon(const Cylinder& cylinder, double tolerance) const;
+
   bool empty() const { return cylinders_.empty(); }
 
  private:
@@ -70,7 +88,7 @@ class SweptRims {
   };
   std::vector<Rim> cylinders_;             // those that do not only cut
   std::unordered_set<const Solid*> kept_;  // the same, by the part's primitive
-  // The part's full turns, each placed as the part's primitives are.
+  // The part's turns, whole or not, each placed as the part's primitives are.
   std::vector<std::shared_ptr<const Revolution>> turns_;
 };
 

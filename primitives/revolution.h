@@ -45,6 +45,19 @@ class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
   // standing in that wall takes those rings (export/swept_rims.h).
   std::optional<int> wallSteps(double radius, double z0, double z1, double tolerance) const;
 
+  // For export: the polygon a circle of the region (its centre in the
+  // profile plane and its radius) takes in this turn's mesh at `tolerance`
+  // (in its own frame), where one of the mesh's loops is that circle's
+  // inscribed regular polygon: its sides, and the angle about the centre
+  // of one of its points. Nothing otherwise. A cylinder standing on an end
+  // face of the turn, on that circle, takes the same polygon
+  // (export/swept_rims.h), so that the two meet point for point.
+  struct CircleLoop {
+    int segments;
+    double phase;
+  };
+  std::optional<CircleLoop> circleLoop(const dvec2& center, double radius, double tolerance) const;
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;

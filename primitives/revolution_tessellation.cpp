@@ -108,4 +108,35 @@ std::optional<int> Revolution::wallSteps(double radius, double z0, double z1,
   return std::nullopt;
 }
 
+std::optional<Revolution::CircleLoop> Revolution::circleLoop(const dvec2& center, double radius,
+                                                             double tolerance) const {
+  // The arc's points are on their circle to rounding; the centre asked
+  // for may be off by what the frames' products and the grid of 2⁻³⁰, to
+  // which the exporter snaps the frames of a part turned as a whole, leave
+  // of it (as for a cylinder's rim, region_evaluation.h).
+  constexpr double kSlack = 1e-9;
+  const Turned made = turned(tolerance);
+  for (const auto& loop : made.loops) {
+    const std::size_t n = loop.size();
+    if (n < 3) continue;
+    dvec2 mean(0.0);
+    for (const dvec2& u : loop) mean += u;
+    mean /= double(n);
+    if (glm::length(mean - center) > kSlack * (radius + glm::length(center)) + 0x1p-30) continue;
+    auto onCircle = [&](const dvec2& u) {
+      return std::abs(glm::length(u - mean) - radius) <= kSlack * radius;
+    };
+    if (!std::all_of(loop.begin(), loop.end(), onCircle)) continue;
+    // Regular: each side the same chord, 2·r·sin(π/n).
+    const double side = 2.0 * radius * std::sin(std::numbers::pi / double(n));
+    bool regular = true;
+    for (std::size_t i = 0; i < n && regular; ++i)
+      regular = std::abs(glm::length(loop[(i + 1) % n] - loop[i]) - side) <= kSlack * radius;
+    if (!regular) continue;
+    const dvec2 first = loop[0] - mean;
+    return CircleLoop{int(n), std::atan2(first.y, first.x)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace csgray::detail

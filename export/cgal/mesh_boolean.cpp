@@ -28,6 +28,7 @@
 #include "export/cgal/convex_intersection.h"
 #include "export/cgal/double_boolean.h"
 #include "export/cgal/exact_boolean.h"
+#include "export/cgal/glued_caps.h"
 #include "export/cgal/glued_union.h"
 #include "export/cgal/mesh_validity.h"
 #include "export/cgal/rounded_repair.h"
@@ -686,9 +687,12 @@ class Evaluator {
       std::vector<CircleRim> rims = rims_->of(*sweep);
       if (!rims.empty()) return sweep->withRims(std::move(rims))->tessellate(tolerance_, region);
     }
-    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_)
-      if (const auto polygon = rims_->turnedWallPolygon(primitive, *cylinder, tolerance_))
-        return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
+    if (auto* cylinder = dynamic_cast<const Cylinder*>(&shape); cylinder && rims_) {
+      std::optional<CirclePolygon> polygon =
+          rims_->turnedWallPolygon(primitive, *cylinder, tolerance_);
+      if (!polygon) polygon = rims_->turnedEndPolygon(*cylinder, tolerance_);
+      if (polygon) return cylinder->withPolygon(*polygon)->tessellate(tolerance_, region);
+    }
     return shape.tessellate(tolerance_, region);
   }
 
@@ -819,6 +823,7 @@ class Evaluator {
     closeHairGaps(pieces);
     alignWalls(pieces);
     glueStacked(pieces);
+    glueLegsOnTurns(pieces);
     std::vector<std::vector<Piece>> groups;
     for (Piece& piece : pieces) {
       if (piece.empty()) continue;
@@ -893,6 +898,51 @@ class Evaluator {
         }
       }
     }
+  }
+
+  // A cylinder standing on an end face of a turn that is not whole, on
+  // the turn's own polygon (a pipe's leg on its bend: turnedEndPolygon),
+  // is glued to the piece that holds the turn there (glueAtSharedCap):
+  // the face may lie in any plane, and the two meshes' points on it
+  // differ in their last bits (in a part turned as a whole, by the grid
+  // of 2⁻³⁰ its frames are snapped to), which a corefinement would leave
+  // as slivers along the walls.
+  void glueLegsOnTurns(std::vector<Piece>& pieces) {
+    for (Piece& leg : pieces) {
+      if (!onTurnsEnd(leg)) continue;
+      std::optional<DoubleMesh> legMade = leg.doubles ? std::nullopt : doublesOf(leg.mesh);
+      const DoubleMesh* b = leg.doubles ? &*leg.doubles : legMade ? &*legMade : nullptr;
+      for (Piece& turn : pieces) {
+        if (!b || &turn == &leg || turn.empty() || !turn.box.overlaps(leg.box)) continue;
+        // (Pieces made exact by the steps before may still hold doubles.)
+        std::optional<DoubleMesh> made = turn.doubles ? std::nullopt : doublesOf(turn.mesh);
+        DoubleMesh* a = turn.doubles ? &*turn.doubles : made ? &*made : nullptr;
+        if (!a) continue;
+        const dvec3 far = glm::max(glm::abs(turn.box.lo), glm::abs(turn.box.hi)) +
+                          glm::max(glm::abs(leg.box.lo), glm::abs(leg.box.hi));
+        const double reach = 1e-9 * std::max({far.x, far.y, far.z});
+        if (!glueAtSharedCap(*a, *b, turn.box, leg.box, reach)) continue;
+        if (made) {
+          turn.doubles = std::move(made);
+          turn.mesh = Mesh();
+        }
+        ++stats_.glued;
+        turn.box.include(leg.box);
+        turn.shape = 0;
+        keepMoves(turn, leg, Boolean::Op::Union);
+        leg = Piece{};
+        break;
+      }
+    }
+  }
+
+  // Is the piece a cylinder's that took a turn's polygon for its end?
+  bool onTurnsEnd(const Piece& piece) const {
+    auto* primitive = dynamic_cast<const Primitive*>(piece.origin);
+    if (!primitive || !rims_ || !dynamic_cast<const Cylinder*>(primitive)) return false;
+    const std::shared_ptr<const Primitive> placed = placedPrimitive(*primitive);
+    auto* cylinder = dynamic_cast<const Cylinder*>(placed ? placed.get() : primitive);
+    return cylinder && rims_->turnedEndPolygon(*cylinder, tolerance_).has_value();
   }
 
   Piece balanced(std::vector<Piece> pieces, Boolean::Op op) {

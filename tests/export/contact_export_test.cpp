@@ -767,6 +767,51 @@ TEST(ContactExport, AnAxleInATurnedSectorsBoreMeetsItOnItsPoints) {
   EXPECT_NEAR(tiny.volume(), 50.0 * 15.0 * 1e-8 * kPi / 180.0, 1e-12);
 }
 
+TEST(ContactExport, APipesStraightLegsMeetItsBendOnItsPoints) {
+  // A bend of a rod (a circle turned through an angle) with a straight
+  // leg of its radius on each end face: on an end face that lies in no
+  // plane of the axes, the leg's own polygon and the bend's crossed a
+  // hair apart, and the union was refused as self-intersecting after
+  // half a minute (at 10° to 170°, all but 45°, 90° and 135°). A leg now
+  // takes the bend's polygon of that circle and is glued to the bend
+  // there; a flange across the leg then crosses plain walls, where it
+  // met slivers of a corefinement before. Volume by Pappus: the
+  // circle's area times its centre's path, and the legs.
+  const double R = 30.0, r = 4.0, L = 12.0;
+  auto elbow = [&](double degrees, double radius, double length) {
+    const std::string a = std::to_string(degrees), rr = std::to_string(radius),
+                      h = std::to_string(length);
+    return "rotate_extrude{circle{r=" + rr + "}:translate(30, 0), angle=" + a + "}" +
+           " + cylinder{r=" + rr + ", h=" + h + "}:rotate(90, 0, 0):translate(30, 0, 0)" +
+           " + cylinder{r=" + rr + ", h=" + h + "}:rotate(-90, 0, 0):translate(30, 0, 0)" +
+           ":rotate(0, 0, " + a + ")";
+  };
+  auto path = [&](double degrees) { return R * degrees * kPi / 180.0 + 2.0 * L; };
+  for (double degrees : {30.0, 120.0, 157.5}) {
+    SCOPED_TRACE(degrees);
+    const double area = 2.0 * kPi * r * path(degrees) + 2.0 * kPi * r * r;
+    exportsValid("return " + elbow(degrees, r, L), kPi * r * r * path(degrees), kTolerance * area);
+  }
+  // Turned and moved as a whole.
+  exportsValid("return (" + elbow(70.0, r, L) + "):rotate(20, 30, 10):translate(5, 6, 7)",
+               kPi * r * r * path(70.0), kTolerance * 2.0 * kPi * r * (path(70.0) + r));
+  // A flange on the end of the slanted leg, placed as the leg is: its
+  // faces cross the leg's walls, and its outer face is flush with the
+  // leg's end.
+  const double flange = 8.0, thick = 3.0;
+  exportsValid("return " + elbow(50.0, r, L) + " + cylinder{r=" + std::to_string(flange) +
+                   ", h=" + std::to_string(thick) + "}:rotate(-90, 0, 0):translate(30, " +
+                   std::to_string(L - thick) + ", 0):rotate(0, 0, 50)",
+               kPi * r * r * path(50.0) + kPi * (flange * flange - r * r) * thick,
+               kTolerance * 2.0 * kPi * (r * path(50.0) + flange * (flange + thick)));
+  // Hollow, as OpenSCAD users write it: the rod less a thinner rod whose
+  // legs reach past the ends (a cylinder that cuts takes the polygon too).
+  const double inner = 3.0;
+  exportsValid("return (" + elbow(65.0, r, L) + ") - (" + elbow(65.0, inner, L + 1.0) + ")",
+               kPi * (r * r - inner * inner) * path(65.0),
+               kTolerance * 2.0 * kPi * (r + inner) * (path(65.0) + r));
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as
