@@ -100,6 +100,7 @@ struct EvaluationFrame {
   glm::dmat3 worldFromEval{1.0};
   glm::dmat3 evalFromWorld{1.0};
   bool identity = true;
+  bool exact = false;  // evalFromWorld's entries all 0 or ±1
 
   explicit EvaluationFrame(const Solid& solid) {
     const Solid* first = &solid;
@@ -121,14 +122,24 @@ struct EvaluationFrame {
     worldFromEval = linear;
     evalFromWorld = glm::inverse(linear);
     identity = false;
+    // A quarter turn or a mirror across the axes' planes (every entry 0 or
+    // ±1: a hull of upright cylinders is an extrusion placed so) takes
+    // frames back exactly, and snapping would only move what was exact: a
+    // counterbore's translation of 2.3 to the grid, its top then a hair
+    // off the plate's face it was flush with.
+    exact = true;
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r)
+        exact = exact && (evalFromWorld[c][r] == 0.0 || std::abs(evalFromWorld[c][r]) == 1.0);
   }
 
   static double snapped(double x) { return std::ldexp(std::nearbyint(std::ldexp(x, 30)), -30); }
 
   Affine evalFrame(const Affine& frame) const {
     glm::dmat4 m = glm::dmat4(evalFromWorld) * frame.worldFromObject();
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 3; ++r) m[c][r] = snapped(m[c][r]);
+    if (!exact)
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) m[c][r] = snapped(m[c][r]);
     return Affine::fromMatrix(m);
   }
   Bounds evalBounds(const Bounds& b) const {

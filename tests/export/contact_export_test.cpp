@@ -1421,6 +1421,37 @@ TEST(ContactExport, HolesTurnedOntoABoltCircleFlushWithThePlatesFace) {
       exact, kTolerance * 5 * 2 * kPi * (30 + 3 * 2.5));
 }
 
+TEST(ContactExport, CounterboresFlushWithTheTopOfAQuarterTurnedPlate) {
+  // A plate made by hull() of four upright cylinders (an extrusion of the
+  // hull of their discs, placed by a quarter turn), less a counterbore
+  // and a countersink whose tops are flush with its top face: the frames
+  // were snapped to a grid of 2⁻³⁰ in the plate's frame, the counterbore's
+  // 2.3 with them, and its top a hair off the face; the difference was
+  // refused as self-intersecting. A quarter turn takes frames back
+  // exactly, and they are no longer snapped. Volumes: the rounded
+  // rectangle times its height, less a cylinder and a frustum.
+  const double W = 134.0, D = 62.0, T = 4.0, R = 8.1;
+  const double plate = (W * D - (4.0 - kPi) * R * R) * T;
+  const double bore = kPi * 3.4 * 3.4 * 1.7;
+  const double sink = kPi * 1.7 / 3.0 * (1.7 * 1.7 + 1.7 * 3.4 + 3.4 * 3.4);
+  const std::string hull =
+      "local c = {}\n"
+      "for _, p in ipairs({{8.1, 8.1}, {125.9, 8.1}, {8.1, 53.9}, {125.9, 53.9}}) do\n"
+      "  c[#c + 1] = cylinder{r=8.1, h=4}:translate(p[1], p[2], 0)\n"
+      "end\n"
+      "local plate = hull(c)\n";
+  const double slack = kTolerance * 2.0 * (W * D + (W + D) * T);
+  exportsValid(hull + "return plate - cylinder{r=3.4, h=1.7}:translate(20, 20, 2.3)", plate - bore,
+               slack);
+  exportsValid(hull + "return plate - cylinder{r1=1.7, r2=3.4, h=1.7}:translate(9.8, 9.8, 2.3)",
+               plate - sink, slack);
+  // A box turned a quarter by the script, with a pocket flush with its top.
+  exportsValid(
+      "return box{size={30, 20, 4}}:rotate(0, 0, 90) - cylinder{r=3, h=1.7}:translate(-10, 10, "
+      "2.3)",
+      30 * 20 * 4 - kPi * 9 * 1.7, kTolerance * 2.0 * (600 + 200 + 100 * 4));
+}
+
 TEST(ContactExport, AnAxleTurnedOrMirroredAgainstItsWheelFillsTheBore) {
   // A wheel (a rim r = 8 to 10 and two crossed spokes 2 wide, 3 thick, a
   // bore r = 2) and an axle of the bore's radius turned the other way, or
