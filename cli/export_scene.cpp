@@ -131,7 +131,9 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
         counts.grazes == 1 ? "" : "s", counts.strayShells, counts.strayShells == 1 ? "" : "s",
         counts.holesFilled   ? "; made on a last try, holes that pins of their radius fill left out"
         : counts.sweepsApart ? "; made on a last try, sweeps of touching regions taken apart"
-        : counts.pinchesOpened  ? "; made on a last try, regions that touch themselves opened there"
+        : counts.pinchesOpened ? "; made on a last try, regions that touch themselves opened there"
+        : counts.framesAsWritten
+            ? "; made on a last try, the turned part's places taken back as written, not snapped"
         : counts.reordered == 0 ? ""
         : counts.reordered == 1 ? "; made on a second try, each union's operands in reverse order"
                                 : "; made on a last try, each union's operands shuffled");

@@ -11,6 +11,7 @@
 #include <bit>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <optional>
@@ -94,13 +95,21 @@ constexpr std::size_t kMaxExportTriangles = 10'000'000;
 // in the frame of its first primitive's rotation: each primitive's frame
 // is taken back through that rotation, and its entries, off by rounding
 // only, are snapped to a grid of 2⁻³⁰ (a change of about 10⁻⁹, far below
-// any tolerance), which makes flush faces flush again. The result is
-// turned back at the end.
+// any tolerance), whose numbers add up exactly, so that faces flush as
+// sums of such (the boxes of a Menger sponge) are flush again. But a
+// number not in a frame does not move with them: a pocket 1.7 deep, its
+// place 2.3 snapped to the grid, is then a hair off a plate's top at 4.
+// So where that fails, the part is made once more with the entries put
+// back as written instead (written): an entry within 2⁻⁴⁰ of its
+// column's largest is 0, and one within rounding (10⁻¹⁴ of it) of a
+// number of 12 significant digits is that number, as a script writes
+// them; the others go to the grid. The result is turned back at the end.
 struct EvaluationFrame {
   glm::dmat3 worldFromEval{1.0};
   glm::dmat3 evalFromWorld{1.0};
   bool identity = true;
-  bool exact = false;  // evalFromWorld's entries all 0 or ±1
+  bool exact = false;    // evalFromWorld's entries all 0 or ±1
+  bool written = false;  // entries put back as written where they can be
 
   explicit EvaluationFrame(const Solid& solid) {
     const Solid* first = &solid;
@@ -124,24 +133,39 @@ struct EvaluationFrame {
     identity = false;
     // A quarter turn or a mirror across the axes' planes (every entry 0 or
     // ±1: a hull of upright cylinders is an extrusion placed so) takes
-    // frames back exactly, and snapping would only move what was exact: a
-    // counterbore's translation of 2.3 to the grid, its top then a hair
-    // off the plate's face it was flush with.
+    // frames back exactly, and they are kept as they are.
     exact = true;
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r)
         exact = exact && (evalFromWorld[c][r] == 0.0 || std::abs(evalFromWorld[c][r]) == 1.0);
   }
 
+  // x as written, from x off by rounding, in a column whose largest entry
+  // is `largest`.
   static double snapped(double x) { return std::ldexp(std::nearbyint(std::ldexp(x, 30)), -30); }
+
+  // x as written, from x off by rounding, in a column whose largest entry
+  // is `largest`; else snapped.
+  static double restored(double x, double largest) {
+    if (std::abs(x) <= 0x1p-40 * largest) return 0.0;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.12g", x);
+    const double written = std::strtod(text, nullptr);
+    return std::abs(written - x) <= 1e-14 * std::abs(x) ? written : snapped(x);
+  }
 
   Affine evalFrame(const Affine& frame) const {
     glm::dmat4 m = glm::dmat4(evalFromWorld) * frame.worldFromObject();
     if (!exact)
-      for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 3; ++r) m[c][r] = snapped(m[c][r]);
+      for (int c = 0; c < 4; ++c) {
+        const double largest = std::max({std::abs(m[c][0]), std::abs(m[c][1]), std::abs(m[c][2])});
+        for (int r = 0; r < 3; ++r)
+          m[c][r] = written ? restored(m[c][r], largest) : snapped(m[c][r]);
+      }
     return Affine::fromMatrix(m);
   }
+  // Do frames move when taken back (snapped or restored)?
+  bool moves() const { return !identity && !exact; }
   Bounds evalBounds(const Bounds& b) const {
     if (identity || b.empty()) return b;
     if (!b.finite()) {
@@ -355,6 +379,9 @@ struct EvaluationOrder {
   // A boolean in doubles that declines for want of general position tried
   // again with one operand moved off the other (perturbedInDoubles).
   bool perturb = true;
+  // The frames of a part turned as a whole put back as written, not
+  // snapped (EvaluationFrame::written), for a last try.
+  bool written = false;
 
   template <class T>
   void arrange(std::vector<T>& items) const {
@@ -1760,7 +1787,8 @@ PartMesh partOf(const RoundedMesh& rounded, std::vector<MaterialPtr> materials) 
 // or reversed (meshOfSolid).
 PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stored,
                      MeshBooleanStats& counts, const EvaluationOrder& order, bool& refusedPinch) {
-  const EvaluationFrame frame(solid);
+  EvaluationFrame frame(solid);
+  frame.written = order.written;
   const Bounds box = frame.evalBounds(solid.bounds());
   // Not for a file that keeps fewer digits than a float near 1 (3MF's six
   // decimals, which lib3mf prints by rules that storedAs follows only
@@ -1918,6 +1946,23 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
+    // A part turned as a whole, once more with its solids' places taken
+    // back as written (EvaluationFrame), in the script's order.
+    if (EvaluationFrame(solid).moves()) {
+      MeshBooleanStats attempt;
+      bool refusedPinch = false;
+      EvaluationOrder asWritten;
+      asWritten.doubles = doubles;
+      asWritten.written = true;
+      try {
+        PartMesh mesh =
+            meshTryingDoubles(solid, tolerance, stored, attempt, asWritten, refusedPinch);
+        attempt.framesAsWritten = true;
+        counts = attempt;
+        return mesh;
+      } catch (const std::runtime_error&) {
+      }
+    }
     // The last tries, each from the part as given, rewritten; whatever
     // stops them, the first error stands: holes that pins of their radius
     // fill left out (export/filled_holes.h); sweeps of touching regions

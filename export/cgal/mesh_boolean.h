@@ -36,6 +36,7 @@ struct MeshBooleanStats {
   bool holesFilled = false;       // made on a last try, holes that pins fill left out
   bool sweepsApart = false;       // made on a last try, sweeps of touching regions taken apart
   bool pinchesOpened = false;     // made on a last try, regions that touch themselves opened
+  bool framesAsWritten = false;   // made on a last try, a turned part's places as written
   // 0: made with the operands in the script's order; 1: reversed, on a
   // second try; more: shuffled, on a last try.
   std::size_t reordered = 0;

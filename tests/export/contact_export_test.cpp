@@ -1421,7 +1421,7 @@ TEST(ContactExport, HolesTurnedOntoABoltCircleFlushWithThePlatesFace) {
       exact, kTolerance * 5 * 2 * kPi * (30 + 3 * 2.5));
 }
 
-TEST(ContactExport, CounterboresFlushWithTheTopOfAQuarterTurnedPlate) {
+TEST(ContactExport, CounterboresFlushWithTheTopOfATurnedPlate) {
   // A plate made by hull() of four upright cylinders (an extrusion of the
   // hull of their discs, placed by a quarter turn), less a counterbore
   // and a countersink whose tops are flush with its top face: the frames
@@ -1445,11 +1445,18 @@ TEST(ContactExport, CounterboresFlushWithTheTopOfAQuarterTurnedPlate) {
                slack);
   exportsValid(hull + "return plate - cylinder{r1=1.7, r2=3.4, h=1.7}:translate(9.8, 9.8, 2.3)",
                plate - sink, slack);
-  // A box turned a quarter by the script, with a pocket flush with its top.
-  exportsValid(
-      "return box{size={30, 20, 4}}:rotate(0, 0, 90) - cylinder{r=3, h=1.7}:translate(-10, 10, "
-      "2.3)",
-      30 * 20 * 4 - kPi * 9 * 1.7, kTolerance * 2.0 * (600 + 200 + 100 * 4));
+  // A box turned a quarter by the script, with a pocket flush with its
+  // top; and the part turned as a whole by other angles, where the grid
+  // of 2⁻³⁰ moves the pocket's 2.3 too (the part is made again with its
+  // places taken back as written).
+  const double pocketed = 30 * 20 * 4 - kPi * 9 * 1.7;
+  const double pocketSlack = kTolerance * 2.0 * (600 + 200 + 100 * 4);
+  const std::string pocket = "cylinder{r=3, h=1.7}:translate(10, 10, 2.3)";
+  exportsValid("return box{size={30, 20, 4}}:rotate(0, 0, 90) - " + pocket + ":rotate(0, 0, 90)",
+               pocketed, pocketSlack);
+  for (const char* turn : {"0, 0, 30", "17, 20, 0", "45, 0, 45"})
+    exportsValid("return (box{size={30, 20, 4}} - " + pocket + "):rotate(" + turn + ")", pocketed,
+                 pocketSlack);
 }
 
 TEST(ContactExport, AnAxleTurnedOrMirroredAgainstItsWheelFillsTheBore) {
