@@ -132,6 +132,8 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
         counts.holesFilled   ? "; made on a last try, holes that pins of their radius fill left out"
         : counts.sweepsApart ? "; made on a last try, sweeps of touching regions taken apart"
         : counts.pinchesOpened ? "; made on a last try, regions that touch themselves opened there"
+        : counts.cuttersLengthened
+            ? "; made on a last try, the cylinders it cuts away a tenth of the tolerance longer"
         : counts.framesAsWritten
             ? "; made on a last try, the turned part's places taken back as written, not snapped"
         : counts.reordered == 0 ? ""

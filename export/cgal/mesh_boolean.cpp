@@ -37,6 +37,7 @@
 #include "export/collinear_points.h"
 #include "export/filled_holes.h"
 #include "export/grazed_faces.h"
+#include "export/lengthened_cutters.h"
 #include "export/merged_sweeps.h"
 #include "export/opened_pinches.h"
 #include "export/sweeps_apart.h"
@@ -86,6 +87,11 @@ constexpr double kCollinearReach = 1e-6;
 // The booleans hold each triangle in exact arithmetic, some hundreds of
 // bytes: this many are a few GB.
 constexpr std::size_t kMaxExportTriangles = 10'000'000;
+// How much longer, in tolerances, the last try makes the cylinders a part
+// cuts away past each end (export/lengthened_cutters.h): far past the
+// rounding that leaves a bore's end a hair off its tube's, and within
+// the tolerance.
+constexpr double kLengthenedCutters = 0.1;
 
 // The frame the booleans are evaluated in. A part turned as a whole (or
 // mirrored) has that turn folded into every primitive's frame, where it is
@@ -1936,13 +1942,25 @@ PartMesh meshInOrders(const Solid& solid, double tolerance, StoredCoordinate sto
 // meshInOrders tries, and at last with the sweeps of touching regions
 // taken apart (export/sweeps_apart.h); where that fails too, the first
 // error.
-PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate stored,
+PartMesh meshOfFlatPart(const Solid& given, double tolerance, StoredCoordinate stored,
                         MeshBooleanStats& counts, bool doubles) {
-  const Bounds box = EvaluationFrame(solid).evalBounds(solid.bounds());
+  const EvaluationFrame frame(given);
+  const Bounds box = frame.evalBounds(given.bounds());
   if (!box.empty() && !box.finite())
     throw std::invalid_argument(
         "the part is unbounded, or bounded only by half-spaces, whose reach csgray does not "
         "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
+  // The cylinders it cuts away along a slant (their axes along none of the
+  // evaluation's axes) made a little longer: their ends, flush with a
+  // slanted tube's, lie in its plane only to rounding
+  // (export/lengthened_cutters.h).
+  auto slanted = [&](const Cylinder& cylinder) {
+    const glm::dvec4 axis = frame.evalFrame(cylinder.frame()).worldFromObject()[2];
+    return int(axis.x != 0.0) + int(axis.y != 0.0) + int(axis.z != 0.0) > 1;
+  };
+  const SolidPtr lengthened =
+      cuttersLengthened(given.shared_from_this(), kLengthenedCutters * tolerance, slanted);
+  const Solid& solid = *lengthened;
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
@@ -1965,13 +1983,19 @@ PartMesh meshOfFlatPart(const Solid& solid, double tolerance, StoredCoordinate s
     }
     // The last tries, each from the part as given, rewritten; whatever
     // stops them, the first error stands: holes that pins of their radius
-    // fill left out (export/filled_holes.h); sweeps of touching regions
+    // fill left out (export/filled_holes.h); cylinders cut away made a
+    // little longer (export/lengthened_cutters.h); sweeps of touching regions
     // taken apart (export/sweeps_apart.h); sweeps side by side merged even
     // where that touches itself, and sweeps of regions that touch
     // themselves opened there (export/opened_pinches.h).
     const SolidPtr part = solid.shared_from_this();
     const std::pair<std::function<SolidPtr()>, bool MeshBooleanStats::*> lastTries[] = {
         {[&] { return filledHolesDropped(part); }, &MeshBooleanStats::holesFilled},
+        {[&] {
+           return cuttersLengthened(part, kLengthenedCutters * tolerance,
+                                    [](const Cylinder&) { return true; });
+         },
+         &MeshBooleanStats::cuttersLengthened},
         {[&] { return sweepsTakenApart(part); }, &MeshBooleanStats::sweepsApart},
         {[&] { return pinchesOpened(sweepsMerged(part, true), kContactOffset * tolerance); },
          &MeshBooleanStats::pinchesOpened},

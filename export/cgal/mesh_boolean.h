@@ -22,21 +22,22 @@ constexpr double kContactOffset = 0.01;
 
 // What the evaluation did, for --stats and the benchmarks.
 struct MeshBooleanStats {
-  std::size_t primitives = 0;     // primitives tessellated
-  std::size_t corefinements = 0;  // boolean operations on meshes
-  std::size_t inDoubles = 0;      // of them, made in doubles (double_boolean.h), not by CGAL
-  std::size_t perturbed = 0;      // of those, one operand moved off the other (perturbedInDoubles)
-  bool redoneByCgal = false;      // the part failed its check with booleans in doubles
-  std::size_t merges = 0;         // operands joined without one (boxes apart)
-  std::size_t glued = 0;          // unions of solids stacked on the same faces
-  std::size_t repairs = 0;        // self-intersections from rounding removed
-  std::size_t contacts = 0;       // booleans whose operands touched (docs/cli.md)
-  std::size_t strayShells = 0;    // slivers outside the exact part, removed
-  std::size_t grazes = 0;         // flat cutters moved clear of a part they only graze
-  bool holesFilled = false;       // made on a last try, holes that pins fill left out
-  bool sweepsApart = false;       // made on a last try, sweeps of touching regions taken apart
-  bool pinchesOpened = false;     // made on a last try, regions that touch themselves opened
-  bool framesAsWritten = false;   // made on a last try, a turned part's places as written
+  std::size_t primitives = 0;      // primitives tessellated
+  std::size_t corefinements = 0;   // boolean operations on meshes
+  std::size_t inDoubles = 0;       // of them, made in doubles (double_boolean.h), not by CGAL
+  std::size_t perturbed = 0;       // of those, one operand moved off the other (perturbedInDoubles)
+  bool redoneByCgal = false;       // the part failed its check with booleans in doubles
+  std::size_t merges = 0;          // operands joined without one (boxes apart)
+  std::size_t glued = 0;           // unions of solids stacked on the same faces
+  std::size_t repairs = 0;         // self-intersections from rounding removed
+  std::size_t contacts = 0;        // booleans whose operands touched (docs/cli.md)
+  std::size_t strayShells = 0;     // slivers outside the exact part, removed
+  std::size_t grazes = 0;          // flat cutters moved clear of a part they only graze
+  bool holesFilled = false;        // made on a last try, holes that pins fill left out
+  bool sweepsApart = false;        // made on a last try, sweeps of touching regions taken apart
+  bool pinchesOpened = false;      // made on a last try, regions that touch themselves opened
+  bool framesAsWritten = false;    // made on a last try, a turned part's places as written
+  bool cuttersLengthened = false;  // made on a last try, cylinders cut away made a little longer
   // 0: made with the operands in the script's order; 1: reversed, on a
   // second try; more: shuffled, on a last try.
   std::size_t reordered = 0;

@@ -812,6 +812,30 @@ TEST(ContactExport, APipesStraightLegsMeetItsBendOnItsPoints) {
                kTolerance * 2.0 * kPi * (r + inner) * (path(65.0) + r));
 }
 
+TEST(ContactExport, SlantedTubesWithBoresFlushWithTheirEnds) {
+  // A tube turned by 30° with a bore of its own length, beside a box that
+  // comes first (so the part is not cut in the tube's frame): the bore's
+  // ends and the tube's lie in one slanted plane only to rounding, and the
+  // difference was refused as self-intersecting. The bore is now made a
+  // tenth of the tolerance longer past each end. Volume: the ring's area
+  // times the length, and the box.
+  exportsValid(
+      "return box(1):translate(0, -30, 0) + (cylinder{r=8, h=32}:rotate(30, 0, 0) - "
+      "cylinder{r=6.5, h=32}:rotate(30, 0, 0))",
+      1.0 + kPi * (64.0 - 42.25) * 32.0, kTolerance * 2.0 * kPi * (8.0 + 6.5) * (32.0 + 8.0));
+  // A hollow elbow whose bore's legs end flush with the rod's (a Y or an
+  // elbow cut so by OpenSCAD's users crashed CGAL or was refused).
+  const double R = 25.0, ro = 7.0, ri = 5.5, leg = 15.0, path = R * 2.0 * kPi / 3.0 + 2.0 * leg;
+  const std::string rod =
+      "local function rod(r)\n"
+      "  return rotate_extrude{circle{r=r}:translate(25, 0), angle=120}\n"
+      "    + cylinder{r=r, h=15}:rotate(90, 0, 0):translate(25, 0, 0)\n"
+      "    + cylinder{r=r, h=15}:rotate(-90, 0, 0):translate(25, 0, 0):rotate(0, 0, 120)\n"
+      "end\n";
+  exportsValid(rod + "return rod(7) - rod(5.5)", kPi * (ro * ro - ri * ri) * path,
+               kTolerance * 2.0 * kPi * (ro + ri) * (path + ro));
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as

@@ -1,0 +1,30 @@
+// Cylinders cut away, made a little longer: a last try for a part whose
+// bores end flush with slanted faces.
+//
+// A tube turned by an angle that is not a quarter (a pipe's branch at
+// 37.5°, an elbow's leg) with a bore of its length: the bore's ends and
+// the tube's lie in one slanted plane only to rounding, each placed by
+// its own frame, and the difference of the meshes keeps slivers between
+// the two faces a hair apart, which the rounding to the file's precision
+// folds over (the export fails as self-intersecting). A cutter that goes
+// on past the face cuts the same tube and meets no face at a sliver's
+// angle. Lengthening a cutter by less than the tolerance changes the part
+// by less than the tolerance wherever it ends, so the export takes it as
+// a last try, where the part as given fails.
+#pragma once
+
+#include <functional>
+
+#include "engine/solid.h"
+#include "primitives/cylinder.h"
+
+namespace csgray::detail {
+
+// The part with every cylinder and cone in a difference's cutters that
+// `which` takes made longer by `by` (in the world's lengths) past each end
+// (a cone's end widened or narrowed along its side; an end at a cone's tip
+// is left where it is); the part itself when it makes none so.
+SolidPtr cuttersLengthened(const SolidPtr& part, double by,
+                           const std::function<bool(const Cylinder&)>& which);
+
+}  // namespace csgray::detail
