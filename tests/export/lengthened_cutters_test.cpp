@@ -1,0 +1,59 @@
+// Cylinders and cones cut away, made longer past each end: a cone goes on
+// along its side, a tip stays where it is, and only the cutters that the
+// choice takes change.
+#include "export/lengthened_cutters.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/boolean.h"
+#include "test_support.h"
+
+namespace csgray::detail {
+namespace {
+
+// The cutter of a difference `part` (box less one cutter).
+const Solid& cutterOf(const SolidPtr& part) { return *part->asBoolean()->children()[1]; }
+
+TEST(LengthenedCutters, AConeGoesOnAlongItsSideAndATipStays) {
+  // A cone r = 1 at z = 0 to r = 2 at z = 4, turned by 30° about x; its
+  // side widens by a quarter per unit along the axis.
+  const SolidPtr part =
+      test::solidOf("return box(10) - cylinder{r1=1, r2=2, h=4}:rotate(30, 0, 0)");
+  const SolidPtr longer = cuttersLengthened(part, 0.4, [](const Cylinder&) { return true; });
+  ASSERT_NE(longer, part);
+  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(1, 0, 0));
+  auto at = [&](double radius, double z) { return dvec3(turn * glm::dvec4(radius, 0.0, z, 1.0)); };
+  const Solid& cone = cutterOf(longer);
+  EXPECT_TRUE(cone.contains(at(2.09, 4.38)));   // past the old top, within r = 2.1
+  EXPECT_FALSE(cone.contains(at(2.12, 4.38)));  // outside the side going on
+  EXPECT_FALSE(cone.contains(at(0.0, 4.42)));   // past the new top
+  EXPECT_TRUE(cone.contains(at(0.89, -0.38)));  // below the old bottom, within r = 0.9
+  EXPECT_FALSE(cone.contains(at(0.92, -0.38)));
+  EXPECT_FALSE(cutterOf(part).contains(at(0.0, 4.2)));  // the part given is as it was
+
+  // A cone to a tip at its top: the tip is not moved, the bottom is.
+  const SolidPtr tip = test::solidOf("return box(10) - cylinder{r1=1, r2=0, h=4}");
+  const SolidPtr pointedPart = cuttersLengthened(tip, 0.4, [](const Cylinder&) { return true; });
+  const Solid& pointed = cutterOf(pointedPart);
+  EXPECT_FALSE(pointed.contains({0.0, 0.0, 4.1}));
+  EXPECT_TRUE(pointed.contains({0.0, 0.0, 3.9}));
+  EXPECT_TRUE(pointed.contains({0.0, 0.0, -0.3}));
+}
+
+TEST(LengthenedCutters, OnlyTheCuttersChosenAndNothingElse) {
+  // The minuend's cylinder keeps its length; a cutter not chosen is the
+  // part itself again.
+  const SolidPtr part = test::solidOf("return cylinder{r=3, h=2} - cylinder{r=1, h=2}");
+  EXPECT_EQ(cuttersLengthened(part, 0.5, [](const Cylinder&) { return false; }), part);
+  const SolidPtr longer = cuttersLengthened(part, 0.5, [](const Cylinder&) { return true; });
+  const Solid& kept = *longer->asBoolean()->children()[0];
+  EXPECT_FALSE(kept.contains({2.0, 0.0, 2.1}));
+  EXPECT_TRUE(cutterOf(longer).contains({0.0, 0.0, 2.4}));
+  EXPECT_FALSE(longer->contains({0.0, 0.0, 1.0}));
+  EXPECT_TRUE(longer->contains({2.0, 0.0, 1.0}));
+}
+
+}  // namespace
+}  // namespace csgray::detail
