@@ -873,7 +873,7 @@ class Evaluator {
       if (piece.empty()) continue;
       auto apart = [&](const std::vector<Piece>& members) {
         return std::none_of(members.begin(), members.end(),
-                            [&](const Piece& m) { return m.box.overlaps(piece.box); });
+                            [&](const Piece& m) { return meetInUnion(m, piece); });
       };
       auto group = std::find_if(groups.begin(), groups.end(), apart);
       if (group == groups.end()) {
@@ -989,6 +989,20 @@ class Evaluator {
     return cylinder && rims_->turnedEndPolygon(*cylinder, tolerance_).has_value();
   }
 
+  // Do the pieces' boxes meet, each grown back by what a contact's offset
+  // shrank it? (The plate of rounded_box ∩ box, whose box was shrunk off
+  // the rounded box's side it shared, is then a hair below letters that
+  // stand on its top: joined without a boolean, they stayed shells of
+  // their own.) A union then corefines them, and closeShrunkGaps closes
+  // the gap.
+  bool meetInUnion(const Piece& a, const Piece& b) const {
+    auto grown = [&](const Piece& p) {
+      const dvec3 by(p.shrunk > 0.0 ? p.shrunk + kContactOffset * tolerance_ : 0.0);
+      return Bounds{p.box.lo - by, p.box.hi + by};
+    };
+    return grown(a).overlaps(grown(b));
+  }
+
   Piece balanced(std::vector<Piece> pieces, Boolean::Op op) {
     if (pieces.empty()) return {};
     while (pieces.size() > 1) {
@@ -996,7 +1010,7 @@ class Evaluator {
       for (std::size_t i = 0; i + 1 < pieces.size(); i += 2) {
         Piece& a = pieces[i];
         Piece& b = pieces[i + 1];
-        if (!a.box.overlaps(b.box)) {
+        if (op == Boolean::Op::Union ? !meetInUnion(a, b) : !a.box.overlaps(b.box)) {
           if (op == Boolean::Op::Intersection) return {};
           weldNearVertices(a, b, hairApart(a.box, b.box));
           join(a, b);

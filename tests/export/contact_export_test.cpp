@@ -836,6 +836,25 @@ TEST(ContactExport, SlantedTubesWithBoresFlushWithTheirEnds) {
                kTolerance * 2.0 * kPi * (ro + ri) * (path + ro));
 }
 
+TEST(ContactExport, ABlockStandingOnAPlateCutFromARoundedBox) {
+  // A plate cut from a rounded box by a box that shares its sides (the
+  // intersection shrinks the box off them, by a hundredth of the
+  // tolerance, the plate's top with it), and a block standing on its top
+  // (embossed letters, on a name plate): the block's box no longer met the
+  // plate's, the two were joined without a union, and the mesh fell into
+  // two shells. Volume: half the rounded box (a − 2r)(b − 2r)(c − 2r) +
+  // 2r·Σ(faces) + πr²·Σ(edges) + 4πr³/3, and the block.
+  const double a = 80.0, b = 25.0, c = 6.0, r = 2.0;
+  const double A = a - 2 * r, B = b - 2 * r, C = c - 2 * r;
+  const double rounded = A * B * C + 2 * r * (A * B + A * C + B * C) + kPi * r * r * (A + B + C) +
+                         4.0 / 3.0 * kPi * r * r * r;
+  const TriangleMesh mesh = exportsValid(
+      "return rounded_box{size={80, 25, 6}, r=2} * box{size={80, 25, 3}} + "
+      "box{size={10, 10, 1.5}}:translate(30, 5, 3)",
+      rounded / 2.0 + 150.0, kTolerance * 2.0 * (a * b + (a + b) * c));
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+}
+
 TEST(ContactExport, ARoundedPlateLessItsCornersCirclesIsSwept) {
   // offset{r=5} of a rectangle less circle(5) about each corner: the
   // region's arcs were a hair off the circles, and the sweep failed as
