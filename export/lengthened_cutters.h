@@ -1,5 +1,5 @@
-// Cylinders cut away, made a little longer: a last try for a part whose
-// bores end flush with slanted faces.
+// Cylinders and turns cut away, made a little longer, where their ends
+// are flush with slanted faces.
 //
 // A tube turned by an angle that is not a quarter (a pipe's branch at
 // 37.5°, an elbow's leg) with a bore of its length: the bore's ends and
@@ -16,15 +16,17 @@
 #include <functional>
 
 #include "engine/solid.h"
-#include "primitives/cylinder.h"
 
 namespace csgray::detail {
 
 // The part with every cylinder and cone in a difference's cutters that
 // `which` takes made longer by `by` (in the world's lengths) past each end
 // (a cone's end widened or narrowed along its side; an end at a cone's tip
-// is left where it is); the part itself when it makes none so.
+// is left where it is), and every rotate_extrude through part of a turn
+// that it takes turned on past each end face by the angle that moves its
+// farthest point by `by` (a hollow bend's bore, of the bend's angle); the
+// part itself when it makes none so.
 SolidPtr cuttersLengthened(const SolidPtr& part, double by,
-                           const std::function<bool(const Cylinder&)>& which);
+                           const std::function<bool(const Primitive&)>& which);
 
 }  // namespace csgray::detail

@@ -1965,12 +1965,21 @@ PartMesh meshOfFlatPart(const Solid& given, double tolerance, StoredCoordinate s
         "the part is unbounded, or bounded only by half-spaces, whose reach csgray does not "
         "work out; clip it with a box, clip(s, {lo=, hi=}), to export it");
   // The cylinders it cuts away along a slant (their axes along none of the
-  // evaluation's axes) made a little longer: their ends, flush with a
-  // slanted tube's, lie in its plane only to rounding
-  // (export/lengthened_cutters.h).
-  auto slanted = [&](const Cylinder& cylinder) {
-    const glm::dvec4 axis = frame.evalFrame(cylinder.frame()).worldFromObject()[2];
-    return int(axis.x != 0.0) + int(axis.y != 0.0) + int(axis.z != 0.0) > 1;
+  // evaluation's axes), and the turns whose end faces are slanted, made a
+  // little longer: their ends, flush with a slanted tube's or bend's, lie
+  // in its plane only to rounding (export/lengthened_cutters.h).
+  auto slanted = [&](const Primitive& primitive) {
+    const glm::dmat4 m = frame.evalFrame(primitive.frame()).worldFromObject();
+    auto off = [](const glm::dvec4& v) {
+      return int(v.x != 0.0) + int(v.y != 0.0) + int(v.z != 0.0) > 1;
+    };
+    if (dynamic_cast<const Cylinder*>(&primitive)) return off(m[2]);
+    // A turn's end face at its angle lies in a plane of the axes only at a
+    // multiple of 90°, and then only if its frame's x and y do.
+    if (auto* turn = dynamic_cast<const Revolution*>(&primitive))
+      return turn->angleDegrees() < 360.0 &&
+             (std::fmod(turn->angleDegrees(), 90.0) != 0.0 || off(m[0]) || off(m[1]));
+    return false;
   };
   const SolidPtr lengthened =
       cuttersLengthened(given.shared_from_this(), kLengthenedCutters * tolerance, slanted);
@@ -2007,7 +2016,7 @@ PartMesh meshOfFlatPart(const Solid& given, double tolerance, StoredCoordinate s
         {[&] { return filledHolesDropped(part); }, &MeshBooleanStats::holesFilled},
         {[&] {
            return cuttersLengthened(part, kLengthenedCutters * tolerance,
-                                    [](const Cylinder&) { return true; });
+                                    [](const Primitive&) { return true; });
          },
          &MeshBooleanStats::cuttersLengthened},
         {[&] { return sweepsTakenApart(part); }, &MeshBooleanStats::sweepsApart},

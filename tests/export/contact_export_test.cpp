@@ -834,6 +834,13 @@ TEST(ContactExport, SlantedTubesWithBoresFlushWithTheirEnds) {
       "end\n";
   exportsValid(rod + "return rod(7) - rod(5.5)", kPi * (ro * ro - ri * ri) * path,
                kTolerance * 2.0 * kPi * (ro + ri) * (path + ro));
+  // A hollow bend of 60°, a turn less a thinner turn of the same angle:
+  // the thinner one now goes on past both end faces.
+  const double bend = R * kPi / 3.0;
+  exportsValid(
+      "return rotate_extrude{circle{r=7}:translate(25, 0), angle=60} - "
+      "rotate_extrude{circle{r=5.5}:translate(25, 0), angle=60}",
+      kPi * (ro * ro - ri * ri) * bend, kTolerance * 2.0 * kPi * (ro + ri) * (bend + ro));
 }
 
 TEST(ContactExport, ABlockStandingOnAPlateCutFromARoundedBox) {

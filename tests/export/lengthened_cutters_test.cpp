@@ -1,10 +1,11 @@
-// Cylinders and cones cut away, made longer past each end: a cone goes on
-// along its side, a tip stays where it is, and only the cutters that the
-// choice takes change.
+// Cylinders, cones and turns cut away, made longer past each end: a cone
+// goes on along its side, a tip stays where it is, a turn goes on past its
+// end faces, and only the cutters that the choice takes change.
 #include "export/lengthened_cutters.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/boolean.h"
@@ -21,7 +22,7 @@ TEST(LengthenedCutters, AConeGoesOnAlongItsSideAndATipStays) {
   // side widens by a quarter per unit along the axis.
   const SolidPtr part =
       test::solidOf("return box(10) - cylinder{r1=1, r2=2, h=4}:rotate(30, 0, 0)");
-  const SolidPtr longer = cuttersLengthened(part, 0.4, [](const Cylinder&) { return true; });
+  const SolidPtr longer = cuttersLengthened(part, 0.4, [](const Primitive&) { return true; });
   ASSERT_NE(longer, part);
   const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(1, 0, 0));
   auto at = [&](double radius, double z) { return dvec3(turn * glm::dvec4(radius, 0.0, z, 1.0)); };
@@ -35,19 +36,38 @@ TEST(LengthenedCutters, AConeGoesOnAlongItsSideAndATipStays) {
 
   // A cone to a tip at its top: the tip is not moved, the bottom is.
   const SolidPtr tip = test::solidOf("return box(10) - cylinder{r1=1, r2=0, h=4}");
-  const SolidPtr pointedPart = cuttersLengthened(tip, 0.4, [](const Cylinder&) { return true; });
+  const SolidPtr pointedPart = cuttersLengthened(tip, 0.4, [](const Primitive&) { return true; });
   const Solid& pointed = cutterOf(pointedPart);
   EXPECT_FALSE(pointed.contains({0.0, 0.0, 4.1}));
   EXPECT_TRUE(pointed.contains({0.0, 0.0, 3.9}));
   EXPECT_TRUE(pointed.contains({0.0, 0.0, -0.3}));
 }
 
+TEST(LengthenedCutters, ATurnGoesOnPastBothEndFaces) {
+  // A bend of 60° of a circle r = 2 about ρ = 10: its farthest point, at
+  // ρ = 12, moves by 0.6 past each end face (2.865°).
+  const SolidPtr part =
+      test::solidOf("return box(30) - rotate_extrude{circle{r=2}:translate(10, 0), angle=60}");
+  const SolidPtr longer = cuttersLengthened(part, 0.6, [](const Primitive&) { return true; });
+  const Solid& turn = cutterOf(longer);
+  auto at = [](double degrees) {
+    return dvec3(10.0 * std::cos(glm::radians(degrees)), 10.0 * std::sin(glm::radians(degrees)),
+                 0.0);
+  };
+  EXPECT_FALSE(cutterOf(part).contains(at(61.0)));
+  EXPECT_TRUE(turn.contains(at(61.0)));
+  EXPECT_TRUE(turn.contains(at(-1.0)));
+  EXPECT_FALSE(turn.contains(at(63.5)));
+  EXPECT_FALSE(turn.contains(at(-3.5)));
+  EXPECT_TRUE(turn.contains(at(30.0)));
+}
+
 TEST(LengthenedCutters, OnlyTheCuttersChosenAndNothingElse) {
   // The minuend's cylinder keeps its length; a cutter not chosen is the
   // part itself again.
   const SolidPtr part = test::solidOf("return cylinder{r=3, h=2} - cylinder{r=1, h=2}");
-  EXPECT_EQ(cuttersLengthened(part, 0.5, [](const Cylinder&) { return false; }), part);
-  const SolidPtr longer = cuttersLengthened(part, 0.5, [](const Cylinder&) { return true; });
+  EXPECT_EQ(cuttersLengthened(part, 0.5, [](const Primitive&) { return false; }), part);
+  const SolidPtr longer = cuttersLengthened(part, 0.5, [](const Primitive&) { return true; });
   const Solid& kept = *longer->asBoolean()->children()[0];
   EXPECT_FALSE(kept.contains({2.0, 0.0, 2.1}));
   EXPECT_TRUE(cutterOf(longer).contains({0.0, 0.0, 2.4}));
