@@ -146,8 +146,7 @@ struct EvaluationFrame {
         exact = exact && (evalFromWorld[c][r] == 0.0 || std::abs(evalFromWorld[c][r]) == 1.0);
   }
 
-  // x as written, from x off by rounding, in a column whose largest entry
-  // is `largest`.
+  // x on the grid of 2⁻³⁰.
   static double snapped(double x) { return std::ldexp(std::nearbyint(std::ldexp(x, 30)), -30); }
 
   // x as written, from x off by rounding, in a column whose largest entry
