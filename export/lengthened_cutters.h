@@ -21,10 +21,13 @@ namespace csgray::detail {
 
 // The part with every cylinder and cone in a difference's cutters that
 // `which` takes made longer by `by` (in the world's lengths) past each end
-// (a cone's end widened or narrowed along its side; an end at a cone's tip
-// is left where it is), and every rotate_extrude through part of a turn
-// that it takes turned on past each end face by the angle that moves its
-// farthest point by `by` (a hollow bend's bore, of the bend's angle); the
+// that crosses the surface of what it cuts (the point 2·by before its
+// centre inside, the point 2·by past it outside: the end is flush with a
+// face of it), or that ends in another of its cutters; a cone's end widened or
+// narrowed along its side, an end at a cone's tip left where it is. Every
+// rotate_extrude through part of a turn that it takes is turned on so past
+// each end face that crosses it so, by the angle that moves its
+// farthest point by `by` (a hollow bend's bore, of the bend's angle). The
 // part itself when it makes none so.
 SolidPtr cuttersLengthened(const SolidPtr& part, double by,
                            const std::function<bool(const Primitive&)>& which);

@@ -834,6 +834,16 @@ TEST(ContactExport, SlantedTubesWithBoresFlushWithTheirEnds) {
       "end\n";
   exportsValid(rod + "return rod(7) - rod(5.5)", kPi * (ro * ro - ri * ri) * path,
                kTolerance * 2.0 * kPi * (ro + ri) * (path + ro));
+  // A pin put back through a slanted bore of its radius in a block: the
+  // bore's ends lie outside the block and it is not made longer (a first
+  // version did, and the pin no longer met the bore's wall). Volume: the
+  // block, and the pin outside the slab |z| <= 10, which it crosses over
+  // 20 / cos of its tilt (cos 30° · cos 20°).
+  const double slab = 20.0 / (std::cos(kPi / 6.0) * std::cos(kPi / 9.0));
+  exportsValid(
+      "local bore = cylinder{r=3, h=40, center=true}:rotate(30, 20, 0)\n"
+      "return box{size={30, 30, 20}, center=true} - bore + bore",
+      18000.0 + kPi * 9.0 * (40.0 - slab), kTolerance * (2.0 * 3300.0 + 2.0 * kPi * 3.0 * 40.0));
   // A hollow bend of 60°, a turn less a thinner turn of the same angle:
   // the thinner one now goes on past both end faces.
   const double bend = R * kPi / 3.0;
