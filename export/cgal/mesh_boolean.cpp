@@ -1987,8 +1987,10 @@ PartMesh meshOfFlatPart(const Solid& given, double tolerance, StoredCoordinate s
     return meshInOrders(solid, tolerance, stored, counts, doubles);
   } catch (const std::runtime_error&) {
     // A part turned as a whole, once more with its solids' places taken
-    // back as written (EvaluationFrame), in the script's order.
-    if (EvaluationFrame(solid).moves()) {
+    // back as written (EvaluationFrame), in the script's order. (The
+    // lengthened cutters leave its first primitive, and so its frame, as
+    // they were.)
+    if (frame.moves()) {
       MeshBooleanStats attempt;
       bool refusedPinch = false;
       EvaluationOrder asWritten;

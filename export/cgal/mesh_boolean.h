@@ -28,7 +28,7 @@ struct MeshBooleanStats {
   std::size_t perturbed = 0;       // of those, one operand moved off the other (perturbedInDoubles)
   bool redoneByCgal = false;       // the part failed its check with booleans in doubles
   std::size_t merges = 0;          // operands joined without one (boxes apart)
-  std::size_t glued = 0;           // unions of solids stacked on the same faces
+  std::size_t glued = 0;           // unions of solids on the same faces (stacked, a leg on a bend)
   std::size_t repairs = 0;         // self-intersections from rounding removed
   std::size_t contacts = 0;        // booleans whose operands touched (docs/cli.md)
   std::size_t strayShells = 0;     // slivers outside the exact part, removed
