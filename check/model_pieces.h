@@ -18,7 +18,8 @@ namespace csgray::detail {
 // operand no shell is found on joins those its box overlaps. A ring
 // around a rod that it does not touch is two pieces, a base cut through
 // by a slot one, and a sweep alone in its piece as many as its region has
-// apart (the letters of a word).
+// apart (the letters of a word), and a two-sheet quadric alone in its
+// piece (clipped, cut) as many as the sheets its shells lie on.
 std::size_t modelPieces(const Solid& solid, const TriangleMesh& mesh, const MeshShells& shells,
                         double near);
 

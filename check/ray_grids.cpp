@@ -168,6 +168,36 @@ class GridTracer {
                at);
   }
 
+  // Whether the boundaries of operands a and b, together at `at` with the
+  // unit normal there, stay together a step away along the surface in four
+  // directions: a face they share, or touch along. Surfaces tangent along
+  // a line or at a point (a cylinder in a box that it fits) part as the
+  // step squared over the radius of curvature, which a step of 10⁻³ of the
+  // part's diagonal makes many times the epsilon that joins them: 10⁻⁶ of
+  // the diagonal at a curvature of a thousandth of the diagonal's inverse.
+  bool togetherAround(const Solid& a, const Solid& b, const dvec3& at, const dvec3& normal) const {
+    const double step = 1e-3 * cap_;  // the box's diagonal
+    const dvec3 u = glm::normalize(std::abs(normal.x) < 0.9 ? glm::cross(normal, dvec3(1, 0, 0))
+                                                            : glm::cross(normal, dvec3(0, 1, 0)));
+    const dvec3 v = glm::cross(normal, u);
+    SpanList spansA, spansB;
+    for (const dvec3& side : {u, -u, v, -v}) {
+      // A line along the normal through the stepped point, over two steps
+      // each way: where each operand's boundary crosses it.
+      const Ray probe(at + step * side - 2.0 * step * normal, normal, 0.0, 4.0 * step);
+      a.spans(probe, spansA);
+      b.spans(probe, spansB);
+      bool met = false;
+      for (const Span& p : spansA)
+        for (const Span& q : spansB)
+          for (double ta : {p.in.t, p.out.t})
+            for (double tb : {q.in.t, q.out.t})
+              met = met || (std::isfinite(ta) && std::abs(ta - tb) <= epsilon_);
+      if (!met) return false;
+    }
+    return true;
+  }
+
   // Where the boundaries of two operands of a boolean node lie together on
   // the ray with parallel faces: they share a face (both enter or both
   // leave) or touch along one (one leaves where the other enters).
@@ -222,9 +252,10 @@ class GridTracer {
         // Outside the part's box the part is empty all around: faces that
         // meet there (the ends of cutters that reach past it) shape nothing.
         if (!partBox_.contains(at)) continue;
-        const double cosine =
-            glm::dot(outwardNormal(m.boundary, at), outwardNormal(n.boundary, at));
+        const dvec3 normal = outwardNormal(m.boundary, at);
+        const double cosine = glm::dot(normal, outwardNormal(n.boundary, at));
         if (std::abs(cosine) < kParallel) continue;
+        if (!togetherAround(*operands[m.operand], *operands[n.operand], at, normal)) continue;
         const bool shared = m.entering == n.entering;
         // In operand order, so that "a and b" reads as the script wrote them.
         const bool inOrder = m.operand < n.operand;

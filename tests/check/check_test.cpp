@@ -519,6 +519,31 @@ TEST(Check, TwentyBooleanWarningsAreListedAndTheRestCounted) {
             std::string::npos);
 }
 
+TEST(Check, SurfacesTangentAlongALineDoNotShareAFace) {
+  // A cylinder that fits a box, clipped by it: tangent to four of its
+  // faces along lines, sharing none (it reaches past the top and bottom).
+  // A bore that grazes a block's top face from below, one that grazes it
+  // from above, and a ball in a cube that touches each face at a point.
+  // Grid rays that pass through such a line see both boundaries at once
+  // with parallel normals; a step aside along the surface parts them.
+  for (const char* source :
+       {"return box(10) * cylinder{r=5, h=20}:translate(5, 5, -5)\n",
+        "return box(10) - cylinder{r=2, h=20}:rotate(90, 0, 0):translate(5, 15, 8)\n",
+        "return box(10) - cylinder{r=2, h=20}:rotate(90, 0, 0):translate(5, 15, 12)\n",
+        "return box(10) * sphere(5):translate(5, 5, 5)\n"}) {
+    const CheckReport report = checkPart(*script(source).objects[0], quick());
+    EXPECT_TRUE(report.ok()) << checkReportText(report, source);
+    EXPECT_FALSE(hasWarning(report, "coincident faces")) << checkReportText(report, source);
+    EXPECT_FALSE(hasWarning(report, "touching faces")) << checkReportText(report, source);
+  }
+  // The same cylinder as tall as the box shares its top and bottom.
+  const CheckReport flush = checkPart(
+      *script("return box(10) * cylinder{r=5, h=10}:translate(5, 5, 0)\n").objects[0], quick());
+  ASSERT_TRUE(hasWarning(flush, "coincident faces")) << checkReportText(flush, "flush");
+  const double z = flush.warnings.front().location.z;
+  EXPECT_TRUE(std::abs(z) < 1e-9 || std::abs(z - 10.0) < 1e-9) << z;
+}
+
 TEST(Check, ACleanDifferenceDoesNotWarn) {
   const Scene scene = script(
       "local block = box(10)\n"
@@ -651,6 +676,28 @@ TEST(Check, TheLettersOfAWordAreItsPiecesNotACut) {
       "return linear_extrude{text{\"ij\", size=10}, height=2} + "
       "box{size={20, 20, 1}}:translate(-5, -5, -1)",
       1, 1);
+}
+
+TEST(Check, TheSheetsOfAClippedTwoSheetQuadricAreItsPieces) {
+  // A hyperboloid of two sheets, a hyperbolic cylinder and the outside of
+  // two parallel planes, each clipped to a box that holds both its sheets:
+  // two pieces, not a cut. Moved and turned, the same. A box that holds
+  // one sheet: one. A slab cut out of one sheet of the clipped pair is a
+  // cut: three shells where the model is two.
+  const std::string unit = "{lo={-1, -1, -1}, hi={1, 1, 1}}";
+  expectPieces("return clip(hyperboloid2{a=0.3, b=0.3, c=0.3}, " + unit + ")", 2, 2);
+  expectPieces("return clip(hyperbolic_cylinder{a=0.35, b=0.5}, " + unit + ")", 2, 2);
+  expectPieces(
+      "return clip(quadric{matrix={{0,0,0,0},{0,0,0,0},{0,0,-1,0},{0,0,0,0.25}}}, " + unit + ")", 2,
+      2);
+  expectPieces("return clip(hyperboloid2{a=0.3, b=0.3, c=0.3}, " + unit +
+                   "):rotate(30, 40, 50):translate(5, -3, 2)",
+               2, 2);
+  expectPieces("return clip(hyperboloid2{a=0.3, b=0.3, c=0.3}, {lo={-1, -1, 0}, hi={1, 1, 1}})", 1,
+               1);
+  expectPieces("return clip(hyperboloid2{a=0.3, b=0.3, c=0.3}, " + unit +
+                   ") - box{size={4, 4, 0.1}}:translate(-2, -2, 0.5)",
+               3, 2);
 }
 
 TEST(Check, ThinWallsAndNarrowGapsAreMeasured) {
