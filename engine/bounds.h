@@ -21,7 +21,9 @@ struct Bounds {
     return !empty() && std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(lo.z) &&
            std::isfinite(hi.x) && std::isfinite(hi.y) && std::isfinite(hi.z);
   }
-  dvec3 center() const { return 0.5 * (lo + hi); }
+  // Halves first, so that a box near the largest double has a finite
+  // centre (lo + hi overflowed); the same bits as 0.5 · (lo + hi) elsewhere.
+  dvec3 center() const { return 0.5 * lo + 0.5 * hi; }
   dvec3 size() const { return hi - lo; }
 
   void include(const dvec3& p) {

@@ -58,6 +58,7 @@ class BvhBuilder {
 
  private:
   void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth);
+  static int bin(double c, double lo, double extent);
   std::uint32_t fold(std::vector<std::uint32_t> children, std::vector<Bvh::Node>& nodes) const;
 
   std::span<const Bounds> boxes_;
@@ -120,6 +121,15 @@ std::uint32_t BvhBuilder::fold(std::vector<std::uint32_t> children,
   return index;
 }
 
+// The bin of a centre c along an axis whose centres start at lo and
+// extend `extent`: the last bin holds the far end. Where the quotient is
+// not a number (an extent that overflowed), the last bin too: int() of NaN
+// is undefined, and the index it gave once crashed.
+int BvhBuilder::bin(double c, double lo, double extent) {
+  const double f = (c - lo) / extent * kBins;
+  return f < kBins - 1 ? (f > 0.0 ? int(f) : 0) : kBins - 1;
+}
+
 void BvhBuilder::build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
   Bounds box, centreBox;
   for (std::uint32_t i = begin; i < end; ++i) {
@@ -142,9 +152,7 @@ void BvhBuilder::build(std::uint32_t node, std::uint32_t begin, std::uint32_t en
     // the bins need no clearing.
     std::array<Bounds, kBins> binBox;
     std::array<std::uint32_t, kBins> binCount{};
-    auto binOf = [&](std::uint32_t item) {
-      return std::min(kBins - 1, int((centres_[item][axis] - lo) / extent * kBins));
-    };
+    auto binOf = [&](std::uint32_t item) { return bin(centres_[item][axis], lo, extent); };
     for (std::uint32_t i = begin; i < end; ++i) {
       int b = binOf(items_[i]);
       if (binCount[b]++ == 0)
@@ -187,11 +195,9 @@ void BvhBuilder::build(std::uint32_t node, std::uint32_t begin, std::uint32_t en
   std::uint32_t mid;
   if (bestAxis >= 0) {
     double lo = centreBox.lo[bestAxis], extent = centreBox.hi[bestAxis] - lo;
-    auto right =
-        std::partition(items_.begin() + begin, items_.begin() + end, [&](std::uint32_t item) {
-          return std::min(kBins - 1, int((centres_[item][bestAxis] - lo) / extent * kBins)) <=
-                 bestBin;
-        });
+    auto right = std::partition(
+        items_.begin() + begin, items_.begin() + end,
+        [&](std::uint32_t item) { return bin(centres_[item][bestAxis], lo, extent) <= bestBin; });
     mid = std::uint32_t(right - items_.begin());
   } else {
     // Boxes that SAH cannot separate (all centres alike): split in the

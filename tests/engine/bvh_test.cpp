@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <set>
@@ -162,6 +163,28 @@ TEST(Bvh, IdenticalCentresStillMakeSmallLeaves) {
   });
   EXPECT_EQ(visited, 1000);
   EXPECT_GT(bvh.memoryBytes(), 1000 * sizeof(Bounds));
+}
+
+TEST(Bvh, BoxesNearTheLargestDoubleAreBuiltAndFound) {
+  // A box about 1e308 from its neighbours: the sum of its corners
+  // overflows, so its centre was infinite, its bin's index int() of NaN,
+  // and the build wrote far outside its bins (a sphere moved by 1e308 in a
+  // union crashed the render). Every box is still found by a point in it.
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < 10; ++i) boxes.push_back({dvec3(3.0 * i, 0, 0), dvec3(3.0 * i + 1, 1, 1)});
+  boxes.push_back({dvec3(1.7e308, 0, 0), dvec3(1.79e308, 1, 1)});
+  boxes.push_back({dvec3(-1.79e308, 0, 0), dvec3(-1.7e308, 1, 1)});
+  EXPECT_TRUE(std::isfinite(boxes[10].center().x));
+  EXPECT_EQ(boxes[1].center(), dvec3(3.5, 0.5, 0.5));
+  const Bvh bvh(boxes);
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    std::set<std::uint32_t> visited;
+    bvh.forEachHolding(boxes[i].center(), 0.0, [&](std::uint32_t item) {
+      visited.insert(item);
+      return true;
+    });
+    EXPECT_EQ(visited, std::set<std::uint32_t>{i}) << "box " << i;
+  }
 }
 
 // Random solids: spheres, boxes, cylinders, and now and then a half-space.
