@@ -108,6 +108,13 @@ Scene PartScript::run() const {
   return runScriptFile(path_, options_);
 }
 
+Scene PartScript::runWithin(const ScriptOptions& options) const {
+  const Watchdog watchdog(timeout_, path_ + ": the script did not finish within " +
+                                        seconds(timeout_) +
+                                        " s (--script-timeout); csgray view ends here");
+  return runScriptFile(path_, options);
+}
+
 double PartScript::timeLeft() const {
   if (!(runTimeout_ > 0.0)) return 0.0;
   const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start_;

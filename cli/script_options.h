@@ -55,6 +55,11 @@ class PartScript {
   // end of --timeout, whichever comes first. Throws std::exception with a
   // one-line message.
   Scene run() const;
+  // Runs the script with `options` (its own, as csgray view changes them
+  // for the customizer) under --script-timeout's watchdog alone, which
+  // ends the process: a string pattern that backtracks for hours would
+  // otherwise hold the view's script thread, and every reload after it.
+  Scene runWithin(const ScriptOptions& options) const;
 
   // The seconds left of --timeout: 0 when there is no limit, and a
   // microsecond when it has run out (a watchdog given it fires at once).

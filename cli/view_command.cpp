@@ -31,6 +31,9 @@ int view(const ViewArguments& arguments, const PartScript& script) {
   options.open = arguments.open;
   options.threads = arguments.threads;
   options.makeServer = viewTools().makeViewServer;
+  options.runScript = [&script](const std::string&, const ScriptOptions& scriptOptions) {
+    return script.runWithin(scriptOptions);
+  };
   // The page's buttons; the mesh tools' module is loaded on the first press.
   options.tools.meshFile = [](const Scene& scene, const std::string& script,
                               const std::string& format,

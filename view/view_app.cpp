@@ -67,7 +67,8 @@ class NoticeIfSlow {
 std::unique_ptr<ViewSession> firstRun(const ViewOptions& options) {
   NoticeIfSlow notice("csgray: running " + options.script + "; the page is served once it has run",
                       options.slowRunSeconds);
-  return std::make_unique<ViewSession>(options.script, options.scriptOptions, options.threads);
+  return std::make_unique<ViewSession>(options.script, options.scriptOptions, options.threads,
+                                       options.runScript);
 }
 
 }  // namespace

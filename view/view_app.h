@@ -8,6 +8,7 @@
 #include "script/script.h"
 #include "view/view_jobs.h"
 #include "view/view_service.h"
+#include "view/view_session.h"
 
 namespace csgray::detail {
 
@@ -25,6 +26,9 @@ struct ViewOptions {
   // command line loads from a module).
   std::function<std::unique_ptr<HttpServer>(ViewService&, const std::string& address, int port)>
       makeServer;
+  // Runs the script each time (the command line's: under --script-timeout,
+  // which ends the process); runScriptFile where empty.
+  ViewSession::ScriptRunner runScript;
   // The work of the page's export and check buttons (from the mesh tools).
   PartTools tools;
 };

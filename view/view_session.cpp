@@ -31,8 +31,12 @@ double sceneVolume(const Scene& scene) {
 
 }  // namespace
 
-ViewSession::ViewSession(std::string script, ScriptOptions options, int threads)
-    : script_(std::move(script)), options_(std::move(options)), threads_(threads) {
+ViewSession::ViewSession(std::string script, ScriptOptions options, int threads,
+                         ScriptRunner runner)
+    : script_(std::move(script)),
+      options_(std::move(options)),
+      runner_(runner ? std::move(runner) : ScriptRunner(runScriptFile)),
+      threads_(threads) {
   std::string refused = run(options_.defines);
   if (!refused.empty()) throw DefineError(refused);  // the command line's -D
 }
@@ -62,7 +66,7 @@ std::string ViewSession::run(const std::vector<std::pair<std::string, std::strin
   double volume = 0.0;
   try {
     parameters = scriptFileParameters(script_);
-    scene = std::make_shared<const Scene>(runScriptFile(script_, options));
+    scene = std::make_shared<const Scene>(runner_(script_, options));
     checkHasObjects(*scene);
     volume = sceneVolume(*scene);
   } catch (const DefineError& e) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -41,9 +42,14 @@ struct SessionState {
 
 class ViewSession {
  public:
+  // Runs a script with options: runScriptFile, or the command line's
+  // wrapping of it in its time limit.
+  using ScriptRunner = std::function<Scene(const std::string& path, const ScriptOptions& options)>;
+
   // options: as the command line makes them (its -D are the customizer's
-  // first values); threads: 0 for one per core. Runs the script once.
-  ViewSession(std::string script, ScriptOptions options, int threads = 0);
+  // first values); threads: 0 for one per core; runner: runScriptFile
+  // where empty. Runs the script once.
+  ViewSession(std::string script, ScriptOptions options, int threads = 0, ScriptRunner runner = {});
   ~ViewSession();
   ViewSession(const ViewSession&) = delete;
   ViewSession& operator=(const ViewSession&) = delete;
@@ -82,6 +88,7 @@ class ViewSession {
 
   const std::string script_;
   const ScriptOptions options_;
+  const ScriptRunner runner_;
   std::mutex runMutex_;  // one run of the script at a time
   mutable std::mutex stateMutex_;
   std::condition_variable changed_;

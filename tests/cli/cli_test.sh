@@ -671,6 +671,15 @@ else
 fi
 kill "$watcher"; wait "$watcher" 2>/dev/null
 expect_exit 2 "view with --timeout" "" view "$work/annotated.lua" --timeout 5
+# A string pattern that backtracks for hours, inside one library call that
+# no instruction budget sees: view ends at --script-timeout, rather than
+# hold the script's thread (and every reload) for ever.
+timeout 60 "$csgray" view "$work/pattern.lua" --port 0 --script-timeout 0.5 \
+  >"$work/stdout" 2>"$work/stderr"
+code=$?
+if [ $code -eq 1 ] &&
+   grep -q "pattern.lua: the script did not finish within 0.5 s (--script-timeout); csgray view ends here" \
+     "$work/stderr"; then pass; else fail "view of a backtracking pattern: exit $code"; cat "$work/stderr"; fi
 expect_exit 2 "render --watch with --timeout" "" render "$work/annotated.lua" -o "$work/out.png" --watch --timeout 5
 expect_exit 2 "define past the range of a double" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
 expect_in_stderr "define past the range of a double" "-D radius=1e999: out of range"
