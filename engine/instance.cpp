@@ -1,5 +1,9 @@
 #include "engine/instance.h"
 
+#include <stdexcept>
+#include <string>
+
+#include "engine/boolean.h"
 #include "engine/flat_union.h"
 #include "engine/moved_box.h"
 #include "engine/primitive.h"
@@ -11,6 +15,9 @@ Instance::Instance(SolidPtr child, const Affine& worldFromChild)
   primitives_ = child_->primitiveCount();
   booleans_ = child_->booleanCount();
   depth_ = child_->depth() + 1;
+  if (depth_ > Boolean::kMaxDepth)
+    throw std::invalid_argument(kind() + ": tree deeper than " +
+                                std::to_string(Boolean::kMaxDepth) + " levels");
   insideBeyondWindow_ = child_->insideBeyondWindow();
   instances_ = true;
   const Bounds& local = child_->bounds();

@@ -1,7 +1,9 @@
 #include "profile/region.h"
 
+#include <algorithm>
 #include <glm/common.hpp>
 #include <stdexcept>
+#include <string>
 
 namespace csgray::detail {
 
@@ -18,6 +20,11 @@ RegionPtr Region::boolean(Op op, std::vector<RegionPtr> operands) {
   auto r = std::make_shared<Region>();
   r->op_ = op;
   r->bounds_ = operands.front()->bounds();
+  for (const RegionPtr& operand : operands) r->depth_ = std::max(r->depth_, operand->depth() + 1);
+  if (r->depth_ > kMaxDepth)
+    throw std::invalid_argument("2D boolean tree deeper than " + std::to_string(kMaxDepth) +
+                                " levels; build long chains with union(list) or "
+                                "difference(a, list)");
   for (std::size_t i = 1; i < operands.size(); ++i) {
     const ProfileBounds& b = operands[i]->bounds();
     if (op == Op::Union) {

@@ -22,13 +22,18 @@ class Region {
   enum class Op { Leaf, Union, Intersection, Difference };
 
   static RegionPtr leaf(Profile profile);
+  // Trees deeper than this are refused, as solids' are: every walk over
+  // the tree recurses (a chain of 20 000 booleans overflowed the stack).
+  static constexpr int kMaxDepth = 1000;
+
   // Difference: the first operand minus all others. Throws
-  // std::invalid_argument for no operands.
+  // std::invalid_argument for no operands, or a tree deeper than kMaxDepth.
   static RegionPtr boolean(Op op, std::vector<RegionPtr> operands);
 
   Op op() const { return op_; }
   const Profile& profile() const { return profile_; }  // a leaf's
   const std::vector<RegionPtr>& operands() const { return operands_; }
+  int depth() const { return depth_; }  // a leaf's is 0
 
   bool contains(const dvec2& p) const;
   const ProfileBounds& bounds() const { return bounds_; }
@@ -41,6 +46,7 @@ class Region {
   Profile profile_;
   std::vector<RegionPtr> operands_;
   ProfileBounds bounds_;
+  int depth_ = 0;
 };
 
 }  // namespace csgray::detail

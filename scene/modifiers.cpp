@@ -1,5 +1,7 @@
 #include "scene/modifiers.h"
 
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
@@ -26,7 +28,12 @@ MarkedSolid::MarkedSolid(Modifier modifier, SolidPtr marked)
     : modifier_(modifier), marked_(std::move(marked)) {
   primitives_ = marked_->primitiveCount();
   booleans_ = marked_->booleanCount();
-  depth_ = marked_->depth();
+  // A level of its own: every walk over the tree recurses through it, and
+  // a mark put on a mark 20 000 times overflowed the stack.
+  depth_ = marked_->depth() + 1;
+  if (depth_ > Boolean::kMaxDepth)
+    throw std::invalid_argument(std::string(modifierName(modifier_)) + ": tree deeper than " +
+                                std::to_string(Boolean::kMaxDepth) + " levels");
   insideBeyondWindow_ = marked_->insideBeyondWindow();
   instances_ = marked_->hasInstances();
   setOrigin(marked_->origin());

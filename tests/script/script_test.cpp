@@ -225,12 +225,30 @@ TEST(Script, ChainsOfOneOperationStayFlat) {
 
 TEST(Script, DeepAndExplodingTreesAreRefused) {
   // Alternating operations cannot be flattened.
+  std::string e;
   EXPECT_NE(scriptError("local a = sphere(1)\n"
                         "for i = 1, 2000 do a = (a + sphere(1)) * box(5) end return a")
                 .find("boolean tree deeper than 1000 levels; build long chains"),
             std::string::npos);
+  // Marks on marks, and 2D booleans that alternate, nest as deep: they
+  // overflowed the stack at 20 000 levels.
+  e = scriptError("local s = sphere(1)\nfor i = 1, 20000 do s = s:highlight() end\nreturn s");
+  EXPECT_EQ(e, "part.lua:2: highlight: tree deeper than 1000 levels") << e;
+  e = scriptError(
+      "local r = circle(1)\nfor i = 1, 20000 do\n"
+      "  if i % 2 == 0 then r = r + square(1):translate(i, 0) else r = r - square(0.5) end\n"
+      "end\nreturn linear_extrude{r, height=1}");
+  EXPECT_EQ(e,
+            "part.lua:3: 2D boolean tree deeper than 1000 levels; build long chains with "
+            "union(list) or difference(a, list)")
+      << e;
+  // Under a thousand levels, both are made.
+  EXPECT_NO_THROW(
+      runScript("local s = sphere(1)\nfor i = 1, 900 do s = s:highlight() end\n"
+                "return s",
+                "part.lua"));
   // A shared part used 2^40 times: the count multiplies out.
-  std::string e = scriptError("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
+  e = scriptError("local a = sphere(1)\nfor i = 1, 40 do a = a + a end return a");
   EXPECT_NE(e.find("part.lua:2: union: the part would have more than 2000000 primitives"),
             std::string::npos)
       << e;
