@@ -106,8 +106,10 @@ std::string openscadLineHint(const std::string& sourceLine, bool syntaxError) {
         "union(a, b) or a + b, intersection(a, b) or a * b",
         true);
     add(R"(^\s*(return\s+)?[#%!*]\s*[A-Za-z_])", kModifiers, true);
-    add(R"(\b(translate|rotate|scale|mirror|multmatrix|resize)\s*\([^)]*\)\s*[\w{])", kTransforms,
-        true);
+    // Not a method call (`s:translate(1, 0) else`): OpenSCAD's transform
+    // stands alone before what it moves.
+    add(R"((?:^|[^:.\w])(translate|rotate|scale|mirror|multmatrix|resize)\s*\([^)]*\)\s*[\w{])",
+        kTransforms, true);
     add(R"(\bcolor\s*\([^)]*\)\s*[\w{])",
         "a colour is a material here: s:material{color=\"red\"} or {r, g, b}", true);
     add(R"(\b(linear_extrude|rotate_extrude)\s*\(\s*\w+\s*=[^=])",

@@ -65,6 +65,11 @@ TEST(OpenScadHabits, LuaOfItsOwnGetsNoOpenScadHint) {
   // Indexing is Lua: a runtime error on a line with t[1] is not about vectors.
   const std::string e = test::scriptError("local t = {1}\nreturn t[1] + nil");
   EXPECT_EQ(e, "part.lua:2: attempt to perform arithmetic on a nil value") << e;
+  // A transform written as a method, followed by a word on its line, is
+  // no OpenSCAD transform.
+  const std::string method =
+      test::scriptError("local r = square(1):translate(1, 0) and nil + 1\nreturn box(1)");
+  EXPECT_EQ(method.find("transforms are methods"), std::string::npos) << method;
   // A near miss of an API name still gets the nearest name.
   EXPECT_NE(test::scriptError("return sphre(1)").find("did you mean sphere?"), std::string::npos);
   // A method of another kind of value says so, instead of suggesting itself.
