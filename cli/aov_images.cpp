@@ -13,7 +13,7 @@ std::string aovPath(const std::string& output, const std::string& aov) {
   return (p.parent_path() / (p.stem().string() + "." + aov + p.extension().string())).string();
 }
 
-void writeAov(const std::string& path, Image image, bool isDepth, int threads) {
+void writeAov(AtomicFile& file, const std::string& path, Image image, bool isDepth, int threads) {
   if (!keepsFloatValues(path)) {
     if (isDepth) {
       // nearest / depth: 1 at the nearest surface, fading with distance,
@@ -26,7 +26,8 @@ void writeAov(const std::string& path, Image image, bool isDepth, int threads) {
       for (float& v : image.rgb) v = v == 0.0f ? 0.0f : 0.5f * (v + 1.0f);
     }
   }
-  writeImage(path, image.width, image.height, image.rgb.data(), ImageData::Values, threads);
+  writeImageUncommitted(file, path, image.width, image.height, image.rgb.data(), ImageData::Values,
+                        threads);
 }
 
 }  // namespace csgray::detail

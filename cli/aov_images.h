@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "io/atomic_file.h"
 #include "raytrace/image.h"
 
 namespace csgray::detail {
@@ -16,6 +17,8 @@ std::string aovPath(const std::string& output, const std::string& aov);
 // model units, +inf where nothing was hit; normals in [-1, 1]); 8-bit
 // formats get a picture of them: depth as nearest / depth (white at the
 // nearest surface, black where nothing was hit), normals as (n + 1) / 2.
-void writeAov(const std::string& path, Image image, bool isDepth, int threads);
+// Into file's temporary (file is of path), which the caller commits with
+// the colour image.
+void writeAov(AtomicFile& file, const std::string& path, Image image, bool isDepth, int threads);
 
 }  // namespace csgray::detail

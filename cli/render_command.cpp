@@ -167,11 +167,25 @@ int renderImage(const RenderArguments& arguments, const PartScript& script) {
       throw std::runtime_error(script.timedOut());
     }
   }();
-  if (depthAov) writeAov(aovPath(output, "depth"), result.depth, true, workers);
-  if (normalAov) writeAov(aovPath(output, "normal"), result.normal, false, workers);
+  // Every image into its temporary first, then all renamed: a failure on
+  // any (a full disk) leaves every file as it was, not the depth image new
+  // beside an old colour image.
+  std::optional<AtomicFile> depthFile, normalFile;
+  if (depthAov) {
+    const std::string path = aovPath(output, "depth");
+    writeAov(depthFile.emplace(path), path, result.depth, true, workers);
+  }
+  if (normalAov) {
+    const std::string path = aovPath(output, "normal");
+    writeAov(normalFile.emplace(path), path, result.normal, false, workers);
+  }
   const Image& image = result.color;
-  writeImage(output, image.width, image.height, image.rgb.data(), ImageData::LinearColor, workers,
-             png ? &*png : nullptr);
+  AtomicFile colorFile(output);
+  writeImageUncommitted(colorFile, output, image.width, image.height, image.rgb.data(),
+                        ImageData::LinearColor, workers, png ? &*png : nullptr);
+  if (depthFile) depthFile->commit();
+  if (normalFile) normalFile->commit();
+  colorFile.commit();
   if (arguments.stats) {
     auto secs = [](Clock::time_point a, Clock::time_point b) {
       return std::chrono::duration<double>(b - a).count();

@@ -76,9 +76,14 @@ PngRowSource pngRows(const float* rgb, int width, ImageData data) {
 void writeImage(const std::string& path, int width, int height, const float* rgb, ImageData data,
                 int threads, PngEncoder* started) {
   AtomicFile file(path);
+  writeImageUncommitted(file, path, width, height, rgb, data, threads, started);
+  file.commit();
+}
+
+void writeImageUncommitted(AtomicFile& file, const std::string& path, int width, int height,
+                           const float* rgb, ImageData data, int threads, PngEncoder* started) {
   if (!isPngFile(path)) {
     imageFormats().write(file.tempPath(), path, width, height, rgb, data);
-    file.commit();
     return;
   }
   std::optional<PngEncoder> own;
@@ -88,7 +93,6 @@ void writeImage(const std::string& path, int width, int height, const float* rgb
   out.write(png.data(), std::streamsize(png.size()));
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path + ": write failed");
-  file.commit();
 }
 
 TextureImage readTextureImage(const std::string& path) {

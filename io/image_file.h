@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "io/atomic_file.h"
 #include "io/png_file.h"
 #include "scene/texture.h"
 
@@ -37,6 +38,12 @@ PngRowSource pngRows(const float* rgb, int width, ImageData data);
 void writeImage(const std::string& path, int width, int height, const float* rgb,
                 ImageData data = ImageData::LinearColor, int threads = 1,
                 PngEncoder* started = nullptr);
+
+// As writeImage, into file's temporary (file is of path), which the caller
+// commits: images that land together, or not at all.
+void writeImageUncommitted(AtomicFile& file, const std::string& path, int width, int height,
+                           const float* rgb, ImageData data = ImageData::LinearColor,
+                           int threads = 1, PngEncoder* started = nullptr);
 
 // Reads an image for a texture as linear RGB floats: grey is replicated,
 // alpha dropped; 8- and 16-bit integer formats are sRGB-decoded, float
