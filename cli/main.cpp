@@ -3,6 +3,7 @@
 // this puts them together and turns failures into exit statuses.
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -19,6 +20,8 @@ using namespace csgray::detail;
 
 namespace {
 
+constexpr std::size_t kLongestError = 2000;
+
 // Standard output holds what info and check report, and what render and
 // export wrote: lost there (> /dev/full, a full disk), it is an error, as
 // a file that cannot be written is.
@@ -33,7 +36,8 @@ void flushStandardOutput() {
 // One line on stderr, whatever a library said: line breaks become spaces.
 // With cut, every word longer than a screen's share is cut to 60
 // characters: CLI11's messages, and the commands' checks of options, echo
-// the values given on the command line whole.
+// the values given on the command line whole. No line is longer than a
+// script's error may be.
 int error(const std::string& message, int status, bool cut = false) {
   std::string line;
   std::size_t word = 0;
@@ -45,7 +49,7 @@ int error(const std::string& message, int status, bool cut = false) {
     if (i < message.size()) line += ' ';
     word = i + 1;
   }
-  std::cerr << "csgray: error: " << terminalLine(line) << "\n";
+  std::cerr << "csgray: error: " << terminalLine(shownValue(line, kLongestError)) << "\n";
   return status;
 }
 
@@ -60,6 +64,10 @@ const char* unknownCommand(const CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f, a quota), a write fails with EFBIG
+  // and the file's writer reports it and removes its temporary file; the
+  // signal's default would end the process there, leaving both.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"csgray: exact CSG ray tracing of parts written in Lua"};
   // The version and the instruction set the build is for (CMakeLists.txt,
   // CSGRAY_ARCH): a v3 binary runs only on processors that have it.
