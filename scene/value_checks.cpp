@@ -59,12 +59,11 @@ int checkWhole(const std::string& function, const char* key, double value, int l
   return int(value);
 }
 
-std::string shownValue(std::string_view text) {
-  constexpr std::size_t kMax = 60;
-  if (text.size() <= kMax) return std::string(text);
+std::string shownValue(std::string_view text, std::size_t length) {
+  if (text.size() <= length) return std::string(text);
   // The cuts move off UTF-8 continuation bytes, not to split a character.
   auto continues = [&](std::size_t i) { return (text[i] & 0xC0) == 0x80; };
-  std::size_t head = 40, tail = text.size() - (kMax - head - 3);
+  std::size_t head = length * 2 / 3, tail = text.size() - (length - head - 3);
   while (head > 0 && continues(head)) --head;
   while (tail < text.size() && continues(tail)) ++tail;
   return std::string(text.substr(0, head)) + "..." + std::string(text.substr(tail));

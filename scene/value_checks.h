@@ -33,10 +33,10 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 // A whole number from lo to hi, returned as an int.
 int checkWhole(const std::string& function, const char* key, double value, int lo, int hi);
 
-// A value a user gave, as a message shows it: at most 60 characters, the
-// middle of a longer one left out ("..."), so that a value of 100 000
-// characters does not fill the screen while a long path keeps its start
-// and its file name.
-std::string shownValue(std::string_view text);
+// A value a user gave, as a message shows it: at most 60 characters (or
+// `length`), the middle of a longer one left out ("..."), so that a value
+// of 100 000 characters does not fill the screen while a long path keeps
+// its start and its file name.
+std::string shownValue(std::string_view text, std::size_t length = 60);
 
 }  // namespace csgray::detail

@@ -356,30 +356,36 @@ ParameterValue parameterDefineValue(const Parameter& p, const std::string& text,
     value.text = text;
   }
   if (value.kind != p.kind)
-    throw DefineError(refused + p.name + " is " + kindName(p.kind) +
+    throw DefineError(refused + shownValue(p.name) + " is " + kindName(p.kind) +
                       (p.kind == ParameterKind::Vector
                            ? " of " + std::to_string(p.defaultValue.vector.size()) +
-                                 " numbers, e.g. " + p.defaultValue.defineText()
+                                 " numbers, e.g. " + shownValue(p.defaultValue.defineText())
                            : "") +
                       where);
   if (p.kind == ParameterKind::Vector && value.vector.size() != p.defaultValue.vector.size())
-    throw DefineError(refused + p.name + " is a vector of " +
+    throw DefineError(refused + shownValue(p.name) + " is a vector of " +
                       std::to_string(p.defaultValue.vector.size()) + " numbers, e.g. " +
-                      p.defaultValue.defineText() + where);
+                      shownValue(p.defaultValue.defineText()) + where);
   if (!p.choices.empty() &&
       std::find(p.choices.begin(), p.choices.end(), value) == p.choices.end()) {
+    // Each choice as a value is shown, and at most a screen's worth of them.
+    constexpr std::size_t kShownChoices = 12;
     std::string list;
-    for (const ParameterValue& c : p.choices) list += (list.empty() ? "" : ", ") + shown(c);
-    throw DefineError(refused + p.name + " must be one of " + list + where);
+    for (std::size_t i = 0; i < std::min(p.choices.size(), kShownChoices); ++i)
+      list += (i == 0 ? "" : ", ") + shownValue(shown(p.choices[i]));
+    if (p.choices.size() > kShownChoices)
+      list += " and " + std::to_string(p.choices.size() - kShownChoices) + " more";
+    throw DefineError(refused + shownValue(p.name) + " must be one of " + list + where);
   }
   if (p.hasRange) {
     const std::vector<double> numbers =
         p.kind == ParameterKind::Vector ? value.vector : std::vector<double>{value.number};
     for (double v : numbers)
       if (v < p.min || v > p.max)
-        throw DefineError(
-            refused + p.name + (p.kind == ParameterKind::Vector ? "'s components" : "") +
-            " must be from " + numberText(p.min) + " to " + numberText(p.max) + where);
+        throw DefineError(refused + shownValue(p.name) +
+                          (p.kind == ParameterKind::Vector ? "'s components" : "") +
+                          " must be from " + numberText(p.min) + " to " + numberText(p.max) +
+                          where);
   }
   return value;
 }
