@@ -1,6 +1,7 @@
 #include "view/view_server.h"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <chrono>
 #include <thread>
@@ -63,6 +64,15 @@ class ViewServer final : public HttpServer {
       if (response.body.empty())
         reply(response, response.status,
               response.status == 404 ? "no such page: " + request.path : "bad request");
+    });
+    // SO_REUSEADDR alone: a view started again at once takes its port back
+    // from the last one's closing connections. cpp-httplib's default adds
+    // SO_REUSEPORT, with which a second csgray view on the same port
+    // listened beside the first, and the kernel sent the page's requests
+    // to either part at random.
+    server_.set_socket_options([](socket_t socket) {
+      int yes = 1;
+      setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
     });
     port_ = port == 0 ? server_.bind_to_any_port(address)
                       : (server_.bind_to_port(address, port) ? port : -1);
