@@ -290,6 +290,37 @@ if [ -e "$work/part.depth.png" ] || [ -e "$work/part.normal.png" ]; then
 else
   pass
 fi
+# Past a file-size limit (ulimit -f) every image stays as it was, when the
+# last one written fails: the limit lets the depth and normal images
+# through and stops the colour image, which is the largest here. A
+# one-line error, exit 1, no temporary file left (the limit's signal
+# would end the process mid-write).
+mkdir "$work/limit"
+"$csgray" render "$source_dir/examples/torus.lua" -o "$work/limit/free.png" --size 200x150 \
+  --aov depth,normal >/dev/null 2>&1
+largest_aov=$(stat -c %s "$work/limit/free.depth.png" "$work/limit/free.normal.png" | sort -n | tail -1)
+colour=$(stat -c %s "$work/limit/free.png")
+limit_kib=$(((largest_aov + 1023) / 1024))
+if [ $((limit_kib * 1024)) -lt "$colour" ]; then pass; else fail "the colour image is not the largest"; fi
+for f in out out.depth out.normal; do echo old > "$work/limit/$f.png"; done
+(ulimit -f "$limit_kib"
+ "$csgray" render "$source_dir/examples/torus.lua" -o "$work/limit/out.png" --size 200x150 \
+   --aov depth,normal >"$work/stdout" 2>"$work/stderr"
+ echo $? > "$work/limit/code")
+if [ "$(cat "$work/limit/code")" = 1 ] && [ "$(wc -l <"$work/stderr")" = 1 ] &&
+   grep -q "^csgray: error: cannot write $work/limit/out.png" "$work/stderr"; then
+  pass
+else
+  fail "render past a file-size limit: exit $(cat "$work/limit/code")"; cat "$work/stderr"
+fi
+for f in out out.depth out.normal; do
+  if [ "$(cat "$work/limit/$f.png")" = old ]; then pass; else fail "$f.png was replaced"; fi
+done
+if [ "$(ls -A "$work/limit" | grep -vc '^free\|^out\|^code$')" = 0 ]; then
+  pass
+else
+  fail "temporaries left: $(ls -A "$work/limit")"
+fi
 # EXR keeps floating point: every channel of the depth image is FLOAT.
 mkdir "$work/exr"
 if "$csgray" render "$work/part.lua" -o "$work/exr/part.exr" --size 16x12 --aov depth,normal >/dev/null 2>&1 &&
@@ -681,6 +712,30 @@ if [ $code -eq 1 ] &&
    grep -q "pattern.lua: the script did not finish within 0.5 s (--script-timeout); csgray view ends here" \
      "$work/stderr"; then pass; else fail "view of a backtracking pattern: exit $code"; cat "$work/stderr"; fi
 expect_exit 2 "render --watch with --timeout" "" render "$work/annotated.lua" -o "$work/out.png" --watch --timeout 5
+# A second view on the port the first listens on is refused, as a port
+# held by any other program is (they shared it, and the kernel sent the
+# page's requests to either part).
+timeout 30 "$csgray" view "$work/annotated.lua" --port 0 >"$work/first.out" 2>&1 &
+first_view=$!
+if wait_for "$work/first.out" "viewing" 1; then
+  port=$(grep -o '127.0.0.1:[0-9]*' "$work/first.out" | head -1 | cut -d: -f2)
+  expect_exit 1 "view on a port in use" "" view "$work/annotated.lua" --port "$port"
+  expect_in_stderr "view on a port in use" "cannot listen on 127.0.0.1:$port (is the port in use?)"
+else
+  fail "the first view did not start"; cat "$work/first.out"
+fi
+kill "$first_view"; wait "$first_view" 2>/dev/null
+# A -D refused by an annotation of thousands of choices, or a vector of
+# thousands of numbers, says so on one short line.
+{ printf 's = "a" -- ['; for i in $(seq 1 3000); do printf '"c%d", ' "$i"; done; printf '"a"] kind\n'
+  printf 'v = {'; for i in $(seq 1 3000); do printf '1, '; done; printf '1} -- []\n'
+  printf 'return box(1)\n'; } > "$work/many_choices.lua"
+expect_exit 2 "a refused choice of thousands" "" info "$work/many_choices.lua" -D s=zz
+expect_in_stderr "a refused choice of thousands" 's must be one of "c1", "c2"'
+expect_in_stderr "a refused choice of thousands" "and 2989 more"
+short_stderr "a refused choice of thousands"
+expect_exit 2 "a refused vector of thousands" "" info "$work/many_choices.lua" -D 'v={1}'
+short_stderr "a refused vector of thousands"
 expect_exit 2 "define past the range of a double" "$work/out.png" render "$work/param.lua" -o "$work/out.png" -D radius=1e999
 expect_in_stderr "define past the range of a double" "-D radius=1e999: out of range"
 expect_exit 2 "define that underflows to 0" "" info "$work/param.lua" -D radius=1e-400
