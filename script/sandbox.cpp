@@ -16,6 +16,18 @@
 namespace csgray::detail {
 
 namespace {
+
+// Does the message start with a position in the chunk, "chunk:12:", as
+// Lua puts before error("text") and its own errors?
+bool hasPosition(std::string_view message, std::string_view chunk) {
+  if (chunk.starts_with('@') || chunk.starts_with('=')) chunk.remove_prefix(1);
+  if (!message.starts_with(chunk) || message.size() <= chunk.size() + 1 ||
+      message[chunk.size()] != ':')
+    return false;
+  std::size_t i = chunk.size() + 1, digits = 0;
+  while (i < message.size() && message[i] >= '0' && message[i] <= '9') ++i, ++digits;
+  return digits > 0 && i < message.size() && message[i] == ':';
+}
 constexpr int kHookInterval = 10000;  // instructions between budget checks
 // What work that runs no instructions counts for, measured against a
 // plain loop: an error caught (a C++ exception, since Lua is built as
@@ -481,14 +493,23 @@ SourceLine Sandbox::callerLine(lua_State* L) {
 // error itself is a C function). The chunk's name is the upvalue, since
 // Lua's own short source is cut at 60 characters.
 int Sandbox::positionBareError(lua_State* L) {
-  if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) return 1;
+  const int type = lua_type(L, 1);
+  const bool text = type == LUA_TSTRING || type == LUA_TNUMBER;
   const char* chunk = lua_tostring(L, lua_upvalueindex(1));
+  if (text && (hasPosition(lua_tostring(L, 1), chunk) ||
+               hasPosition(lua_tostring(L, 1), kLibraryChunkName)))
+    return 1;
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level)
     if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0 &&
         std::string_view(ar.source) != kLibraryChunkName) {
-      lua_pushfstring(L, "%s:%d: error(%s) without a message", chunk, ar.currentline,
-                      luaL_typename(L, 1));
+      // error(42) and error("text", 0) carry no position: the line that
+      // raised them is named, as for every other error.
+      if (text)
+        lua_pushfstring(L, "%s:%d: %s", chunk, ar.currentline, lua_tostring(L, 1));
+      else
+        lua_pushfstring(L, "%s:%d: error(%s) without a message", chunk, ar.currentline,
+                        luaL_typename(L, 1));
       return 1;
     }
   return 1;

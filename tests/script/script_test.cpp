@@ -521,6 +521,12 @@ TEST(Script, ErrorsWithoutAMessageNameTheirLine) {
   EXPECT_EQ(scriptError("local function f() error(sphere(1)) end\nf()"),
             "part.lua:1: error(userdata) without a message");
   EXPECT_EQ(scriptError("local ok, e = pcall(error, {})\nerror(type(e))"), "part.lua:2: table");
+  // Nor do a number, and a text raised without its position (level 0).
+  EXPECT_EQ(scriptError("local x = 1\nerror(42)"), "part.lua:2: 42");
+  EXPECT_EQ(scriptError("local x = 1\n\nerror('bad width', 0)"), "part.lua:3: bad width");
+  EXPECT_EQ(scriptError("local function f() error('deep', 0) end\nf()"), "part.lua:1: deep");
+  // A text with its position keeps it, once.
+  EXPECT_EQ(scriptError("local x = 1\nerror('part.lua:9: said so', 0)"), "part.lua:9: said so");
 }
 
 }  // namespace
