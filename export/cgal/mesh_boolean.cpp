@@ -44,6 +44,7 @@
 #include "export/swept_rims.h"
 #include "export/turned_balls.h"
 #include "export/upright_cylinders.h"
+#include "export/widened_cutters.h"
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
@@ -92,6 +93,11 @@ constexpr std::size_t kMaxExportTriangles = 10'000'000;
 // rounding that leaves a bore's end a hair off its tube's, and within
 // the tolerance.
 constexpr double kLengthenedCutters = 0.1;
+// What each cylinder of one radius crossing another among the cutters is
+// made wider by (export/widened_cutters.h), times its place among them: a
+// thousandth of the tolerance keeps a knurl of a hundred cutters within a
+// tenth of it.
+constexpr double kWidenedCutters = 1e-3;
 
 // The frame the booleans are evaluated in. A part turned as a whole (or
 // mirrored) has that turn folded into every primitive's frame, where it is
@@ -1980,8 +1986,11 @@ PartMesh meshOfFlatPart(const Solid& given, double tolerance, StoredCoordinate s
              (std::fmod(turn->angleDegrees(), 90.0) != 0.0 || off(m[0]) || off(m[1]));
     return false;
   };
-  const SolidPtr lengthened =
-      cuttersLengthened(given.shared_from_this(), kLengthenedCutters * tolerance, slanted);
+  // Cylinders of one radius cut away across each other, a hair wider
+  // (export/widened_cutters.h).
+  const SolidPtr lengthened = crossingCuttersWidened(
+      cuttersLengthened(given.shared_from_this(), kLengthenedCutters * tolerance, slanted),
+      kWidenedCutters * tolerance);
   const Solid& solid = *lengthened;
   try {
     return meshInOrders(solid, tolerance, stored, counts, doubles);

@@ -722,6 +722,37 @@ TEST(ContactExport, APinThroughTheBoreOfAnImportedTubeMeetsItsWall) {
   EXPECT_NEAR(mesh.volume(), kPi * (25 - 9) * 4 + kPi * 9 * 6, kTolerance * 400.0);
 }
 
+TEST(ContactExport, CuttersOfOneRadiusCrossingEachOtherAreCut) {
+  // A diamond knurl's cutters: three cylinders of one radius, each axis
+  // meeting the next one's inside the block. Their surfaces are tangent
+  // where they cross, and the export failed as self-intersecting after
+  // 80 s; the next two of a knurl took minutes. Every second one is now
+  // made a thousandth of the tolerance wider (export/widened_cutters.h).
+  const char* knurl =
+      "local c = cylinder{r=0.7, h=40, center=true}\n"
+      "local part = box{size={40, 40, 18}}:translate(-5, -20, 0)\n"
+      "part = part - c:rotate(-30, 0, 0):translate(15, 0, 9)\n"
+      "part = part - c:rotate(30, 0, 0):translate(15, 0, 9):rotate(0, 0, 15)\n"
+      "part = part - c:rotate(-30, 0, 0):translate(15, 0, 9):rotate(0, 0, 30)\n";
+  for (const std::string placed : {"return part", "return part:rotate(10, 20, 30)"}) {
+    SCOPED_TRACE(placed);
+    const SolidPtr solid = part(knurl + placed);
+    const std::optional<TriangleMesh> mesh = exported(*solid);
+    if (!mesh) continue;
+    EXPECT_EQ(meshDefect(*mesh).text, "");
+    EXPECT_EQ(meshShells(*mesh).count, 1u);
+    EXPECT_TRUE(test::checksOut(*solid, kTolerance));
+  }
+  // Two bores of one drill crossing square in a block: the block less
+  // both, plus their Steinmetz solid of 16 r³ / 3 counted once.
+  exportsValid(
+      "local bore = cylinder{r=2, h=30, center=true}\n"
+      "return box(20) - bore:rotate(0, 90, 0):translate(10, 10, 10)"
+      " - bore:rotate(90, 0, 0):translate(10, 10, 10)",
+      8000.0 - 2.0 * kPi * 4.0 * 20.0 + 16.0 * 8.0 / 3.0,
+      kTolerance * 2.0 * (2400.0 + 4 * kPi * 20));
+}
+
 TEST(ContactExport, AnAxleInATurnedRingsBoreMeetsItOnItsPoints) {
   // A ring turned by rotate_extrude around an axle of its bore: the
   // ring's regular polygons and the axle's own polygon left crevices 1
