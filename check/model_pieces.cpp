@@ -101,8 +101,9 @@ std::vector<const Solid*> unionOperands(const Solid& solid) {
 // point `depth` inside a face's middle (where the mesh lies within the
 // tolerance of the surface, inside the solid the face stands for), and
 // marks them found, with the sheets of a two-sheet quadric they lie on
-// (sheetOf: bit 1 the negative side, bit 2 the positive). Sweeps along x, the operands' boxes
-// against the points; false where the tests ran past a budget.
+// (sheetOf: bit 1 the negative side, bit 2 the positive). Sweeps along
+// x, the operands' boxes against the points; false where the tests ran
+// past a budget.
 bool joinShellsToOperands(const TriangleMesh& mesh, const MeshShells& shells,
                           const std::vector<const Solid*>& operands, double depth,
                           std::size_t shellIds, Groups& groups, std::vector<bool>& found,

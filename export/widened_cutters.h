@@ -17,8 +17,9 @@
 namespace csgray::detail {
 
 // The part with every cylinder among a difference's cutters whose axis
-// meets the axis of an earlier cylinder of the same radius among them
-// (within 10⁻⁹ of the part's size, and not parallel) made wider: by `by`
+// meets the axis of an earlier cylinder of the same radius among them,
+// not yet widened (within 10⁻⁹ of the part's size, not parallel, at a
+// point both reach within a radius past their ends), made wider: by `by`
 // (in the world's lengths) times its place among those so widened, so
 // that no two of them keep one radius. The part itself when there are
 // none. Cylinders whose frames stretch their circles into ellipses are
