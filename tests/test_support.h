@@ -72,6 +72,14 @@ inline std::string exampleName(const std::string& path) {
 }
 
 // The spans of a ray, as a value.
+// The primitives of a solid's tree (the leaves of its booleans).
+inline int primitivesOf(const Solid& solid) {
+  if (solid.children().empty()) return 1;
+  int n = 0;
+  for (const SolidPtr& child : solid.children()) n += primitivesOf(*child);
+  return n;
+}
+
 inline SpanList spansOf(const Solid& solid, const Ray& ray) {
   SpanList out;
   solid.spans(ray, out);

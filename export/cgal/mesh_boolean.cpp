@@ -40,6 +40,7 @@
 #include "export/lengthened_cutters.h"
 #include "export/merged_sweeps.h"
 #include "export/opened_pinches.h"
+#include "export/prism_booleans.h"
 #include "export/sweeps_apart.h"
 #include "export/swept_rims.h"
 #include "export/turned_balls.h"
@@ -2058,11 +2059,13 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // The mesh of each primitive is made in the world: instances multiplied out.
   if (solid.hasInstances())
     return meshOfSolid(*flattened(solid.shared_from_this()), tolerance, stored, stats, doubles);
-  // Sweeps side by side are made as one, in the plane (export/merged_sweeps.h);
+  // Booleans of prisms of one height (export/prism_booleans.h) and sweeps
+  // side by side (export/merged_sweeps.h) are made as one, in the plane;
   // should that fail, the part is made as it has them.
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  if (const SolidPtr merged = sweepsMerged(solid.shared_from_this()); merged.get() != &solid) {
+  if (const SolidPtr merged = sweepsMerged(prismBooleansMerged(solid.shared_from_this()));
+      merged.get() != &solid) {
     try {
       return meshOfFlatPart(*merged, tolerance, stored, counts, doubles);
     } catch (const std::exception&) {  // (a merged sweep's mesh refused: the part's own error)

@@ -440,14 +440,23 @@ ArcPolygonSet weldedSetOf(const Region& region, double ellipseTolerance, const C
   if (region.op() == Region::Op::Leaf)
     return evenOddSet(exactLoops(region.profile(), ellipseTolerance, &weld));
   const std::vector<RegionPtr>& operands = region.operands();
-  if (region.op() == Region::Op::Union && operands.size() > 2) {
-    // One aggregated join (CGAL's divide and conquer) rather than one join
-    // per operand, each of which would sweep all that came before it again.
+  // One aggregated join (CGAL's divide and conquer) rather than one join
+  // per operand, each of which would sweep all that came before it again;
+  // for a difference, of the cutters, taken away at once (A − B₁ − … − Bₙ
+  // = A − (B₁ ∪ … ∪ Bₙ)): 400 holes cut one by one took a second.
+  auto joined = [&](std::size_t from) {
     std::vector<ArcPolygonWithHoles> pieces;
-    for (const RegionPtr& operand : operands)
-      weldedSetOf(*operand, ellipseTolerance, weld).polygons_with_holes(std::back_inserter(pieces));
+    for (std::size_t i = from; i < operands.size(); ++i)
+      weldedSetOf(*operands[i], ellipseTolerance, weld)
+          .polygons_with_holes(std::back_inserter(pieces));
     ArcPolygonSet set;
     if (!pieces.empty()) set.join(pieces.begin(), pieces.end());
+    return set;
+  };
+  if (region.op() == Region::Op::Union && operands.size() > 2) return joined(0);
+  if (region.op() == Region::Op::Difference && operands.size() > 2) {
+    ArcPolygonSet set = weldedSetOf(*operands.front(), ellipseTolerance, weld);
+    set.difference(joined(1));
     return set;
   }
   ArcPolygonSet set = weldedSetOf(*operands.front(), ellipseTolerance, weld);

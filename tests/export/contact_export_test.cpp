@@ -115,17 +115,20 @@ TEST(ContactExport, SolidsStackedOnTheSameFacesAreGluedNotCorefined) {
 }
 
 TEST(ContactExport, AGridOfCubesIsOneSolid) {
-  // 12 × 12 unit cubes side by side: a slab of volume 144, one shell,
-  // partly glued and partly corefined.
+  // 12 × 12 cubes side by side, in rows along y 1 and 2 high by turns (of one
+  // height, they would be one extrusion, export/prism_booleans.h): a slab
+  // of volume 144 + 72, one shell, partly glued and partly corefined.
   const std::string source =
       "local cubes = {}\n"
-      "for i = 0, 11 do for j = 0, 11 do cubes[#cubes + 1] = box(1):translate(i, j, 0) end end\n"
+      "for i = 0, 11 do for j = 0, 11 do\n"
+      "  cubes[#cubes + 1] = box{size = {1, 1, 1 + i % 2}}:translate(i, j, 0)\n"
+      "end end\n"
       "return union(cubes)";
   MeshBooleanStats stats;
   const TriangleMesh mesh = meshOfSolid(*part(source), kTolerance, nullptr, &stats).mesh;
   EXPECT_GT(stats.glued, 0u);
   EXPECT_EQ(meshDefect(mesh).text, "");
-  EXPECT_NEAR(mesh.volume(), 144.0, 1e-9);
+  EXPECT_NEAR(mesh.volume(), 216.0, 1e-9);
   EXPECT_EQ(meshShells(mesh).count, 1u);
 }
 
@@ -403,6 +406,38 @@ TEST(ContactExport, AHoneycombOfCellsExtrudedEachOnItsOwnIsOneShell) {
   exportsValid(honeycomb("linear_extrude{polygon(hex), height=4}:translate(x, y, 0)",
                          "union(table.unpack(cells))"),
                kHoneycombVolume, 1e-6);
+}
+
+TEST(ContactExport, ALatticeOfBarsClippedToItsFrameIsOneExtrusion) {
+  // A frame 40 × 40 × 3 (walls 4 wide) and two bars 2 wide and as thick
+  // along its diagonals, clipped to its outline: every top and bottom face
+  // coplanar. Area: the frame's, and in the opening two strips |x − y| ≤
+  // √2 (the 32 × 32 square less two corner triangles of legs 32 − √2
+  // each) less the square of side 2 where they cross.
+  const double c = std::sqrt(2.0);
+  exportsValid(
+      "local frame = box{size = {40, 40, 3}} - box{size = {32, 32, 5}}:translate(4, 4, -1)\n"
+      "local bar = box{size = {2, 80, 3}}:translate(-1, -40, 0)\n"
+      "return frame + (bar:rotate(0, 0, 45) + bar:rotate(0, 0, -45)):translate(20, 20, 0) * "
+      "box{size = {40, 40, 3}}",
+      3.0 * (576.0 + 2.0 * (1024.0 - (32.0 - c) * (32.0 - c)) - 4.0), 1e-6);
+  // A panel of 34 bars at ±45°: CGAL's booleans of the coplanar faces ran
+  // past 180 s (export/prism_booleans.h).
+  exportsValid(
+      "local W, H, t = 80, 60, 3\n"
+      "local frame = box{size = {W, H, t}} - box{size = {W - 8, H - 8, t + 2}}:translate(4, 4, "
+      "-1)\n"
+      "local bars = {}\n"
+      "for i = -8, 8 do\n"
+      "  for _, a in ipairs({45, -45}) do\n"
+      "    bars[#bars + 1] = box{size = {2, 150, t}}:translate(-1, -75, 0):rotate(0, 0, a)"
+      ":translate(i * 8, H / 2, 0)\n"
+      "  end\n"
+      "end\n"
+      "return frame + union(bars) * box{size = {W, H, t}}",
+      // More than the frame, less than the whole plate; the check compares
+      // the mesh with the part point by point.
+      3.0 * (80.0 * 60.0 + (80.0 * 60.0 - 72.0 * 52.0)) / 2.0, 3.0 * 72.0 * 52.0 / 2.0);
 }
 
 TEST(ContactExport, WedgesAboutOneEdgeKeepTheirVolume) {

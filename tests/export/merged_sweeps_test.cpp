@@ -20,13 +20,7 @@
 namespace csgray::detail {
 namespace {
 
-// The primitives of a solid's tree.
-int primitivesOf(const Solid& solid) {
-  if (solid.children().empty()) return 1;
-  int n = 0;
-  for (const SolidPtr& child : solid.children()) n += primitivesOf(*child);
-  return n;
-}
+using test::primitivesOf;
 
 SolidPtr mergedOf(const std::string& source) {
   return sweepsMerged(flattened(test::solidOf(source)));
