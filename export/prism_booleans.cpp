@@ -117,20 +117,18 @@ class Slab {
   Prism first_;
 };
 
-// The boolean as one prism, or nothing.
-SolidPtr asOnePrism(const Boolean& node) {
-  const std::optional<Prism> first = prismOf(*firstLeaf(node));
-  if (!first || node.children().size() < 2) return nullptr;
+// The boolean as one prism in the slab of `first`, or nothing.
+SolidPtr asOnePrismOn(const Boolean& node, const Prism& first) {
   try {
-    const std::optional<Slab::Flat> flat = Slab(*first).flatOf(node);
+    const std::optional<Slab::Flat> flat = Slab(first).flatOf(node);
     if (!flat || !flat->exact || !flat->faceOnFace) return nullptr;
     if (touchesItself(evaluate(*flat->region, evaluationTolerance(*flat->region)))) return nullptr;
-    const Primitive& at = *first->primitive;
+    const Primitive& at = *first.primitive;
     if (auto* prism = dynamic_cast<const LinearExtrusion*>(&at))
       return prism->sweepOf(flat->region);
     // A box: the extrusion from its bottom face, as it is placed.
     SolidPtr made =
-        Primitive::create<LinearExtrusion>(flat->region, first->top, false, 0.0, dvec2(1.0))
+        Primitive::create<LinearExtrusion>(flat->region, first.top, false, 0.0, dvec2(1.0))
             ->withFrame(at.frame());
     if (at.material()) made = static_cast<const Primitive&>(*made).withMaterial(at.material());
     made->setOrigin(at.origin());
@@ -138,6 +136,19 @@ SolidPtr asOnePrism(const Boolean& node) {
   } catch (const std::invalid_argument&) {  // a region too deep, or one that cannot be swept
     return nullptr;
   }
+}
+
+// The boolean as one prism, or nothing: in the slab of its first prism,
+// and for an intersection, whose operand within the slab may come later
+// (a block as tall as anything clipped to a plate), in that of each
+// operand's first.
+SolidPtr asOnePrism(const Boolean& node) {
+  if (node.children().size() < 2) return nullptr;
+  const std::size_t slabs = node.op() == Boolean::Op::Intersection ? node.children().size() : 1;
+  for (std::size_t i = 0; i < slabs; ++i)
+    if (const std::optional<Prism> first = prismOf(*firstLeaf(*node.children()[i])))
+      if (SolidPtr prism = asOnePrismOn(node, *first)) return prism;
+  return nullptr;
 }
 
 SolidPtr merged(const SolidPtr& solid) {

@@ -20,7 +20,8 @@
 namespace csgray::detail {
 
 // The part with each boolean whose operands are, within the slab of its
-// first box or straight linear extrusion, prisms of that slab as above,
+// first box or straight linear extrusion (for an intersection, of any
+// operand's first), prisms of that slab as above,
 // made one straight linear extrusion of the boolean of their regions; the
 // part itself when there are none. The prisms must share a material and
 // stand on the slab's plane: each a box or straight linear extrusion whose

@@ -70,12 +70,16 @@ TEST(PrismBooleans, APartTurnedAsAWholeIsOneExtrusionToo) {
 
 TEST(PrismBooleans, CuttersAndClipsMayPassThroughTheSlab) {
   // Two plates side by side with a slot through both, and clipped by a
-  // taller extrusion: each one extrusion 2 high, the plates'.
+  // taller extrusion (before them or after): each one extrusion 2 high,
+  // the plates'.
   for (const char* source :
        {"return box{size = {10, 10, 2}} + box{size = {10, 10, 2}}:translate(5, 3, 0) - "
         "box{size = {12, 2, 8}}:translate(2, 4, -3)",
         "return (box{size = {10, 10, 2}} + box{size = {10, 10, 2}}:translate(5, 3, 0)) * "
-        "linear_extrude{circle(6), height = 9}:translate(8, 7, -4)"}) {
+        "linear_extrude{circle(6), height = 9}:translate(8, 7, -4)",
+        // The clip first, taller than the plates: the slab is theirs.
+        "return linear_extrude{circle(6), height = 9}:translate(8, 7, -4) * "
+        "(box{size = {10, 10, 2}} + box{size = {10, 10, 2}}:translate(5, 3, 0))"}) {
     SCOPED_TRACE(source);
     const SolidPtr given = test::solidOf(source);
     const SolidPtr part = prismBooleansMerged(given);
@@ -103,8 +107,8 @@ TEST(PrismBooleans, CutsThatOnlyPassThroughStayIn3D) {
 TEST(PrismBooleans, OnlyPrismsOfTheSlabMerge) {
   // A pocket (a cutter short of the far face), a union with a taller
   // block, a block on another plane, another material, a block turned
-  // out of the plane, a sphere, a twist, a clip whose first operand is
-  // the taller one: each stays as it was.
+  // out of the plane, a sphere, a twist, blocks staggered in height (each
+  // sticks out of the other): each stays as it was.
   for (const char* source :
        {"return box{size = {10, 10, 2}} - box{size = {6, 2, 8}}:translate(2, 4, 1)",
         "return box{size = {10, 10, 2}} + box{size = {2, 2, 3}}",
@@ -116,7 +120,7 @@ TEST(PrismBooleans, OnlyPrismsOfTheSlabMerge) {
         "return box{size = {10, 10, 2}} - sphere(1):translate(5, 5, 1)",
         "return box{size = {10, 10, 2}} + linear_extrude{square(10), height = 2, twist = 5}"
         ":translate(5, 0, 0)",
-        "return box{size = {10, 10, 9}} * box{size = {20, 20, 2}}"}) {
+        "return box{size = {10, 10, 9}} * box{size = {20, 20, 9}}:translate(0, 0, -1)"}) {
     SCOPED_TRACE(source);
     const SolidPtr given = test::solidOf(source);
     EXPECT_EQ(prismBooleansMerged(given), given);
