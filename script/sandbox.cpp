@@ -515,14 +515,50 @@ int Sandbox::positionBareError(lua_State* L) {
   return 1;
 }
 
+namespace {
+
+// Hands Lua's parser the source a line at a time, so that an error it
+// raises without a position (brackets nested past its limit: "C stack
+// overflow") can name the line it was reading.
+struct LineReader {
+  std::string_view rest;
+  int line = 0;  // of the last line handed out, from 1
+
+  static const char* read(lua_State*, void* data, std::size_t* size) {
+    auto& self = *static_cast<LineReader*>(data);
+    if (self.rest.empty()) {
+      *size = 0;
+      return nullptr;
+    }
+    const std::size_t end = self.rest.find('\n');
+    const std::string_view piece =
+        self.rest.substr(0, end == std::string_view::npos ? self.rest.size() : end + 1);
+    self.rest.remove_prefix(piece.size());
+    ++self.line;
+    *size = piece.size();
+    return piece.data();
+  }
+};
+
+}  // namespace
+
 int Sandbox::run(const std::string& source, const std::string& chunkName) {
   lua_pushstring(L_, chunkName.c_str());
   lua_pushcclosure(L_, positionBareError, 1);
   const int handler = lua_gettop(L_);
   int base = handler;
   chunkName_ = std::make_shared<const std::string>(chunkName);
-  int status = luaL_loadbufferx(L_, source.data(), source.size(), ("@" + chunkName).c_str(), "t");
+  LineReader reader{source};
+  int status = lua_load(L_, LineReader::read, &reader, ("@" + chunkName).c_str(), "t");
   const bool syntaxError = status == LUA_ERRSYNTAX;
+  if (status != LUA_OK && lua_type(L_, -1) == LUA_TSTRING &&
+      !hasPosition(lua_tostring(L_, -1), chunkName)) {
+    const std::string bare = lua_tostring(L_, -1);
+    lua_pop(L_, 1);
+    lua_pushfstring(
+        L_, "%s:%d: %s%s", chunkName.c_str(), reader.line, bare.c_str(),
+        bare == "C stack overflow" ? " (brackets, calls or tables nested too deeply)" : "");
+  }
   if (status == LUA_OK) status = lua_pcall(L_, 0, LUA_MULTRET, handler);
   // A script that reached a limit has failed, also when no error reached
   // here: Lua retries a refused allocation after a full collection, and the

@@ -529,5 +529,23 @@ TEST(Script, ErrorsWithoutAMessageNameTheirLine) {
   EXPECT_EQ(scriptError("local x = 1\nerror('part.lua:9: said so', 0)"), "part.lua:9: said so");
 }
 
+// Brackets nested past the parser's limit (200 levels), which Lua reports
+// without a position, name the line the parser was reading.
+TEST(Script, BracketsNestedTooDeeplyNameTheirLine) {
+  const std::string deep = std::string(300, '(') + "1" + std::string(300, ')');
+  const std::string message = " C stack overflow (brackets, calls or tables nested too deeply)";
+  EXPECT_EQ(scriptError("local x = 1\nlocal y = " + deep + "\nreturn box(1)"),
+            "part.lua:2:" + message);
+  // One bracket a line: the limit is reached on line 200 (the first line
+  // is the assignment with none).
+  std::string lines = "local y =\n";
+  for (int i = 0; i < 300; ++i) lines += "(\n";
+  EXPECT_EQ(scriptError(lines + "1" + std::string(300, ')')), "part.lua:200:" + message);
+  // Nesting within the limit runs.
+  EXPECT_EQ(
+      scriptError("local y = " + std::string(150, '{') + std::string(150, '}') + "\nreturn box(1)"),
+      "(no error)");
+}
+
 }  // namespace
 }  // namespace csgray::detail
