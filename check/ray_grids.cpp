@@ -257,6 +257,11 @@ class GridTracer {
         if (std::abs(cosine) < kParallel) continue;
         if (!togetherAround(*operands[m.operand], *operands[n.operand], at, normal)) continue;
         const bool shared = m.entering == n.entering;
+        // Operands of an intersection that share a face (a pattern clipped
+        // to an outline of its height) are ordinary modelling too: a hair's
+        // difference moves the face by a hair. Where they meet face to
+        // face, it decides whether a sliver is left.
+        if (shared && !difference) continue;
         // In operand order, so that "a and b" reads as the script wrote them.
         const bool inOrder = m.operand < n.operand;
         const Primitive& first = *(inOrder ? m : n).boundary.primitive;
