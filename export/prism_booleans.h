@@ -31,9 +31,14 @@ namespace csgray::detail {
 // slab, so that their faces meet on its planes: cutters and clips that
 // all pass through it leave nothing face on face, and the booleans in 3D
 // are then the quicker (400 holes through a plate: 0.03 s against 0.14 s
-// in the plane). Not made one either: a boolean whose region touches
-// itself at a point (its prism would be pinched there,
-// profile/pinch_points.h).
-SolidPtr prismBooleansMerged(const SolidPtr& part);
+// in the plane). A boolean whose region touches itself at a point would
+// be pinched there (profile/pinch_points.h): a union of prisms alone (the
+// pixels of a QR code, corner to corner) gets a square `bridge` wide over
+// each such point, as a union joins solids that share only an edge
+// (docs/cli.md, "Contacts"); any other is not made one. Of a union that
+// is not one prism, the operands that lie within one slab are made one
+// where every other operand lies off that slab, across one of its planes
+// (a QR code's pixels, and the plate they stand on).
+SolidPtr prismBooleansMerged(const SolidPtr& part, double bridge = 0.0);
 
 }  // namespace csgray::detail

@@ -38,11 +38,12 @@ bool insideOfEdge(const ProfileEdge& e, const dvec2& p, double hair) {
   return along / sweep > 0.0 && along / sweep < 1.0;
 }
 
-}  // namespace
-
-bool touchesItself(const Profile& evaluated) {
+// The points where the boundary passes twice; with firstOnly, the first
+// found.
+std::vector<dvec2> pointsTouching(const Profile& evaluated, bool firstOnly) {
+  std::vector<dvec2> found;
   const ProfileBounds box = evaluated.bounds();
-  if (box.empty()) return false;
+  if (box.empty()) return found;
   const double size = std::max({1.0, box.hi.x - box.lo.x, box.hi.y - box.lo.y, std::abs(box.lo.x),
                                 std::abs(box.lo.y), std::abs(box.hi.x), std::abs(box.hi.y)});
   const double hair = kHair * size;
@@ -69,7 +70,11 @@ bool touchesItself(const Profile& evaluated) {
     return a.x < b.x || (a.x == b.x && a.y < b.y);
   };
   std::sort(corners.begin(), corners.end(), byX);
-  if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) return true;
+  for (auto twice = std::adjacent_find(corners.begin(), corners.end()); twice != corners.end();
+       twice = std::adjacent_find(twice + 1, corners.end())) {
+    found.push_back(*twice);
+    if (firstOnly) return found;
+  }
   // A sweep along x: the edges whose boxes reach each corner's x.
   std::sort(edges.begin(), edges.end(),
             [](const Reach& a, const Reach& b) { return a.box.lo.x < b.box.lo.x; });
@@ -80,10 +85,24 @@ bool touchesItself(const Profile& evaluated) {
       active.push_back(&edges[next++]);
     std::erase_if(active, [&](const Reach* r) { return r->box.hi.x < p.x - hair; });
     for (const Reach* r : active)
-      if (p.y >= r->box.lo.y - hair && p.y <= r->box.hi.y + hair && insideOfEdge(*r->edge, p, hair))
-        return true;
+      if (p.y >= r->box.lo.y - hair && p.y <= r->box.hi.y + hair &&
+          insideOfEdge(*r->edge, p, hair)) {
+        found.push_back(p);
+        if (firstOnly) return found;
+        break;
+      }
   }
-  return false;
+  std::sort(found.begin(), found.end(), byX);
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+  return found;
+}
+
+}  // namespace
+
+bool touchesItself(const Profile& evaluated) { return !pointsTouching(evaluated, true).empty(); }
+
+std::vector<dvec2> pinchPoints(const Profile& evaluated) {
+  return pointsTouching(evaluated, false);
 }
 
 }  // namespace csgray::detail

@@ -5,6 +5,8 @@
 // pinched along a line there, a solid no mesh can hold as a 2-manifold.
 #pragma once
 
+#include <vector>
+
 #include "profile/profile.h"
 
 namespace csgray::detail {
@@ -13,5 +15,7 @@ namespace csgray::detail {
 // within 2⁻⁴⁰ of its largest coordinate: two corners at one place, or a
 // corner on another edge away from its ends?
 bool touchesItself(const Profile& evaluated);
+// The points where it does, each once.
+std::vector<dvec2> pinchPoints(const Profile& evaluated);
 
 }  // namespace csgray::detail

@@ -2064,7 +2064,8 @@ PartMesh meshOfSolid(const Solid& solid, double tolerance, StoredCoordinate stor
   // should that fail, the part is made as it has them.
   MeshBooleanStats local;
   MeshBooleanStats& counts = stats ? *stats : local;
-  if (const SolidPtr merged = sweepsMerged(prismBooleansMerged(solid.shared_from_this()));
+  if (const SolidPtr merged =
+          sweepsMerged(prismBooleansMerged(solid.shared_from_this(), kPinchBridge * tolerance));
       merged.get() != &solid) {
     try {
       return meshOfFlatPart(*merged, tolerance, stored, counts, doubles);

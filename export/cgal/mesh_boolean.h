@@ -19,6 +19,12 @@ namespace csgray::detail {
 // floats at a part's size (7.6·10⁻⁶ at 100 mm), far below what a printer
 // makes. Solids placed closer than that may be joined across the gap.
 constexpr double kContactOffset = 0.01;
+// How wide the square is that a union of prisms on one slab gets where its
+// outline touches itself at a point (export/prism_booleans.h), in
+// tolerances: ten contact offsets, well above the slivers the finished
+// mesh collapses (a hundredth of the tolerance), which at that width
+// folded the bridge's walls onto the tiles' and crossed them.
+constexpr double kPinchBridge = 10.0 * kContactOffset;
 
 // What the evaluation did, for --stats and the benchmarks.
 struct MeshBooleanStats {

@@ -425,8 +425,9 @@ expect_failure "export into a folder" "" export "$work/part.lua" -o "$work"
 expect_in_stderr "export into a folder" "cannot write $work: it is a folder"
 expect_failure "export of an unbounded part" "$work/unbounded.stl" export "$work/unbounded.lua" -o "$work/unbounded.stl"
 expect_in_stderr "export of an unbounded part" "unbounded.lua: the part is unbounded"
-# Boxes that share only an edge are joined (docs/cli.md, "Contacts").
-printf 'return box(1) + box(1):translate(1, 1, 0)\n' > "$work/edge.lua"
+# Boxes that share only an edge are joined (docs/cli.md, "Contacts"); of
+# different heights, so that they are not one extrusion of their outlines.
+printf 'return box(1) + box{size={1, 1, 2}}:translate(1, 1, 0)\n' > "$work/edge.lua"
 if "$csgray" export "$work/edge.lua" -o "$work/edge.stl" --stats >"$work/stdout" 2>"$work/stderr" &&
    [ -s "$work/edge.stl" ] && grep -q '1 contact resolved' "$work/stderr"; then
   pass

@@ -12,6 +12,7 @@
 
 #include "engine/boolean.h"
 #include "engine/instance.h"
+#include "primitives/box.h"
 #include "primitives/linear_extrusion.h"
 #include "profile/region_evaluation.h"
 #include "test_support.h"
@@ -133,6 +134,59 @@ TEST(PrismBooleans, APrismWhoseRegionTouchesItselfStaysApart) {
   const SolidPtr given =
       test::solidOf("return box{size = {2, 2, 3}} + box{size = {2, 2, 3}}:translate(2, 2, 0)");
   EXPECT_EQ(prismBooleansMerged(given), given);
+}
+
+TEST(PrismBooleans, TilesCornerToCornerAreBridged) {
+  // A 4 × 4 checkerboard of unit tiles: their union touches itself at the
+  // 9 inner grid points. Given a bridge, each point gets a square that
+  // wide over it, which adds two quarters of it (the empty quadrants).
+  const SolidPtr given = test::solidOf(
+      "local tiles = {}\n"
+      "for i = 0, 3 do for j = 0, 3 do\n"
+      "  if (i + j) % 2 == 0 then tiles[#tiles + 1] = box{size = {1, 1, 2}}:translate(i, j, 0) "
+      "end\n"
+      "end end\n"
+      "return union(tiles)");
+  const double bridge = 0.01;
+  const SolidPtr part = prismBooleansMerged(given, bridge);
+  auto* prism = dynamic_cast<const LinearExtrusion*>(part.get());
+  ASSERT_NE(prism, nullptr) << part->kind();
+  EXPECT_NEAR(area(evaluate(*prism->region(), 1e-4)), 8.0 + 9.0 * bridge * bridge / 2.0, 1e-12);
+  // The bridge over (1, 1) fills the corners of the empty tiles there.
+  EXPECT_TRUE(part->contains({1.002, 0.998, 1.0}));
+  EXPECT_FALSE(given->contains({1.002, 0.998, 1.0}));
+  EXPECT_FALSE(part->contains({1.006, 0.994, 1.0}));
+  // Without a bridge, the union stays as it is.
+  EXPECT_EQ(prismBooleansMerged(given), given);
+}
+
+TEST(PrismBooleans, HolesCornerToCornerAreNotBridgedInTheirPlate) {
+  // A bridge over a hole's corner would fill it: a difference stays a
+  // boolean, and only its cutters' union, bridged, is one extrusion (the
+  // cut then goes through where they meet, as a difference's cutters
+  // that touch along an edge do).
+  const SolidPtr given = test::solidOf(
+      "return box{size = {4, 4, 2}} - (box{size = {1, 1, 2}}:translate(1, 1, 0) + "
+      "box{size = {1, 1, 2}}:translate(2, 2, 0))");
+  const SolidPtr part = prismBooleansMerged(given, 0.01);
+  ASSERT_NE(part->asBoolean(), nullptr);
+  EXPECT_EQ(part->asBoolean()->op(), Boolean::Op::Difference);
+  EXPECT_NE(dynamic_cast<const LinearExtrusion*>(part->children()[1].get()), nullptr);
+}
+
+TEST(PrismBooleans, TilesBesideTheirPlateInOneUnionAreOneExtrusion) {
+  // A union lists tiles on a plate beside the plate: the tiles, one slab,
+  // are one extrusion; the plate, another slab, stays beside it.
+  const SolidPtr given = test::solidOf(
+      "local parts = {}\n"
+      "for i = 0, 4 do parts[#parts + 1] = box{size = {1, 1, 2}}:translate(i, i % 2, 0) end\n"
+      "parts[#parts + 1] = box{size = {5, 2, 1}}:translate(0, 0, -1)\n"
+      "return union(parts)");
+  const SolidPtr part = prismBooleansMerged(given, 0.01);
+  ASSERT_EQ(part->children().size(), 2u);
+  EXPECT_NE(dynamic_cast<const LinearExtrusion*>(part->children()[0].get()), nullptr);
+  EXPECT_NE(dynamic_cast<const Box*>(part->children()[1].get()), nullptr);
+  expectSameSolid(*given, *part, {-1, -1, -2}, {6, 3, 3});
 }
 
 TEST(PrismBooleans, TheSlabsBooleansUnderOthersMerge) {
