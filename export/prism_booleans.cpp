@@ -196,10 +196,6 @@ SolidPtr asOnePrism(const Boolean& node, double bridge) {
   return nullptr;
 }
 
-// A union's operands with those that lie within one slab (each set, in
-// the slab of its first) made one prism, in the place of the first: the
-// tiles of a QR code on its base plate, which the script's union lists
-// beside the plate.
 // Does every operand of the union but the set's lie off the set's slab,
 // across one of its planes (the plate under a QR code's pixels)? Others
 // that reach into the slab (the spheres and cylinders that round a box
@@ -226,6 +222,10 @@ bool othersOffSlab(const Prism& first, const std::vector<SolidPtr>& operands,
   return true;
 }
 
+// A union's operands with those that lie within one slab (each set, in
+// the slab of its first) made one prism, in the place of the first: the
+// tiles of a QR code on its base plate, which the script's union lists
+// beside the plate, where the others lie off the slab.
 std::vector<SolidPtr> unionGrouped(std::vector<SolidPtr> operands, double bridge) {
   // Each operand joins at most one set: made one, it is gone; refused, it
   // stays and starts no other (its slab's set would be refused again).

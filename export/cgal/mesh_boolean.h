@@ -22,8 +22,8 @@ constexpr double kContactOffset = 0.01;
 // How wide the square is that a union of prisms on one slab gets where its
 // outline touches itself at a point (export/prism_booleans.h), in
 // tolerances: ten contact offsets, well above the slivers the finished
-// mesh collapses (a hundredth of the tolerance), which at that width
-// folded the bridge's walls onto the tiles' and crossed them.
+// mesh collapses (a hundredth of the tolerance); a square one contact
+// offset wide had its walls folded onto the tiles' by that collapse.
 constexpr double kPinchBridge = 10.0 * kContactOffset;
 
 // What the evaluation did, for --stats and the benchmarks.
