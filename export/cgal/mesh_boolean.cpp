@@ -1227,9 +1227,12 @@ class Evaluator {
   // tangent parts of a rounded box: a box's faces in the plane of
   // another's, a cylinder's generators in a box's faces and in another
   // cylinder's cap), made again with b moved off a, as a contact is
-  // resolved: grown by a hundredth of the tolerance for a union or a cut,
-  // shrunk for an intersection (docs/cli.md, "Contacts"), and shifted by
-  // up to a quarter of that on each axis, in a direction taken from the
+  // resolved: grown by a hundredth of the tolerance (docs/cli.md,
+  // "Contacts"), also for an intersection: a clip flush with a face of
+  // the part (a twisted thread clipped at its foot) then leaves that face
+  // where it is, where one shrunk lifted it off the plate it stands on
+  // and the part fell into two shells; and shifted by up to a quarter of
+  // that on each axis, in a direction taken from the
   // operands' boxes, so that a piece moved so before (now part of a) and
   // b are not moved alike and do not meet in the same place again. It is
   // taken only when b moved the other way gives a result of the same
@@ -1240,7 +1243,7 @@ class Evaluator {
   std::optional<DoubleMesh> perturbedInDoubles(const DoubleMesh& a, const Bounds& boxA,
                                                const Piece& b, Boolean::Op op) const {
     const double delta = kContactOffset * tolerance_;
-    const double outward = op == Boolean::Op::Intersection ? -delta : delta;
+    const double outward = delta;  // b grown, whatever the boolean
     // The boxes' bits, hashed a word at a time in the manner of FNV-1a
     // (its 64-bit offset and prime), seed the standard's fully specified
     // engine: the same shift on every platform, and so the same file.

@@ -468,6 +468,24 @@ TEST(ContactExport, PixelsOfACodeOnTheirPlateAreOneExtrusion) {
   EXPECT_TRUE(test::checksOut(*solid, kTolerance));
 }
 
+TEST(ContactExport, AThreadClippedFlushWithItsEndStaysOnItsPlate) {
+  // A twisted square prism clipped by a box flush with its foot, standing
+  // on a plate, or flush with its top, under a plate: the clip's faces lie
+  // in the prism's, the intersection in doubles is made with the clip
+  // moved, and a clip shrunk moved the end off the plate by 10⁻⁴ (two
+  // shells). Volumes: the plate 200, the prism's square 16 (a twist keeps
+  // its area) 8 high.
+  const std::string thread =
+      "local t = linear_extrude{square{size = 4, center = true}, height = 10, twist = 10}\n";
+  for (const char* part : {"return box{size = {10, 10, 2}}:translate(-5, -5, -2) + "
+                           "t * box{size = {8, 8, 8}}:translate(-4, -4, 0)",
+                           "return box{size = {10, 10, 2}}:translate(-5, -5, 10) + "
+                           "t * box{size = {8, 8, 8}}:translate(-4, -4, 2)"}) {
+    const TriangleMesh mesh = exportsValid(thread + part, 328.0, kTolerance * 440.0);
+    EXPECT_EQ(meshShells(mesh).count, 1u);
+  }
+}
+
 TEST(ContactExport, WedgesAboutOneEdgeKeepTheirVolume) {
   // Eight wedges of 22.5° every 45°, each a linear_extrude of its own,
   // meet only along the axis. CGAL's repair of the crossings the contacts
