@@ -383,6 +383,15 @@ SolidPtr Boolean::mapPrimitives(const PrimitiveMap& f) const {
   return copy;
 }
 
+SolidPtr Boolean::withOperands(std::vector<SolidPtr> operands) const {
+  if (std::equal(operands.begin(), operands.end(), operands_.begin(), operands_.end()))
+    return shared_from_this();
+  if (operands.size() == 1) return std::move(operands.front());
+  auto copy = std::make_shared<Boolean>(op_, std::move(operands));
+  copy->setOrigin(origin());
+  return copy;
+}
+
 SolidPtr Boolean::mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const {
   // A node used many times (under instances) is mapped once.
   if (auto found = done.find(this); found != done.end()) return found->second;

@@ -65,6 +65,10 @@ class Boolean : public Solid {
   std::string kind() const override;
   const Boolean* asBoolean() const override { return this; }
   SolidPtr mapPrimitives(const PrimitiveMap& f) const override;
+  // This node over other operands, for the rewrites of a tree: itself
+  // where they are its own (the same pointers, in order), else a new node
+  // of its operation and origin. A single operand is returned as it is.
+  SolidPtr withOperands(std::vector<SolidPtr> operands) const;
   SolidPtr mapSharedPrimitives(const PrimitiveMap& f, SharedMap& done) const override;
   void prepare() const override;
   SolidPtr forRays() const override;

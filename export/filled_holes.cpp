@@ -57,12 +57,8 @@ SolidPtr droppedInUnion(const Boolean& node, std::vector<std::shared_ptr<const C
   for (const SolidPtr& operand : node.children())
     if (auto pin = placedCylinder(*operand)) pins.push_back(std::move(pin));
   std::vector<SolidPtr> operands;
-  bool changed = false;
-  for (const SolidPtr& operand : node.children()) {
-    operands.push_back(dropped(operand, pins));
-    changed = changed || operands.back() != operand;
-  }
-  return changed ? unionOf(std::move(operands)) : node.shared_from_this();
+  for (const SolidPtr& operand : node.children()) operands.push_back(dropped(operand, pins));
+  return node.withOperands(std::move(operands));
 }
 
 SolidPtr dropped(const SolidPtr& solid, const std::vector<std::shared_ptr<const Cylinder>>& pins) {
@@ -70,7 +66,6 @@ SolidPtr dropped(const SolidPtr& solid, const std::vector<std::shared_ptr<const 
   if (!node) return solid;
   if (node->op() == Boolean::Op::Union) return droppedInUnion(*node, pins);
   std::vector<SolidPtr> operands;
-  bool changed = false;
   const auto children = node->children();
   for (std::size_t i = 0; i < children.size(); ++i) {
     const bool cutter = node->op() == Boolean::Op::Difference && i > 0;
@@ -78,21 +73,15 @@ SolidPtr dropped(const SolidPtr& solid, const std::vector<std::shared_ptr<const 
       if (auto hole = placedCylinder(*children[i])) {
         const Bounds& box = children[0]->bounds();
         if (std::any_of(pins.begin(), pins.end(),
-                        [&](const auto& pin) { return holds(*pin, *hole, box); })) {
-          changed = true;
+                        [&](const auto& pin) { return holds(*pin, *hole, box); }))
           continue;
-        }
       }
     // Holes of the minuend only: a cutter's own holes (a ring cut from the
     // part) are left as they are.
     const bool minuend = node->op() == Boolean::Op::Difference && i == 0;
     operands.push_back(dropped(children[i], minuend ? pins : decltype(pins){}));
-    changed = changed || operands.back() != children[i];
   }
-  if (!changed) return solid;
-  if (operands.size() == 1) return operands[0];
-  return node->op() == Boolean::Op::Difference ? differenceOf(std::move(operands))
-                                               : intersectionOf(std::move(operands));
+  return node->withOperands(std::move(operands));
 }
 
 }  // namespace

@@ -124,9 +124,7 @@ SolidPtr withLongerCutters(const SolidPtr& solid, double by,
     })
                               : withLongerCutters(children[i], by, which, made));
   }
-  auto copy = std::make_shared<Boolean>(node->op(), std::move(operands));
-  copy->setOrigin(node->origin());
-  return copy;
+  return node->withOperands(std::move(operands));
 }
 
 }  // namespace

@@ -111,12 +111,8 @@ SolidPtr sweptAsOne(const Sweep& first, std::vector<RegionPtr> regions, bool eve
 SolidPtr merged(const SolidPtr& solid, bool evenTouching) {
   const Boolean* node = solid->asBoolean();
   if (node == nullptr) return solid;
-  bool changed = false;
   std::vector<SolidPtr> operands;
-  for (const SolidPtr& child : node->children()) {
-    operands.push_back(merged(child, evenTouching));
-    changed = changed || operands.back() != child;
-  }
+  for (const SolidPtr& child : node->children()) operands.push_back(merged(child, evenTouching));
   if (node->op() == Boolean::Op::Union) {
     // Each sweep's region in the plane of the first sweep it is alike
     // (its class), and the sets of those whose boxes meet, directly or
@@ -165,10 +161,10 @@ SolidPtr merged(const SolidPtr& solid, bool evenTouching) {
         else if (members[root].front() == i)
           kept.push_back(asOne[root]);
       }
-      return kept.size() == 1 ? kept[0] : unionOf(std::move(kept));
+      return node->withOperands(std::move(kept));
     }
   }
-  return changed ? std::make_shared<Boolean>(node->op(), std::move(operands)) : solid;
+  return node->withOperands(std::move(operands));
 }
 
 }  // namespace

@@ -264,19 +264,10 @@ SolidPtr merged(const SolidPtr& solid, double bridge) {
   const Boolean* node = solid->asBoolean();
   if (node == nullptr) return solid;
   if (SolidPtr prism = asOnePrism(*node, bridge)) return prism;
-  bool changed = false;
   std::vector<SolidPtr> operands;
-  for (const SolidPtr& child : node->children()) {
-    operands.push_back(merged(child, bridge));
-    changed = changed || operands.back() != child;
-  }
-  if (node->op() == Boolean::Op::Union) {
-    const std::size_t before = operands.size();
-    operands = unionGrouped(std::move(operands), bridge);
-    changed = changed || operands.size() != before;
-    if (operands.size() == 1) return operands.front();
-  }
-  return changed ? std::make_shared<Boolean>(node->op(), std::move(operands)) : solid;
+  for (const SolidPtr& child : node->children()) operands.push_back(merged(child, bridge));
+  if (node->op() == Boolean::Op::Union) operands = unionGrouped(std::move(operands), bridge);
+  return node->withOperands(std::move(operands));
 }
 
 }  // namespace

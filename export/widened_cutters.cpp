@@ -99,9 +99,7 @@ SolidPtr widened(const SolidPtr& solid, double by, double size, int& made) {
       made += widenedHere;
     }
   }
-  auto copy = std::make_shared<Boolean>(node->op(), std::move(operands));
-  copy->setOrigin(node->origin());
-  return copy;
+  return node->withOperands(std::move(operands));
 }
 
 }  // namespace

@@ -78,18 +78,10 @@ class Resolver {
     auto* boolean = dynamic_cast<const Boolean*>(solid.get());
     if (!boolean) return solid;  // a primitive
     std::vector<SolidPtr> operands;
-    bool changed = false;
-    for (const SolidPtr& operand : boolean->children()) {
-      SolidPtr resolved = resolve(operand);
-      changed = changed || resolved != operand;
-      if (resolved) operands.push_back(std::move(resolved));
-    }
-    if (!changed) return solid;
+    for (const SolidPtr& operand : boolean->children())
+      if (SolidPtr resolved = resolve(operand)) operands.push_back(std::move(resolved));
     if (operands.empty()) return nullptr;
-    if (operands.size() == 1) return operands.front();
-    auto rebuilt = std::make_shared<Boolean>(boolean->op(), std::move(operands));
-    rebuilt->setOrigin(solid->origin());
-    return rebuilt;
+    return boolean->withOperands(std::move(operands));
   }
 
   ResolvedModifiers result(const std::vector<SolidPtr>& model) && {
