@@ -1893,6 +1893,12 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
       part = partFrom(roundedMesh());
       defect = meshDefect(part.mesh);
     }
+    // Caps that rounding turned over, which those rounds leave (a grown
+    // box's face whose diagonal runs through a corner it touches).
+    if (!defect.valid() && flipCaps(roundedMesh(), reach) > 0) {
+      part = partFrom(roundedMesh());
+      defect = meshDefect(part.mesh);
+    }
     // A mesh made with booleans in doubles whose slivers were not all
     // is made again with CGAL's instead (meshTryingDoubles): CGAL's hole
     // filling met NaNs on one (OpenSCAD's example001).

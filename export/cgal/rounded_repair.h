@@ -12,6 +12,14 @@ namespace csgray::detail {
 // other point moves.
 void removeDegenerateFaces(RoundedMesh& mesh);
 
+// Caps (a face whose corner lies within `reach` of its longest edge)
+// flipped across that edge, where both faces the flip makes turn the way
+// the face across it does; returns how many. A grown box's face whose
+// diagonal runs through the corner of a box it touches has such a face,
+// flat in doubles, and rounding to floats turns it over onto its
+// neighbour; CGAL's sliver removal (below) leaves it so.
+std::size_t flipCaps(RoundedMesh& mesh, double reach);
+
 // Slivers (a face thinner than `reach`, or with an angle within 0.8° of
 // 180°) collapsed or flipped away.
 void removeSlivers(RoundedMesh& mesh, double reach);

@@ -1364,12 +1364,14 @@ std::size_t reorderedAndValid(unsigned seed, StoredCoordinate stored) {
 TEST(ContactExport, RandomPartsThatNeedTheirUnionsInTheOtherOrder) {
   // Seeds of randomContactPart whose contacts, met in the script's order,
   // leave the mesh invalid, and in the reverse order come out valid: of
-  // seeds 1 to 400, these six. (The seeds first found so, 70, 85, 130,
+  // seeds 1 to 400, these five. (The seeds first found so, 70, 85, 130,
   // 157 and 203, where moved faces crossed near a corner that three
   // solids touch, or CGAL met solids touching at a corner, no longer need
   // it since boxes of one slab are made one extrusion in the plane where
-  // the union's other operands lie off it, export/prism_booleans.h.)
-  for (unsigned seed : {21u, 98u, 142u, 185u, 285u, 390u})
+  // the union's other operands lie off it, export/prism_booleans.h; 285
+  // comes out valid in the script's order since caps that rounding turned
+  // over are flipped back, flipCaps.)
+  for (unsigned seed : {21u, 98u, 142u, 185u, 390u})
     EXPECT_EQ(reorderedAndValid(seed, nullptr), 1u);
 }
 
@@ -1382,6 +1384,56 @@ TEST(ContactExport, RandomPartsThatNeedAShuffledOrder) {
   // shuffled orders makes them valid.
   const StoredCoordinate asStlStores = [](double x) { return double(float(x)); };
   for (unsigned seed : {160u, 175u, 245u}) EXPECT_GE(reorderedAndValid(seed, asStlStores), 2u);
+}
+
+TEST(ContactExport, ACapThatRoundingTurnedOverIsFlippedBack) {
+  // Of randomContactPart's seeds 1 to 400, 256 failed in every order: the
+  // box grown where the ball touches it (a contact) has a face whose
+  // diagonal runs through the corner of the box stacked on it, and the
+  // face the booleans leave between them, flat, was turned over onto its
+  // neighbour once rounded. Four of its solids fail so; its cap is flipped
+  // across its long edge (flipCaps).
+  const SolidPtr solid = part(R"(
+    return union{
+      sphere(1):translate(1, 3, 3),
+      box(2):translate(4, 0, 6),
+      sphere(1):translate(5, 1, 5),
+      box{size={4, 2, 2}}:translate(0, 0, 4),
+    })");
+  const StoredCoordinate asStlStores = [](double x) { return double(float(x)); };
+  for (const StoredCoordinate stored : {StoredCoordinate(nullptr), asStlStores}) {
+    MeshBooleanStats stats;
+    const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, stored, &stats).mesh;
+    EXPECT_EQ(meshDefect(mesh).text, "");
+    EXPECT_EQ(stats.reordered, 0u);
+  }
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
+  // And the part it came from, valid and holding to its model.
+  reorderedAndValid(256, nullptr);
+}
+
+TEST(ContactExport, TiltedDiscsAboutACoreStayInDoubles) {
+  // A thread made of thin discs, each tilted 4° and turned 22.5° more than
+  // the one below, stacked about a core rod: the booleans in doubles left
+  // a face turned over where two rims cross at a shallow angle, the mesh
+  // failed its check, and the part was made again by CGAL alone (12 s for
+  // these 48 discs, 78 s for 250). The cap is flipped back (flipCaps).
+  const SolidPtr solid = part(R"(
+    local parts = {cylinder{r=4.2, h=48 * 0.09375 + 1}}
+    for i = 0, 47 do
+      parts[#parts + 1] = cylinder{r=5, h=0.3, center=true}:rotate(4, 0, 0)
+                            :rotate(0, 0, i * 22.5):translate(0, 0, 1 + i * 0.09375)
+    end
+    return union(parts))");
+  // (As an STL file stores it: the face turned over in floats.)
+  const StoredCoordinate asStlStores = [](double x) { return double(float(x)); };
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, asStlStores, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_EQ(meshShells(mesh).count, 1u);
+  EXPECT_FALSE(stats.redoneByCgal);
+  EXPECT_EQ(stats.inDoubles, stats.corefinements);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
 }
 
 // ---- The same primitive twice ---------------------------------------------------
