@@ -23,7 +23,13 @@ void writeAov(AtomicFile& file, const std::string& path, Image image, bool isDep
         if (v > 0.0f) nearest = std::min(nearest, v);
       for (float& v : image.rgb) v = v > 0.0f && std::isfinite(v) ? nearest / v : 0.0f;
     } else {
-      for (float& v : image.rgb) v = v == 0.0f ? 0.0f : 0.5f * (v + 1.0f);
+      // (n + 1) / 2, black where nothing was hit (a normal of 0, 0, 0): a
+      // face's normal has components of 0 too, which stay 0.5.
+      for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+        float* n = &image.rgb[i];
+        if (n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f) continue;
+        for (int k = 0; k < 3; ++k) n[k] = 0.5f * (n[k] + 1.0f);
+      }
     }
   }
   writeImageUncommitted(file, path, image.width, image.height, image.rgb.data(), ImageData::Values,

@@ -277,6 +277,21 @@ if "$csgray" render "$work/part.lua" -o "$work/aov/part.png" --size 32x24 --aov 
 else
   fail "--aov depth,normal"; cat "$work/stderr"
 fi
+# An 8-bit normal image holds (n + 1) / 2: a floor seen from above, its
+# normal (0, 0, 1), is 128 128 255 in every pixel (a component of 0 was
+# written as 0, as if nothing had been hit).
+cat >"$work/floor.lua" <<'LUA'
+return scene{objects={plane{}}, camera=camera{eye={0, 0, 10}, look_at={0, 0, 0}, up={0, 1, 0}}}
+LUA
+mkdir "$work/aovn"
+if "$csgray" render "$work/floor.lua" -o "$work/aovn/floor.ppm" --size 4x3 --aov normal \
+     >/dev/null 2>"$work/stderr" &&
+   [ "$(tail -c 36 "$work/aovn/floor.normal.ppm" | od -An -tu1 | tr -s ' \n' ' ')" = \
+     " $(for i in 1 2 3 4 5 6 7 8 9 10 11 12; do printf '128 128 255 '; done)" ]; then
+  pass
+else
+  fail "--aov normal: a floor's 8-bit normals are not 128 128 255"; cat "$work/stderr"
+fi
 # One of them only; the plain render at the top wrote none.
 mkdir "$work/aov1"
 "$csgray" render "$work/part.lua" -o "$work/aov1/part.png" --size 16x12 --aov normal >/dev/null 2>&1
