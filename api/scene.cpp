@@ -64,6 +64,11 @@ Scene& Scene::add(const Light& light) {
   return *this;
 }
 
+Scene& Scene::setDefaultLight(bool enabled) {
+  impl_->scene.defaultLight = enabled;
+  return *this;
+}
+
 Scene& Scene::setCamera(const Camera& camera) {
   guarded([&] { impl_->scene.camera = toDetail(camera); });
   return *this;
@@ -125,6 +130,8 @@ std::vector<Light> Scene::lights() const {
   for (const detail::Light& l : impl_->scene.lights) out.push_back(detail::toPublic(l));
   return out;
 }
+
+bool Scene::defaultLight() const { return impl_->scene.defaultLight; }
 
 std::optional<Camera> Scene::camera() const {
   if (!impl_->scene.camera) return std::nullopt;

@@ -42,7 +42,7 @@ void printInfo(const std::string& script, const Scene& scene) {
             << "  boolean nodes: " << stats.booleans << "\n"
             << "  surfaces:      " << scene.surfaces.size() << "\n"
             << "  lights:        " << scene.lights.size()
-            << (scene.lights.empty() ? " (default)" : "") << "\n"
+            << (scene.lights.empty() && scene.defaultLight ? " (default)" : "") << "\n"
             << "  camera:        " << (scene.camera ? "set" : "framed from bounds") << "\n";
 }
 

@@ -92,6 +92,10 @@ RayEstimate estimateRays(const Scene& scene, const RenderOptions& options) {
     estimate.lights = scene.lights.size();
     estimate.shadowRaysPerHit = 0.0;
     for (const Light& light : scene.lights) estimate.shadowRaysPerHit += light.sampleCount();
+  } else if (!scene.defaultLight) {
+    // Lit by ambient light and emission alone: no shadow rays.
+    estimate.lights = 0;
+    estimate.shadowRaysPerHit = 0.0;
   } else if (scene.cadLook) {
     // Key, fill and rim, of which the key casts shadows; a ray that meets
     // nothing may look for the ground's shadow instead.

@@ -108,6 +108,12 @@ bool letsLightThrough(const Solid& solid, std::unordered_set<const Solid*>& opaq
 }
 
 CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
+  // Only unbounded surfaces (planes) and no solid of any size: the bounds
+  // are empty, but not because a solid is.
+  if (!scene.camera && scene.bounds().empty() && !scene.surfaces.empty())
+    throw std::invalid_argument(
+        "cannot frame an unbounded surface such as a plane: return scene{objects=..., "
+        "camera=camera{...}}");
   CameraSpec camera = scene.camera
                           ? *scene.camera
                           : frameBounds(scene.bounds(), double(options.width) / options.height);
@@ -227,7 +233,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       lights_(scene.lights) {
   if (scene.cadLook) {
     cadLook_.emplace(cameraSpec_, double(options.width) / options.height, scene.bounds());
-    if (lights_.empty()) lights_ = cadLook_->lights();
+    if (lights_.empty() && scene.defaultLight) lights_ = cadLook_->lights();
     // The ground shadow's cells: a few pixels wide where the camera looks.
     dvec3 lo, hi;
     if (cadLook_->groundRegion(lo, hi)) {
@@ -238,7 +244,7 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
       if (grid->made()) groundShadow_ = grid;
     }
   }
-  if (lights_.empty()) lights_.push_back(defaultLight(cameraSpec_));
+  if (lights_.empty() && scene.defaultLight) lights_.push_back(defaultLight(cameraSpec_));
   std::unordered_set<const Solid*> opaque;
   for (const SolidPtr& s : objects_) {
     s->prepare();

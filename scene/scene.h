@@ -61,7 +61,11 @@ struct Scene {
   std::vector<SolidPtr> ghosts;
   std::vector<SolidPtr> highlights;
   std::optional<CameraSpec> camera;  // none: frame the objects' bounds
-  std::vector<Light> lights;         // none: a default light beside the camera
+  std::vector<Light> lights;
+  // With no lights, one beside the camera (defaultLight below). A scene
+  // that names its lights, even as an empty list, turns it off and is lit
+  // only by ambient light and emission.
+  bool defaultLight = true;
   dvec3 background{0.05, 0.05, 0.08};
   TraceLimits limits;
   // A bare solid's scene (the script returned a solid, a surface or a

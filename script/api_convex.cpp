@@ -73,7 +73,7 @@ int convex(lua_State* L) {
     std::string what = "convex: plane " + std::to_string(i);
     if (lua_type(L, -1) != LUA_TTABLE) {
       throw std::invalid_argument(what + " must be a table {normal={x, y, z}, offset=d}, got " +
-                                  luaL_typename(L, -1));
+                                  shownType(L, -1));
     }
     LuaArgs plane(L, -1, what);
     std::optional<dvec3> normal = plane.vec3("normal");

@@ -31,7 +31,7 @@ namespace {
 lua_Unsigned listLength(lua_State* L, int index, const char* function, const std::string& what,
                         const std::string& expected) {
   if (lua_type(L, index) != LUA_TTABLE)
-    refuse(function, what + " must be " + expected + ", got " + luaL_typename(L, index));
+    refuse(function, what + " must be " + expected + ", got " + shownType(L, index));
   return lua_rawlen(L, index);
 }
 
@@ -85,9 +85,9 @@ std::vector<std::vector<std::int64_t>> readFaces(lua_State* L, int index, Pendin
       int isInteger = 0;
       lua_Integer v = lua_tointegerx(L, -1, &isInteger);
       if (lua_type(L, -1) != LUA_TNUMBER || !isInteger) {
-        std::string value = lua_type(L, -1) == LUA_TNUMBER
-                                ? std::string(lua_tostring(L, -1))
-                                : std::string("a ") + luaL_typename(L, -1);
+        std::string value = lua_type(L, -1) == LUA_TNUMBER     ? std::string(lua_tostring(L, -1))
+                            : lua_type(L, -1) == LUA_TUSERDATA ? shownType(L, -1)
+                                                               : "a " + shownType(L, -1);
         refuse(function, what + ": " + value + " is not a point index (an integer from 0)");
       }
       lua_pop(L, 1);

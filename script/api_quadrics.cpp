@@ -76,7 +76,7 @@ int clip(lua_State* L) {
     throw std::invalid_argument(
         std::string("clip: the second argument must be {lo=, hi=}, a solid or a list of solids, "
                     "got ") +
-        luaL_typename(L, 2));
+        shownType(L, 2));
   }
   // The new intersection node, the box and the cutters that took the
   // solid's material (copies) are counted as pushSolid finds them.

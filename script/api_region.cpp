@@ -77,7 +77,7 @@ void pushRegionAs(lua_State* L, RegionPtr region, const std::string& kind) {
     throw std::invalid_argument(what +
                                 " must be a region, not a solid: 2D regions and solids do not "
                                 "mix (extrude the region first)");
-  throw std::invalid_argument(what + " must be a region, got " + luaL_typename(L, index));
+  throw std::invalid_argument(what + " must be a region, got " + shownType(L, index));
 }
 
 const RegionPtr& regionAt(lua_State* L, int index, const std::string& what) {
@@ -149,7 +149,7 @@ int ellipse(lua_State* L) {
 // The length of the list at index, or an error naming what it should be.
 lua_Unsigned listLength(lua_State* L, int index, const std::string& what, const char* expected) {
   if (lua_type(L, index) != LUA_TTABLE)
-    throw std::invalid_argument(what + " must be " + expected + ", got " + luaL_typename(L, index));
+    throw std::invalid_argument(what + " must be " + expected + ", got " + shownType(L, index));
   return lua_rawlen(L, index);
 }
 

@@ -36,8 +36,8 @@ int camera(lua_State* L) {
 
 // Calls f for a single value under key or for each value of a list.
 template <class F>
-void forEachListed(lua_State* L, LuaArgs& args, const char* key, F f) {
-  if (!args.push(key)) return;
+bool forEachListed(lua_State* L, LuaArgs& args, const char* key, F f) {
+  if (!args.push(key)) return false;
   if (lua_type(L, -1) == LUA_TTABLE) {
     lua_Unsigned n = lua_rawlen(L, -1);
     for (lua_Unsigned i = 1; i <= n; ++i) {
@@ -49,6 +49,7 @@ void forEachListed(lua_State* L, LuaArgs& args, const char* key, F f) {
     f(args.function() + ": " + key);
   }
   lua_pop(L, 1);
+  return true;
 }
 
 int scene(lua_State* L) {
@@ -80,7 +81,8 @@ int scene(lua_State* L) {
       s.objects.push_back(solid);
     }
   });
-  forEachListed(L, args, "lights", [&](const std::string& what) {
+  // Lights named, even none, replace the default light.
+  s.defaultLight = !forEachListed(L, args, "lights", [&](const std::string& what) {
     pending.add(sizeof(Light));
     s.lights.push_back(checkValue<Light>(L, -1, what));
   });
@@ -190,7 +192,7 @@ Scene sceneOfValue(lua_State* L, int index) {
   if (Scene* s = toValue<Scene>(L, index)) return *s;
   throw std::invalid_argument(std::string("the script must return a solid, a surface, a region "
                                           "or scene{...}, not ") +
-                              luaL_typename(L, index));
+                              shownType(L, index));
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ RegionPtr regionAndOptions(lua_State* L, const char* function) {
     if (given == 2 && !lua_isnil(L, 2) && lua_type(L, 2) != LUA_TTABLE)
       throw std::invalid_argument(std::string(function) +
                                   ": the second argument must be a table of options, got " +
-                                  luaL_typename(L, 2));
+                                  shownType(L, 2));
     if (given == 2 && !lua_isnil(L, 2)) {
       lua_pushvalue(L, 2);
     } else {
@@ -40,8 +40,7 @@ RegionPtr regionAndOptions(lua_State* L, const char* function) {
     return region;
   }
   if (lua_type(L, 1) != LUA_TTABLE)
-    throw std::invalid_argument(std::string(function) + ": needs a region, got " +
-                                luaL_typename(L, 1));
+    throw std::invalid_argument(std::string(function) + ": needs a region, got " + shownType(L, 1));
   if (given == 2)
     throw std::invalid_argument(std::string(function) +
                                 ": give the region and the options in one table, or the region "

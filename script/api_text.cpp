@@ -48,7 +48,7 @@ int text(lua_State* L) {
       lua_pop(L, 1);
     }
   } else {
-    throw std::invalid_argument(std::string("text: needs a string, got ") + luaL_typename(L, 1));
+    throw std::invalid_argument(std::string("text: needs a string, got ") + shownType(L, 1));
   }
   LuaArgs args(L, 1, "text");
   TextLayout layout;

@@ -1,9 +1,11 @@
 #include "script/lua_args.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "scene/color_names.h"
+#include "scene/value_checks.h"
 
 namespace csgray::detail {
 
@@ -12,7 +14,7 @@ LuaArgs::LuaArgs(lua_State* L, int index, std::string function)
   int type = lua_type(L, index_);
   if (type != LUA_TTABLE && type != LUA_TNIL && type != LUA_TNONE)
     throw std::invalid_argument(function_ + ": expected a table of named parameters, got " +
-                                luaL_typename(L, index_));
+                                shownType(L, index_));
   if (type == LUA_TTABLE && lua_rawlen(L, index_) > 0)
     throw std::invalid_argument(function_ + ": unexpected value without a name; use name=value");
 }
@@ -62,13 +64,35 @@ std::optional<std::string> LuaArgs::string(const char* key) {
   if (!push(key)) return std::nullopt;
   if (lua_type(L_, -1) != LUA_TSTRING)
     throw std::invalid_argument(function_ + ": " + key + " must be a string, got " +
-                                luaL_typename(L_, -1));
+                                shownType(L_, -1));
   std::size_t length = 0;
   const char* text = lua_tolstring(L_, -1, &length);
   std::string v(text, length);
   lua_pop(L_, 1);
   return v;
 }
+
+namespace {
+
+// "; did you mean 'fov'?" for an unknown parameter: the known one that
+// POV-Ray or OpenSCAD name `key` (a camera's angle is its fov), else the
+// one a typo or two away.
+std::string parameterHint(const std::string& key, const std::set<std::string>& known) {
+  static const std::multimap<std::string, std::string> kOtherNames = {
+      {"angle", "fov"},        {"location", "eye"},       {"location", "pos"}, {"position", "pos"},
+      {"point_at", "look_at"}, {"tightness", "exponent"}, {"colour", "color"}, {"rgb", "color"},
+      {"radius", "r"},         {"diameter", "d"},         {"radius1", "r1"},   {"radius2", "r2"},
+  };
+  for (auto [it, end] = kOtherNames.equal_range(key); it != end; ++it)
+    if (known.count(it->second)) return "; did you mean '" + it->second + "'?";
+  std::string nearest;
+  std::size_t best = key.size() >= 5 ? 3 : 2;
+  for (const std::string& name : known)
+    if (std::size_t d = editDistance(key, name); d < best) best = d, nearest = name;
+  return nearest.empty() ? "" : "; did you mean '" + nearest + "'?";
+}
+
+}  // namespace
 
 void LuaArgs::finish() {
   if (lua_type(L_, index_) != LUA_TTABLE) return;
@@ -82,7 +106,8 @@ void LuaArgs::finish() {
     }
     if (!used_.count(key)) {
       lua_pop(L_, 1);
-      throw std::invalid_argument(function_ + ": unknown parameter '" + shortened(key) + "'");
+      throw std::invalid_argument(function_ + ": unknown parameter '" + shortened(key) + "'" +
+                                  parameterHint(key, used_));
     }
   }
 }
@@ -149,6 +174,17 @@ ResizeArgs resizeArgs(lua_State* L, int dims) {
   return r;
 }
 
+std::string shownType(lua_State* L, int index) {
+  std::string shown = luaL_typename(L, index);
+  if (lua_type(L, index) != LUA_TUSERDATA) return shown;
+  // Each of csgray's metatables is named by its kind, "light"
+  // (newMetatable in script/lua_values.h).
+  const int field = luaL_getmetafield(L, index, "__name");
+  if (field == LUA_TSTRING) shown = std::string("a ") + lua_tostring(L, -1);
+  if (field != LUA_TNIL) lua_pop(L, 1);
+  return shown;
+}
+
 // Does the table at index have a string key (a named parameter)?
 bool hasStringKey(lua_State* L, int index) {
   lua_pushnil(L);
@@ -166,7 +202,7 @@ double toNumber(lua_State* L, int index, const std::string& what) {
   int isNumber = 0;
   double v = lua_tonumberx(L, index, &isNumber);
   if (!isNumber || lua_type(L, index) != LUA_TNUMBER)
-    throw std::invalid_argument(what + " must be a number, got " + luaL_typename(L, index));
+    throw std::invalid_argument(what + " must be a number, got " + shownType(L, index));
   if (!std::isfinite(v)) throw std::invalid_argument(what + " must be finite");
   return v;
 }

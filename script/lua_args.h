@@ -61,6 +61,10 @@ struct ResizeArgs {
 };
 ResizeArgs resizeArgs(lua_State* L, int dims);
 
+// What the value at index is, for messages: "a light" for csgray's own
+// values (all "userdata" to Lua), Lua's type name ("number") for the rest.
+std::string shownType(lua_State* L, int index);
+
 // Does the table at index have a key that is a string (a named parameter)?
 bool hasStringKey(lua_State* L, int index);
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "script/lua_args.h"
 #include "script/sandbox.h"
 
 namespace csgray::detail {
@@ -126,8 +127,15 @@ inline const T& checkValue(
                                   ": it has no volume until it is extruded (linear_extrude, "
                                   "rotate_extrude)");
   }
+  // Lights and solids put in each other's lists, as a POV-Ray scene has
+  // its light sources among the objects.
+  std::string where;
+  if (std::is_same_v<T, SolidPtr> && toValue<Light>(L, index))
+    where = ": lights go in scene{lights={...}}";
+  if (std::is_same_v<T, Light> && toValue<SolidPtr>(L, index))
+    where = ": solids go in scene{objects={...}}";
   throw std::invalid_argument(what + " must be a " + TypeName<T>::shown + ", got " +
-                              luaL_typename(L, index));
+                              shownType(L, index) + where);
 }
 
 // The solid a method was called on, s:method(...). A surface has the

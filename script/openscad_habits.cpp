@@ -17,6 +17,22 @@ const char* const kTransforms =
 
 }  // namespace
 
+std::string methodNameHint(const std::string& name, bool isFunction) {
+  static const std::map<std::string, std::string> kMethods = {
+      {"color", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"colour", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"texture", "a texture is a material's colour here: s:material{color=checker{...}}"},
+      {"pigment", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"union", "union is a function here, not a method: union(s, t) or s + t"},
+      {"difference", "difference is a function here, not a method: difference(s, t) or s - t"},
+      {"intersection",
+       "intersection is a function here, not a method: intersection(s, t) or s * t"},
+  };
+  if (auto it = kMethods.find(name); it != kMethods.end()) return "; " + it->second;
+  if (isFunction) return "; " + name + " is a function here, not a method: " + name + "(s, ...)";
+  return "";
+}
+
 std::string openscadNameHint(const std::string& name) {
   // OpenSCAD's built-in modules and functions that csgray calls otherwise.
   static const std::map<std::string, std::string> kNames = {

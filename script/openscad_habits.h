@@ -12,6 +12,12 @@ namespace csgray::detail {
 // of OpenSCAD's (cube, translate, echo, text, abs, ...), else "".
 std::string openscadNameHint(const std::string& name);
 
+// For a method that does not exist, called as OpenSCAD's or POV-Ray's
+// habit would call it on a part (s:color(...), s:texture(...),
+// s:union(t)): "; <hint>", else "". isFunction: a global function of that
+// name exists (union, hull, ...), which is then how to call it.
+std::string methodNameHint(const std::string& name, bool isFunction);
+
 // For an error: "; <hint>" when the line of the script where it happened
 // (sourceLine) holds one of OpenSCAD's forms ($fn, [x, y, z], module,
 // difference() { ... }, for (i = [a:b]), include <...>, ...), else "".

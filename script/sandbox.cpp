@@ -140,6 +140,13 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
       }
       return "; " + name + " is a method of another kind of value (" + list + "), not of this one";
     }
+    // A function called as a method, s:hull(t), or a habit of another
+    // tool, s:color(...).
+    lua_pushglobaltable(L);
+    lua_pushlstring(L, name.data(), name.size());
+    const bool isFunction = lua_rawget(L, -2) == LUA_TFUNCTION;
+    lua_pop(L, 2);
+    if (std::string hint = methodNameHint(name, isFunction); !hint.empty()) return hint;
   }
   return nearest.empty() ? "" : "; did you mean " + nearest + "?";
 }

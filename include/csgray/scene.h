@@ -135,6 +135,10 @@ class CSGRAY_API Scene {
   Scene& add(const Solid& object);
   Scene& add(const Surface& surface);
   Scene& add(const Light& light);
+  // Whether a scene without lights gets one beside the camera (the
+  // default, true). Off, it is lit only by ambient light and emission, as
+  // a script's scene{lights={}}.
+  Scene& setDefaultLight(bool enabled);
   Scene& setCamera(const Camera& camera);
   Scene& setBackground(const Vec3& color);
   // At most this many reflected or refracted rays in a chain (0 to 64),
@@ -152,8 +156,9 @@ class CSGRAY_API Scene {
 
   std::vector<Solid> objects() const;
   std::vector<Surface> surfaces() const;
-  // None: a default light beside the camera.
+  // None: a default light beside the camera, unless defaultLight() is off.
   std::vector<Light> lights() const;
+  bool defaultLight() const;
   // None: the camera frames the objects' bounds.
   std::optional<Camera> camera() const;
   Vec3 background() const;

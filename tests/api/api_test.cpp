@@ -531,6 +531,26 @@ TEST(ApiRender, ThePartFillsTheFrameOverTheBackground) {
   EXPECT_EQ(errorOf([&] { csgray::render(scene, {0, 30}); }).first, ErrorCode::InvalidArgument);
 }
 
+// setDefaultLight(false) is the script's lights={}: no light beside the
+// camera, so a ball without an ambient term is black, and the two renders
+// are the same image.
+TEST(ApiRender, WithoutTheDefaultLightAsTheScriptsEmptyLights) {
+  const std::string ball =
+      "return scene{objects=sphere(1):material{ambient=0}, background={0, 0, 0}, "
+      "camera=camera{eye={0, -5, 0}, look_at={0, 0, 0}}";
+  const csgray::Scene lit = csgray::runScriptText(ball + "}", "lit.lua");
+  const csgray::Scene dark = csgray::runScriptText(ball + ", lights={}}", "dark.lua");
+  EXPECT_TRUE(lit.defaultLight());
+  EXPECT_FALSE(dark.defaultLight());
+  csgray::Scene built = lit;
+  built.setDefaultLight(false);
+  EXPECT_FALSE(built.defaultLight());
+  const csgray::Image image = csgray::render(built, {9, 9});
+  EXPECT_TRUE(image.rgb == csgray::render(dark, {9, 9}).rgb);
+  EXPECT_EQ(image.at(4, 4), (Vec3{0, 0, 0}));
+  EXPECT_GT(csgray::render(lit, {9, 9}).at(4, 4).x, 0.1f);
+}
+
 // The default samples (0) are the command's: a bare part gets 9, adaptive
 // (spent at its edges); a scene of the script's own one ray a pixel.
 TEST(ApiRender, DefaultSamplesAreTheCommands) {

@@ -795,7 +795,7 @@ TEST(CheckScript, BadArgumentsAreNamed) {
   EXPECT_EQ(message("return check(1)"),
             "part.lua:1: check: the first argument must be a solid, got number");
   EXPECT_EQ(message("return check(box(1), {samplez=10})"),
-            "part.lua:1: check: unknown parameter 'samplez'");
+            "part.lua:1: check: unknown parameter 'samplez'; did you mean 'samples'?");
   EXPECT_NE(message("return check(box(1), {samples=-1})").find("samples must be a whole number"),
             std::string::npos);
   EXPECT_NE(message("return check(box(1), {tolerance=0})").find("tolerance must be from"),

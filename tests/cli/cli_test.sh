@@ -120,6 +120,10 @@ expect_failure "escape in an error" "$work/out.png" render "$work/escape.lua" -o
 expect_in_stderr "escape in an error" "escape.lua:1: ?[2J?[31mred"
 expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"
 expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
+# A plane alone has no size either; it is not an empty solid.
+echo 'return plane{}' > "$work/plane_only.lua"
+expect_failure "plane without camera" "$work/out.png" render "$work/plane_only.lua" -o "$work/out.png"
+expect_in_stderr "plane without camera" "plane_only.lua: cannot frame an unbounded surface such as a plane"
 expect_failure "NaN timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout nan
 expect_failure "huge timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout 1e10
 expect_failure "output is a folder" "" render "$work/part.lua" -o "$work"

@@ -140,7 +140,7 @@ TEST(SolidProjection, BadInputInScriptsIsOneLine) {
   EXPECT_EQ(test::scriptError("return projection(sphere(1), {cut = 1})", options),
             "part.lua:1: projection: cut must be true or false");
   EXPECT_EQ(test::scriptError("return projection(sphere(1), {kut = true})", options),
-            "part.lua:1: projection: unknown parameter 'kut'");
+            "part.lua:1: projection: unknown parameter 'kut'; did you mean 'cut'?");
   EXPECT_EQ(test::scriptError("return projection(sphere(1), {}, 2)", options),
             "part.lua:1: projection: takes 2 arguments (got 3)");
   const std::string unbounded =

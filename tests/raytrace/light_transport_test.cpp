@@ -97,6 +97,23 @@ TEST(LightTransport, AnEmittingSurfaceShowsItsEmission) {
   test::expectVecNear(image.at(0, 0), dvec3(0.0), 1e-6);
 }
 
+// lights={} names no lights: a ball with no ambient term is black, and
+// with ambient 0.3 it is 0.3 of its colour, evenly (no lamp shades it).
+// Without the key, the default light beside the camera lights it.
+TEST(LightTransport, AnEmptyListOfLightsLeavesOnlyAmbientLight) {
+  auto ball = [](const std::string& ambient, const std::string& lights) {
+    const Scene scene = sceneOf(
+        "return scene{objects={sphere(1):material{color={1, 0.5, 0.25}, ambient=" + ambient +
+        "}}, camera=camera{eye={0, -5, 0}, look_at={0, 0, 0}}" + lights + "}");
+    return renderOf(scene, 9, 9);
+  };
+  test::expectVecNear(ball("0", ", lights={}").at(4, 4), dvec3(0.0), 1e-9);
+  const Image ambient = ball("0.3", ", lights={}");
+  test::expectVecNear(ambient.at(4, 4), dvec3(0.3, 0.15, 0.075), 1e-6);
+  test::expectVecNear(ambient.at(3, 5), dvec3(0.3, 0.15, 0.075), 1e-6);
+  EXPECT_GT(ball("0", "").at(4, 4).x, 0.1);
+}
+
 // A mirror floor under a black and white wall: the reflection of the
 // wall's edge is sharp without gloss (the same image as before gloss
 // existed), and spreads over more pixels with it.

@@ -69,6 +69,15 @@ TEST(RayEstimate, SamplesAndTheDefaultLight) {
   EXPECT_EQ(estimateRays(scene, options).cameraRays, 40.0 * 30.0 * 10.0);
 }
 
+// A scene that names no lights (lights={}) has none: no shadow rays.
+TEST(RayEstimate, NoLightsNoShadowRays) {
+  Scene scene = sphereWith(nullptr);
+  scene.defaultLight = false;
+  const RayEstimate e = estimateRays(scene, RenderOptions(40, 30));
+  EXPECT_EQ(e.shadowRaysPerHit, 0.0);
+  EXPECT_EQ(e.lights, 0u);
+}
+
 // An area light's samples are rounded to a square (Light::sampleCount).
 TEST(RayEstimate, AreaLightSamplesAreRoundedToASquare) {
   Scene scene = sphereWith(nullptr);

@@ -225,7 +225,7 @@ TEST(ScriptRegion, MistakesAreOneLineAtTheScriptsLine) {
       {"return circle{}", "circle: needs r (radius) or d (diameter)"},
       {"return circle{r=1, d=2}", "circle: give r or d, not both"},
       {"return circle(-1)", "circle: the radius must be > 0 (got -1)"},
-      {"return circle{radius=1}", "circle: unknown parameter 'radius'"},
+      {"return circle{radius=1}", "circle: unknown parameter 'radius'; did you mean 'r'?"},
       {"return ellipse{rx=1}", "ellipse: needs rx and ry (the half-axes)"},
       {"return polygon{}", "polygon: needs points={{x, y}, ...}"},
       {"return polygon{{0, 0}, {1, 0}}", "polygon: needs at least 3 distinct points (got 2)"},

@@ -817,6 +817,11 @@ TEST(ScriptLight, FieldsLandInSceneLights) {
   EXPECT_EQ(one.lights[0].position, dvec3(1));
   // No lights given: none in the scene (the renderer adds its default).
   EXPECT_TRUE(sceneOf("return scene{objects=sphere(1)}").lights.empty());
+  EXPECT_TRUE(sceneOf("return scene{objects=sphere(1)}").defaultLight);
+  // An empty list names no lights: no default light either.
+  Scene dark = sceneOf("return scene{objects=sphere(1), lights={}}");
+  EXPECT_TRUE(dark.lights.empty());
+  EXPECT_FALSE(dark.defaultLight);
 }
 
 TEST(ScriptLight, BadParametersAreErrors) {

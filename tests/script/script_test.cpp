@@ -182,7 +182,25 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"local a = 1\nreturn sphere{r=-1}", "part.lua:2: sphere: r must be > 0 (got -1)"},
       {"\n\nreturn sphere{r=0/0}", "part.lua:3: sphere: r must be finite"},
       {"return box{size={1, 0, 1}}", "part.lua:1: box: size y must be a positive"},
-      {"return sphere{radius=1}", "part.lua:1: sphere: unknown parameter 'radius'"},
+      {"return sphere{radius=1}",
+       "part.lua:1: sphere: unknown parameter 'radius'; did you mean 'r'?"},
+      // Other tools' names for a parameter, and typos.
+      {"return camera{angle=60}",
+       "part.lua:1: camera: unknown parameter 'angle'; did you mean 'fov'?"},
+      {"return spot_light{pos={0, 0, 1}, tightness=2}",
+       "spot_light: unknown parameter 'tightness'; did you mean 'exponent'?"},
+      {"return sphere(1):material{colour={1, 0, 0}}",
+       "material: unknown parameter 'colour'; did you mean 'color'?"},
+      {"return cylinder{r=1, h=1, centre=true}",
+       "cylinder: unknown parameter 'centre'; did you mean 'center'?"},
+      // A value of csgray's is named by its kind, not Lua's "userdata".
+      {"return sphere{r=box(1)}", "part.lua:1: sphere: r must be a number, got a solid"},
+      {"return scene{objects={sphere(1), point_light{pos={0, 0, 5}}}}",
+       "part.lua:1: scene: objects[2] (a solid, a surface or a region) must be a solid, got a "
+       "light: lights go in scene{lights={...}}"},
+      {"return scene{objects={sphere(1)}, lights={sphere(1)}}",
+       "part.lua:1: scene: lights[1] must be a light, got a solid: solids go in "
+       "scene{objects={...}}"},
       {"return camera{{0, 0, 0}, fov=30}", "part.lua:1: camera: unexpected value without a name"},
       {"return box{1, 2, 3, center=true}", "part.lua:1: box: unexpected value without a name"},
       {"math.randomseed()", "part.lua:1: math.randomseed needs a seed"},
@@ -339,6 +357,20 @@ TEST(Script, AnUnknownFunctionSaysWhatItIsCalledHere) {
             "part.lua:1: attempt to call a nil value (field 'frobnicate')");
   EXPECT_EQ(scriptError("return sphere(1):frobnicate()"),
             "part.lua:1: attempt to call a nil value (method 'frobnicate')");
+  EXPECT_EQ(scriptError("return sphere{r=1, frobnicate=2}"),
+            "part.lua:1: sphere: unknown parameter 'frobnicate'");
+  // A function called as a method says how it is called; so do other
+  // tools' habits on a part.
+  EXPECT_EQ(scriptError("return sphere(1):union(box(1))"),
+            "part.lua:1: attempt to call a nil value (method 'union'); union is a function "
+            "here, not a method: union(s, t) or s + t");
+  EXPECT_NE(scriptError("return sphere(1):hull(box(1))")
+                .find("; hull is a function here, not a method: hull(s, ...)"),
+            std::string::npos);
+  EXPECT_NE(scriptError("return sphere(1):color{1, 0, 0}").find("; a colour is a material here"),
+            std::string::npos);
+  EXPECT_NE(scriptError("return sphere(1):texture{}").find("s:material{color=checker{...}}"),
+            std::string::npos);
   // Two edits from a short name make another word ("wood" of "load"); the
   // libraries the sandbox leaves out are said to be left out.
   EXPECT_EQ(scriptError("return loop(1)"),
