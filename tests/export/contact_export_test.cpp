@@ -1386,6 +1386,30 @@ TEST(ContactExport, RandomPartsThatNeedAShuffledOrder) {
   for (unsigned seed : {160u, 175u, 245u}) EXPECT_GE(reorderedAndValid(seed, asStlStores), 2u);
 }
 
+TEST(ContactExport, AUnionThatCrossesItselfInsideTheOtherIsMadeInAnotherOrder) {
+  // From randomContactPart(2809): the two boxes at (4, 4, 2) and (0, 6, 2)
+  // meet at a corner, and united they cross themselves there; in the
+  // script's order and the reverse one that union then met another
+  // operand whose box, grown by a contact, holds that corner inside, and
+  // CGAL's corefinement never returned. Such a union is refused until the
+  // part goes ahead; a shuffled order makes the part.
+  const SolidPtr solid = part(R"(
+    return union{
+      cylinder{r=1, h=2}:translate(3, 3, 6),
+      box(2):translate(2, 4, 6),
+      box{size={4, 2, 2}}:translate(0, 4, 6),
+      box(2):translate(4, 4, 2),
+      box{size={4, 2, 2}}:translate(0, 6, 2),
+      box(2):translate(4, 2, 4),
+      sphere(1):translate(3, 5, 3),
+    })");
+  MeshBooleanStats stats;
+  const TriangleMesh mesh = meshOfSolid(*solid, kTolerance, nullptr, &stats).mesh;
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  EXPECT_GE(stats.reordered, 2u);
+  EXPECT_TRUE(test::checksOut(*solid, kTolerance, 5000));
+}
+
 TEST(ContactExport, ACapThatRoundingTurnedOverIsFlippedBack) {
   // Of randomContactPart's seeds 1 to 400, 256 failed in every order: the
   // box grown where the ball touches it (a contact) has a face whose
