@@ -25,7 +25,9 @@ void printInfo(const std::string& script, const Scene& scene) {
     stats.booleans += s.booleans;
     stats.storedPrimitives += s.storedPrimitives;
   }
-  Bounds b = scene.bounds();
+  // The part's box (its ghosts are no part of it); a scene of open
+  // surfaces alone, theirs.
+  const Bounds b = scene.objects.empty() ? scene.bounds() : scene.partBounds();
   std::cout << script << "\n";
   if (b.empty()) {
     std::cout << "  bounds:        empty\n";

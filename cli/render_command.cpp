@@ -215,20 +215,9 @@ int watchRender(const RenderArguments& arguments, const PartScript& script) {
   if (script.runTimeout() > 0.0)
     throw CLI::ValidationError("--watch", "renders until Ctrl-C; --timeout does not go with it");
   PartScript part = script;
-  // The loaders note the files the script reads, to watch them with it.
+  // The files the script reads are noted, to watch them with it.
   auto files = std::make_shared<std::vector<std::string>>();
-  ScriptOptions& options = part.options();
-  if (options.loadImage)
-    options.loadImage = [files, load = options.loadImage](const std::string& path) {
-      files->push_back(path);
-      return load(path);
-    };
-  if (options.loadMesh)
-    options.loadMesh = [files, load = options.loadMesh](const std::string& path, bool repair,
-                                                        std::string& report) {
-      files->push_back(path);
-      return load(path, repair, report);
-    };
+  part.options().fileRead = [files](const std::string& path) { files->push_back(path); };
   std::mutex mutex;
   std::condition_variable wake;
   bool changed = false;

@@ -68,6 +68,8 @@ Command viewCommand(CLI::App& app, ScriptArguments& script) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   addScriptOptions(*command, script);
+  // Taken only to be refused with a reason (view), so not in the help.
+  command->get_option("--timeout")->group("");
   return {command, [arguments](const PartScript& part) { return view(*arguments, part); }};
 }
 

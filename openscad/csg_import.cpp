@@ -9,6 +9,7 @@
 
 #include "engine/boolean.h"
 #include "engine/degrees.h"
+#include "engine/tight_bounds.h"
 #include "io/height_map_file.h"
 #include "io/input_file.h"
 #include "openscad/openscad_sweeps.h"
@@ -81,7 +82,10 @@ class Importer {
     } catch (const CsgError&) {
       throw;
     } catch (const std::exception& e) {
-      throw CsgError(file_ + ":" + std::to_string(node.line) + ": " + node.name + ": " + e.what());
+      // The node's name once: the script API's messages start with it too.
+      const std::string what = e.what(), name = node.name + ": ";
+      throw CsgError(file_ + ":" + std::to_string(node.line) + ": " +
+                     (what.starts_with(name) ? what : name + what));
     }
   }
 
@@ -196,13 +200,24 @@ class Importer {
 
   // ---- Children ------------------------------------------------------------
 
+  // Which empty children make a boolean empty, as in OpenSCAD: none of a
+  // union's, the first of a difference's, any of an intersection's
+  // (cube(0), or the empty group() an if that fails leaves).
+  enum class EmptyChild { Skipped, EmptiesIfFirst, Empties };
+
   // The shapes of the children; those that make nothing are left out,
-  // except that a difference whose first child is empty is empty.
-  std::vector<Shape> children(const CsgNode& node, bool firstCounts = false) {
+  // or make the whole empty (nothing returned) as `empty` says.
+  std::vector<Shape> children(const CsgNode& node, EmptyChild empty = EmptyChild::Skipped) {
     std::vector<Shape> shapes;
     for (const CsgNode& child : node.children) {
       Shape s = shape(child);
-      if (s.empty() && firstCounts && &child == &node.children.front()) return {};
+      // A child that a modifier leaves out (a region's % or *) is no
+      // operand at all, as in OpenSCAD.
+      const bool leftOut = child.modifier == '%' || child.modifier == '*';
+      if (s.empty() && !leftOut &&
+          (empty == EmptyChild::Empties ||
+           (empty == EmptyChild::EmptiesIfFirst && &child == &node.children.front())))
+        return {};
       if (!s.empty()) shapes.push_back(std::move(s));
     }
     return shapes;
@@ -211,7 +226,10 @@ class Importer {
   // OpenSCAD's booleans: union of all, intersection of all, the first minus
   // the others; of solids or of regions, not of both.
   Shape booleanOf(const CsgNode& node, Boolean::Op op) {
-    std::vector<Shape> shapes = children(node, op == Boolean::Op::Difference);
+    std::vector<Shape> shapes =
+        children(node, op == Boolean::Op::Difference     ? EmptyChild::EmptiesIfFirst
+                       : op == Boolean::Op::Intersection ? EmptyChild::Empties
+                                                         : EmptyChild::Skipped);
     if (shapes.empty()) return {};
     const bool solids = bool(shapes.front().solid);
     for (const Shape& s : shapes)
@@ -551,13 +569,21 @@ class Importer {
     // OpenSCAD turns a negative angle the other way, and takes at most a turn.
     angle = std::clamp(angle, -360.0, 360.0);
     if (angle == 0.0) return {};
-    SolidPtr solid = Primitive::create<Revolution>(region, std::abs(angle));
     // Where the sweep starts: OpenSCAD's start= (written by releases after
     // 2021.01), else +x; OpenSCAD 2021.01 starts a whole turn's polygons
     // on −x.
     double start = number(node, "start", 0.0);
+    if (options_.facets == CsgFacets::OpenScad && !given(find(node, "start")) &&
+        std::abs(angle) == 360.0)
+      start = 180.0;
+    // A profile wholly on the side x < 0 sweeps what its mirror image does,
+    // half a turn on: OpenSCAD takes either side of the axis (not both).
+    if (region->bounds().lo.x < 0.0 && region->bounds().hi.x <= 0.0) {
+      region = region->transformed(Affine2{dmat2(-1.0, 0.0, 0.0, 1.0), dvec2(0.0)});
+      start += 180.0;
+    }
+    SolidPtr solid = Primitive::create<Revolution>(region, std::abs(angle));
     if (options_.facets == CsgFacets::OpenScad) {
-      if (!given(find(node, "start")) && std::abs(angle) == 360.0) start = 180.0;
       const SweepLoops loops = polygonsOf(*region, "rotate_extrude");
       if (loops.empty()) return {};
       solid = openscadRevolution(loops, std::abs(angle), resolution(node));
@@ -630,10 +656,10 @@ class Importer {
                             : a->items[i].kind == CsgValue::Kind::Number && a->items[i].number;
     }
     if (s.solid)
-      return {
-          s.solid->transformed(Affine::scaling(resizeFactors(s.solid->bounds(), size, autoAxes))),
-          nullptr};
-    const ProfileBounds& b = s.region->bounds();
+      return {s.solid->transformed(
+                  Affine::scaling(resizeFactors(tightBounds(*s.solid), size, autoAxes))),
+              nullptr};
+    const ProfileBounds b = tightBounds(*s.region);
     const dvec3 f = resizeFactors(Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)}, size, autoAxes, 2);
     Affine2 map;
     map.linear = dmat2(f.x, 0.0, 0.0, f.y);

@@ -172,8 +172,12 @@ Revolution::Revolution(RegionPtr region, double angleDegrees)
   const ProfileBounds& b = swept_->bounds();
   if (b.lo.x < -1e-12 * swept_->size()) {
     std::ostringstream msg;
-    msg << "rotate_extrude: the region crosses the axis: it reaches x = " << b.lo.x
-        << ", and every point must have x >= 0";
+    if (b.hi.x <= 0.0)
+      msg << "rotate_extrude: the region lies on the side x < 0 of the axis (from x = " << b.lo.x
+          << "), and every point must have x >= 0: mirror it first, r:mirror(1, 0)";
+    else
+      msg << "rotate_extrude: the region crosses the axis: it reaches x = " << b.lo.x
+          << ", and every point must have x >= 0";
     throw std::invalid_argument(msg.str());
   }
 }

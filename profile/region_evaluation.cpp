@@ -240,4 +240,8 @@ std::vector<std::vector<dvec2>> flatten(const Profile& profile, double tolerance
   return polygons;
 }
 
+ProfileBounds tightBounds(const Region& region) {
+  return evaluate(region, evaluationTolerance(region)).bounds();
+}
+
 }  // namespace csgray::detail

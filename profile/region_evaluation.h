@@ -22,6 +22,12 @@ namespace csgray::detail {
 
 Profile evaluate(const Region& region, double ellipseTolerance);
 
+// The box of the region's own points (Region::bounds() may be looser: a
+// boolean's is its operands'), from its evaluation within
+// evaluationTolerance: exact for segments and circular arcs. What
+// OpenSCAD's resize of a 2D shape measures.
+ProfileBounds tightBounds(const Region& region);
+
 // The points about which directed segments wind a non-zero number of times
 // (the non-zero rule), as an evaluated profile. The segments must make
 // closed chains (every point left as often as it is reached); they may

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "engine/tight_bounds.h"
 #include "scene/modifiers.h"
 #include "scene/value_checks.h"
 
@@ -19,6 +20,12 @@ Bounds Scene::bounds() const {
   // An infinite plane is a floor or a wall, not part of what to frame.
   for (const SurfacePtr& s : surfaces)
     if (s->bounds().finite()) b.include(s->bounds());
+  return b;
+}
+
+Bounds Scene::partBounds() const {
+  Bounds b;
+  for (const SolidPtr& s : objects) b.include(tightBounds(*s));
   return b;
 }
 

@@ -77,8 +77,12 @@ struct Scene {
   IndirectLight indirect;
   AmbientOcclusion ambientOcclusion;
 
-  // The union of the objects', the ghosts' and the bounded surfaces' bounds.
+  // The union of the objects', the ghosts' and the bounded surfaces' bounds:
+  // what the camera frames.
   Bounds bounds() const;
+  // The objects' alone, each its own points' box (tightBounds, some
+  // 50 000 rays): the part an export writes, without ghosts.
+  Bounds partBounds() const;
   // Takes the modifiers' marks out of the objects (resolveModifiers of
   // scene/modifiers.h), filling ghosts and highlights.
   void resolveModifiers();

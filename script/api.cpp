@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/boolean.h"
+#include "engine/tight_bounds.h"
 #include "primitives/quadric.h"
 #include "scene/modifiers.h"
 #include "scene/resize.h"
@@ -240,7 +241,7 @@ int resize(lua_State* L) {
   const SolidPtr& solid = methodReceiver(L, "resize");
   const ResizeArgs args = resizeArgs(L, 3);
   pushSolid(L, solid->transformed(
-                   Affine::scaling(resizeFactors(solid->bounds(), args.size, args.autoAxes))));
+                   Affine::scaling(resizeFactors(tightBounds(*solid), args.size, args.autoAxes))));
   return 1;
 }
 

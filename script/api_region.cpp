@@ -428,11 +428,11 @@ int scale(lua_State* L) {
 }
 
 // resize(x, y) or resize{x, y, auto=}: OpenSCAD's resize, scaled about
-// the origin so that the region's bounds() get these sizes.
+// the origin so that the region's own box (tightBounds) gets these sizes.
 int resize(lua_State* L) {
   const RegionPtr& region = receiver(L, "resize");
   const ResizeArgs args = resizeArgs(L, 2);
-  const ProfileBounds& b = region->bounds();
+  const ProfileBounds b = tightBounds(*region);
   Bounds box;
   if (!b.empty()) box = Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)};
   const dvec3 factors = resizeFactors(box, args.size, args.autoAxes, 2);

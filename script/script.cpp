@@ -127,6 +127,13 @@ std::string readScriptText(const std::string& path) {
 Scene runScriptFile(const std::string& path, const ScriptOptions& options) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  // OpenSCAD's source would run as Lua, and fail on its first line.
+  if (extension == ".scad")
+    throw ScriptError(path +
+                      ": csgray reads OpenSCAD's .csg files, not its .scad source: export one "
+                      "with openscad -o part.csg " +
+                      std::filesystem::path(path).filename().string() +
+                      " and give csgray the .csg file");
   if (extension == ".csg") {
     ScriptOptions withFolder = options;
     withFolder.folder = std::filesystem::path(path).parent_path().string();

@@ -55,6 +55,10 @@ struct ScriptOptions {
   // circles, spheres and cylinders the polygons OpenSCAD makes from $fn,
   // $fa and $fs (--facets openscad) rather than exact.
   bool openscadFacets = false;
+  // Told the path of each file the script names to read (meshes, images,
+  // drawings, height maps, .csg files and the files they name), once its
+  // name is allowed: what a watcher watches with the script.
+  std::function<void(const std::string& path)> fileRead;
   // Receives what the script should be told but does not stop it, such as
   // what mesh{repair=true} repaired; without it these are dropped.
   std::function<void(const std::string& message)> warn;

@@ -31,9 +31,13 @@ std::string allowedFile(const std::string& function, const std::string& name,
     };
     // Symbolic links are followed before the check (weakly_canonical), so a
     // link cannot lead out either.
-    if (!fs::path(name).is_absolute() && inside(folder)) return file.string();
-    for (const std::string& allowed : options.allowedFolders)
-      if (inside(fs::weakly_canonical(fs::absolute(allowed)))) return file.string();
+    auto allowed = [&]() {
+      if (options.fileRead) options.fileRead(file.string());
+      return file.string();
+    };
+    if (!fs::path(name).is_absolute() && inside(folder)) return allowed();
+    for (const std::string& extra : options.allowedFolders)
+      if (inside(fs::weakly_canonical(fs::absolute(extra)))) return allowed();
   } catch (const fs::filesystem_error& e) {
     // A name the file system refuses (too long, a loop of links): said in
     // the script's words rather than the library's.

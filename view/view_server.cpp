@@ -87,11 +87,7 @@ class ViewServer final : public HttpServer {
   }
 
   int port() const override { return port_; }
-  std::string url() const override {
-    const std::string host =
-        address_.find(':') != std::string::npos ? "[" + address_ + "]" : address_;
-    return "http://" + host + ":" + std::to_string(port_) + "/";
-  }
+  std::string url() const override { return "http://" + ownHost() + "/"; }
   void run() override { server_.listen_after_bind(); }
   void start() override {
     thread_ = std::thread([this] { run(); });
@@ -103,12 +99,20 @@ class ViewServer final : public HttpServer {
   }
 
  private:
+  // The Host a browser sends for url(): the address (an IPv6 one in
+  // brackets) and the port.
+  std::string ownHost() const {
+    const std::string host =
+        address_.find(':') != std::string::npos ? "[" + address_ + "]" : address_;
+    return host + ":" + std::to_string(port_);
+  }
+
   // Another site's page, or a name that rebinds to this machine.
   bool refused(const httplib::Request& request, httplib::Response& response) const {
     const std::string host = request.get_header_value("Host");
     const std::string port = ":" + std::to_string(port_);
-    if (isLoopback(address_) && host != "127.0.0.1" + port && host != "localhost" + port &&
-        host != "[::1]" + port) {
+    if (isLoopback(address_) && host != ownHost() && host != "127.0.0.1" + port &&
+        host != "localhost" + port && host != "[::1]" + port) {
       reply(response, 403, "this server answers only to its own address, not to Host " + host);
       return true;
     }

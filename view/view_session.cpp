@@ -45,30 +45,22 @@ ViewSession::~ViewSession() { shutdown(); }
 
 std::string ViewSession::run(const std::vector<std::pair<std::string, std::string>>& defines) {
   std::lock_guard running(runMutex_);
-  // The files the script reads are watched with it: the loaders note them.
+  // The files the script reads are watched with it: fileRead notes them.
   auto files = std::make_shared<std::vector<std::string>>(1, script_);
   ScriptOptions options = options_;
   options.defines = defines;
-  if (options_.loadImage)
-    options.loadImage = [files, load = options_.loadImage](const std::string& path) {
-      files->push_back(path);
-      return load(path);
-    };
-  if (options_.loadMesh)
-    options.loadMesh = [files, load = options_.loadMesh](const std::string& path, bool repair,
-                                                         std::string& report) {
-      files->push_back(path);
-      return load(path, repair, report);
-    };
+  options.fileRead = [files](const std::string& path) { files->push_back(path); };
   std::shared_ptr<const Scene> scene;
   std::vector<Parameter> parameters;
   std::string error;
   double volume = 0.0;
+  Bounds bounds;
   try {
     parameters = scriptFileParameters(script_);
     scene = std::make_shared<const Scene>(runner_(script_, options));
     checkHasObjects(*scene);
     volume = sceneVolume(*scene);
+    bounds = scene->partBounds();
   } catch (const DefineError& e) {
     return e.what();  // nothing changes
   } catch (const std::exception& e) {
@@ -91,6 +83,7 @@ std::string ViewSession::run(const std::vector<std::pair<std::string, std::strin
     state_.scene = scene;
     state_.parameters = std::move(parameters);
     state_.volume = volume;
+    state_.bounds = bounds;
   }
   changed_.notify_all();
   return {};

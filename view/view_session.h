@@ -38,6 +38,7 @@ struct SessionState {
   std::vector<std::pair<std::string, std::string>> defines;
   std::vector<std::string> files;  // the script and the files it read
   double volume = 0.0;             // of the scene's solids, exactVolume; 0 if unbounded
+  Bounds bounds;                   // of the scene's solids, Scene::partBounds
 };
 
 class ViewSession {

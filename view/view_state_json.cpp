@@ -68,7 +68,7 @@ std::string stateJson(const SessionState& state, const std::string& script) {
   std::string out = "{\"version\":" + std::to_string(state.version) +
                     ",\"script\":" + jsonString(script) + ",\"error\":" + jsonString(state.error);
   if (state.scene) {
-    const Bounds b = state.scene->bounds();
+    const Bounds& b = state.bounds;  // the model's: no ghosts, no surfaces
     out += ",\"bounds\":";
     out += b.empty() || !b.finite()
                ? "null"

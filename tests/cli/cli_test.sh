@@ -71,6 +71,15 @@ else
   fail "good render"; cat "$work/stdout"
 fi
 
+# info prints the part's bounds: a ghost is no part of it.
+printf 'return union{box(10), sphere(5):translate(30, 0, 0):ghost()}\n' > "$work/ghost.lua"
+if "$csgray" info "$work/ghost.lua" >"$work/stdout" 2>&1 &&
+   grep -q 'bounds: *\[0, 0, 0\] \.\. \[10, 10, 10\]' "$work/stdout"; then
+  pass
+else
+  fail "info with a ghost"; cat "$work/stdout"
+fi
+
 # info prints the bounds and the tree.
 if "$csgray" info "$work/part.lua" >"$work/stdout" 2>&1 &&
    grep -q 'bounds: *\[0, 0, 0\] \.\. \[10, 20, 5\]' "$work/stdout" &&
@@ -120,6 +129,10 @@ expect_failure "escape in an error" "$work/out.png" render "$work/escape.lua" -o
 expect_in_stderr "escape in an error" "escape.lua:1: ?[2J?[31mred"
 expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"
 expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
+# OpenSCAD's source is not run as Lua: the message says how to make a .csg.
+echo 'cube(10);' > "$work/part.scad"
+expect_failure "scad source" "$work/out.stl" export "$work/part.scad" -o "$work/out.stl"
+expect_in_stderr "scad source" "part.scad: csgray reads OpenSCAD's .csg files, not its .scad source: export one with openscad -o part.csg part.scad"
 # A plane alone has no size either; it is not an empty solid.
 echo 'return plane{}' > "$work/plane_only.lua"
 expect_failure "plane without camera" "$work/out.png" render "$work/plane_only.lua" -o "$work/out.png"
@@ -722,6 +735,8 @@ else
 fi
 kill "$watcher"; wait "$watcher" 2>/dev/null
 expect_exit 2 "view with --timeout" "" view "$work/annotated.lua" --timeout 5
+# ... and its help does not offer it.
+if "$csgray" view --help 2>&1 | grep -q -- " --timeout"; then fail "view --help lists --timeout"; else pass; fi
 # A string pattern that backtracks for hours, inside one library call that
 # no instruction budget sees: view ends at --script-timeout, rather than
 # hold the script's thread (and every reload) for ever.

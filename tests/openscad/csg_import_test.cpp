@@ -15,6 +15,7 @@
 
 #include "check/exact_volume.h"
 #include "engine/boolean.h"
+#include "engine/tight_bounds.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
 #include "export/solid_projection.h"
@@ -234,13 +235,47 @@ TEST(CsgImport, BooleansTransformsAndSweeps) {
       "  }\n"
       "}\n");
   EXPECT_NEAR(exportedVolume(ring), 2.0 * pi * 3.0, 1e-3);  // Pappus
+  // A profile wholly on the side x < 0, which OpenSCAD takes as well: the
+  // same ring, and a quarter turn lies half a turn on.
+  const SolidPtr mirrored = onlySolid(
+      "rotate_extrude(angle = 360, convexity = 2) {\n"
+      "  multmatrix([[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+      "    square(size = [1, 1], center = true);\n"
+      "  }\n"
+      "}\n");
+  EXPECT_NEAR(exportedVolume(mirrored), 2.0 * pi * 3.0, 1e-3);
+  const SolidPtr quarter = onlySolid(
+      "rotate_extrude(angle = 90) { multmatrix([[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0], "
+      "[0, 0, 0, 1]]) { square(size = [1, 1], center = true); } }");
+  const double r = 3.0 / std::sqrt(2.0);
+  EXPECT_TRUE(quarter->contains({-r, -r, 0.0}));  // at 225°
+  EXPECT_FALSE(quarter->contains({r, r, 0.0}));   // at 45°, where x > 0 would sweep
+  EXPECT_FALSE(quarter->contains({-r, r, 0.0}));
   const SolidPtr resized = onlySolid(
       "resize(newsize = [4, 0, 0], auto = [false, true, false]) { cube(size = [2, 2, 2]); }");
   test::expectVecNear(resized->bounds().hi, {4, 4, 2}, 1e-12);
+  // resize measures the shape's own box, as OpenSCAD does (its bounds()
+  // keep the whole cube, and a turned ball's the turned cube about it).
+  const SolidPtr halfResized = onlySolid(
+      "resize(newsize = [30, 0, 0]) { difference() { cube(size = [20, 20, 20]); "
+      "multmatrix([[1, 0, 0, 10], [0, 1, 0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) { "
+      "cube(size = [22, 22, 22]); } } }");
+  EXPECT_NEAR(exportedVolume(halfResized), 30.0 * 20.0 * 20.0, 1e-9);
+  const SolidPtr ballResized = onlySolid(
+      "resize(newsize = [20, 0, 0]) { multmatrix([[0.707107, -0.707107, 0, 0], "
+      "[0.707107, 0.707107, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 5); } }");
+  EXPECT_NEAR(tightBounds(*ballResized).hi.x, 10.0, 1e-9);
   const SolidPtr hulled = onlySolid(
       "hull() { cube(size = [1, 1, 1]); multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], "
       "[0, 0, 1, 0], [0, 0, 0, 1]]) { cube(size = [1, 1, 1]); } }");
   EXPECT_NEAR(exportedVolume(hulled), 4.0, 1e-9);
+  // An empty child empties an intersection, as in OpenSCAD (cube(0), or
+  // the group() an if that fails leaves); a union skips it.
+  for (const char* empty : {"cube(size = [0, 0, 0]);", "group();"}) {
+    const std::string children = std::string("{ cube(size = [10, 10, 10]); ") + empty + " }";
+    EXPECT_TRUE(importText("intersection() " + children, CsgFacets::Exact).solids.empty()) << empty;
+    EXPECT_NEAR(exportedVolume(onlySolid("union() " + children)), 1000.0, 1e-9) << empty;
+  }
 }
 
 // The area of a 2D file's region: exact for segments and arcs, Bézier
@@ -249,6 +284,16 @@ double regionArea(const std::string& text, CsgFacets facets) {
   CsgModel model = importText(text, facets);
   EXPECT_EQ(model.regions.size(), 1u) << text;
   return area(evaluate(*model.regions.at(0), 1e-6));
+}
+
+// A child that a modifier leaves out (a region's % or *) is no operand,
+// as in OpenSCAD: the intersection of the others stands, where a child
+// that makes nothing would empty it.
+TEST(CsgImport, AChildLeftOutIsNoOperand) {
+  EXPECT_NEAR(regionArea("intersection() { square(size = [4, 4]); %square(size = [1, 1]); "
+                         "*square(size = [1, 1]); square(size = [2, 8]); }",
+                         CsgFacets::Exact),
+              8.0, 1e-9);
 }
 
 std::string helloText(const char* cut, const char* options) {
@@ -496,9 +541,8 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(importError("cube(size = \"big\");"),
             "part.csg:1: cube: size must be a vector of numbers");
   EXPECT_EQ(
-      importError("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = [[0, 1, 2]]);")
-          .substr(0, 25),
-      "part.csg:1: polyhedron: p");
+      importError("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = [[0, 1, 2]]);"),
+      "part.csg:1: polyhedron: needs at least 4 points (got 3)");
   EXPECT_EQ(importError("sphere($fa = 0, r = 1);"), "part.csg:1: sphere: $fa and $fs must be > 0");
   // OpenSCAD writes nan for 0/0: refused where it stands, not left out as
   // a shape without volume would be.
@@ -513,6 +557,9 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(
       importError("multmatrix([[1, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0]]) { square(size = 1); }"),
       "part.csg:1: multmatrix: moves a 2D shape out of the plane z = 0; extrude it first");
+  // A message that names the node itself names it once.
+  EXPECT_EQ(importError("hull() { difference() { cube(size = 2); sphere(r = 1); } }"),
+            "part.csg:1: hull: takes shapes and unions of them, not a difference");
 }
 
 TEST(CsgImport, ProjectionsAreRegions) {

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "engine/tight_bounds.h"
 #include "script/script.h"
 #include "test_support.h"
 
@@ -113,6 +114,27 @@ TEST(Resize, RegionsToo) {
   const Bounds b = scene.objects.at(0)->bounds();
   test::expectVecNear(b.lo, {-3, -1, 0}, 1e-12);
   test::expectVecNear(b.hi, {3, 1, 1}, 1e-12);
+}
+
+// resize measures the part's own box, as OpenSCAD does, not the looser
+// box of s:bounds(): a cube less half of it, a turned ball, a region less
+// half of it.
+TEST(Resize, MeasuresThePartsOwnBox) {
+  Scene scene =
+      runScript("return (box(20) - box(22):translate(10, -1, -1)):resize(30, 0, 0)", "part.lua");
+  Bounds b = tightBounds(*scene.objects.at(0));
+  test::expectVecNear(b.lo, {0, 0, 0}, 1e-9);
+  test::expectVecNear(b.hi, {30, 20, 20}, 1e-9);
+  scene = runScript("return sphere(5):rotate(0, 0, 45):resize(20, 0, 0)", "part.lua");
+  b = tightBounds(*scene.objects.at(0));
+  test::expectVecNear(b.lo, {-10, -5, -5}, 1e-9);
+  test::expectVecNear(b.hi, {10, 5, 5}, 1e-9);
+  scene = runScript(
+      "local half = (square(20) - square(22):translate(10, -1)):resize(30, 0)\n"
+      "assert(math.abs(half:area() - 600) < 1e-9, half:area())\n"
+      "return linear_extrude{half, height=1}",
+      "part.lua");
+  EXPECT_NEAR(tightBounds(*scene.objects.at(0)).hi.x, 30.0, 1e-9);
 }
 
 TEST(Resize, BadSizesAreErrors) {

@@ -87,6 +87,9 @@ TEST(SweepApi, BadInputIsAOneLineErrorNamingTheLine) {
   expectError("return linear_extrude{square(1), 2, height=1}", "unexpected value without a name");
   expectError("return linear_extrude(square(1), {height=1}, 3)", "linear_extrude: takes a region");
   expectError("return rotate_extrude{circle(1)}", "rotate_extrude: the region crosses the axis");
+  expectError("return rotate_extrude{circle(1):translate(-3, 0)}",
+              "rotate_extrude: the region lies on the side x < 0 of the axis (from x = -4), and "
+              "every point must have x >= 0: mirror it first, r:mirror(1, 0)");
   expectError("return rotate_extrude{square(1):translate(1, 0), angle=0}",
               "rotate_extrude: angle must be in (0, 360]");
   expectError("return rotate_extrude{square(1):translate(1, 0), angle=400}",

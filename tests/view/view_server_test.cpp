@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -193,6 +194,9 @@ TEST_F(ViewServerTest, GhostsAndHighlightsCanBeLeftOutOfTheFrame) {
       "return box{size={10, 10, 10}, center=true} - cutter + bolt\n");
   const std::string state = get("/scene");
   EXPECT_NE(state.find("\"ghosts\":1,\"highlights\":1"), std::string::npos) << state;
+  // The bounds are the model's: the ghost, reaching to y = -12, is no part.
+  EXPECT_NE(state.find("\"bounds\":{\"lo\":[-5,-5,-5],\"hi\":[5,5,5]}"), std::string::npos)
+      << state;
   // Through the middle from the front: the ghost's sphere, or without it
   // the highlighted cutter's hole through the box, seen to its end.
   const std::string view = "size=101x101&" + kFront + "&ortho=20&x=50.5&y=50.5";
@@ -312,16 +316,22 @@ TEST(ViewSession, WatchesTheFilesTheScriptReads) {
   const fs::path folder =
       fs::temp_directory_path() / ("csgray_view_files_" + std::to_string(::getpid()));
   fs::create_directories(folder);
-  std::ofstream(folder / "part.lua") << "local t = image_texture{file='wood.png'}\nreturn box(1)\n";
+  std::ofstream(folder / "part.lua") << "local t = image_texture{file='wood.png'}\n"
+                                        "return box(1) + import_csg{file='nut.csg'}\n";
   std::ofstream(folder / "wood.png") << "x";
-  // The loader stands in for the command line's: the session notes the
-  // names it is given.
+  std::ofstream(folder / "nut.csg") << "cube(size = [1, 1, 1], center = false);\n";
+  // The loader stands in for the command line's; the session notes every
+  // file the script names, an OpenSCAD file too.
   ScriptOptions options;
-  options.loadImage = [](const std::string&) { return TextureImage(); };
+  options.loadImage = [](const std::string&) { return TextureImage{1, 1, {0.5f, 0.5f, 0.5f}}; };
   ViewSession session((folder / "part.lua").string(), options, 1);
   const std::vector<std::string> files = session.state().files;
-  ASSERT_EQ(files.size(), 2u) << session.state().error;
-  EXPECT_NE(files[1].find("wood.png"), std::string::npos);
+  ASSERT_EQ(files.size(), 3u) << session.state().error;
+  for (const char* name : {"part.lua", "wood.png", "nut.csg"})
+    EXPECT_EQ(std::count_if(files.begin(), files.end(),
+                            [&](const std::string& f) { return f.ends_with(name); }),
+              1)
+        << name;
   std::atomic<int> changes = 0;
   FileWatcher watcher([&] { ++changes; }, std::chrono::milliseconds(20));
   watcher.watch(files);
@@ -394,6 +404,15 @@ TEST_F(ViewServerTest, AnswersOnlyItsOwnAddress) {
   httplib::Headers local = {{"Host", "localhost:" + std::to_string(server_->port())}};
   EXPECT_EQ(client_->Get("/scene", local)->status, 200);
   EXPECT_EQ(server_->url(), "http://127.0.0.1:" + std::to_string(server_->port()) + "/");
+  // Another loopback address, asked for, answers the URL it prints.
+  const auto other = makeViewServer(*routes_, "127.0.0.2", 0);
+  other->start();
+  EXPECT_EQ(other->url(), "http://127.0.0.2:" + std::to_string(other->port()) + "/");
+  httplib::Client otherClient("127.0.0.2", other->port());
+  auto answer = otherClient.Get("/scene");
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(answer->status, 200);
+  other->stop();
   EXPECT_TRUE(isLoopback("127.0.0.1"));
   EXPECT_TRUE(isLoopback("::1"));
   EXPECT_TRUE(isLoopback("localhost"));

@@ -1,0 +1,120 @@
+#include "engine/tight_bounds.h"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "engine/span_list.h"
+
+namespace csgray::detail {
+
+namespace {
+
+constexpr int kGrid = 64;         // rays across each side of the first grid
+constexpr int kWindowRays = 9;    // across each side of a finer window
+constexpr int kRefinements = 16;  // windows, each a quarter of the last
+constexpr std::size_t kBest = 4;  // lines refined, of the first grid's best
+
+// The lines parallel to axis `a`: the other two axes, and where a line
+// through (u, v) on them meets the solid first and last.
+class Lines {
+ public:
+  Lines(const Solid& solid, const Bounds& box, int a)
+      : solid_(solid), box_(box), a_(a), b_((a + 1) % 3), c_((a + 2) % 3) {}
+
+  // The lowest and highest coordinate along a of the solid on the line
+  // through (u, v); false where the line misses it.
+  bool extent(double u, double v, double& lo, double& hi) {
+    dvec3 origin, direction(0.0);
+    // From outside the box, so that the first span starts at an entry;
+    // by its own size, so that a small part's hits keep their digits.
+    const double margin = box_.size()[a_];
+    origin[a_] = box_.lo[a_] - margin;
+    origin[b_] = u;
+    origin[c_] = v;
+    direction[a_] = 1.0;
+    solid_.spans(Ray(origin, direction, 0.0, 2.0 * margin + box_.size()[a_]), spans_);
+    if (spans_.empty()) return false;
+    lo = origin[a_] + spans_[0].in.t;
+    hi = origin[a_] + spans_.back().out.t;
+    return true;
+  }
+
+  // The side's extreme (highest: sign 1, lowest: sign -1) on the lines of
+  // a grid of n × n over [u0, u1] × [v0, v1], at the cells' centres: the
+  // value times sign, and where, best first, at most `keep` of them.
+  struct Hit {
+    double value;  // times sign: the larger the better
+    double u, v;
+  };
+  std::vector<Hit> grid(double sign, double u0, double u1, double v0, double v1, int n,
+                        std::size_t keep) {
+    std::vector<Hit> hits;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u = u0 + (i + 0.5) / n * (u1 - u0), v = v0 + (j + 0.5) / n * (v1 - v0);
+        double lo, hi;
+        if (extent(u, v, lo, hi)) hits.push_back({sign > 0.0 ? hi : -lo, u, v});
+      }
+    const std::size_t kept = std::min(keep, hits.size());
+    std::partial_sort(hits.begin(), hits.begin() + kept, hits.end(),
+                      [](const Hit& x, const Hit& y) {
+                        return x.value > y.value ||
+                               (x.value == y.value && (x.u < y.u || (x.u == y.u && x.v < y.v)));
+                      });
+    hits.resize(kept);
+    return hits;
+  }
+
+  // The side's extreme, or none (the solid is empty).
+  std::optional<double> extreme(double sign) {
+    const double u0 = box_.lo[b_], u1 = box_.hi[b_], v0 = box_.lo[c_], v1 = box_.hi[c_];
+    std::vector<Hit> best = grid(sign, u0, u1, v0, v1, kGrid, kBest);
+    if (best.empty()) return std::nullopt;
+    double found = best.front().value;
+    for (Hit hit : best) {
+      // A window of two cells about the line, a quarter as wide each time:
+      // its rays' spacing is the next window's half width.
+      double du = (u1 - u0) / kGrid, dv = (v1 - v0) / kGrid;
+      for (int k = 0; k < kRefinements; ++k) {
+        const std::vector<Hit> closer =
+            grid(sign, std::max(u0, hit.u - du), std::min(u1, hit.u + du), std::max(v0, hit.v - dv),
+                 std::min(v1, hit.v + dv), kWindowRays, 1);
+        if (!closer.empty() && closer.front().value > hit.value) hit = closer.front();
+        du *= 2.0 / (kWindowRays - 1);
+        dv *= 2.0 / (kWindowRays - 1);
+      }
+      found = std::max(found, hit.value);
+    }
+    return found;
+  }
+
+ private:
+  const Solid& solid_;
+  const Bounds& box_;
+  int a_, b_, c_;
+  SpanList spans_;
+};
+
+}  // namespace
+
+Bounds tightBounds(const Solid& solid) {
+  const Bounds& loose = solid.bounds();
+  if (loose.empty() || !loose.finite()) return loose;
+  // Rays across a box thinner than this cannot be placed finely enough
+  // (a ball of radius 10⁻³²³).
+  const dvec3 size = loose.size();
+  if (!(std::min({size.x, size.y, size.z}) > 1e-100)) return loose;
+  Bounds tight;
+  for (int a = 0; a < 3; ++a) {
+    Lines lines(solid, loose, a);
+    const std::optional<double> hi = lines.extreme(1.0), lo = lines.extreme(-1.0);
+    if (!hi || !lo) return loose;  // the rays met nothing: the solid is empty
+    tight.lo[a] = -*lo;
+    tight.hi[a] = *hi;
+  }
+  return tight;
+}
+
+}  // namespace csgray::detail
