@@ -2,6 +2,7 @@
 // solids, made with the same checks (scene/shapes.h, quadric_shapes.h).
 #include "csgray/solid.h"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -332,7 +333,11 @@ double Solid::volume(int grid) const {
     const detail::Bounds box = impl_->bounds();
     if (!box.empty() && !box.finite())
       throw std::invalid_argument("volume: the solid is unbounded");
-    return detail::exactVolume(*impl_, grid);
+    const double volume = detail::exactVolume(*impl_, grid);
+    // A solid of 10¹⁰³ across has a volume past the largest double.
+    if (!std::isfinite(volume))
+      throw std::invalid_argument("volume: the solid is too large for its volume to be a number");
+    return volume;
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -111,8 +112,11 @@ Bounds tightBounds(const Solid& solid) {
     Lines lines(solid, loose, a);
     const std::optional<double> hi = lines.extreme(1.0), lo = lines.extreme(-1.0);
     if (!hi || !lo) return loose;  // the rays met nothing: the solid is empty
-    tight.lo[a] = -*lo;
-    tight.hi[a] = *hi;
+    // Within the loose box; where the shapes' arithmetic overflowed (a
+    // ball of radius 10³⁰⁰: its square is infinite), the loose box.
+    if (!std::isfinite(*lo) || !std::isfinite(*hi) || -*lo > *hi) return loose;
+    tight.lo[a] = std::max(loose.lo[a], -*lo);
+    tight.hi[a] = std::min(loose.hi[a], *hi);
   }
   return tight;
 }

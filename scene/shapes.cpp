@@ -1,5 +1,6 @@
 #include "scene/shapes.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -73,6 +74,9 @@ SolidPtr cylinderShape(const char* function, const CylinderParams& p) {
   if (!r && !r1) throw std::invalid_argument(f + ": needs r or r1");
   const double bottom = r ? *r : *r1;
   const double top = r ? (defaultR2IsR1 ? *r : 0.0) : r2.value_or(defaultR2IsR1 ? bottom : 0.0);
+  // Said here, in the words of the function called (cone{} too).
+  if (!(std::max(bottom, top) > 0.0))
+    throw std::invalid_argument(f + ": radii must be >= 0 and not both 0");
   return centred(Primitive::create<Cylinder>(bottom, top, *p.h), p.center,
                  dvec3(0.0, 0.0, -0.5 * *p.h));
 }

@@ -132,8 +132,9 @@ class CSGRAY_API Solid {
   bool contains(const Vec3& point) const;
   // The volume, from the exact lengths inside the solid along three
   // jittered grids of grid × grid rays, as `csgray check` measures it: for
-  // a smooth part, the error falls faster than 1/grid². Error for an
-  // unbounded solid.
+  // a smooth part, the error falls faster than 1/grid². grid: 1 to 4096.
+  // Error for an unbounded solid, and for one whose volume is past the
+  // largest double.
   double volume(int grid = 256) const;
   // "sphere", "union", ...
   std::string kind() const;

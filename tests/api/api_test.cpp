@@ -117,6 +117,13 @@ TEST(ApiSolid, VolumesOfBooleansAreAnalytic) {
               Solid::halfSpace({0, 0, 1}).volume();
             }).first,
             ErrorCode::InvalidArgument);
+  // Nor one past the largest double: an error, not infinity or NaN.
+  for (double r : {1e150, 1e300})
+    EXPECT_EQ(errorOf([r] { Solid::sphere(r).volume(); }),
+              std::make_pair(ErrorCode::InvalidArgument,
+                             std::string("volume: the solid is too large for its volume to be a "
+                                         "number")))
+        << r;
 }
 
 TEST(ApiSolid, ContainsKnownPoints) {

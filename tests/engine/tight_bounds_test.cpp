@@ -80,7 +80,10 @@ TEST(TightBounds, EmptyAndUnboundedSolids) {
   const Bounds b = tightBounds(*none);
   EXPECT_EQ(b.lo, none->bounds().lo);
   EXPECT_EQ(b.hi, none->bounds().hi);
-  // So is a ball too small for rays across its box to be told apart.
+  // So is a ball whose arithmetic overflows, and one too small for rays
+  // across its box to be told apart.
+  const SolidPtr huge = Primitive::create<Sphere>(1e300);
+  EXPECT_EQ(tightBounds(*huge).hi, huge->bounds().hi);
   const SolidPtr speck = Primitive::create<Sphere>(4.9e-324);
   EXPECT_EQ(tightBounds(*speck).hi, speck->bounds().hi);
   const SolidPtr half = Primitive::create<HalfSpace>(dvec3(0, 0, 1), 0.0);

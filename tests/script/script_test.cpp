@@ -205,6 +205,7 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"return box{1, 2, 3, center=true}", "part.lua:1: box: unexpected value without a name"},
       {"math.randomseed()", "part.lua:1: math.randomseed needs a seed"},
       {"return cylinder{r=1}", "part.lua:1: cylinder: needs h"},
+      {"return cone{h=1, r1=0, r2=0}", "part.lua:1: cone: radii must be >= 0 and not both 0"},
       {"return box(1):scale(1, 0, 1)", "part.lua:1: transform is singular"},
       {"return sphere(1) + 3", "part.lua:1: operand of '+' must be a solid, got number"},
       {"return union()", "part.lua:1: union: needs at least one solid"},
