@@ -15,7 +15,10 @@ using detail::toDetail;
 
 Scene::Scene() : impl_(std::make_unique<Impl>()) {}
 
-Scene::Scene(const Solid& part) : Scene() { add(part); }
+Scene::Scene(const Solid& part) : Scene() {
+  add(part);
+  impl_->scene.cadLook = true;  // as a script's bare solid (sceneOfValue)
+}
 
 Scene::Scene(const Scene& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
 
@@ -78,9 +81,17 @@ Scene& Scene::setBackground(const Vec3& color) {
   guarded([&] {
     detail::checkBackground(toDetail(color));
     impl_->scene.background = toDetail(color);
+    impl_->scene.cadLook = false;  // its background would be drawn over
   });
   return *this;
 }
+
+Scene& Scene::setDefaultLook(bool enabled) {
+  impl_->scene.cadLook = enabled;
+  return *this;
+}
+
+bool Scene::defaultLook() const { return impl_->scene.cadLook; }
 
 Scene& Scene::setMaxDepth(int depth) {
   guarded([&] { impl_->scene.limits.maxDepth = detail::checkedMaxDepth(depth); });

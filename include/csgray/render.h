@@ -12,11 +12,12 @@
 namespace csgray {
 
 struct RenderOptions {
-  int width = 800, height = 600;  // pixels, 1 to 16384 a side
-  int threads = 0;                // 0: one per core
+  // Pixels, 1 to 16384 a side and at most 2²⁶ (67 108 864) in all.
+  int width = 800, height = 600;
+  int threads = 0;  // 0: one per core
   // Rays per pixel, jittered (antialiasing): 1 to 1024, or 0 for the
-  // command's default: 9, adaptive, for a bare part (a script that returns
-  // a solid, not scene{}: the CAD look), else 1.
+  // command's default: 9, adaptive, for a scene in the default look
+  // (Scene(part), a script that returns a solid), else 1.
   int samples = 0;
   bool adaptive = false;  // spend the samples only on pixels at edges
   bool edges = false;     // draw edge lines: outlines and creases (--edges)

@@ -124,7 +124,8 @@ struct Camera {
 class CSGRAY_API Scene {
  public:
   Scene();
-  // A scene of one solid, as a script that returns a solid gives.
+  // A scene of one solid, as a script that returns a solid gives: drawn in
+  // the default look (docs/script.md, "The default look").
   explicit Scene(const Solid& part);
   Scene(const Scene& other);
   Scene& operator=(const Scene& other);
@@ -140,7 +141,14 @@ class CSGRAY_API Scene {
   // a script's scene{lights={}}.
   Scene& setDefaultLight(bool enabled);
   Scene& setCamera(const Camera& camera);
+  // Ends the default look: the scene's own background is drawn.
   Scene& setBackground(const Vec3& color);
+  // The default look of a bare part (Scene(part), a script that returns a
+  // solid): a light gradient behind it, three lights about the camera (or
+  // the scene's own, when it has some), a shadow on the ground, and 9 rays
+  // at the pixels on its edges when render's samples are 0. Off, the
+  // scene is drawn as a scene{} of the script is.
+  Scene& setDefaultLook(bool enabled);
   // At most this many reflected or refracted rays in a chain (0 to 64),
   // and none whose share of a pixel is below minWeight (0 to 1).
   Scene& setMaxDepth(int depth);
@@ -159,6 +167,7 @@ class CSGRAY_API Scene {
   // None: a default light beside the camera, unless defaultLight() is off.
   std::vector<Light> lights() const;
   bool defaultLight() const;
+  bool defaultLook() const;
   // None: the camera frames the objects' bounds.
   std::optional<Camera> camera() const;
   Vec3 background() const;

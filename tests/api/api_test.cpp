@@ -560,6 +560,32 @@ TEST(ApiRender, WithoutTheDefaultLightAsTheScriptsEmptyLights) {
 
 // The default samples (0) are the command's: a bare part gets 9, adaptive
 // (spent at its edges); a scene of the script's own one ray a pixel.
+// Scene(part) is what a script that returns the part gives: the default
+// look, the same image pixel for pixel. Its own background ends the look,
+// as setDefaultLook(false) does.
+TEST(ApiRender, ASceneOfOnePartIsTheScriptsBarePart) {
+  const csgray::Scene script = csgray::runScriptText(
+      "return box{size={40, 30, 8}, center=true} - cylinder{h=10, r=4, center=true}", "part.lua");
+  csgray::Scene built(script.part());
+  EXPECT_TRUE(script.defaultLook());
+  EXPECT_TRUE(built.defaultLook());
+  EXPECT_TRUE(csgray::render(built, {64, 48}).rgb == csgray::render(script, {64, 48}).rgb);
+  // The gradient's corner, not the background colour of a scene{}.
+  EXPECT_NE(csgray::render(built, {64, 48}).at(0, 0), built.background());
+  csgray::Scene red = built;
+  red.setBackground({1, 0, 0});
+  EXPECT_FALSE(red.defaultLook());
+  EXPECT_EQ(csgray::render(red, {64, 48}).at(0, 0), (Vec3{1, 0, 0}));
+  csgray::Scene plain = built;
+  plain.setDefaultLook(false);
+  const Vec3 corner = csgray::render(plain, {64, 48}).at(0, 0);
+  const Vec3 dark = plain.background();  // the image holds it as floats
+  EXPECT_NEAR(corner.x, dark.x, 1e-7);
+  EXPECT_NEAR(corner.y, dark.y, 1e-7);
+  EXPECT_NEAR(corner.z, dark.z, 1e-7);
+  EXPECT_FALSE(csgray::Scene().add(Solid::sphere(1)).defaultLook());
+}
+
 TEST(ApiRender, DefaultSamplesAreTheCommands) {
   const csgray::Scene bare = csgray::runScriptText("return sphere(1)", "part.lua");
   csgray::RenderOptions nine{40, 30};
