@@ -152,6 +152,8 @@ Mesh exportMesh(const Solid& solid, const ExportOptions& options) {
 }
 
 void writeMesh(const Mesh& mesh, const std::string& path, bool ascii) {
+  if (mesh.triangles.empty())
+    throw Error(ErrorCode::InvalidArgument, "writeMesh: the mesh has no triangles");
   checkIndices(mesh);
   detail::PartMesh part;
   part.mesh = triangleMesh(mesh);

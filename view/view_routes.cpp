@@ -123,7 +123,7 @@ ViewReply ViewRoutes::handle(const std::string& method, const std::string& path,
     if (method == "GET" && path == "/scene") return json(stateJson(session_.state(), script));
     if (method == "GET" && path == "/wait") {
       const double version = numberParameter(query, "version");
-      if (!(version >= 0.0)) throw std::invalid_argument("version must be a number");
+      if (!(version >= 0.0)) throw std::invalid_argument("version must be a number >= 0");
       return json(stateJson(session_.waitForChange(std::uint64_t(version), kLongPoll), script));
     }
     if (method == "GET" && path == "/frame") {

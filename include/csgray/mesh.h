@@ -46,7 +46,8 @@ CSGRAY_API Mesh exportMesh(const Solid& solid, const ExportOptions& options = {}
 
 // Writes the mesh; the extension picks the format (.stl, .obj, .off, .ply,
 // .3mf, the last with each triangle's colour). ascii: text STL or PLY.
-// Atomic, as writeImage.
+// Atomic, as writeImage. A mesh without triangles is refused
+// (InvalidArgument): no file of it would read back.
 CSGRAY_API void writeMesh(const Mesh& mesh, const std::string& path, bool ascii = false);
 // Reads a mesh file (STL, OBJ, OFF or PLY): polygons are split into
 // triangles and equal vertices merged; it is not checked (see meshDefect).

@@ -487,6 +487,11 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
             ErrorCode::IoError);
   EXPECT_EQ(errorOf([&] { csgray::writeMesh(mesh, path("part.xyz")); }).first,
             ErrorCode::InvalidArgument);
+  // A mesh without triangles would write a file that reads back as none.
+  EXPECT_EQ(errorOf([&] { csgray::writeMesh(csgray::Mesh(), path("empty.stl")); }),
+            std::make_pair(ErrorCode::InvalidArgument,
+                           std::string("writeMesh: the mesh has no triangles")));
+  EXPECT_FALSE(std::filesystem::exists(path("empty.stl")));
   EXPECT_EQ(errorOf([&] { csgray::readMesh(path("missing.stl")); }).first, ErrorCode::IoError);
   // A file that is not of its format cannot be read, as a mesh or as a
   // solid; a mesh that is read but bounds no solid is a bad argument.

@@ -387,6 +387,7 @@ TEST_F(ViewServerTest, RefusesWhatItCannotTakeWithOneLine) {
   EXPECT_EQ(get("/pick?size=10x10&y=1", 400), "x must be given once\n");
   EXPECT_EQ(get("/pick?size=10x10&x=20&y=1", 400), "x and y must be within the frame's size\n");
   EXPECT_EQ(get("/wait?version=x", 400), "version must be a number\n");
+  EXPECT_EQ(get("/wait?version=-1", 400), "version must be a number >= 0\n");
   EXPECT_EQ(get("/nothing", 404), "no such page: /nothing\n");
   auto response = client_->Post("/define");
   EXPECT_EQ(response->status, 400);
