@@ -10,6 +10,7 @@
 
 #include "engine/boolean.h"
 #include "primitives/box.h"
+#include "primitives/cylinder.h"
 #include "primitives/half_space.h"
 #include "primitives/sphere.h"
 #include "primitives/torus.h"
@@ -68,6 +69,20 @@ TEST(TightBounds, ALensIsWhereItsBallsOverlap) {
   const SolidPtr b = Primitive::create<Sphere>(1.0)->transformed(Affine::translation({1, 0, 0}));
   const double r = std::sqrt(3.0) / 2.0;
   expectBox(tightBounds(*intersectionOf({a, b})), dvec3(0, -r, -r), dvec3(1, r, r));
+}
+
+TEST(TightBounds, AGearTurnedAtEachToothKeepsItsSize) {
+  // gear = (gear + tooth):rotate(0, 0, 10), 36 times: each turn grows the
+  // instance's bounds() by cos 10° + sin 10° (to some 2 000 across); the
+  // box of the parts where they are keeps the gear's 24, and the rays
+  // find it.
+  const SolidPtr tooth =
+      Primitive::create<Box>(dvec3(2.5, 1, 2))->transformed(Affine::translation({9.5, -0.5, 0}));
+  SolidPtr gear = Primitive::create<Cylinder>(10.0, 10.0, 2.0);
+  for (int i = 0; i < 36; ++i)
+    gear = unionOf({gear, tooth})->transformed(Affine::rotation(kPi / 18, dvec3(0, 0, 1)));
+  EXPECT_GT(gear->bounds().hi.x, 1000.0);
+  expectBox(tightBounds(*gear), dvec3(-12, -12, 0), dvec3(12, 12, 2), 1e-9);
 }
 
 TEST(TightBounds, EmptyAndUnboundedSolids) {
