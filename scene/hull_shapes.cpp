@@ -130,17 +130,23 @@ bool convex(const Primitive& p) {
   return convexPolytopeOf(p).has_value();
 }
 
+// "takes shapes and unions of them, not an intersection": what a hull or
+// a sum cannot take, named with its article.
+std::string notAShape(const std::string& kind) {
+  const bool vowel = !kind.empty() && std::string("aeiou").find(kind[0]) != std::string::npos;
+  return std::string("takes shapes and unions of them, not ") + (vowel ? "an " : "a ") + kind;
+}
+
 // The leaves of unions of bounded primitives.
 void collectLeaves(const SolidPtr& solid, const std::string& function,
                    std::vector<const Primitive*>& out) {
   if (const auto* node = dynamic_cast<const Boolean*>(solid.get())) {
-    if (node->op() != Boolean::Op::Union)
-      throw error(function, "takes shapes and unions of them, not a " + node->kind());
+    if (node->op() != Boolean::Op::Union) throw error(function, notAShape(node->kind()));
     for (const SolidPtr& child : node->children()) collectLeaves(child, function, out);
     return;
   }
   const auto* p = dynamic_cast<const Primitive*>(solid.get());
-  if (!p) throw error(function, "takes shapes and unions of them, not a " + solid->kind());
+  if (!p) throw error(function, notAShape(solid->kind()));
   if (!solid->bounds().finite()) throw error(function, "the " + solid->kind() + " is unbounded");
   out.push_back(p);
 }
@@ -289,8 +295,7 @@ SolidPtr minkowskiPair(const SolidPtr& a, const SolidPtr& b) {
   for (const SolidPtr* side : {&a, &b}) {
     const auto* node = dynamic_cast<const Boolean*>(side->get());
     if (!node) continue;
-    if (node->op() != Boolean::Op::Union)
-      throw error(function, "takes shapes and unions of them, not a " + node->kind());
+    if (node->op() != Boolean::Op::Union) throw error(function, notAShape(node->kind()));
     const SolidPtr& other = side == &a ? b : a;
     std::vector<SolidPtr> parts;
     for (const SolidPtr& child : node->children()) parts.push_back(minkowskiPair(child, other));

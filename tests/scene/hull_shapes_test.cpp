@@ -370,6 +370,8 @@ TEST(HullScript, RegionPlusCircleIsItsRoundedOffset) {
 TEST(HullScript, ErrorsNameTheLine) {
   EXPECT_EQ(scriptError("local a = box(2)\nreturn minkowski(a - sphere(1), sphere(1))"),
             "part.lua:2: minkowski: takes shapes and unions of them, not a difference");
+  EXPECT_EQ(scriptError("return hull(box(2) * sphere(1.2), sphere(1))"),
+            "part.lua:1: hull: takes shapes and unions of them, not an intersection");
   EXPECT_EQ(scriptError("return\nminkowski(torus{R=3, r=1}, sphere(1))"),
             "part.lua:2: minkowski: the torus is not convex; its sum is not supported");
   EXPECT_EQ(scriptError("return rounded_box{size={4, 3, 2}, r=1.5}"),
