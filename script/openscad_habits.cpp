@@ -11,6 +11,7 @@ namespace {
 
 const char* const kModifiers =
     "modifiers are methods here: # is s:highlight(), % s:ghost(), ! only(s), * s:disable()";
+const char* const kMaterialColour = "a colour is a material here: s:material{color={r, g, b}}";
 const char* const kTransforms =
     "transforms are methods of a solid here: s:translate(x, y, z), s:rotate(x, y, z), "
     "s:scale(...), s:mirror(...), s:transform{...}, s:resize{...}";
@@ -19,10 +20,10 @@ const char* const kTransforms =
 
 std::string methodNameHint(const std::string& name, bool isFunction) {
   static const std::map<std::string, std::string> kMethods = {
-      {"color", "a colour is a material here: s:material{color={r, g, b}}"},
-      {"colour", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"color", kMaterialColour},
+      {"colour", kMaterialColour},
       {"texture", "a texture is a material's colour here: s:material{color=checker{...}}"},
-      {"pigment", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"pigment", kMaterialColour},
       {"union", "union is a function here, not a method: union(s, t) or s + t"},
       {"difference", "difference is a function here, not a method: difference(s, t) or s - t"},
       {"intersection",
@@ -43,7 +44,7 @@ std::string openscadNameHint(const std::string& name) {
       {"mirror", "transforms are methods of a solid here: s:mirror(...)"},
       {"resize", "transforms are methods of a solid here: s:resize(...)"},
       {"multmatrix", "transforms are methods of a solid here: s:transform(...)"},
-      {"color", "a colour is a material here: s:material{color={r, g, b}}"},
+      {"color", kMaterialColour},
       {"echo", "OpenSCAD's echo is print(...) here (it writes to standard error)"},
       {"import",
        "meshes are read with mesh{file=\"part.stl\"}, DXF drawings with "
