@@ -6,9 +6,33 @@
 #include "engine/boolean.h"
 #include "engine/flat_union.h"
 #include "engine/moved_box.h"
+#include "engine/parts_box.h"
 #include "engine/primitive.h"
 
 namespace csgray::detail {
+
+namespace {
+
+// Nodes of the child visited for its box, each a box moved by a frame
+// (about 60 ns): a part turned at each step of a loop is a chain of three
+// or four nodes a step, so the deepest chain a tree may hold (two levels
+// a step, Boolean::kMaxDepth) is walked whole; a part shared through
+// levels of instances (2^k uses at k levels) is walked as far as this goes.
+constexpr std::size_t kPartsVisits = 2048;
+
+// Does the map take each axis onto an axis (the box's moved corners are
+// then the moved box itself)?
+bool keepsAxes(const Affine& map) {
+  const glm::dmat4& m = map.worldFromObject();
+  for (int column = 0; column < 3; ++column) {
+    int nonzero = 0;
+    for (int row = 0; row < 3; ++row) nonzero += m[column][row] != 0.0;
+    if (nonzero > 1) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 Instance::Instance(SolidPtr child, const Affine& worldFromChild)
     : child_(std::move(child)), worldFromChild_(worldFromChild) {
@@ -24,6 +48,12 @@ Instance::Instance(SolidPtr child, const Affine& worldFromChild)
   if (local.empty()) return;
   // An unbounded child may reach anywhere once moved.
   bounds_ = local.finite() ? movedBox(local, worldFromChild_) : Bounds::everything();
+  // A turn boxes the child's box again (partsBox says why that grows);
+  // a move, a stretch along the axes or a quarter turn keeps it exact.
+  if (local.finite() && !keepsAxes(worldFromChild_)) {
+    std::size_t budget = kPartsVisits;
+    bounds_ = bounds_.intersected(partsBox(*child_, worldFromChild_, budget));
+  }
   // A turned child's box made from its parts where they are few
   // (Solid::boundsUnder): a ray that misses it meets no part, so the
   // union's BVH above leaves it out without taking the ray into the

@@ -4,14 +4,18 @@
 
 namespace csgray::detail {
 
-Bounds movedBox(const Bounds& objectBox, const Affine& worldFromObject) {
+Bounds movedBox(const Bounds& objectBox, const glm::dmat4& worldFromObject) {
   Bounds world;
   for (int i = 0; i < 8; ++i) {
     dvec3 corner(i & 1 ? objectBox.hi.x : objectBox.lo.x, i & 2 ? objectBox.hi.y : objectBox.lo.y,
                  i & 4 ? objectBox.hi.z : objectBox.lo.z);
-    world.include(worldFromObject.pointToWorld(corner));
+    world.include(dvec3(worldFromObject * glm::dvec4(corner, 1.0)));
   }
   return world;
+}
+
+Bounds movedBox(const Bounds& objectBox, const Affine& worldFromObject) {
+  return movedBox(objectBox, worldFromObject.worldFromObject());
 }
 
 namespace {

@@ -8,6 +8,7 @@ namespace csgray::detail {
 
 // The box of the eight corners of a finite box, mapped by worldFromObject.
 Bounds movedBox(const Bounds& objectBox, const Affine& worldFromObject);
+Bounds movedBox(const Bounds& objectBox, const glm::dmat4& worldFromObject);
 // The box of a ball (radius r about the object point centre) or of a disc
 // (the same, in the plane z = centre.z), mapped by worldFromObject: an
 // ellipsoid or an ellipse, whose reach along world axis i from the mapped

@@ -86,18 +86,14 @@ SolidPtr Primitive::placedAs(std::shared_ptr<Primitive> shape) const {
   return shape;
 }
 
-void Primitive::updateBounds() {
-  Bounds local = objectBounds();
-  if (local.empty()) {
-    bounds_ = local;
-    return;
-  }
-  if (!local.finite()) {
-    // An unbounded shape may reach anywhere once rotated.
-    bounds_ = frame_.isIdentity() ? local : Bounds::everything();
-    return;
-  }
-  bounds_ = movedBox(local, frame_);
+Bounds Primitive::boundsInFrame(const glm::dmat4& worldFromObject) const {
+  const Bounds local = objectBounds();
+  if (local.empty()) return local;
+  // An unbounded shape may reach anywhere once rotated.
+  if (!local.finite()) return worldFromObject == glm::dmat4(1.0) ? local : Bounds::everything();
+  return movedBox(local, worldFromObject);
 }
+
+void Primitive::updateBounds() { bounds_ = boundsInFrame(frame_.worldFromObject()); }
 
 }  // namespace csgray::detail

@@ -34,6 +34,9 @@ class Primitive : public Solid {
   SolidPtr mapPrimitives(const PrimitiveMap& f) const final { return f(*this); }
 
   const Affine& frame() const { return frame_; }
+  // The box of this shape in the frame given by its matrix: bounds() of
+  // its copy in that frame (withFrame), up to rounding.
+  Bounds boundsInFrame(const glm::dmat4& worldFromObject) const;
   const MaterialPtr& material() const { return material_; }
   SolidPtr withFrame(const Affine& worldFromObject) const;
   SolidPtr withMaterial(const MaterialPtr& material) const;

@@ -7,8 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/boolean.h"
-#include "engine/instance.h"
+#include "engine/parts_box.h"
 #include "engine/span_list.h"
 
 namespace csgray::detail {
@@ -20,37 +19,6 @@ constexpr int kWindowRays = 9;                // across each side of a finer win
 constexpr int kRefinements = 16;              // windows, each a quarter of the last
 constexpr std::size_t kBest = 4;              // lines refined, of the first grid's best
 constexpr std::size_t kPartsVisits = 100000;  // nodes partsBox may visit
-
-// The box of the solid's primitives where they are, each its own box
-// under its composed frames (Solid::boundsUnder), the nodes visited at
-// most `budget` times; false when that runs out. bounds() of a boolean
-// turned again and again grows by cos a + sin a at each turn (an
-// instance's box is its child's box turned: a gear turned 10° at each of
-// its 36 teeth, 24 across, had a box 4 000 across, too large for the
-// grid's rays to meet it); this one does not.
-bool partsBox(const Solid& solid, const Affine& outer, std::size_t& budget, Bounds& box) {
-  if (budget == 0) return false;
-  --budget;
-  if (const Instance* instance = solid.asInstance())
-    return partsBox(*instance->child(), instance->frame().then(outer), budget, box);
-  const Boolean* node = solid.asBoolean();
-  if (!node) {
-    box = solid.boundsUnder(outer);  // a primitive, or a node of another kind
-    return true;
-  }
-  const std::span<const SolidPtr> operands = node->children();
-  if (!partsBox(*operands[0], outer, budget, box)) return false;
-  if (node->op() == Boolean::Op::Difference) return true;  // within its first operand
-  for (std::size_t i = 1; i < operands.size(); ++i) {
-    Bounds other;
-    if (!partsBox(*operands[i], outer, budget, other)) return false;
-    if (node->op() == Boolean::Op::Union)
-      box.include(other);
-    else
-      box = box.intersected(other);
-  }
-  return true;
-}
 
 // The lines parallel to axis `a`: the other two axes, and where a line
 // through (u, v) on them meets the solid first and last.
@@ -139,17 +107,19 @@ Bounds tightBounds(const Solid& solid) {
   const Bounds& given = solid.bounds();
   if (given.empty() || !given.finite()) return given;
   // The rays' box: bounds() within the parts' box, when that can be had.
-  Bounds loose = given, parts;
   std::size_t budget = kPartsVisits;
-  if (partsBox(solid, Affine(), budget, parts) && parts.finite()) loose = given.intersected(parts);
+  const Bounds loose = given.intersected(partsBox(solid, Affine(), budget));
   if (loose.empty()) return given;
   // Rays across a box thinner than this cannot be placed finely enough
   // (a ball of radius 10⁻³²³).
   const dvec3 size = loose.size();
   if (!(std::min({size.x, size.y, size.z}) > 1e-100)) return loose;
+  // The same points as one union where unions nest under transforms: a
+  // part turned at each step of a loop, 490 steps deep, in 0.03 s for 1.1.
+  const SolidPtr rays = solid.forRays();
   Bounds tight;
   for (int a = 0; a < 3; ++a) {
-    Lines lines(solid, loose, a);
+    Lines lines(*rays, loose, a);
     const std::optional<double> hi = lines.extreme(1.0), lo = lines.extreme(-1.0);
     if (!hi || !lo) return loose;  // the rays met nothing: the solid is empty
     // Within the loose box; where the shapes' arithmetic overflowed (a

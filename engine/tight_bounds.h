@@ -15,8 +15,8 @@ namespace csgray::detail {
 // of the solid's surface, and is exact for a flat face, a rim or a ball's
 // pole alike. A feature narrower than a first grid cell (a 64th of the
 // loose box) that reaches farthest may be missed. The loose box is
-// bounds() within the box of the primitives where they are (which, unlike
-// bounds(), does not grow as a boolean is turned again and again). Where
+// bounds() within the box of the primitives where they are
+// (engine/parts_box.h, with a larger budget than bounds() has). Where
 // the rays meet nothing (an empty solid), for one too small for them
 // (under 10⁻¹⁰⁰ across) and for an unbounded solid, the box is that
 // loose box.

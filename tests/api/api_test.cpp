@@ -126,6 +126,31 @@ TEST(ApiSolid, VolumesOfBooleansAreAnalytic) {
         << r;
 }
 
+// A part turned at each step of a loop, as a gear is turned to take its
+// next tooth: its bounds() stay the part's, so volume()'s grids cover it,
+// and a 2 mm cube turned 144 times is exported, not refused as reaching
+// past where 32-bit floats hold the tolerance.
+TEST(ApiSolid, APartTurnedAtEachStepKeepsItsSize) {
+  Solid gear = Solid::cylinder(2, 10);
+  const Solid tooth = Solid::box({2.5, 1, 2}).translate({9.5, -0.5, 0});
+  for (int i = 0; i < 36; ++i) gear = (gear + tooth).rotate({0, 0, 10});
+  // The teeth's outer corners are √(12² + 0.5²) from the axis.
+  const csgray::Bounds box = gear.bounds();
+  EXPECT_LE(box.hi.x, std::sqrt(144.25) + 1e-9);
+  EXPECT_GE(box.lo.y, -std::sqrt(144.25) - 1e-9);
+  // The disc, and 36 teeth less each one's part inside the rim (the
+  // circle's segment beyond x = 9.5 over |y| <= 0.5, 2 high).
+  const double inside = 2.0 * (0.5 * std::sqrt(99.75) + 100.0 * std::asin(0.05) - 9.5);
+  expectVolume(gear, 200.0 * kPi + 36.0 * (5.0 - inside), 1e-3);
+
+  Solid cube = Solid::box(2, true);
+  for (int i = 0; i < 144; ++i) cube = (cube + Solid::sphere(0.2)).rotate({0, 0, 10});
+  EXPECT_LE(cube.bounds().hi.x, std::sqrt(2.0) + 1e-9);
+  const csgray::Mesh mesh = csgray::exportMesh(cube);
+  EXPECT_EQ(csgray::meshDefect(mesh).kind, csgray::MeshDefect::Kind::None);
+  EXPECT_NEAR(mesh.volume(), 8.0, 1e-9);
+}
+
 TEST(ApiSolid, ContainsKnownPoints) {
   const Solid ball = Solid::sphere(1);
   EXPECT_TRUE(ball.contains({0, 0, 0}));

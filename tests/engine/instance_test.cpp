@@ -96,17 +96,18 @@ TEST(Instance, TurnedBoxIsMadeFromTheParts) {
                                .then(Affine::translation({7, -3, 2}));
       const Instance moved(part, frame);
       const Bounds box = moved.rayBox(), corners = movedBox(part->bounds(), frame);
-      EXPECT_EQ(moved.bounds().lo, corners.lo);  // (a scene is framed as before)
-      EXPECT_EQ(moved.bounds().hi, corners.hi);
       for (int a = 0; a < 3; ++a) {
-        EXPECT_GE(box.lo[a], corners.lo[a]);
-        EXPECT_LE(box.hi[a], corners.hi[a]);
+        EXPECT_GE(moved.bounds().lo[a], corners.lo[a]);
+        EXPECT_LE(moved.bounds().hi[a], corners.hi[a]);
+        EXPECT_GE(box.lo[a], moved.bounds().lo[a]);
+        EXPECT_LE(box.hi[a], moved.bounds().hi[a]);
       }
       for (int i = 0; i < 2000; ++i) {
         const dvec3 p = test::randomPoint(rng, corners);
         if (!moved.contains(p)) continue;
         ++points;
         ASSERT_TRUE(box.contains(p)) << f << " " << i;
+        ASSERT_TRUE(moved.bounds().contains(p)) << f << " " << i;
       }
       for (int i = 0; i < 200; ++i) {
         const Ray line(test::randomPoint(rng, corners), test::randomDirection(rng), -kInfinity,
@@ -133,6 +134,44 @@ TEST(Instance, TurnedBoxIsMadeFromTheParts) {
       EXPECT_NEAR(moved.rayBox().hi[a], centre[a] + 2.5, 1e-9);
     }
   }
+}
+
+// A boolean turned again and again, as a script turns a gear at each
+// tooth it adds: gear = (gear + tooth):rotate(0, 0, 10), 36 times. Had
+// each instance's box been its child's box turned, it would grow by
+// cos 10° + sin 10° a turn, to some 4 000 across, and a volume from a grid
+// over it would miss the teeth. The box stays within the turned
+// primitives' boxes, and the grid's volume is the analytic one.
+TEST(Instance, ABooleanTurnedAgainAndAgainKeepsItsBox) {
+  const SolidPtr tooth =
+      Primitive::create<Box>(dvec3(2.5, 1, 2))->transformed(Affine::translation({9.5, -0.5, 0}));
+  SolidPtr gear = Primitive::create<Cylinder>(10.0, 10.0, 2.0);
+  for (int i = 0; i < 36; ++i)
+    gear = unionOf({gear, tooth})->transformed(Affine::rotation(kPi / 18, dvec3(0, 0, 1)));
+  // The teeth's outer corners are √(12² + 0.5²) from the axis; the disc,
+  // turned a whole turn, is back where it was.
+  const double reach = std::sqrt(144.25) + 1e-9;
+  const Bounds box = gear->bounds();
+  test::expectVecNear(box.lo, dvec3(-12, -12, 0), reach - 12.0);
+  test::expectVecNear(box.hi, dvec3(12, 12, 2), reach - 12.0);
+  // The disc, and 36 teeth less each one's part inside the rim: the
+  // segment of the circle r = 10 over |y| <= 0.5, beyond x = 9.5, is
+  // 0.5·√99.75 + 100·asin(0.05) − 9.5 (the area under a circle's arc,
+  // ∫√(r² − y²) dy = y√(r² − y²)/2 + r²·asin(y/r)/2), 2 high.
+  const double inside = 2.0 * (0.5 * std::sqrt(99.75) + 100.0 * std::asin(0.05) - 9.5);
+  const double volume = 200.0 * kPi + 36.0 * (5.0 - inside);
+  EXPECT_NEAR(test::gridVolume(*gear, box, 400), volume, 1e-3 * volume);
+
+  // A centred cube and a small ball in it, turned 360 times by 1°: within
+  // the turned cube's reach, √2 about the axis.
+  SolidPtr cube = Primitive::create<Box>(dvec3(2))->transformed(Affine::translation(dvec3(-1)));
+  for (int i = 0; i < 360; ++i)
+    cube = unionOf({cube, Primitive::create<Sphere>(0.2)})
+               ->transformed(Affine::rotation(kPi / 180, dvec3(0, 0, 1)));
+  const double corner = std::sqrt(2.0) + 1e-9;
+  test::expectVecNear(cube->bounds().lo, dvec3(-1, -1, -1), corner - 1.0);
+  test::expectVecNear(cube->bounds().hi, dvec3(1, 1, 1), corner - 1.0);
+  EXPECT_NEAR(test::gridVolume(*cube, cube->bounds(), 400), 8.0, 1e-3 * 8.0);
 }
 
 TEST(Instance, TransformOfABooleanSharesItsTree) {
