@@ -12,62 +12,71 @@ namespace csgray::detail {
 
 Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
   if (operands.empty()) throw std::invalid_argument(kind() + ": needs at least one operand");
+  // Union and intersection are associative; a difference is so in its
+  // first operand: (a - b) - c = a - b - c. A first operand of this
+  // operation is extended (its list shared, engine/operand_list.h); any
+  // other such operand's list is copied in.
+  const Boolean* base = nullptr;
+  std::vector<SolidPtr> more;
   for (size_t i = 0; i < operands.size(); ++i) {
     const SolidPtr& s = operands[i];
     if (!s) throw std::invalid_argument(kind() + ": operand is not a solid");
-    // Union and intersection are associative; a difference is so in its
-    // first operand: (a - b) - c = a - b - c.
-    auto* same = dynamic_cast<const Boolean*>(s.get());
-    bool splice = same && same->op_ == op_ && (op_ != Op::Difference || i == 0);
-    if (splice) {
-      operands_.insert(operands_.end(), same->operands_.begin(), same->operands_.end());
+    const Boolean* same = s->asBoolean();
+    if (same && same->op_ == op_ && i == 0) {
+      base = same;
+      extended_ = s;
+    } else if (same && same->op_ == op_ && op_ != Op::Difference) {
+      more.insert(more.end(), same->operands_.begin(), same->operands_.end());
     } else {
-      operands_.push_back(s);
+      more.push_back(s);
     }
   }
-  primitives_ = 0;
-  booleans_ = 1;
-  insideBeyondWindow_ = op_ != Op::Difference;
-  holesInsideBeyondWindow_ = true;
-  cutsShort_ = false;
-  for (size_t i = 0; i < operands_.size(); ++i) {
-    const SolidPtr& s = operands_[i];
-    cutsShort_ = cutsShort_ || (op_ == Op::Union && s->firstBoundaryCutsShort());
-    insideBeyondWindow_ = insideBeyondWindow_ && s->insideBeyondWindow();
-    if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s->insideBeyondWindow();
-    instances_ = instances_ || s->hasInstances();
-    primitives_ += s->primitiveCount();
-    booleans_ += s->booleanCount();
-    depth_ = std::max(depth_, s->depth() + 1);
+  operands_ = base ? OperandList::extended(base->operands_, more) : OperandList(more);
+  // The totals of base's operands, then of the new ones.
+  std::size_t i = 0;
+  if (base) {
+    totals_ = base->totals_;
+    i = base->operands_.size();
+  }
+  for (; i < operands_.size(); ++i) {
+    const Solid& s = *operands_[i];
+    totals_.cutsShort = totals_.cutsShort || (op_ == Op::Union && s.firstBoundaryCutsShort());
+    totals_.inside = totals_.inside && s.insideBeyondWindow();
+    if (i > 0) totals_.holesInside = totals_.holesInside && s.insideBeyondWindow();
+    totals_.instances = totals_.instances || s.hasInstances();
+    totals_.primitives += s.primitiveCount();
+    totals_.booleans += s.booleanCount();
+    totals_.depth = std::max(totals_.depth, s.depth() + 1);
     // Checked per operand, before the sums could overflow.
-    if (primitives_ > kMaxPrimitives)
+    if (totals_.primitives > kMaxPrimitives)
       throw std::invalid_argument(kind() + ": the part would have more than " +
                                   std::to_string(kMaxPrimitives) +
                                   " primitives (counting each use of a shared part)");
+    if (i == 0)
+      totals_.box = s.bounds();
+    else if (op_ == Op::Union)
+      totals_.box.include(s.bounds());
+    else if (op_ == Op::Intersection)
+      totals_.box = totals_.box.intersected(s.bounds());
   }
-  cutsShort_ = cutsShort_ || (op_ == Op::Difference && holesInsideBeyondWindow_);
+  primitives_ = totals_.primitives;
+  booleans_ = 1 + totals_.booleans;
+  depth_ = totals_.depth;
+  instances_ = totals_.instances;
+  insideBeyondWindow_ = op_ != Op::Difference && totals_.inside;
+  holesInsideBeyondWindow_ = totals_.holesInside;
+  cutsShort_ = totals_.cutsShort || (op_ == Op::Difference && holesInsideBeyondWindow_);
   firstCutsShort_ = op_ == Op::Difference && operands_[0]->firstBoundaryCutsShort();
   if (depth_ > kMaxDepth)
     throw std::invalid_argument(
         kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
         " levels; build long chains with union(list) or difference(a, list)");
-  switch (op_) {
-    case Op::Union:
-      for (const SolidPtr& s : operands_) bounds_.include(s->bounds());
-      break;
-    case Op::Intersection:
-      bounds_ = operands_[0]->bounds();
-      for (const SolidPtr& s : operands_) bounds_ = bounds_.intersected(s->bounds());
-      break;
-    case Op::Difference:
-      bounds_ = operands_[0]->bounds();
-      // An intersection's spans() tests its box, this one's, before
-      // anything else (a difference's first operand is never a difference:
-      // the chain is flat).
-      if (const Boolean* first = operands_[0]->asBoolean())
-        firstTestsThisBox_ = first->op_ == Op::Intersection;
-      break;
-  }
+  bounds_ = totals_.box;
+  // An intersection's spans() tests its box, this one's, before anything
+  // else (a difference's first operand is never a difference: the chain
+  // is flat).
+  if (const Boolean* first = operands_[0]->asBoolean())
+    firstTestsThisBox_ = op_ == Op::Difference && first->op_ == Op::Intersection;
 }
 
 const Bvh& Boolean::bvh() const {

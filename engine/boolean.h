@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/bvh.h"
+#include "engine/operand_list.h"
 #include "engine/solid.h"
 
 namespace csgray::detail {
@@ -57,7 +58,12 @@ class Boolean : public Solid {
   // ends the search.
   bool meetsWindow(const Ray& ray, SpanList& scratch) const override;
   bool contains(const dvec3& p) const override;
-  std::span<const SolidPtr> children() const override { return operands_; }
+  std::span<const SolidPtr> children() const override { return operands_.span(); }
+  const OperandList& operands() const { return operands_; }
+  // The node whose operands this one's begin with, shared with it (the last
+  // node of a chain built one operand at a time, extended), while it
+  // lives; null when there is none.
+  SolidPtr extended() const { return extended_.lock(); }
   // Calls visit(operand) for each operand whose box the ray meets within
   // its window (through the BVH where there is one) until it returns false.
   template <class Visit>
@@ -83,7 +89,20 @@ class Boolean : public Solid {
   void unionToFirstBoundary(const Ray& ray, SpanList& out) const;
 
   Op op_;
-  std::vector<SolidPtr> operands_;
+  OperandList operands_;
+  std::weak_ptr<const Solid> extended_;
+  // Over the operands, so that a node extending another's list adds only
+  // its new operands' (their sums, and whether all or any of them has a
+  // property; the box by this node's operation).
+  struct Totals {
+    std::size_t primitives = 0, booleans = 0;
+    int depth = 0;
+    bool inside = true;       // all insideBeyondWindow
+    bool holesInside = true;  // all but the first insideBeyondWindow
+    bool cutsShort = false;   // a union's: any firstBoundaryCutsShort
+    bool instances = false;
+    Bounds box;
+  } totals_;
   Bounds bounds_;
   // spansToFirstBoundary takes each hole's spans beyond the point it asks
   // about as they come, so they must lie inside the hole there (solid.h).

@@ -6,12 +6,14 @@
 
 #include <lua.hpp>
 #include <new>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <unordered_set>
 #include <vector>
 
+#include "engine/boolean.h"
 #include "scene/scene.h"
 #include "script/lua_args.h"
 #include "script/sandbox.h"
@@ -203,6 +205,20 @@ class PendingCharge {
   std::size_t bytes_ = 0;
 };
 
+// The children of a node but those it shares with the node it extends (a
+// boolean over a boolean of its operation, the chain s = s - hole of a
+// loop: engine/operand_list.h), when that node lives and `done` says its
+// children were seen to already. So each step of such a chain costs its
+// new operands, not all of them.
+template <class Done>
+inline std::span<const SolidPtr> newChildren(const Solid& node, Done&& done) {
+  const std::span<const SolidPtr> children = node.children();
+  if (const Boolean* boolean = node.asBoolean())
+    if (const SolidPtr extended = boolean->extended(); extended && done(*extended))
+      return children.subspan(extended->children().size());
+  return children;
+}
+
 // Gives the solid, and every node below it that has none, the line of the
 // script that called the running function: the nodes a call builds afresh
 // (a shape, the intersection clip{} makes) take the line of that call,
@@ -216,7 +232,9 @@ inline void markOrigin(lua_State* L, const Solid& solid) {
   auto mark = [&](auto& self, const Solid& node) -> void {
     if (node.origin().known()) return;
     node.setOrigin(line);
-    for (const SolidPtr& child : node.children()) self(self, *child);
+    for (const SolidPtr& child :
+         newChildren(node, [](const Solid& extended) { return extended.origin().known(); }))
+      self(self, *child);
   };
   mark(mark, solid);
 }
@@ -232,10 +250,15 @@ inline void pushSolid(lua_State* L, SolidPtr solid) {
   std::unordered_set<const Solid*> seen;
   auto collect = [&](auto& self, const SolidPtr& node) -> void {
     if (sandbox.holds(node) || !seen.insert(node.get()).second) return;
-    const std::size_t operands = node->children().size();
-    fresh.push_back(
-        {node, operands == 0 ? kBytesPerShape : kBytesPerBoolean + operands * sizeof(SolidPtr)});
-    for (const SolidPtr& child : node->children()) self(self, child);
+    const std::span<const SolidPtr> children = newChildren(
+        *node, [&](const Solid& extended) { return sandbox.holds(extended.shared_from_this()); });
+    fresh.push_back({node, node->children().empty() ? kBytesPerShape : kBytesPerBoolean});
+    // A boolean's operand list, which the nodes of a chain share, counted
+    // once while it lives.
+    if (const Boolean* boolean = node->asBoolean();
+        boolean && !sandbox.holds(boolean->operands().storage()))
+      fresh.push_back({boolean->operands().storage(), boolean->operands().storageBytes()});
+    for (const SolidPtr& child : children) self(self, child);
   };
   collect(collect, solid);
   sandbox.hold(L, fresh);

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <random>
+#include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "engine/instance.h"
@@ -581,6 +583,84 @@ TEST(BooleanTree, KindsAndOperands) {
   ASSERT_EQ(u->children().size(), 2u);
   EXPECT_EQ(u->children()[0], a);
   EXPECT_EQ(u->children()[1], b);
+}
+
+// s = s - hole in a loop: each node extends the last one's operand list
+// (engine/operand_list.h). Every node answers as the node made at once
+// from its list would: its operands, counts, depth and box; the chain's
+// lists share storage, copied only as it fills (so O(n), not n²/2
+// operands written); a branch off a node of the chain leaves that node,
+// and the branch taken before it, as they were.
+TEST(BooleanTree, AChainBuiltOneOperandAtATimeSharesItsList) {
+  const SolidPtr plate = boxFromTo(dvec3(0.0), dvec3(100, 100, 1));
+  std::vector<SolidPtr> holes;
+  for (int i = 0; i < 1000; ++i)
+    holes.push_back(cylinderAt(0.2, 1.0, dvec3(1 + i % 40 * 2.4, 1 + i / 40 * 3.6, 0)));
+  std::vector<SolidPtr> chain{plate};
+  for (const SolidPtr& hole : holes) chain.push_back(differenceOf({chain.back(), hole}));
+  std::vector<SolidPtr> list{plate};
+  std::set<const SolidPtr*> storages;
+  for (std::size_t k = 1; k < chain.size(); k += 37) {
+    const Solid& node = *chain[k];
+    list.assign(chain.begin(), chain.begin() + 1);
+    list.insert(list.end(), holes.begin(), holes.begin() + k);
+    const SolidPtr atOnce = differenceOf(list);
+    ASSERT_EQ(node.children().size(), k + 1);
+    EXPECT_TRUE(
+        std::equal(node.children().begin(), node.children().end(), atOnce->children().begin()));
+    EXPECT_EQ(node.primitiveCount(), atOnce->primitiveCount());
+    EXPECT_EQ(node.booleanCount(), atOnce->booleanCount());
+    EXPECT_EQ(node.depth(), atOnce->depth());
+    EXPECT_EQ(node.bounds().lo, atOnce->bounds().lo);
+    EXPECT_EQ(node.bounds().hi, atOnce->bounds().hi);
+    EXPECT_EQ(node.firstBoundaryCutsShort(), atOnce->firstBoundaryCutsShort());
+  }
+  for (const SolidPtr& node : chain) storages.insert(node->children().data());
+  // The plate's (none), the first node's, then each with room for twice
+  // the operands of the last: 2, 8, 18, 38, ..., 1278.
+  EXPECT_LE(storages.size(), 10u);
+  // A branch off the middle: the chain's nodes keep their operands.
+  const SolidPtr middle = chain[500], extra = sphereAt(1.0, dvec3(50, 50, 0.5));
+  const SolidPtr branch = differenceOf({middle, extra});
+  EXPECT_EQ(branch->children().back(), extra);
+  EXPECT_EQ(branch->children().size(), 502u);
+  EXPECT_EQ(chain[501]->children()[501], holes[500]);
+  EXPECT_EQ(middle->children().size(), 501u);
+  EXPECT_FALSE(branch->contains(dvec3(50, 50, 0.5)));
+  EXPECT_TRUE(chain[501]->contains(dvec3(50, 50, 0.5)));
+  // Unions and intersections chain as well.
+  SolidPtr row = sphereAt(0.5, dvec3(0.0));
+  for (int i = 1; i < 100; ++i) row = unionOf({row, sphereAt(0.5, dvec3(i, 0, 0))});
+  EXPECT_EQ(row->children().size(), 100u);
+  EXPECT_EQ(row->bounds().hi.x, 99.5);
+  EXPECT_TRUE(row->contains(dvec3(42, 0, 0.4)));
+}
+
+// Threads that extend the same node at once: one takes the room after its
+// list, the others copy it; each gets its own operand, and the node keeps
+// its list.
+TEST(BooleanTree, NodesExtendingOneNodeOnManyThreadsKeepTheirOperands) {
+  SolidPtr base = boxFromTo(dvec3(0.0), dvec3(10.0));
+  for (int i = 0; i < 20; ++i) base = differenceOf({base, sphereAt(0.1, dvec3(i * 0.5, 0, 0))});
+  constexpr int kThreads = 8, kRounds = 200;
+  std::vector<std::vector<SolidPtr>> made(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int r = 0; r < kRounds; ++r) {
+        const SolidPtr hole = sphereAt(0.1, dvec3(t, r * 0.01, 5));
+        made[t].push_back(differenceOf({base, hole}));
+        EXPECT_EQ(made[t].back()->children().back(), hole);
+      }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(base->children().size(), 21u);
+  for (int t = 0; t < kThreads; ++t)
+    for (const SolidPtr& node : made[t]) {
+      ASSERT_EQ(node->children().size(), 22u);
+      EXPECT_TRUE(
+          std::equal(base->children().begin(), base->children().end(), node->children().begin()));
+    }
 }
 
 TEST(BooleanTree, RejectsEmptyOrNullOperands) {

@@ -287,6 +287,19 @@ TEST(Sandbox, SharedNodesStayCounted) {
             "(no error)");
 }
 
+// s = s - hole in a loop shares one operand list along the chain
+// (engine/operand_list.h): 100 000 steps run within 64 MiB, each charged
+// for its node and the list once. Branches off such a chain copy the list,
+// and each copy is charged: a thousand of them, 3 GB, end at the limit.
+TEST(Sandbox, AChainsSharedListIsCountedOnceAndEachCopyOfIt) {
+  const std::string chain =
+      "local h = sphere(1)\nlocal s = box(1)\nfor i = 1, 100000 do s = s - h end\n";
+  EXPECT_EQ(errorOf(chain + "return s", smallLimits()), "(no error)");
+  EXPECT_EQ(errorOf(chain + "local kept = {}\nfor i = 1, 1000 do kept[i] = s - h end\nreturn s",
+                    smallLimits()),
+            "evil.lua:5: script exceeded the memory limit of 64 MiB");
+}
+
 // The sizes a solid's nodes are counted at cover what they take: the
 // object, its shared pointer's control block and the allocator's header.
 TEST(Sandbox, ChargesCoverTheObjects) {
