@@ -78,15 +78,6 @@ void exportScene(const Scene& scene, const ExportOptions& options, double script
     exportOutline(scene, options, scriptSeconds);
     return;
   }
-  if (scene.objects.empty())
-    for (const SurfacePtr& surface : scene.surfaces)
-      if (surface->shape() == Surface::Shape::Region)
-        throw std::runtime_error(
-            options.script + ": the 2D region" +
-            (surface->kind() == "region" ? "" : " (a " + surface->kind() + ")") +
-            " is not a solid, so it has no mesh: extrude it "
-            "(linear_extrude, rotate_extrude) or export its outline to .svg "
-            "or .dxf");
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const SolidPtr part = printedPart(scene, options.script, "export", printWarning);

@@ -6,14 +6,23 @@
 #include <stdexcept>
 
 #include "engine/boolean.h"
+#include "scene/surface.h"
 
 namespace csgray::detail {
 
 SolidPtr printedPart(const Scene& scene, const std::string& script, const char* verb,
                      const std::function<void(const std::string& message)>& warn) {
-  if (scene.objects.empty())
+  if (scene.objects.empty()) {
+    for (const SurfacePtr& surface : scene.surfaces)
+      if (surface->shape() == Surface::Shape::Region)
+        throw std::runtime_error(
+            script + ": the 2D region" +
+            (surface->kind() == "region" ? "" : " (a " + surface->kind() + ")") +
+            " is not a solid, so it has no mesh: extrude it (linear_extrude, rotate_extrude) or "
+            "export its outline to .svg or .dxf");
     throw std::runtime_error(script + ": there is no solid to " + verb +
                              " (open surfaces cannot be printed)");
+  }
   if (const std::size_t surfaces = scene.surfaces.size(); surfaces > 0)
     warn(script + ": " + std::to_string(surfaces) + " open surface" +
          (surfaces == 1 ? " is" : "s are") + " not " + verb + "ed: only solids are");

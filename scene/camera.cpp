@@ -1,5 +1,6 @@
 #include "scene/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -39,8 +40,20 @@ CameraSpec checkedCamera(CameraSpec c, std::optional<double> width) {
   if (!(c.fovDegrees > 0.0 && c.fovDegrees < 180.0))
     throw std::invalid_argument("camera: fov must be between 0 and 180 degrees");
   const dvec3 view = c.lookAt - c.eye;
-  if (glm::length(view) == 0.0)
-    throw std::invalid_argument("camera: eye and look_at are the same point");
+  if (view == dvec3(0.0)) throw std::invalid_argument("camera: eye and look_at are the same point");
+  // The view's length in doubles: its square neither overflows (points
+  // 1e154 apart) nor underflows (1e-154 apart).
+  const double squared = glm::dot(view, view);
+  if (!std::isfinite(squared))
+    throw std::invalid_argument("camera: eye and look_at are too far apart");
+  if (!(squared > 1e-300))
+    throw std::invalid_argument("camera: eye and look_at are too close together");
+  if (c.up == dvec3(0.0))
+    throw std::invalid_argument("camera: up must not be parallel to the view direction");
+  // An up of 1e308s (or 1e-308s) scaled by its largest entry, so that its
+  // length does not overflow (or underflow); another keeps its bits.
+  if (const double u = glm::dot(c.up, c.up); !(std::isfinite(u) && u > 1e-300))
+    c.up /= std::max({std::abs(c.up.x), std::abs(c.up.y), std::abs(c.up.z)});
   if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
     throw std::invalid_argument("camera: up must not be parallel to the view direction");
   return c;

@@ -87,8 +87,8 @@ int serveView(const ViewOptions& options) {
       options.makeServer(routes, options.address, options.port);
   if (!isLoopback(options.address))
     std::fprintf(stderr,
-                 "csgray: warning: listening on %s: other machines on the network can see this "
-                 "part and set its parameters\n",
+                 "csgray: warning: listening on %s: other machines on the network, and web "
+                 "pages open on this one, can see this part and set its parameters\n",
                  options.address.c_str());
   // The page shows the script's error too, and the part once it is fixed
   // and saved; the terminal says so at once (a misspelt file name).

@@ -1,7 +1,9 @@
 #include "view/view_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <glm/geometric.hpp>
 #include <regex>
 #include <stdexcept>
 #include <vector>
@@ -110,11 +112,13 @@ FrameRequest parseFrameRequest(const std::multimap<std::string, std::string>& qu
   if (auto section = single(query, "section")) {
     const std::vector<double> n =
         numberList(*section, "section", 4, "4 numbers: the plane's normal and offset");
-    const dvec3 normal(n[0], n[1], n[2]);
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (!(length > 0.0) || !std::isfinite(length))
-      throw std::invalid_argument("section's normal must not be zero");
-    request.section = SectionPlane{normal / length, n[3] / length};
+    // Scaled by its largest entry first, so that the length of a normal
+    // of 1e308s does not overflow.
+    const double largest = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+    if (!(largest > 0.0)) throw std::invalid_argument("section's normal must not be zero");
+    const dvec3 normal = dvec3(n[0], n[1], n[2]) / largest;
+    const double length = glm::length(normal);
+    request.section = SectionPlane{normal / length, n[3] / largest / length};
   }
   return request;
 }

@@ -107,8 +107,21 @@ class ViewServer final : public HttpServer {
     return host + ":" + std::to_string(port_);
   }
 
-  // Another site's page, or a name that rebinds to this machine.
+  // Another site's page, or a name that rebinds to this machine; a
+  // request that is not well formed (before its body is read).
   bool refused(const httplib::Request& request, httplib::Response& response) const {
+    // Servers and proxies may read a different one of two Host headers.
+    if (request.get_header_value_count("Host") > 1) {
+      reply(response, 400, "a request may have one Host header only");
+      return true;
+    }
+    // Without a length the body would be read until the client closes the
+    // connection, or the read times out.
+    if (request.method == "POST" && !request.has_header("Content-Length") &&
+        !request.has_header("Transfer-Encoding")) {
+      reply(response, 411, "a POST needs a Content-Length header (with curl: -d '')");
+      return true;
+    }
     const std::string host = request.get_header_value("Host");
     const std::string port = ":" + std::to_string(port_);
     if (isLoopback(address_) && host != ownHost() && host != "127.0.0.1" + port &&

@@ -902,6 +902,10 @@ if "$csgray" export "$work/mixed2d.lua" -o "$work/mixed.svg" >"$work/stdout" 2>"
 expect_exit 1 "a region exported as a mesh" "$work/plate.stl" export "$work/plate2d.lua" -o "$work/plate.stl"
 expect_in_stderr "a region exported as a mesh" \
   "plate2d.lua: the 2D region is not a solid, so it has no mesh: extrude it (linear_extrude, rotate_extrude) or export its outline to .svg or .dxf"
+# So is it in a check (and in csgray view's export and check).
+expect_exit 1 "a region checked" "" check "$work/plate2d.lua"
+expect_in_stderr "a region checked" \
+  "plate2d.lua: the 2D region is not a solid, so it has no mesh: extrude it (linear_extrude, rotate_extrude) or export its outline to .svg or .dxf"
 expect_exit 1 "a solid outlined" "$work/part.svg" export "$work/part.lua" -o "$work/part.svg"
 expect_in_stderr "a solid outlined" "part.lua: there is no 2D region to outline"
 expect_exit 1 "a region stood up" "$work/wall.svg" export "$work/wall2d.lua" -o "$work/wall.svg"

@@ -5,8 +5,12 @@
 // requests it refuses.
 #include "view/view_server.h"
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -182,6 +186,9 @@ TEST_F(ViewServerTest, ASectionCutsThePartInTheFrameAndThePick) {
   EXPECT_NE(wall.find("\"kind\":\"section\""), std::string::npos) << wall;
   EXPECT_NE(wall.find("\"normal\":[0,-1,0]"), std::string::npos) << wall;
   EXPECT_NE(get("/frame?" + view), get("/frame?" + view + cut));
+  // The same plane given by a normal whose length overflows a double.
+  const std::string large = get("/pick?" + view + "&section=0,-1e308,0,0&x=50.5&y=50.5");
+  EXPECT_NE(large.find("\"point\":[0,4,0]"), std::string::npos) << large;
   EXPECT_EQ(get("/frame?section=0,0,0,1", 400), "section's normal must not be zero\n");
   EXPECT_EQ(get("/frame?section=0,0,1", 400),
             "section must be 4 numbers: the plane's normal and offset\n");
@@ -381,6 +388,13 @@ TEST_F(ViewServerTest, RefusesWhatItCannotTakeWithOneLine) {
             "camera: eye and look_at are the same point\n");
   EXPECT_EQ(get("/frame?camera=0,-5,0,0,0,0,0,-1,0", 400),
             "camera: up must not be parallel to the view direction\n");
+  // Numbers whose squares overflow: said as they are.
+  EXPECT_EQ(get("/frame?camera=1e308,0,0,-1e308,0,0,0,0,1", 400),
+            "camera: eye and look_at are too far apart\n");
+  EXPECT_EQ(get("/frame?camera=1e300,0,0,0,0,0,0,0,1", 400),
+            "camera: eye and look_at are too far apart\n");
+  EXPECT_EQ(get("/frame?camera=1e-200,0,0,0,0,0,0,0,1", 400),
+            "camera: eye and look_at are too close together\n");
   EXPECT_EQ(get("/frame?pass=7", 400), "pass must be 0, 1 or 2\n");
   EXPECT_EQ(get("/frame?" + kFront + "&fov=200", 400), "fov must be between 0 and 180 degrees\n");
   EXPECT_EQ(get("/frame?size=1x1&size=2x2", 400), "size is given twice\n");
@@ -419,6 +433,43 @@ TEST_F(ViewServerTest, AnswersOnlyItsOwnAddress) {
   EXPECT_TRUE(isLoopback("localhost"));
   EXPECT_FALSE(isLoopback("0.0.0.0"));
   EXPECT_FALSE(isLoopback("192.168.1.2"));
+}
+
+// The server's answer to a request written out byte for byte, as a
+// client library would not write it.
+std::string exchange(int port, const std::string& request) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  ::inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
+  std::string answer;
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0 &&
+      ::send(fd, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size())) {
+    char buffer[4096];
+    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, n);
+  }
+  ::close(fd);
+  return answer;
+}
+
+TEST_F(ViewServerTest, RefusesTwoHostsAndAPostWithoutALength) {
+  start("return box(1)\n");
+  const std::string host = "Host: 127.0.0.1:" + std::to_string(server_->port()) + "\r\n";
+  // A proxy might read the second Host where this server reads the first.
+  const std::string twice = exchange(server_->port(), "GET /scene HTTP/1.1\r\n" + host +
+                                                          "Host: attacker.example\r\n"
+                                                          "Connection: close\r\n\r\n");
+  EXPECT_EQ(twice.rfind("HTTP/1.1 400", 0), 0u) << twice;
+  EXPECT_NE(twice.find("a request may have one Host header only"), std::string::npos) << twice;
+  // Its body would be read until the read timed out.
+  const std::string endless =
+      exchange(server_->port(), "POST /reload HTTP/1.1\r\n" + host + "Connection: close\r\n\r\n");
+  EXPECT_EQ(endless.rfind("HTTP/1.1 411", 0), 0u) << endless;
+  EXPECT_NE(endless.find("a POST needs a Content-Length header"), std::string::npos) << endless;
+  const std::string once =
+      exchange(server_->port(), "GET /scene HTTP/1.1\r\n" + host + "Connection: close\r\n\r\n");
+  EXPECT_EQ(once.rfind("HTTP/1.1 200", 0), 0u) << once;
 }
 
 TEST(ViewSession, ANewerFrameCancelsTheOneInProgress) {
