@@ -7,6 +7,8 @@
 #include <span>
 #include <vector>
 
+#include "engine/boolean.h"
+#include "engine/instance.h"
 #include "engine/parts_box.h"
 #include "engine/span_list.h"
 
@@ -38,11 +40,35 @@ class Lines {
     origin[b_] = u;
     origin[c_] = v;
     direction[a_] = 1.0;
-    solid_.spans(Ray(origin, direction, 0.0, 2.0 * margin + box_.size()[a_]), spans_);
-    if (spans_.empty()) return false;
-    lo = origin[a_] + spans_[0].in.t;
-    hi = origin[a_] + spans_.back().out.t;
+    double first = kInfinity, last = -kInfinity;
+    reach(solid_, Ray(origin, direction, 0.0, 2.0 * margin + box_.size()[a_]), first, last);
+    if (!(first <= last)) return false;
+    lo = origin[a_] + first;
+    hi = origin[a_] + last;
     return true;
+  }
+
+  // Widens [first, last] to where the ray meets the solid first and last.
+  // A union's are its operands' first and last, a use's its child's:
+  // asked one by one, so that a line through a row of 5 000 balls does not
+  // merge their spans into one list at each ball (a grid of them took
+  // 0.26 s, 0.05 s so).
+  void reach(const Solid& solid, const Ray& ray, double& first, double& last) {
+    if (const Boolean* node = solid.asBoolean(); node && node->op() == Boolean::Op::Union) {
+      node->forEachOperandHitBy(ray, [&](const Solid& operand) {
+        reach(operand, ray, first, last);
+        return true;
+      });
+      return;
+    }
+    if (const Instance* use = solid.asInstance()) {  // (t is the same in the child's frame)
+      reach(*use->child(), use->rayToChild(ray), first, last);
+      return;
+    }
+    solid.spans(ray, spans_);
+    if (spans_.empty()) return;
+    first = std::min(first, spans_[0].in.t);
+    last = std::max(last, spans_.back().out.t);
   }
 
   // The side's extreme (highest: sign 1, lowest: sign -1) on the lines of
