@@ -30,6 +30,8 @@ const char* errorCodeName(ErrorCode code) {
       return "OutOfMemory";
     case ErrorCode::Internal:
       return "Internal";
+    case ErrorCode::Cancelled:
+      return "Cancelled";
   }
   return "Internal";
 }

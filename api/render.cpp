@@ -44,7 +44,14 @@ Image render(const Scene& scene, const RenderOptions& options) {
     o.samples = cadSamples ? detail::kCadLookSamples : std::max(options.samples, 1);
     o.adaptive = options.adaptive || cadSamples;
     o.edges = options.edges;
-    const detail::Image rendered = detail::Renderer(s, o).render();
+    o.cancel = options.cancel;
+    const detail::Image rendered = [&] {
+      try {
+        return detail::Renderer(s, o).render();
+      } catch (const detail::RenderCancelled&) {
+        throw Error(ErrorCode::Cancelled, "render: cancelled");
+      }
+    }();
     Image image;
     image.width = rendered.width;
     image.height = rendered.height;

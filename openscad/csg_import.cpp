@@ -63,7 +63,9 @@ struct NodeError : std::invalid_argument {
 class Importer {
  public:
   Importer(const std::string& fileName, const CsgImportOptions& options)
-      : file_(fileName), options_(options) {}
+      : file_(fileName),
+        source_(std::make_shared<const std::string>(fileName)),
+        options_(options) {}
 
   CsgModel model(const std::vector<CsgNode>& nodes) {
     CsgModel model;
@@ -78,7 +80,9 @@ class Importer {
  private:
   Shape shape(const CsgNode& node) {
     try {
-      return marked(node, made(node));
+      Shape s = marked(node, made(node));
+      if (s.solid) placeOrigin(*s.solid, node.line);
+      return s;
     } catch (const CsgError&) {
       throw;
     } catch (const std::exception& e) {
@@ -87,6 +91,15 @@ class Importer {
       throw CsgError(file_ + ":" + std::to_string(node.line) + ": " +
                      (what.starts_with(name) ? what : name + what));
     }
+  }
+
+  // The node's line for the solid, and for the nodes below it made for it
+  // (those that have none yet): export's messages and csgray view's pick
+  // name it, as they name a script's lines.
+  void placeOrigin(const Solid& solid, int line) const {
+    if (solid.origin().known()) return;
+    solid.setOrigin(SourceLine{source_, line});
+    for (const SolidPtr& child : solid.children()) placeOrigin(*child, line);
   }
 
   // OpenSCAD's modifier characters; a region's % and * leave it out.
@@ -784,6 +797,7 @@ class Importer {
   }
 
   const std::string& file_;
+  std::shared_ptr<const std::string> source_;  // file_, for solids' SourceLine
   const CsgImportOptions& options_;
   std::unordered_map<std::string, Shape> made2D_;  // by csgNodeKey
 };

@@ -2,6 +2,7 @@
 // shading with shadows, reflections and refraction (docs/cli.md, render).
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct RenderOptions {
   int samples = 0;
   bool adaptive = false;  // spend the samples only on pixels at edges
   bool edges = false;     // draw edge lines: outlines and creases (--edges)
+  // When given, read by the render's threads before each pixel: set it
+  // (from another thread: a user's Stop, a time limit) and render throws
+  // Error with ErrorCode::Cancelled within a pixel's time.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Linear RGB floats, row-major from the top left.

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "../io/scratch_folder.h"
@@ -616,6 +619,29 @@ TEST(ApiRender, ASceneOfOnePartIsTheScriptsBarePart) {
   EXPECT_FALSE(csgray::Scene().add(Solid::sphere(1)).defaultLook());
 }
 
+// A render another thread stops: set before the call, it stops at the
+// first pixel; set while the threads are at work, at the pixel they are
+// at (a render that long, 4096 × 4096 at 64 rays a pixel, would take
+// minutes); left unset, the image is made.
+TEST(ApiRender, ARenderStopsWhenCancelled) {
+  const csgray::Scene scene(Solid::sphere(1) - Solid::box(1));
+  std::atomic<bool> cancel = true;
+  csgray::RenderOptions options{64, 48};
+  options.cancel = &cancel;
+  EXPECT_EQ(errorOf([&] { csgray::render(scene, options); }),
+            std::make_pair(ErrorCode::Cancelled, std::string("render: cancelled")));
+  cancel = false;
+  EXPECT_EQ(csgray::render(scene, options).width, 64);
+  options.width = options.height = 4096;
+  options.samples = 64;
+  std::thread stop([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    cancel = true;
+  });
+  EXPECT_EQ(errorOf([&] { csgray::render(scene, options); }).first, ErrorCode::Cancelled);
+  stop.join();
+}
+
 TEST(ApiRender, DefaultSamplesAreTheCommands) {
   const csgray::Scene bare = csgray::runScriptText("return sphere(1)", "part.lua");
   csgray::RenderOptions nine{40, 30};
@@ -696,6 +722,7 @@ TEST(ApiScript, AnExampleGivesItsScene) {
 TEST(ApiError, CodesHaveNames) {
   EXPECT_STREQ(csgray::errorCodeName(ErrorCode::InvalidArgument), "InvalidArgument");
   EXPECT_STREQ(csgray::errorCodeName(ErrorCode::NotPrintable), "NotPrintable");
+  EXPECT_STREQ(csgray::errorCodeName(ErrorCode::Cancelled), "Cancelled");
   EXPECT_STREQ(csgray::version(), CSGRAY_VERSION);
 }
 

@@ -122,6 +122,22 @@ TEST(CsgImport, PrimitivesAreExactByDefault) {
   test::expectVecNear(box.lo, {-0.5, -1, -1.5}, 1e-12);
 }
 
+// Each solid names the line of the .csg that made it, as a script's do
+// theirs: export's messages and csgray view's pick show it.
+TEST(CsgImport, SolidsNameTheirLines) {
+  const SolidPtr part = onlySolid(
+      "difference() {\n"
+      "  cube(size = [10, 10, 10]);\n"
+      "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+      "    cylinder($fn = 0, $fa = 12, $fs = 2, h = 10, r1 = 2, r2 = 2, center = false);\n"
+      "  }\n"
+      "}\n");
+  EXPECT_EQ(part->origin().text(), "part.csg:1");
+  ASSERT_EQ(part->children().size(), 2u);
+  EXPECT_EQ(part->children()[0]->origin().text(), "part.csg:2");
+  EXPECT_EQ(part->children()[1]->origin().text(), "part.csg:4");
+}
+
 TEST(CsgImport, OpenScadFacetsAreOpenScadsPolygons) {
   // OpenSCAD's circle of r = 10 with the default $fa = 12, $fs = 2 has
   // min(360/12, 2π·10/2) = 30 sides: a 30-gon's area.
