@@ -132,7 +132,7 @@ class Lines {
 Bounds tightBounds(const Solid& solid) {
   const Bounds& given = solid.bounds();
   if (given.empty() || !given.finite()) return given;
-  // The rays' box: bounds() within the parts' box, when that can be had.
+  // The rays' box: bounds() within the parts' box.
   std::size_t budget = kPartsVisits;
   const Bounds loose = given.intersected(partsBox(solid, Affine(), budget));
   if (loose.empty()) return given;
