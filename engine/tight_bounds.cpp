@@ -71,51 +71,60 @@ class Lines {
     last = std::max(last, spans_.back().out.t);
   }
 
-  // The side's extreme (highest: sign 1, lowest: sign -1) on the lines of
-  // a grid of n × n over [u0, u1] × [v0, v1], at the cells' centres: the
-  // value times sign, and where, best first, at most `keep` of them.
+  // The extremes of both sides (0: the highest, 1: the lowest, as -lo)
+  // on the lines of a grid of n × n over [u0, u1] × [v0, v1], at the
+  // cells' centres: each side's value (the larger the better) and where,
+  // best first, at most `keep` of them. A line's extent gives both sides.
   struct Hit {
-    double value;  // times sign: the larger the better
+    double value;
     double u, v;
   };
-  std::vector<Hit> grid(double sign, double u0, double u1, double v0, double v1, int n,
-                        std::size_t keep) {
-    std::vector<Hit> hits;
+  std::array<std::vector<Hit>, 2> grid(double u0, double u1, double v0, double v1, int n,
+                                       std::size_t keep) {
+    std::array<std::vector<Hit>, 2> hits;
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         const double u = u0 + (i + 0.5) / n * (u1 - u0), v = v0 + (j + 0.5) / n * (v1 - v0);
         double lo, hi;
-        if (extent(u, v, lo, hi)) hits.push_back({sign > 0.0 ? hi : -lo, u, v});
+        if (!extent(u, v, lo, hi)) continue;
+        hits[0].push_back({hi, u, v});
+        hits[1].push_back({-lo, u, v});
       }
-    const std::size_t kept = std::min(keep, hits.size());
-    std::partial_sort(hits.begin(), hits.begin() + kept, hits.end(),
-                      [](const Hit& x, const Hit& y) {
-                        return x.value > y.value ||
-                               (x.value == y.value && (x.u < y.u || (x.u == y.u && x.v < y.v)));
-                      });
-    hits.resize(kept);
+    for (std::vector<Hit>& side : hits) {
+      const std::size_t kept = std::min(keep, side.size());
+      std::partial_sort(side.begin(), side.begin() + kept, side.end(),
+                        [](const Hit& x, const Hit& y) {
+                          return x.value > y.value ||
+                                 (x.value == y.value && (x.u < y.u || (x.u == y.u && x.v < y.v)));
+                        });
+      side.resize(kept);
+    }
     return hits;
   }
 
-  // The side's extreme, or none (the solid is empty).
-  std::optional<double> extreme(double sign) {
+  // The highest and the lowest coordinate (as -lo), or none (the solid is
+  // empty): the first grid's best lines for both, each refined.
+  std::optional<std::array<double, 2>> extremes() {
     const double u0 = box_.lo[b_], u1 = box_.hi[b_], v0 = box_.lo[c_], v1 = box_.hi[c_];
-    std::vector<Hit> best = grid(sign, u0, u1, v0, v1, kGrid, kBest);
-    if (best.empty()) return std::nullopt;
-    double found = best.front().value;
-    for (Hit hit : best) {
-      // A window of two cells about the line, a quarter as wide each time:
-      // its rays' spacing is the next window's half width.
-      double du = (u1 - u0) / kGrid, dv = (v1 - v0) / kGrid;
-      for (int k = 0; k < kRefinements; ++k) {
-        const std::vector<Hit> closer =
-            grid(sign, std::max(u0, hit.u - du), std::min(u1, hit.u + du), std::max(v0, hit.v - dv),
-                 std::min(v1, hit.v + dv), kWindowRays, 1);
-        if (!closer.empty() && closer.front().value > hit.value) hit = closer.front();
-        du *= 2.0 / (kWindowRays - 1);
-        dv *= 2.0 / (kWindowRays - 1);
+    const std::array<std::vector<Hit>, 2> first = grid(u0, u1, v0, v1, kGrid, kBest);
+    if (first[0].empty()) return std::nullopt;
+    std::array<double, 2> found{};
+    for (int side = 0; side < 2; ++side) {
+      found[side] = first[side].front().value;
+      for (Hit hit : first[side]) {
+        // A window of two cells about the line, a quarter as wide each
+        // time: its rays' spacing is the next window's half width.
+        double du = (u1 - u0) / kGrid, dv = (v1 - v0) / kGrid;
+        for (int k = 0; k < kRefinements; ++k) {
+          const std::vector<Hit> closer =
+              grid(std::max(u0, hit.u - du), std::min(u1, hit.u + du), std::max(v0, hit.v - dv),
+                   std::min(v1, hit.v + dv), kWindowRays, 1)[side];
+          if (!closer.empty() && closer.front().value > hit.value) hit = closer.front();
+          du *= 2.0 / (kWindowRays - 1);
+          dv *= 2.0 / (kWindowRays - 1);
+        }
+        found[side] = std::max(found[side], hit.value);
       }
-      found = std::max(found, hit.value);
     }
     return found;
   }
@@ -146,13 +155,14 @@ Bounds tightBounds(const Solid& solid) {
   Bounds tight;
   for (int a = 0; a < 3; ++a) {
     Lines lines(*rays, loose, a);
-    const std::optional<double> hi = lines.extreme(1.0), lo = lines.extreme(-1.0);
-    if (!hi || !lo) return loose;  // the rays met nothing: the solid is empty
+    const std::optional<std::array<double, 2>> found = lines.extremes();
+    if (!found) return loose;  // the rays met nothing: the solid is empty
+    const double hi = (*found)[0], lo = -(*found)[1];
     // Within the loose box; where the shapes' arithmetic overflowed (a
     // ball of radius 10³⁰⁰: its square is infinite), the loose box.
-    if (!std::isfinite(*lo) || !std::isfinite(*hi) || -*lo > *hi) return loose;
-    tight.lo[a] = std::max(loose.lo[a], -*lo);
-    tight.hi[a] = std::min(loose.hi[a], *hi);
+    if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi) return loose;
+    tight.lo[a] = std::max(loose.lo[a], lo);
+    tight.hi[a] = std::min(loose.hi[a], hi);
   }
   return tight;
 }
