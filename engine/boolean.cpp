@@ -32,46 +32,55 @@ Boolean::Boolean(Op op, std::vector<SolidPtr> operands) : op_(op) {
     }
   }
   operands_ = base ? OperandList::extended(base->operands_, more) : OperandList(more);
-  // The totals of base's operands, then of the new ones.
+  // The operands' sums, box and flags: base's, then the new operands'. A
+  // difference's insideBeyondWindow_ and cutsShort_ are not gathered but
+  // derived at the end, so they start afresh here.
+  primitives_ = 0;
+  booleans_ = 1;
+  insideBeyondWindow_ = true;
+  cutsShort_ = false;
   std::size_t i = 0;
   if (base) {
-    totals_ = base->totals_;
+    primitives_ = base->primitives_;
+    booleans_ = base->booleans_;
+    depth_ = base->depth_;
+    instances_ = base->instances_;
+    insideBeyondWindow_ = base->insideBeyondWindow_;
+    holesInsideBeyondWindow_ = base->holesInsideBeyondWindow_;
+    cutsShort_ = op_ == Op::Union && base->cutsShort_;
+    bounds_ = base->bounds_;
     i = base->operands_.size();
   }
   for (; i < operands_.size(); ++i) {
     const Solid& s = *operands_[i];
-    totals_.cutsShort = totals_.cutsShort || (op_ == Op::Union && s.firstBoundaryCutsShort());
-    totals_.inside = totals_.inside && s.insideBeyondWindow();
-    if (i > 0) totals_.holesInside = totals_.holesInside && s.insideBeyondWindow();
-    totals_.instances = totals_.instances || s.hasInstances();
-    totals_.primitives += s.primitiveCount();
-    totals_.booleans += s.booleanCount();
-    totals_.depth = std::max(totals_.depth, s.depth() + 1);
+    cutsShort_ = cutsShort_ || (op_ == Op::Union && s.firstBoundaryCutsShort());
+    insideBeyondWindow_ = insideBeyondWindow_ && s.insideBeyondWindow();
+    if (i > 0) holesInsideBeyondWindow_ = holesInsideBeyondWindow_ && s.insideBeyondWindow();
+    instances_ = instances_ || s.hasInstances();
+    primitives_ += s.primitiveCount();
+    booleans_ += s.booleanCount();
+    depth_ = std::max(depth_, s.depth() + 1);
     // Checked per operand, before the sums could overflow.
-    if (totals_.primitives > kMaxPrimitives)
+    if (primitives_ > kMaxPrimitives)
       throw std::invalid_argument(kind() + ": the part would have more than " +
                                   std::to_string(kMaxPrimitives) +
                                   " primitives (counting each use of a shared part)");
     if (i == 0)
-      totals_.box = s.bounds();
+      bounds_ = s.bounds();
     else if (op_ == Op::Union)
-      totals_.box.include(s.bounds());
+      bounds_.include(s.bounds());
     else if (op_ == Op::Intersection)
-      totals_.box = totals_.box.intersected(s.bounds());
+      bounds_ = bounds_.intersected(s.bounds());
   }
-  primitives_ = totals_.primitives;
-  booleans_ = 1 + totals_.booleans;
-  depth_ = totals_.depth;
-  instances_ = totals_.instances;
-  insideBeyondWindow_ = op_ != Op::Difference && totals_.inside;
-  holesInsideBeyondWindow_ = totals_.holesInside;
-  cutsShort_ = totals_.cutsShort || (op_ == Op::Difference && holesInsideBeyondWindow_);
+  if (op_ == Op::Difference) {
+    insideBeyondWindow_ = false;
+    cutsShort_ = holesInsideBeyondWindow_;
+  }
   firstCutsShort_ = op_ == Op::Difference && operands_[0]->firstBoundaryCutsShort();
   if (depth_ > kMaxDepth)
     throw std::invalid_argument(
         kind() + ": boolean tree deeper than " + std::to_string(kMaxDepth) +
         " levels; build long chains with union(list) or difference(a, list)");
-  bounds_ = totals_.box;
   // An intersection's spans() tests its box, this one's, before anything
   // else (a difference's first operand is never a difference: the chain
   // is flat).

@@ -91,18 +91,6 @@ class Boolean : public Solid {
   Op op_;
   OperandList operands_;
   std::weak_ptr<const Solid> extended_;
-  // Over the operands, so that a node extending another's list adds only
-  // its new operands' (their sums, and whether all or any of them has a
-  // property; the box by this node's operation).
-  struct Totals {
-    std::size_t primitives = 0, booleans = 0;
-    int depth = 0;
-    bool inside = true;       // all insideBeyondWindow
-    bool holesInside = true;  // all but the first insideBeyondWindow
-    bool cutsShort = false;   // a union's: any firstBoundaryCutsShort
-    bool instances = false;
-    Bounds box;
-  } totals_;
   Bounds bounds_;
   // spansToFirstBoundary takes each hole's spans beyond the point it asks
   // about as they come, so they must lie inside the hole there (solid.h).

@@ -614,6 +614,8 @@ TEST(BooleanTree, AChainBuiltOneOperandAtATimeSharesItsList) {
     EXPECT_EQ(node.bounds().lo, atOnce->bounds().lo);
     EXPECT_EQ(node.bounds().hi, atOnce->bounds().hi);
     EXPECT_EQ(node.firstBoundaryCutsShort(), atOnce->firstBoundaryCutsShort());
+    EXPECT_EQ(node.insideBeyondWindow(), atOnce->insideBeyondWindow());
+    EXPECT_EQ(node.hasInstances(), atOnce->hasInstances());
   }
   for (const SolidPtr& node : chain) storages.insert(node->children().data());
   // The plate's (none), the first node's, then each with room for twice
@@ -628,12 +630,24 @@ TEST(BooleanTree, AChainBuiltOneOperandAtATimeSharesItsList) {
   EXPECT_EQ(middle->children().size(), 501u);
   EXPECT_FALSE(branch->contains(dvec3(50, 50, 0.5)));
   EXPECT_TRUE(chain[501]->contains(dvec3(50, 50, 0.5)));
-  // Unions and intersections chain as well.
-  SolidPtr row = sphereAt(0.5, dvec3(0.0));
-  for (int i = 1; i < 100; ++i) row = unionOf({row, sphereAt(0.5, dvec3(i, 0, 0))});
+  // Unions and intersections chain as well; a union of a difference (whose
+  // first boundary cuts short) and balls answers as the union made at once.
+  std::vector<SolidPtr> parts{chain[3]};
+  SolidPtr row = chain[3];
+  for (int i = 1; i < 100; ++i) {
+    parts.push_back(sphereAt(0.5, dvec3(i, 0, 5)));
+    row = unionOf({row, parts.back()});
+  }
+  const SolidPtr rowAtOnce = unionOf(parts);
   EXPECT_EQ(row->children().size(), 100u);
-  EXPECT_EQ(row->bounds().hi.x, 99.5);
-  EXPECT_TRUE(row->contains(dvec3(42, 0, 0.4)));
+  EXPECT_EQ(row->bounds().hi.x, 100.0);
+  EXPECT_EQ(row->bounds().hi.z, 5.5);
+  EXPECT_TRUE(row->contains(dvec3(42, 0, 5.4)));
+  EXPECT_EQ(row->primitiveCount(), rowAtOnce->primitiveCount());
+  EXPECT_EQ(row->booleanCount(), rowAtOnce->booleanCount());
+  EXPECT_EQ(row->depth(), rowAtOnce->depth());
+  EXPECT_EQ(row->firstBoundaryCutsShort(), rowAtOnce->firstBoundaryCutsShort());
+  EXPECT_EQ(row->insideBeyondWindow(), rowAtOnce->insideBeyondWindow());
 }
 
 // Threads that extend the same node at once: one takes the room after its
