@@ -6,6 +6,7 @@
 #include "api/convert.h"
 #include "api/errors.h"
 #include "check/part_check.h"
+#include "engine/cancellation.h"
 
 namespace csgray {
 
@@ -59,8 +60,14 @@ CheckReport reportOf(const detail::CheckReport& r) {
 }  // namespace
 
 CheckReport check(const Solid& solid, const CheckOptions& options) {
-  return detail::guarded(
-      [&] { return reportOf(detail::checkPart(*detail::Access::of(solid), optionsOf(options))); });
+  return detail::guarded([&] {
+    const detail::CancelScope scope(options.cancel);
+    try {
+      return reportOf(detail::checkPart(*detail::Access::of(solid), optionsOf(options)));
+    } catch (const detail::Cancelled&) {
+      throw Error(ErrorCode::Cancelled, "check: cancelled");
+    }
+  });
 }
 
 }  // namespace csgray

@@ -4,6 +4,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "engine/cancellation.h"
 #include "meshio/mesh_reader.h"
 #include "script/script.h"
 
@@ -45,6 +46,8 @@ void throwAsError(ErrorCode otherwise) {
     throw;
   } catch (const csgray::Error&) {
     throw;
+  } catch (const Cancelled&) {
+    throw csgray::Error(ErrorCode::Cancelled, "cancelled");
   } catch (const ScriptError& e) {
     throw csgray::Error(ErrorCode::ScriptError, e.what());
   } catch (const std::invalid_argument& e) {

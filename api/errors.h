@@ -12,8 +12,9 @@ namespace csgray::detail {
 
 // From within a catch handler: throws the exception being handled as a
 // csgray::Error. std::invalid_argument (a bad value) is InvalidArgument, a
-// script's error ScriptError, std::bad_alloc OutOfMemory, a csgray::Error
-// stays as it is, and any other std::exception is `otherwise`.
+// script's error ScriptError, std::bad_alloc OutOfMemory, a caller's cancel
+// (engine/cancellation.h) Cancelled, a csgray::Error stays as it is, and any
+// other std::exception is `otherwise`.
 [[noreturn]] void throwAsError(ErrorCode otherwise);
 
 // Runs f; what it throws leaves as a csgray::Error (see throwAsError).

@@ -12,6 +12,7 @@
 #include "api/access.h"
 #include "api/convert.h"
 #include "api/errors.h"
+#include "engine/cancellation.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
 #include "io/atomic_file.h"
@@ -132,7 +133,10 @@ Mesh exportMesh(const Solid& solid, const ExportOptions& options) {
   }
   detail::PartMesh made;
   try {
+    const detail::CancelScope scope(options.cancel);
     made = detail::meshOfSolid(part, options.tolerance, stored);
+  } catch (const detail::Cancelled&) {
+    throw Error(ErrorCode::Cancelled, "exportMesh: cancelled");
   } catch (const std::bad_alloc&) {
     throw Error(ErrorCode::OutOfMemory, "out of memory");
   } catch (const std::exception& e) {

@@ -11,6 +11,7 @@
 #include "check/ray_grids.h"
 #include "check/report_findings.h"
 #include "engine/boolean.h"
+#include "engine/cancellation.h"
 #include "engine/instance.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_probe.h"
@@ -50,6 +51,7 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     return report;
   }
   report.meshDefect = meshDefect(mesh).text;
+  stopIfCancelled();  // between its steps (engine/cancellation.h)
   const MeshShells shells = meshShells(mesh);
   report.shells = shells.count;
   report.cavities = shells.cavities;
@@ -57,6 +59,7 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
   // Shells within twice the tolerance of each other are solids that
   // touch; a point that deep inside a face lies inside its solid.
   report.modelPieces = modelPieces(solid, mesh, shells, 2.0 * options.tolerance);
+  stopIfCancelled();
   const MeshProbe probe(mesh);
   report.meshVolume = probe.volume();
   report.meshArea = probe.area();
@@ -75,6 +78,7 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
     return report;
   }
   if (probe.canClassify()) classifyPoints(solid, probe, exact, box, options, report);
+  stopIfCancelled();
   reportFindings(tally, mesh, shells, options, report);
   return report;
 }

@@ -6,6 +6,8 @@
 #include <random>
 #include <vector>
 
+#include "engine/cancellation.h"
+
 namespace csgray::detail {
 
 namespace {
@@ -24,7 +26,8 @@ void classifyPoints(const Solid& solid, const MeshProbe& probe, const ExactDista
   std::vector<std::uint8_t> verdicts(points.size());
 
   if (!points.empty()) probe.side(points[0]);  // builds CGAL's tree before the threads ask
-  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t k) {
+  tbb::parallel_for(std::size_t(0), points.size(), [&, cancel = cancelFlag()](std::size_t k) {
+    stopIfCancelled(cancel);
     const MeshProbe::Side side = probe.side(points[k]);
     const bool exact = solid.contains(points[k]);
     if (side == MeshProbe::Side::Boundary)

@@ -11,6 +11,7 @@
 #include "check/axis_crossings.h"
 #include "check/exact_volume.h"
 #include "engine/boolean.h"
+#include "engine/cancellation.h"
 #include "engine/primitive.h"
 #include "engine/span_list.h"
 #include "export/cgal/mesh_boolean.h"
@@ -298,7 +299,8 @@ void traceGrids(const Solid& solid, const MeshProbe& probe, const ExactDistance&
     std::vector<double> lengths(std::size_t(n) * n);
     std::vector<GridTally> rows(n);
     const AxisCrossings meshCrossings(mesh, box, axis, n);
-    tbb::parallel_for(0, n, [&](int i) {
+    tbb::parallel_for(0, n, [&, cancel = cancelFlag()](int i) {
+      stopIfCancelled(cancel);
       std::vector<AxisCrossings::Crossing> crossings;
       for (int j = 0; j < n; ++j) {
         const Ray ray = rays.ray(i, j);

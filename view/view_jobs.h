@@ -3,9 +3,11 @@
 // page polls its stage and fetches the result (the file's bytes, served as
 // a download, never written into the user's folder; or the check's report).
 // A job belongs to the version of the part it started on: once the script
-// runs again, its result is stale (view_routes.cpp refuses to serve it).
+// runs again, its result is stale (view_routes.cpp refuses to serve it),
+// and the job stops at its next step (the version's `outdated` flag).
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -37,7 +39,8 @@ struct JobStatus {
   std::uint64_t id = 0;  // 0: no job yet
   std::string kind;      // "export" or "check"
   std::string format;    // of an export: "stl" or "3mf"
-  // "mesh", "write" (an export), "check", then "done" or "failed".
+  // "mesh", "write" (an export), "check", then "done", "failed", or
+  // "stopped" (the part changed while it ran, or the server stopped).
   std::string stage;
   bool running = false;
   std::string error;          // one line, when failed
@@ -57,15 +60,18 @@ class JobBusy : public std::runtime_error {
 class ViewJobs {
  public:
   explicit ViewJobs(PartTools tools) : tools_(std::move(tools)) {}
-  ~ViewJobs();  // waits for the job in progress: it cannot be stopped midway
+  ~ViewJobs();  // waits for the job in progress (the session's shutdown stops it)
   ViewJobs(const ViewJobs&) = delete;
   ViewJobs& operator=(const ViewJobs&) = delete;
 
-  // Start a job on the scene of that version; return its id. Throw JobBusy
+  // Start a job on the scene of that version; return its id. The job
+  // stops once `outdated` is set (SessionState::outdated). Throw JobBusy
   // while one runs, std::invalid_argument for a format other than stl and 3mf.
   std::uint64_t startExport(std::shared_ptr<const Scene> scene, std::uint64_t version,
+                            std::shared_ptr<const std::atomic<bool>> outdated,
                             const std::string& script, const std::string& format);
   std::uint64_t startCheck(std::shared_ptr<const Scene> scene, std::uint64_t version,
+                           std::shared_ptr<const std::atomic<bool>> outdated,
                            const std::string& script);
 
   JobStatus status() const;
@@ -76,6 +82,7 @@ class ViewJobs {
 
  private:
   std::uint64_t start(const std::string& kind, const std::string& format, std::uint64_t version,
+                      std::shared_ptr<const std::atomic<bool>> outdated,
                       std::function<void()> work);
   void setStage(const std::string& stage);
 

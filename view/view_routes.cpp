@@ -88,9 +88,10 @@ ViewReply ViewRoutes::job(const std::string& method, const std::string& path,
     if (!state.error.empty()) return line(409, "the script has an error; fix it first");
     try {
       if (path == "/export")
-        jobs_->startExport(state.scene, state.version, script, parameter(query, "format"));
+        jobs_->startExport(state.scene, state.version, state.outdated, script,
+                           parameter(query, "format"));
       else
-        jobs_->startCheck(state.scene, state.version, script);
+        jobs_->startCheck(state.scene, state.version, state.outdated, script);
     } catch (const JobBusy& e) {
       return line(409, e.what());
     }

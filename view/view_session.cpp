@@ -68,7 +68,7 @@ std::string ViewSession::run(const std::vector<std::pair<std::string, std::strin
     if (error.find(script_) != 0) error = script_ + ": " + error;
   }
   std::lock_guard lock(stateMutex_);
-  ++state_.version;
+  nextVersion();
   state_.error = error;
   state_.defines = defines;
   std::sort(files->begin(), files->end());
@@ -89,12 +89,18 @@ std::string ViewSession::run(const std::vector<std::pair<std::string, std::strin
   return {};
 }
 
+void ViewSession::nextVersion() {
+  ++state_.version;
+  if (outdated_) *outdated_ = true;
+  state_.outdated = outdated_ = std::make_shared<std::atomic<bool>>(false);
+}
+
 void ViewSession::reload() {
   // A value the script's new annotations refuse: the page says so.
   const std::string refused = run(state().defines);
   if (refused.empty()) return;
   std::lock_guard lock(stateMutex_);
-  ++state_.version;
+  nextVersion();
   state_.error = refused;
   changed_.notify_all();
 }
@@ -121,6 +127,7 @@ void ViewSession::shutdown() {
   {
     std::lock_guard lock(stateMutex_);
     stopping_ = true;
+    if (outdated_) *outdated_ = true;
   }
   changed_.notify_all();
   std::lock_guard lock(cancelMutex_);

@@ -39,6 +39,10 @@ struct SessionState {
   std::vector<std::string> files;  // the script and the files it read
   double volume = 0.0;             // of the scene's solids, exactVolume; 0 if unbounded
   Bounds bounds;                   // of the scene's solids, Scene::partBounds
+  // Set once the script runs again, or the server stops: work on this
+  // version (an export, a check: view_jobs.h) reads it to stop, its
+  // result no longer wanted (engine/cancellation.h).
+  std::shared_ptr<const std::atomic<bool>> outdated;
 };
 
 class ViewSession {
@@ -86,6 +90,8 @@ class ViewSession {
   // Returns the DefineError's message when a define is refused.
   std::string run(const std::vector<std::pair<std::string, std::string>>& defines);
   std::shared_ptr<const Scene> currentScene() const;
+  // A new version: the one before is outdated. With stateMutex_ held.
+  void nextVersion();
 
   const std::string script_;
   const ScriptOptions options_;
@@ -94,6 +100,7 @@ class ViewSession {
   mutable std::mutex stateMutex_;
   std::condition_variable changed_;
   SessionState state_;
+  std::shared_ptr<std::atomic<bool>> outdated_;  // state_.outdated, to set
   bool stopping_ = false;
 
   RenderThreads threads_;

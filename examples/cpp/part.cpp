@@ -1,9 +1,12 @@
 // A plate with two holes and a ball on top, made with the csgray library,
 // rendered to part.png and exported to part.stl in the folder given (the
-// current one by default).
+// current one by default), the export stopped should it take a minute.
 #include <csgray/csgray.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdio>
+#include <future>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -31,7 +34,16 @@ int main(int argc, char** argv) {
     std::printf("rendered %s/part.png (%d x %d pixels)\n", folder.c_str(), image.width,
                 image.height);
 
-    const csgray::Mesh mesh = csgray::exportMesh(part);
+    // The export on a thread of its own, given a minute: past that the
+    // flag stops it, and get() throws Error with ErrorCode::Cancelled (a
+    // program's Stop button would set the same flag).
+    std::atomic<bool> stop{false};
+    csgray::ExportOptions exportOptions;
+    exportOptions.cancel = &stop;
+    std::future<csgray::Mesh> exporting =
+        std::async(std::launch::async, [&] { return csgray::exportMesh(part, exportOptions); });
+    if (exporting.wait_for(std::chrono::minutes(1)) == std::future_status::timeout) stop = true;
+    const csgray::Mesh mesh = exporting.get();
     csgray::writeMesh(mesh, folder + "/part.stl");
     std::printf("exported %s/part.stl (%zu triangles, volume %.2f; exact %.2f)\n", folder.c_str(),
                 mesh.triangles.size(), mesh.volume(), part.volume());

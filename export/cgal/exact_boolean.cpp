@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/cancellation.h"
+
 namespace {
 
 // The point where the lines of two edges cross, or an exception where they
@@ -60,6 +62,12 @@ struct TagVisitor : PMP::Corefinement::Default_visitor<ExactMesh> {
   void after_face_copy(Face from, const ExactMesh& source, Face to, ExactMesh& target) {
     tagsOf(target)[to] = tagsOf(source)[from];
   }
+  // A large corefinement runs for seconds: a caller's cancel stops it
+  // at the next step of any of its stages (engine/cancellation.h).
+  void progress_filtering_intersections(double) const { stopIfCancelled(); }
+  void edge_face_intersections_step() const { stopIfCancelled(); }
+  void intersection_of_coplanar_faces_step() const { stopIfCancelled(); }
+  void triangulating_faces_step() const { stopIfCancelled(); }
 };
 
 // The mesh rebuilt with its vertices in the order of their points (x, then

@@ -11,7 +11,9 @@ namespace csgray::detail {
 // result would not be a 2-manifold (the operands touch along an edge or at
 // a point): both meshes are then corefined (each still bounds its operand),
 // not combined. Throws what CGAL throws when it cannot cut a face ("Unauthorized
-// intersections of constraints"); the meshes may then be half cut.
+// intersections of constraints"); the meshes may then be half cut. Throws
+// Cancelled (engine/cancellation.h) at a step of the corefinement once the
+// calling thread's cancel flag is set.
 bool exactBoolean(ExactMesh& a, ExactMesh& b, Boolean::Op op);
 
 }  // namespace csgray::detail

@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "engine/boolean.h"
+#include "engine/cancellation.h"
 #include "engine/instance.h"
 #include "engine/primitive.h"
 #include "export/aligned_walls.h"
@@ -466,6 +467,7 @@ class Evaluator {
   // (an unbounded primitive is meshed within a larger box), which the
   // operations above it cut away.
   Piece evaluate(const Solid& solid, const Bounds& outer) {
+    stopIfCancelled();
     // The first call is the part's: its cylinders, for its extrusions.
     if (!rims_)
       rims_.emplace(solid, [this](const Primitive& p) {
@@ -689,9 +691,11 @@ class Evaluator {
     auto tessellated = [&](std::size_t i) { return primitives[i] && !regions[i].empty(); };
     std::vector<TriangleMesh> triangles(n);
     std::vector<std::exception_ptr> failed(n);
+    const std::atomic<bool>* cancel = cancelFlag();  // (read on TBB's threads too)
     auto tessellate = [&](std::size_t i) {
       if (!tessellated(i)) return;
       try {
+        stopIfCancelled(cancel);
         triangles[i] = tessellation(*primitives[i], regions[i]);
         refusePinched(triangles[i], *primitives[i]);
       } catch (...) {
@@ -1113,6 +1117,7 @@ class Evaluator {
     }
     ++stats_.corefinements;
     setBooleanInProgress(booleanText(a, b, op));
+    stopIfCancelled();
     // In doubles where the operands allow it: several times faster than
     // CGAL's exact corefinement, which takes over where it declines.
     // (The result stays in doubles, for the next boolean and the end.)

@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/cancellation.h"
 #include "export/cgal/box_pairs.h"
 #include "export/triangle_filters.h"
 #include "tessellation/mesh_edges.h"
@@ -274,6 +275,7 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstCrossing(const Trian
 
 MeshDefect meshDefect(const TriangleMesh& mesh) {
   using Kind = MeshDefect::Kind;
+  stopIfCancelled();  // (a large mesh's test takes seconds: engine/cancellation.h)
   if (mesh.triangles.empty()) return defect(Kind::Empty, "empty: the mesh has no triangles");
   for (std::uint32_t v = 0; v < mesh.points.size(); ++v) {
     const dvec3& p = mesh.points[v];
@@ -304,6 +306,7 @@ MeshDefect meshDefect(const TriangleMesh& mesh) {
   if (MeshDefect found = checkEdges(mesh, across); !found.valid()) return found;
   if (MeshDefect found = checkVertices(mesh, across); !found.valid()) return found;
 
+  stopIfCancelled();
   if (auto crossing = firstCrossing(mesh))
     return defect(Kind::SelfIntersecting,
                   "self-intersecting: faces " + std::to_string(crossing->first) + " and " +

@@ -2,6 +2,7 @@
 // exact model (docs/check.md says what each figure means).
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -21,6 +22,10 @@ struct CheckOptions {
   int grid = 128;                 // rays per side of each of the three grids: 2 to 1024
   std::uint64_t seed = 1;         // of the random points and rays
   bool strict = false;            // warnings fail the check too
+  // Set by another thread, stops the check: check throws Error with
+  // ErrorCode::Cancelled at its next step: one of the export's (see
+  // ExportOptions::cancel), a row of a ray grid, a sample point.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Something that does not make the mesh wrong but may make the part so:

@@ -18,7 +18,7 @@ enum class ErrorCode {
   IoError,          // a file could not be read or written
   OutOfMemory,      // memory ran out
   Internal,         // anything else: a bug in csgray
-  Cancelled,        // stopped by the caller (RenderOptions::cancel)
+  Cancelled,  // stopped by the caller (the cancel of RenderOptions, ExportOptions, CheckOptions)
 };
 
 // "InvalidArgument", ...

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,6 +38,10 @@ struct ExportOptions {
   // valid mesh. None: plain doubles.
   std::optional<MeshFormat> format = MeshFormat::Stl;
   bool ascii = false;  // text STL or PLY (give writeMesh the same)
+  // Set by another thread, stops the export: exportMesh throws Error with
+  // ErrorCode::Cancelled at its next step: a primitive's mesh, a boolean,
+  // a step of CGAL's corefinement, the final test of the mesh.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // The closed, 2-manifold, outward, self-intersection-free mesh of the

@@ -660,6 +660,63 @@ TEST(ApiRender, DefaultSamplesAreTheCommands) {
             ErrorCode::InvalidArgument);
 }
 
+// A ball drilled by 40 rods that all cross at its centre: seconds to
+// export at a fine tolerance (8.6 s on a 2-core machine), each rod a
+// boolean and most of them corefinements.
+Solid drilledBall() {
+  Solid ball = Solid::sphere(20);
+  for (int i = 1; i <= 40; ++i)
+    ball = ball - Solid::cylinder(60, 1.5, true).rotate({i * 37.0, i * 13.0, 0.0});
+  return ball;
+}
+
+// What cancel does to a long call made on this thread: set before it, the
+// call stops at its first step; set by another thread 0.2 s into it, at
+// the step it is at (left alone, the call runs for seconds and gives no
+// error, which the test reports).
+void expectStopsWhenCancelled(std::atomic<bool>& cancel, const std::string& message,
+                              const std::function<void()>& call) {
+  cancel = true;
+  EXPECT_EQ(errorOf(call), std::make_pair(ErrorCode::Cancelled, message));
+  cancel = false;
+  std::thread stop([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    cancel = true;
+  });
+  EXPECT_EQ(errorOf(call).first, ErrorCode::Cancelled);
+  stop.join();
+}
+
+TEST(ApiMesh, AnExportStopsWhenCancelled) {
+  std::atomic<bool> cancel = false;
+  csgray::ExportOptions options;
+  options.cancel = &cancel;
+  // Unset, the export is made.
+  EXPECT_NEAR(csgray::exportMesh(Solid::box(2), options).volume(), 8.0, 1e-9);
+  options.tolerance = 0.002;
+  expectStopsWhenCancelled(cancel, "exportMesh: cancelled",
+                           [&] { csgray::exportMesh(drilledBall(), options); });
+}
+
+TEST(ApiCheck, ACheckStopsWhenCancelled) {
+  std::atomic<bool> cancel = false;
+  csgray::CheckOptions options;
+  options.cancel = &cancel;
+  options.samples = 1000;
+  options.grid = 16;
+  EXPECT_TRUE(csgray::check(Solid::box(2), options).ok);
+  options.tolerance = 0.002;
+  expectStopsWhenCancelled(cancel, "check: cancelled",
+                           [&] { csgray::check(drilledBall(), options); });
+  // A ball exports at once; its 10⁷ points and grids of 1024² rays take
+  // seconds (2.3 s on 2 cores), the check's own steps.
+  options.tolerance = 0.01;
+  options.samples = 10'000'000;
+  options.grid = 1024;
+  expectStopsWhenCancelled(cancel, "check: cancelled",
+                           [&] { csgray::check(Solid::sphere(10), options); });
+}
+
 TEST(ApiCheck, ASoundPartPasses) {
   csgray::CheckOptions options;
   options.samples = 20000;

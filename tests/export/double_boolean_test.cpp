@@ -9,12 +9,14 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <string>
 
 #include "engine/boolean.h"
+#include "engine/cancellation.h"
 #include "engine/primitive.h"
 #include "export/cgal/exact_boolean.h"
 #include "export/cgal/mesh_boolean.h"
@@ -138,6 +140,28 @@ TEST(DoubleBoolean, SaysWhyItDeclines) {
   ExactMesh box = exactOf(a), ball = exactOf(meshOf("return sphere(4):translate(10, 10, 10)"));
   ASSERT_TRUE(exactBoolean(box, ball, Op::Union));
   EXPECT_FALSE(doublesOf(box).has_value());
+}
+
+// The corefinement reads the caller's cancel at its steps: with the flag
+// set, CGAL stops inside its first stage (exactBoolean itself reads no
+// flag), and the same meshes are combined once the flag is clear.
+TEST(ExactBoolean, StopsInsideCgalsCorefinementWhenCancelled) {
+  const DoubleMesh box = meshOf("return box(10)");
+  const DoubleMesh ball = meshOf("return sphere(4):translate(10, 10, 10)");
+  ExactMesh a = exactOf(box), b = exactOf(ball);
+  std::atomic<bool> cancel = true;
+  {
+    const CancelScope scope(&cancel);
+    EXPECT_THROW(exactBoolean(a, b, Op::Union), Cancelled);
+  }
+  ExactMesh c = exactOf(box), d = exactOf(ball);
+  const CancelScope scope(&cancel);
+  cancel = false;
+  ASSERT_TRUE(exactBoolean(c, d, Op::Union));
+  // The box and the ball's overlapping eighth: 1000 + (1 − 1/8) of the
+  // ball, within the tessellation's tolerance times the ball's area.
+  const double ball8 = 4.0 / 3.0 * kPi * 64;
+  EXPECT_NEAR(trianglesOf(c).volume(), 1000 + 7.0 / 8.0 * ball8, kTolerance * 4 * kPi * 16);
 }
 
 TEST(DoubleBoolean, TopologyCountsShellsAndHandles) {

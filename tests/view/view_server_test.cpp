@@ -301,6 +301,35 @@ TEST_F(ViewServerTest, OneJobAtATimeAndANewRunMakesItsResultStale) {
   EXPECT_EQ(client_->Post("/check")->body, "the script has an error; fix it first\n");
 }
 
+// An export of a part that takes long (a ball drilled by 60 rods that
+// cross at its centre: 5.8 s on 2 cores), then a save: the job stops
+// at its next step, its result no longer wanted, and the server is free
+// for the new part at once (left running, the job ends "done").
+TEST_F(ViewServerTest, ANewRunStopsTheJobOfTheOldPart) {
+  start(
+      "local s = sphere(20)\n"
+      "for i = 1, 60 do\n"
+      "  s = s - cylinder{r = 1.5, h = 60, center = true}:rotate(i * 37, i * 13, 0)\n"
+      "end\n"
+      "return s\n");
+  EXPECT_EQ(client_->Post("/export?format=stl")->status, 202);
+  const std::uint64_t version = session_->state().version;
+  write("return box(10)\n");
+  waitAfter(version);
+  jobs_->waitIdle();
+  std::string job = get("/job");
+  EXPECT_NE(job.find("\"stage\":\"stopped\""), std::string::npos) << job;
+  EXPECT_NE(job.find("\"stale\":true"), std::string::npos) << job;
+  EXPECT_NE(job.find("\"error\":\"\""), std::string::npos) << job;
+  EXPECT_EQ(get("/job/file?id=1", 404), "no exported file of job 1\n");
+  // The new part's export runs to its end.
+  EXPECT_EQ(client_->Post("/export?format=stl")->status, 202);
+  jobs_->waitIdle();
+  job = get("/job");
+  EXPECT_NE(job.find("\"stage\":\"done\""), std::string::npos) << job;
+  EXPECT_EQ(client_->Get("/job/file?id=2")->status, 200);
+}
+
 TEST_F(ViewServerTest, ReloadsWhenTheScriptIsWrittenAndKeepsTheLastGoodSceneOnAnError) {
   start("return box{size={10, 10, 10}}\n");
   std::string state = get("/scene");
