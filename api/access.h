@@ -6,7 +6,9 @@
 
 #include <utility>
 
+#include "csgray/region.h"
 #include "csgray/scene.h"
+#include "profile/region.h"
 #include "scene/scene.h"
 
 // The state of a public Scene: the internal scene, and the count of its
@@ -21,6 +23,9 @@ namespace csgray::detail {
 struct Access {
   static const SolidPtr& of(const csgray::Solid& s) { return s.impl_.pointer(); }
   static csgray::Solid solid(SolidPtr p) { return csgray::Solid(std::move(p)); }
+
+  static const RegionPtr& of(const csgray::Region& r) { return r.impl_.pointer(); }
+  static csgray::Region region(RegionPtr p) { return csgray::Region(std::move(p)); }
 
   static const TexturePtr& of(const csgray::Texture& t) { return t.impl_.pointer(); }
   static csgray::Texture texture(TexturePtr p) { return csgray::Texture(std::move(p)); }

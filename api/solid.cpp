@@ -258,7 +258,7 @@ Solid Solid::roundedBox(const Vec3& size, double r, bool center) {
   return guarded([&] { return wrap(detail::roundedBoxShape(toDetail(size), r, center)); });
 }
 
-Solid Solid::roundedCylinder(double r, double h, double fillet, bool center) {
+Solid Solid::roundedCylinder(double h, double r, double fillet, bool center) {
   return guarded([&] { return wrap(detail::roundedCylinderShape(r, h, fillet, center)); });
 }
 

@@ -11,7 +11,6 @@
 // space as that flat surface, which no sweep takes any more.
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "profile/region_evaluation.h"
+#include "profile/region_operations.h"
 #include "profile/shapes.h"
 #include "scene/region_surface.h"
 #include "scene/resize.h"
@@ -302,22 +302,10 @@ int booleanOperator(lua_State* L) {
 
 // ---- Transforms ---------------------------------------------------------------
 
-// The region moved by a 2D map, keeping its kind; refuses a map that
-// squashes the plane or overflows.
+// The region moved by a 2D map, keeping its kind (region_operations.h
+// refuses a map that squashes the plane or overflows).
 int pushMapped(lua_State* L, const char* method, const Affine2& map) {
-  const double det = map.linear[0][0] * map.linear[1][1] - map.linear[1][0] * map.linear[0][1];
-  double size = 0.0;
-  for (int c = 0; c < 2; ++c)
-    for (int r = 0; r < 2; ++r) size = std::max(size, std::abs(map.linear[c][r]));
-  if (!std::isfinite(det) || !(std::abs(det) > 1e-12 * size * size))
-    throw std::invalid_argument(std::string(method) +
-                                ": the map squashes the plane (it is singular)");
-  RegionPtr mapped = receiver(L, method)->transformed(map);
-  const ProfileBounds& b = mapped->bounds();
-  if (!b.empty() && !(std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.hi.x) &&
-                      std::isfinite(b.hi.y)))
-    throw std::invalid_argument(std::string(method) + ": the region's coordinates overflow");
-  pushRegionAs(L, std::move(mapped), regionKind(L, 1));
+  pushRegionAs(L, mappedRegion(*receiver(L, method), map, method), regionKind(L, 1));
   return 1;
 }
 
@@ -376,35 +364,12 @@ int translate(lua_State* L) {
   return pushMapped(L, "translate", map);
 }
 
-// cos and sin of an angle in degrees, exact at the quarter turns (so that
-// a square turned by 90° keeps its corners exactly).
-dvec2 cosSinDegrees(double degrees) {
-  const double turn = std::fmod(degrees, 360.0);
-  if (turn == std::floor(turn) && static_cast<long>(turn) % 90 == 0) {
-    switch (((static_cast<long>(turn) / 90) % 4 + 4) % 4) {
-      case 0:
-        return {1, 0};
-      case 1:
-        return {0, 1};
-      case 2:
-        return {-1, 0};
-      default:
-        return {0, -1};
-    }
-  }
-  const double a = degrees * std::numbers::pi / 180.0;
-  return {std::cos(a), std::sin(a)};
-}
-
 // rotate(a): a degrees counterclockwise about the origin; the 3D forms
 // rotate(x, y, z) and rotate{angle=, axis=} place the region in space.
 int rotate(lua_State* L) {
   const int n = lua_gettop(L) - 1;
   if (n == 1 && lua_type(L, 2) == LUA_TNUMBER) {
-    const dvec2 cs = cosSinDegrees(toNumber(L, 2, "rotate: angle"));
-    Affine2 map;
-    map.linear = dmat2(cs.x, cs.y, -cs.y, cs.x);
-    return pushMapped(L, "rotate", map);
+    return pushMapped(L, "rotate", turnMap(toNumber(L, 2, "rotate: angle")));
   }
   if (n == 3 || (n == 1 && lua_type(L, 2) == LUA_TTABLE)) return placeInSpace(L, "rotate");
   badTransform(L, "rotate", "an angle in degrees (or x, y, z to place it in space)");
@@ -420,11 +385,7 @@ int scale(lua_State* L) {
     factors = planeArgs(L, "scale", "factors");
   else
     badTransform(L, "scale", "s, sx, sy or {sx, sy} (or x, y, z to place it in space)");
-  if (factors.x == 0.0 || factors.y == 0.0)
-    throw std::invalid_argument("scale: a factor of 0 squashes the region flat");
-  Affine2 map;
-  map.linear = dmat2(factors.x, 0.0, 0.0, factors.y);
-  return pushMapped(L, "scale", map);
+  return pushMapped(L, "scale", scaleMap(factors, "scale"));
 }
 
 // resize(x, y) or resize{x, y, auto=}: OpenSCAD's resize, scaled about
@@ -447,16 +408,7 @@ int mirror(lua_State* L) {
   const int n = givenCount(L);
   if (n == 3) return placeInSpace(L, "mirror");
   if (n != 2) badTransform(L, "mirror", "x, y or {x, y} (or x, y, z to place it in space)");
-  const dvec2 normal = planeArgs(L, "mirror", "normal");
-  const double length2 = normal.x * normal.x + normal.y * normal.y;
-  if (!(length2 > 0.0) || !std::isfinite(length2))
-    throw std::invalid_argument("mirror: the normal must not be zero");
-  // I − 2 n nᵀ / |n|² (a Householder reflection).
-  Affine2 map;
-  map.linear =
-      dmat2(1.0 - 2.0 * normal.x * normal.x / length2, -2.0 * normal.x * normal.y / length2,
-            -2.0 * normal.x * normal.y / length2, 1.0 - 2.0 * normal.y * normal.y / length2);
-  return pushMapped(L, "mirror", map);
+  return pushMapped(L, "mirror", mirrorMap(planeArgs(L, "mirror", "normal"), "mirror"));
 }
 
 // transform{{a, b, tx}, {c, d, ty}} (a third row {0, 0, 1} may follow): the
@@ -518,15 +470,7 @@ int offsetMethod(lua_State* L) {
   std::optional<double> r = args.number("r"), delta = args.number("delta");
   std::optional<bool> chamfer = args.boolean("chamfer");
   args.finish();
-  if (r && delta) throw std::invalid_argument("offset: give r or delta, not both");
-  if (!r && !delta)
-    throw std::invalid_argument("offset: needs r= (rounded) or delta= (with chamfer=true or not)");
-  if (r && chamfer)
-    throw std::invalid_argument("offset: chamfer goes with delta=, not with r= (which rounds)");
-  const double tolerance = evaluationTolerance(*region);
-  Profile result = r ? offsetRounded(*region, *r, tolerance)
-                     : offsetDelta(*region, *delta, chamfer.value_or(false), tolerance);
-  pushRegionAs(L, Region::leaf(std::move(result)), "region");
+  pushRegionAs(L, offsetRegion(*region, r, delta, chamfer), "region");
   return 1;
 }
 
@@ -534,10 +478,7 @@ int offsetMethod(lua_State* L) {
 // first operand is one, else the solids' hull (the closure's upvalue).
 int hullOf(lua_State* L) {
   if (!firstOperandIsRegion(L)) return solidsFunction(L);
-  const std::vector<RegionPtr> regions = regionOperands(L, "hull");
-  double tolerance = 1e300;
-  for (const RegionPtr& r : regions) tolerance = std::min(tolerance, evaluationTolerance(*r));
-  pushRegionAs(L, Region::leaf(hull(regions, tolerance)), "region");
+  pushRegionAs(L, hullOfRegions(regionOperands(L, "hull")), "region");
   return 1;
 }
 
@@ -547,24 +488,14 @@ int hullOf(lua_State* L) {
 // circle();}; two convex regions, one a polygon, the hull of copies).
 int minkowskiOf(lua_State* L) {
   if (!firstOperandIsRegion(L)) return solidsFunction(L);
-  std::vector<RegionPtr> regions = regionOperands(L, "minkowski");
-  RegionPtr sum = regions[0];
-  for (std::size_t i = 1; i < regions.size(); ++i) {
-    const double tolerance = std::min(evaluationTolerance(*sum), evaluationTolerance(*regions[i]));
-    try {
-      sum = Region::leaf(minkowskiSum(sum, regions[i], tolerance));
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("minkowski: ") + e.what());
-    }
-  }
-  pushRegionAs(L, sum, "region");
+  pushRegionAs(L, minkowskiOfRegions(regionOperands(L, "minkowski")), "region");
   return 1;
 }
 
 int areaMethod(lua_State* L) {
   const RegionPtr& region = receiver(L, "area");
   checkArgumentCount(L, "area", 0, 2);
-  lua_pushnumber(L, area(evaluate(*region, evaluationTolerance(*region))));
+  lua_pushnumber(L, regionArea(*region));
   return 1;
 }
 

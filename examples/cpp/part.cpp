@@ -1,4 +1,5 @@
-// A plate with two holes and a ball on top, made with the csgray library,
+// A plate with rounded corners and two holes, swept from its 2D outline,
+// and a ball on top, made with the csgray library,
 // rendered to part.png and exported to part.stl in the folder given (the
 // current one by default), the export stopped should it take a minute.
 #include <csgray/csgray.h>
@@ -12,17 +13,22 @@
 int main(int argc, char** argv) {
   const std::string folder = argc > 1 ? argv[1] : ".";
   try {
+    using csgray::Region;
     using csgray::Solid;
-    // A 40 × 30 × 8 plate centred on the origin, two holes of radius 4
-    // through it, and a ball of radius 6 whose centre is on its top face.
-    const Solid plate = Solid::box({40, 30, 8}, true);
-    const Solid hole = Solid::cylinder(10, 4, true);
-    const Solid holes = Solid::unionOf({hole.translate({-12, 0, 0}), hole.translate({12, 0, 0})});
+    // A 40 × 30 outline centred on the origin, its corners rounded with
+    // radius 4, less two holes of radius 4, swept 8 up (from −4 to 4); a
+    // ball of radius 6 whose centre is on the plate's top face.
+    const Region outline = Region::rectangle({32, 22}, true).offset(4);
+    const Region hole = Region::circle(4);
+    const Region profile = outline - hole.translate({-12, 0}) - hole.translate({12, 0});
+    csgray::ExtrudeOptions centred;
+    centred.center = true;
+    const Solid plate = Solid::linearExtrude(profile, 8, centred);
     const Solid ball = Solid::sphere(6).translate({0, 0, 4});
     csgray::Material steel;
     steel.color = {0.55, 0.6, 0.7};
     steel.specular = 0.4;
-    const Solid part = (plate - holes + ball).material(steel);
+    const Solid part = (plate + ball).material(steel);
 
     csgray::Scene scene(part);
     scene.add(csgray::Surface::plane({0, 0, 1}, -4));  // a floor under the plate

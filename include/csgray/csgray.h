@@ -6,6 +6,7 @@
 #include "csgray/error.h"
 #include "csgray/material.h"
 #include "csgray/mesh.h"
+#include "csgray/region.h"
 #include "csgray/render.h"
 #include "csgray/scene.h"
 #include "csgray/script.h"

@@ -25,6 +25,14 @@ struct Access;
 }  // namespace detail
 
 struct Mesh;
+class Region;
+
+// How Solid::linearExtrude sweeps a region up z.
+struct ExtrudeOptions {
+  bool center = false;   // from −height/2 to height/2 rather than from 0 up
+  double twist = 0.0;    // degrees the top is turned clockwise from the bottom, as OpenSCAD's
+  Vec2 scale{1.0, 1.0};  // the top's size against the bottom's, along x and y
+};
 
 // A 4 × 4 affine map as four rows; the last is 0 0 0 1.
 using Matrix4 = std::array<std::array<double, 4>, 4>;
@@ -94,8 +102,18 @@ class CSGRAY_API Solid {
   static Solid minkowski(const std::vector<Solid>& solids);
   // A box of outer size whose edges and corners are rounded with radius r.
   static Solid roundedBox(const Vec3& size, double r, bool center = false);
-  // A cylinder along +z whose rims are rounded with radius fillet.
-  static Solid roundedCylinder(double r, double h, double fillet, bool center = false);
+  // ---- Sweeps of 2D regions ---------------------------------------------------
+  // The region swept up z by height (OpenSCAD's linear_extrude); twisted
+  // and scaled, its faces stay exact (docs/script.md, "Sweeps").
+  static Solid linearExtrude(const Region& region, double height,
+                             const ExtrudeOptions& options = {});
+  // The region, in the half-plane x >= 0 taken as the xz plane, turned
+  // about z by angle degrees from the x axis (OpenSCAD's rotate_extrude).
+  static Solid rotateExtrude(const Region& region, double angle = 360.0);
+
+  // A cylinder along +z whose rims are rounded with radius fillet: height
+  // and radius in cylinder()'s order.
+  static Solid roundedCylinder(double h, double r, double fillet, bool center = false);
 
   // ---- Booleans --------------------------------------------------------------
   // Of at least one solid; a difference is the first minus all others.

@@ -40,6 +40,14 @@ class Shared {
 
 }  // namespace detail
 
+// A point or a vector of the plane, in model units (a 2D region's).
+struct Vec2 {
+  double x = 0.0, y = 0.0;
+};
+
+inline bool operator==(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
+inline bool operator!=(const Vec2& a, const Vec2& b) { return !(a == b); }
+
 // A point or a vector in model units (millimetres for a printed part), or a
 // linear RGB colour with components from 0 (black) up.
 struct Vec3 {

@@ -20,6 +20,7 @@
 
 #include "../io/scratch_folder.h"
 #include "csgray/csgray.h"
+#include "error_of.h"
 
 namespace {
 
@@ -27,6 +28,7 @@ using csgray::Error;
 using csgray::ErrorCode;
 using csgray::Solid;
 using csgray::Vec3;
+using csgray::test::errorOf;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -34,17 +36,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void expectVolume(const Solid& solid, double exact, double relative = 1e-3) {
   EXPECT_NEAR(solid.volume(), exact, relative * exact) << solid.kind();
-}
-
-// What f throws: its code and message.
-std::pair<ErrorCode, std::string> errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return {e.code(), e.what()};
-  }
-  ADD_FAILURE() << "no error";
-  return {ErrorCode::Internal, ""};
 }
 
 // The message of a one-line script that fails, without its "part.lua:1: ".
@@ -88,7 +79,8 @@ TEST(ApiSolid, HullAndMinkowskiAreAnalytic) {
   expectVolume(Solid::roundedBox({a + 2 * r, b + 2 * r, c + 2 * r}, r), rounded);
   expectVolume(Solid::hull({Solid::box(1), Solid::box(1).translate({2, 0, 0})}), 3.0, 1e-9);
   const double R = 2, f = 0.5, h = 4, inner = R - f;
-  expectVolume(Solid::roundedCylinder(R, h, f),
+  // Height first, as Solid::cylinder: a rod 4 high, not a disc 2 high.
+  expectVolume(Solid::roundedCylinder(h, R, f),
                kPi * inner * inner * h + kPi * (R * R - inner * inner) * (h - 2 * f) +
                    kPi * kPi * f * f * (inner + 4 * f / (3 * kPi)));
 }
