@@ -5,6 +5,7 @@
 #include "api/convert.h"
 #include "api/errors.h"
 #include "csgray/scene.h"
+#include "scene/region_surface.h"
 #include "scene/rotation.h"
 #include "scene/surface_mesh.h"
 
@@ -48,6 +49,10 @@ Surface Surface::rectangle(double width, double height, bool center) {
 
 Surface Surface::square(double size, bool center) {
   return guarded([&] { return wrap(detail::rectangleOf("square", size, size, center)); });
+}
+
+Surface Surface::region(const Region& region) {
+  return guarded([&] { return wrap(detail::regionSurface(detail::Access::of(region), "region")); });
 }
 
 Surface Surface::mesh(const std::vector<Vec3>& points,

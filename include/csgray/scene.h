@@ -37,6 +37,9 @@ class CSGRAY_API Surface {
   // In the xy plane from the origin (centred on it with center), facing +z.
   static Surface rectangle(double width, double height, bool center = false);
   static Surface square(double size, bool center = false);
+  // A 2D region shown flat in the xy plane, facing +z, as a script's
+  // region placed in a scene is: an open surface, not a solid.
+  static Surface region(const Region& region);
   // An open surface of triangles: faces of three point indices (from 0,
   // in either order), shaded smooth with one normal per point (none, or a
   // zero one: averaged from the triangles around the point), or flat with

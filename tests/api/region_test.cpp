@@ -142,6 +142,35 @@ TEST(ApiRegion, TextIsTheFontsLetters) {
   EXPECT_EQ(errorOf([&] { Region::text("H", missing); }).first, ErrorCode::InvalidArgument);
 }
 
+// A region in a scene is a flat surface in z = 0: seen from above in an
+// orthographic view 10 wide, a ring of radii 2 and 4 covers the pixels
+// between those distances from the centre, not its hole or beyond.
+TEST(ApiRegion, ARegionInASceneIsAFlatSurface) {
+  const csgray::Surface ring = csgray::Surface::region(Region::circle(4) - Region::circle(2));
+  EXPECT_EQ(ring.kind(), "region");
+  const csgray::Bounds box = ring.bounds();
+  // (A surface's box is padded by a billionth of its size.)
+  EXPECT_NEAR(box.lo.x, -4, 1e-6);
+  EXPECT_NEAR(box.hi.y, 4, 1e-6);
+  EXPECT_NEAR(box.lo.z, 0.0, 1e-6);
+  EXPECT_NEAR(box.hi.z, 0.0, 1e-6);
+  csgray::Scene scene;
+  scene.add(ring.material(csgray::Material{}));
+  csgray::Camera above;
+  above.eye = {0, 0, 10};
+  above.up = {0, 1, 0};
+  above.projection = csgray::Camera::Projection::Orthographic;
+  above.width = 10;
+  scene.setCamera(above).setBackground({0, 0, 0});
+  const csgray::Image image = csgray::render(scene, {100, 100, 1, 1});
+  // Pixel centres at 0.1 · (i + 0.5) − 5 from the middle.
+  auto lit = [&](int x, int y) { return image.at(x, y).x > 0.0; };
+  EXPECT_FALSE(lit(50, 50));  // the hole
+  EXPECT_TRUE(lit(80, 50));   // 3.05 out
+  EXPECT_FALSE(lit(95, 50));  // 4.55 out
+  EXPECT_TRUE(lit(50, 20));   // 2.95 up
+}
+
 TEST(ApiRegion, BadValuesGetTheScriptsMessages) {
   EXPECT_EQ(errorOf([] { Region::circle(-1); }).first, ErrorCode::InvalidArgument);
   EXPECT_EQ(errorOf([] {
