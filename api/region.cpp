@@ -11,6 +11,7 @@
 #include "api/access.h"
 #include "api/errors.h"
 #include "csgray/solid.h"
+#include "export/solid_projection.h"
 #include "io/input_file.h"
 #include "meshio/outline_writer.h"
 #include "primitives/linear_extrusion.h"
@@ -135,6 +136,14 @@ Region Region::fromDrawingFile(const std::string& path) {
     } catch (const std::invalid_argument& e) {
       throw Error(ErrorCode::IoError, e.what());
     }
+  });
+}
+
+Region Region::projection(const Solid& solid, bool cut) {
+  // An unbounded solid is a bad argument; booleans that cannot be meshed
+  // (a std::runtime_error) make no printable part, as in exportMesh.
+  return guarded(ErrorCode::NotPrintable, [&] {
+    return wrap(detail::Region::leaf(detail::solidProjection(Access::of(solid), cut)));
   });
 }
 

@@ -2,6 +2,7 @@
 // solids, made with the same checks (scene/shapes.h, quadric_shapes.h).
 #include "csgray/solid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -12,9 +13,12 @@
 #include "check/exact_volume.h"
 #include "csgray/mesh.h"
 #include "export/cgal/mesh_validity.h"
+#include "io/height_map_file.h"
+#include "io/image_file.h"
 #include "meshio/mesh_import.h"
 #include "primitives/convex_polyhedron.h"
 #include "primitives/quadric.h"
+#include "scene/height_map.h"
 #include "scene/hull_shapes.h"
 #include "scene/quadric_shapes.h"
 #include "scene/rotation.h"
@@ -242,6 +246,44 @@ Solid Solid::fromMeshFile(const std::string& path, bool repair, std::string* rep
     } catch (const std::invalid_argument& e) {
       // As the script's mesh{} says it.
       throw std::invalid_argument("mesh: " + std::string(e.what()));
+    }
+  });
+}
+
+Solid Solid::heightMap(const std::vector<std::vector<double>>& rows, bool center) {
+  return guarded([&] {
+    detail::HeightMap map;
+    map.rows = rows.size();
+    for (const std::vector<double>& row : rows) map.columns = std::max(map.columns, row.size());
+    if (map.rows * map.columns > detail::kMaxHeightMapPoints)
+      throw std::invalid_argument("height_map: more than " +
+                                  std::to_string(detail::kMaxHeightMapPoints) + " heights");
+    map.heights.assign(map.rows * map.columns, 0.0);
+    for (std::size_t r = 0; r < map.rows; ++r)
+      std::copy(rows[r].begin(), rows[r].end(), map.heights.begin() + r * map.columns);
+    try {
+      return wrap(detail::heightMapSolid(map, center));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("height_map: " + std::string(e.what()));
+    }
+  });
+}
+
+Solid Solid::heightMapFile(const std::string& path, bool center, bool invert) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  detail::HeightMap map;
+  try {
+    map = detail::readHeightMap(path, name, invert, detail::readTextureImage);
+  } catch (const std::bad_alloc&) {
+    throw Error(ErrorCode::OutOfMemory, "out of memory");
+  } catch (const std::exception& e) {
+    throw Error(ErrorCode::IoError, "height_map: " + std::string(e.what()));
+  }
+  return guarded([&] {
+    try {
+      return wrap(detail::heightMapSolid(map, center));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("height_map: " + name + ": " + e.what());
     }
   });
 }

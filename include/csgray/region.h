@@ -21,6 +21,8 @@ class Region;
 struct Access;
 }  // namespace detail
 
+class Solid;
+
 // The box of a region: its low and high corners.
 struct Bounds2 {
   Vec2 lo, hi;
@@ -66,6 +68,11 @@ class CSGRAY_API Region {
   // script's import_dxf{file=} and import_svg{file=} read it with their
   // defaults: every layer, 72 dpi.
   static Region fromDrawingFile(const std::string& path);
+  // A solid's section by the plane z = 0 (cut), or its shadow on that plane,
+  // as OpenSCAD's projection(): taken from its meshes, within a
+  // ten-thousandth of its size (at most 0.001) of the exact one. Error
+  // NotPrintable when its booleans cannot be meshed.
+  static Region projection(const Solid& solid, bool cut = false);
 
   // ---- Booleans, hulls, offsets -----------------------------------------------
   static Region unionOf(const std::vector<Region>& regions);

@@ -97,6 +97,16 @@ class CSGRAY_API Solid {
 
   // ---- Hull and Minkowski (docs/script.md, "Hull and Minkowski") -------------
   // The convex hull of shapes and unions of them.
+  // OpenSCAD's surface(): a grid of heights as a solid (docs/script.md,
+  // "Height maps"), rows[r][c] the height at x = c, y = r, one unit apart;
+  // rows shorter than the longest are filled up with 0. center: centred on
+  // the origin in x and y.
+  static Solid heightMap(const std::vector<std::vector<double>>& rows, bool center = false);
+  // The same from a text file of numbers or a PNG image's grey levels, as
+  // the script's height_map{file=} reads it (invert: the image's negative,
+  // as OpenSCAD's invert=true). A file that cannot be read, or is not
+  // numbers or a PNG image, is IoError.
+  static Solid heightMapFile(const std::string& path, bool center = false, bool invert = false);
   static Solid hull(const std::vector<Solid>& solids);
   // The Minkowski sum, pair by pair from the first.
   static Solid minkowski(const std::vector<Solid>& solids);

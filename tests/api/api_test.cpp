@@ -535,6 +535,32 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
 // render() and writeImage() make the file the csgray command makes, with
 // the default options: a bare part (bracket) in the CAD look, antialiased
 // at its edges, as the others in their scenes.
+// Height maps: over each cell, four triangles about its middle at the mean
+// of its corners, so a cell's volume is its mean height less the base's;
+// the base is one below the lowest height, or at z = 0 if that is lower.
+// Heights 0, 2, 2, 4: mean 2, base −1, volume 3; a 3 × 3 grid of 2s: 8.
+TEST_F(ApiFiles, HeightMapsFromRowsAndFilesAreOpenScadsSurfaces) {
+  expectVolume(Solid::heightMap({{0, 2}, {2, 4}}), 3.0);
+  expectVolume(Solid::heightMap({{2, 2, 2}, {2, 2, 2}, {2, 2, 2}}, true), 8.0);
+  // A short row is filled up with 0: {5} is {5, 0}; mean 2.5, base −1.
+  expectVolume(Solid::heightMap({{5}, {5, 0}}), 3.5);
+  const csgray::Bounds centred = Solid::heightMap({{2, 2, 2}, {2, 2, 2}, {2, 2, 2}}, true).bounds();
+  EXPECT_NEAR(centred.lo.x, -1.0, 1e-9);
+  EXPECT_NEAR(centred.hi.y, 1.0, 1e-9);
+  std::ofstream(path("heights.dat")) << "# two rows\n0 2\n2 4\n";
+  expectVolume(Solid::heightMapFile(path("heights.dat")), 3.0);
+  EXPECT_EQ(errorOf([] { Solid::heightMap({{1, 2}}); }).first, ErrorCode::InvalidArgument);
+  EXPECT_EQ(errorOf([] {
+              Solid::heightMap({{1, kNaN}, {1, 1}});
+            }).first,
+            ErrorCode::InvalidArgument);
+  std::ofstream(path("bad.dat")) << "0 2\n2 x\n";
+  const auto [code, message] = errorOf([&] { Solid::heightMapFile(path("bad.dat")); });
+  EXPECT_EQ(code, ErrorCode::IoError);
+  EXPECT_EQ(message.rfind("height_map: bad.dat:2:", 0), 0u) << message;
+  EXPECT_EQ(errorOf([&] { Solid::heightMapFile(path("none.dat")); }).first, ErrorCode::IoError);
+}
+
 TEST_F(ApiFiles, ImagesAreTheCommandsPixelForPixel) {
   for (const char* name : {"spot_light", "textured_box", "glass_and_mirror", "bracket"}) {
     const std::string script = std::string(CSGRAY_SOURCE_DIR "/examples/") + name + ".lua";

@@ -142,6 +142,21 @@ TEST(ApiRegion, TextIsTheFontsLetters) {
   EXPECT_EQ(errorOf([&] { Region::text("H", missing); }).first, ErrorCode::InvalidArgument);
 }
 
+// A ball of radius 5 raised by 3: the plane z = 0 cuts it in a circle of
+// radius 4; its shadow is a disc of radius 5. Both come from meshes within
+// 0.001 of the ball: the areas within that times the outline's length.
+TEST(ApiRegion, ProjectionsAreASolidsSectionAndShadow) {
+  const Solid ball = Solid::sphere(5).translate({0, 0, 3});
+  EXPECT_NEAR(Region::projection(ball, true).area(), 16 * kPi, 1e-3 * 2 * kPi * 4);
+  EXPECT_NEAR(Region::projection(ball).area(), 25 * kPi, 1e-3 * 2 * kPi * 5);
+  // Above the plane: no section.
+  EXPECT_EQ(Region::projection(Solid::sphere(1).translate({0, 0, 5}), true).area(), 0.0);
+  EXPECT_EQ(errorOf([] {
+              Region::projection(Solid::halfSpace({0, 0, 1}), true);
+            }).first,
+            ErrorCode::InvalidArgument);
+}
+
 // A region in a scene is a flat surface in z = 0: seen from above in an
 // orthographic view 10 wide, a ring of radii 2 and 4 covers the pixels
 // between those distances from the centre, not its hole or beyond.
