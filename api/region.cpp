@@ -22,6 +22,7 @@
 #include "profile/region_operations.h"
 #include "profile/shapes.h"
 #include "profile/svg_reader.h"
+#include "scene/resize.h"
 #include "scene/value_checks.h"
 
 namespace csgray {
@@ -205,6 +206,17 @@ Region Region::scale(double factor) const { return scale(Vec2{factor, factor}); 
 
 Region Region::mirror(const Vec2& normal) const {
   return mapped(*this, "mirror", [&] { return detail::mirrorMap(toDetail(normal), "mirror"); });
+}
+
+Region Region::resize(const Vec2& size, const std::array<bool, 2>& autoAxes) const {
+  return mapped(*this, "resize", [&] {
+    const detail::ProfileBounds b = detail::tightBounds(*impl_);
+    detail::Bounds box;
+    if (!b.empty()) box = detail::Bounds{detail::dvec3(b.lo, 0.0), detail::dvec3(b.hi, 0.0)};
+    const detail::dvec3 factors = detail::resizeFactors(box, detail::dvec3(size.x, size.y, 0.0),
+                                                        {autoAxes[0], autoAxes[1], false}, 2);
+    return detail::scaleMap({factors.x, factors.y}, "resize");
+  });
 }
 
 double Region::area() const {

@@ -12,6 +12,7 @@
 #include "api/errors.h"
 #include "check/exact_volume.h"
 #include "csgray/mesh.h"
+#include "engine/tight_bounds.h"
 #include "export/cgal/mesh_validity.h"
 #include "io/height_map_file.h"
 #include "io/image_file.h"
@@ -21,6 +22,7 @@
 #include "scene/height_map.h"
 #include "scene/hull_shapes.h"
 #include "scene/quadric_shapes.h"
+#include "scene/resize.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
 #include "scene/value_checks.h"
@@ -360,12 +362,24 @@ Solid Solid::transform(const Matrix4& rows) const {
       [&] { return wrap(impl_->transformed(detail::Affine::fromMatrix(toDetail(rows)))); });
 }
 
+Solid Solid::resize(const Vec3& size, const std::array<bool, 3>& autoAxes) const {
+  return guarded([&] {
+    const detail::dvec3 factors =
+        detail::resizeFactors(detail::tightBounds(*impl_), toDetail(size), autoAxes);
+    return wrap(impl_->transformed(detail::Affine::scaling(factors)));
+  });
+}
+
 Solid Solid::material(const Material& material) const {
   return guarded(
       [&] { return wrap(detail::solidWithMaterial(impl_.pointer(), toDetail(material))); });
 }
 
 Bounds Solid::bounds() const { return detail::toPublic(impl_->bounds()); }
+
+Bounds Solid::ownBounds() const {
+  return guarded([&] { return detail::toPublic(detail::tightBounds(*impl_)); });
+}
 
 bool Solid::contains(const Vec3& point) const { return impl_->contains(toDetail(point)); }
 

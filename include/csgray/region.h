@@ -7,6 +7,7 @@
 // gives.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -99,6 +100,10 @@ class CSGRAY_API Region {
   Region scale(double factor) const;
   // Reflection in the line through the origin with this normal.
   Region mirror(const Vec2& normal) const;
+  // OpenSCAD's resize(): scaled about the origin so that the region's own
+  // box gets these sizes; a size of 0 keeps its axis, or with autoAxes set
+  // for it scales it by the largest factor of the axes given.
+  Region resize(const Vec2& size, const std::array<bool, 2>& autoAxes = {}) const;
 
   // ---- Questions ---------------------------------------------------------------
   double area() const;

@@ -149,6 +149,10 @@ class CSGRAY_API Solid {
   // Reflection in the plane through the origin with this normal.
   Solid mirror(const Vec3& normal) const;
   Solid transform(const Matrix4& m) const;
+  // OpenSCAD's resize(): scaled about the origin so that the solid's own
+  // box (ownBounds) gets these sizes; a size of 0 keeps its axis, or with
+  // autoAxes set for it scales it by the largest factor of the axes given.
+  Solid resize(const Vec3& size, const std::array<bool, 3>& autoAxes = {}) const;
   // On a primitive, its material; on a boolean, the material of every
   // primitive below that has none of its own.
   Solid material(const Material& material) const;
@@ -164,6 +168,11 @@ class CSGRAY_API Solid {
   // Error for an unbounded solid, and for one whose volume is past the
   // largest double.
   double volume(int grid = 256) const;
+  // The box of the solid's own points, found by rays through it, as
+  // `csgray info` prints it: tighter than bounds() where a boolean's
+  // operands reach past it. A feature narrower than a 64th of the box
+  // along the axis may be missed. An unbounded solid's is bounds().
+  Bounds ownBounds() const;
   // "sphere", "union", ...
   std::string kind() const;
   // Primitives in the tree, a shared part counted once for each use.

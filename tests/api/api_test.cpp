@@ -146,6 +146,21 @@ TEST(ApiSolid, APartTurnedAtEachStepKeepsItsSize) {
   EXPECT_NEAR(mesh.volume(), 8.0, 1e-9);
 }
 
+// A cube of 10 less its top half: bounds() is the cube's (a difference's
+// box is its first operand's), ownBounds() the half's; resize measures that.
+TEST(ApiSolid, ResizeMeasuresTheSolidsOwnBox) {
+  const Solid half = Solid::box(10) - Solid::box({10, 10, 5}).translate({0, 0, 5});
+  EXPECT_NEAR(half.bounds().hi.z, 10.0, 1e-9);
+  EXPECT_NEAR(half.ownBounds().hi.z, 5.0, 1e-6);
+  EXPECT_NEAR(half.ownBounds().lo.x, 0.0, 1e-6);
+  // x to 20, the rest kept; then with every axis auto, all by 2 as x.
+  expectVolume(half.resize({20, 0, 0}), 1000.0);
+  expectVolume(half.resize({20, 0, 0}, {true, true, true}), 4000.0);
+  // z to 10 measures the half's 5: factor 2, as OpenSCAD's resize.
+  EXPECT_NEAR(half.resize({0, 0, 10}).ownBounds().hi.z, 10.0, 1e-6);
+  EXPECT_EQ(errorOf([&] { half.resize({-1, 0, 0}); }).first, ErrorCode::InvalidArgument);
+}
+
 TEST(ApiSolid, ContainsKnownPoints) {
   const Solid ball = Solid::sphere(1);
   EXPECT_TRUE(ball.contains({0, 0, 0}));

@@ -90,6 +90,10 @@ TEST(ApiRegion, MapsMoveTheRegionExactly) {
   EXPECT_EQ(mirrored.hi, (Vec2{0, 2}));
   EXPECT_DOUBLE_EQ(bar.scale(3).area(), 72.0);
   EXPECT_DOUBLE_EQ(bar.scale({0.5, 3}).area(), 12.0);
+  // resize: a unit circle 4 wide is an ellipse of half-axes 2 and 1, or
+  // with y auto a circle of radius 2.
+  EXPECT_NEAR(Region::circle(1).resize({4, 0}).area(), 2 * kPi, 1e-5);
+  EXPECT_NEAR(Region::circle(1).resize({4, 0}, {false, true}).area(), 4 * kPi, 1e-5);
   EXPECT_TRUE(bar.translate({10, 10}).contains({12, 11}));
   EXPECT_FALSE(bar.translate({10, 10}).contains({1, 1}));
 }
