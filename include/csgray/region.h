@@ -24,9 +24,12 @@ struct Access;
 
 class Solid;
 
-// The box of a region: its low and high corners.
+// The box of a region: its low and high corners; empty (lo > hi) for a
+// region without points (a shape offset inward past its middle).
 struct Bounds2 {
   Vec2 lo, hi;
+
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y; }
 };
 
 // What Region::text() writes and how (OpenSCAD's text() parameters).

@@ -77,6 +77,10 @@ TEST(ApiRegion, BooleansHullsAndOffsetsAreAnalytic) {
   EXPECT_NEAR(square.offsetDelta(o, true).area(),
               (s + 2 * o) * (s + 2 * o) - 4 * std::pow((std::sqrt(2.0) - 1) * o, 2), 1e-9);
   EXPECT_NEAR(square.offset(-o).area(), (s - 2 * o) * (s - 2 * o), 1e-9);
+  // Shrunk past its middle, nothing is left.
+  EXPECT_EQ(square.offset(-3).area(), 0.0);
+  EXPECT_TRUE(square.offset(-3).bounds().empty());
+  EXPECT_FALSE(square.bounds().empty());
 }
 
 TEST(ApiRegion, MapsMoveTheRegionExactly) {
