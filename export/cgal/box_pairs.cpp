@@ -5,7 +5,10 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <atomic>
 #include <span>
+
+#include "engine/cancellation.h"
 
 namespace csgray::detail {
 
@@ -125,9 +128,17 @@ void pairsSplit(std::span<FaceBox> boxes, const Report& report) {
 // the pairs are those between the straddlers of either below it and the
 // other's above, then those between a's and b's boxes below it, then
 // above it. The two halves are split on threads of their own, each into a
-// vector of its own, so the order is the same whatever the threads.
-void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, std::vector<FacePair>& pairs) {
-  const Report append = [&pairs](std::uint32_t f, std::uint32_t g) { pairs.emplace_back(f, g); };
+// vector of its own, so the order is the same whatever the threads. The
+// caller's cancel is read at each split (engine/cancellation.h).
+void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, std::vector<FacePair>& pairs,
+                const std::atomic<bool>* cancel) {
+  stopIfCancelled(cancel);
+  // (Also at each pair: boxes that reach across most of the part, a long
+  // rod's faces, leave halves that cannot be split, and CGAL takes seconds.)
+  const Report append = [&pairs, cancel](std::uint32_t f, std::uint32_t g) {
+    stopIfCancelled(cancel);
+    pairs.emplace_back(f, g);
+  };
   const std::size_t n = a.size() + b.size();
   if (n < kSmallestSplit || a.empty() || b.empty()) return crossPairs(a, b, append);
   const int axis = widestAxis(a, b);
@@ -148,8 +159,8 @@ void pairsSplit(std::span<FaceBox> a, std::span<FaceBox> b, std::vector<FacePair
   straddlers(bBelow, aAbove, axis, m, reaching, reached);
   crossPairs(reaching, reached, append, true);
   std::vector<FacePair> above;
-  tbb::parallel_invoke([&] { pairsSplit(aBelow, bBelow, pairs); },
-                       [&] { pairsSplit(aAbove, bAbove, above); });
+  tbb::parallel_invoke([&] { pairsSplit(aBelow, bBelow, pairs, cancel); },
+                       [&] { pairsSplit(aAbove, bAbove, above, cancel); });
   pairs.insert(pairs.end(), above.begin(), above.end());
 }
 
@@ -166,10 +177,12 @@ bool meet(const FaceBox& x, const FaceBox& y) {
   return true;
 }
 
-std::vector<FacePair> fewAgainstMany(const std::vector<FaceBox>& a, const std::vector<FaceBox>& b) {
+std::vector<FacePair> fewAgainstMany(const std::vector<FaceBox>& a, const std::vector<FaceBox>& b,
+                                     const std::atomic<bool>* cancel) {
   constexpr std::size_t kBlock = 4096;
   std::vector<std::vector<FacePair>> found((a.size() + kBlock - 1) / kBlock);
   tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+    stopIfCancelled(cancel);
     const std::size_t end = std::min(a.size(), (block + 1) * kBlock);
     for (std::size_t i = block * kBlock; i < end; ++i)
       for (const FaceBox& y : b)
@@ -188,9 +201,10 @@ void forEachMeetingPair(std::vector<FaceBox>& boxes, const Report& report) {
 }
 
 std::vector<FacePair> meetingPairs(std::vector<FaceBox>& a, std::vector<FaceBox>& b) {
-  if (std::min(a.size(), b.size()) <= kFewBoxes) return fewAgainstMany(a, b);
+  const std::atomic<bool>* cancel = cancelFlag();
+  if (std::min(a.size(), b.size()) <= kFewBoxes) return fewAgainstMany(a, b, cancel);
   std::vector<FacePair> pairs;
-  pairsSplit(a, b, pairs);
+  pairsSplit(a, b, pairs, cancel);
   return pairs;
 }
 

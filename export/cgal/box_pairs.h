@@ -44,7 +44,8 @@ using FacePair = std::pair<std::uint32_t, std::uint32_t>;
 // The pairs (f, g) of a box of a (mesh 0, face f) and a box of b (mesh 1,
 // face g) that meet, each once, found on several threads but in an order
 // fixed by the boxes given (the same vectors give the same order, however
-// many threads). The boxes are reordered.
+// many threads). The boxes are reordered. Throws Cancelled once the calling
+// thread's cancel flag is set (engine/cancellation.h).
 std::vector<FacePair> meetingPairs(std::vector<FaceBox>& a, std::vector<FaceBox>& b);
 
 }  // namespace csgray::detail

@@ -18,6 +18,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "engine/cancellation.h"
 #include "export/cgal/box_pairs.h"
 
 namespace csgray::detail {
@@ -106,6 +107,7 @@ class DoubleBoolean {
 
   std::optional<DoubleMesh> run(Boolean::Op op) {
     findCrossings();
+    stopIfCancelled(cancel_);
     // Once the crossings are found, each operand is cut and classified
     // from its own state (its edges' points, faces, pieces; the other's
     // point test, built by this operand only) and the shared points and
@@ -114,9 +116,11 @@ class DoubleBoolean {
     auto cutAndClassify = [this](int s) {
       sortEdgePoints(s);
       cutFaces(s);
+      stopIfCancelled(cancel_);
       classify(s);
     };
     tbb::parallel_invoke([&] { cutAndClassify(0); }, [&] { cutAndClassify(1); });
+    stopIfCancelled(cancel_);
     return assemble(op);
   }
 
@@ -167,6 +171,7 @@ class DoubleBoolean {
     constexpr std::size_t kBlock = 4096;
     std::vector<std::vector<EdgeThrough>> found((pairs.size() + kBlock - 1) / kBlock);
     tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t block) {
+      stopIfCancelled(cancel_);
       const std::size_t end = std::min(pairs.size(), (block + 1) * kBlock);
       for (std::size_t i = block * kBlock; i < end; ++i) edgesThrough(pairs[i], i, found[block]);
     });
@@ -460,6 +465,7 @@ class DoubleBoolean {
         pieces_[s].push_back({op.corners[f], f});
         continue;
       }
+      stopIfCancelled(cancel_);
       if (!cutOnce(s, f)) cutFace(s, f);
     }
   }
@@ -772,6 +778,9 @@ class DoubleBoolean {
   std::vector<std::vector<Id>> facePoints_[2];
   std::unordered_set<std::uint64_t> segments_;
   std::vector<Crossing> crossings_[2];
+  // The caller's cancel (engine/cancellation.h), read on every thread of
+  // the boolean's long steps: finding the crossings, cutting the faces.
+  const std::atomic<bool>* cancel_ = cancelFlag();
   std::vector<Piece> pieces_[2];
   std::vector<char> inside_[2];
   std::shared_ptr<CGAL::Surface_mesh<Point>> sideMeshes_[2];

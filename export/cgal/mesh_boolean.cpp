@@ -1887,16 +1887,20 @@ PartMesh meshInOrder(const Solid& solid, double tolerance, StoredCoordinate stor
   // A boolean in doubles leaves points on straight creases that hold no
   // shape (collinear_points.h): they go before the mesh is rounded, while
   // their sides are still flat to the last bits.
+  stopIfCancelled();  // (each of the finishing steps below takes a while on a large mesh)
   if (piece.doubles)
     dropCollinearPoints(piece.doubles->mesh, piece.doubles->tags, kCollinearReach * tolerance);
+  stopIfCancelled();
   const RoundedFaces faces = piece.doubles
                                  ? roundedFaces(DoubleSource{*piece.doubles}, frame, stored)
                                  : roundedFaces(ExactSource{piece.mesh}, frame, stored);
   piece = {};
+  stopIfCancelled();
   // The part's mesh from the rounded one, without the slivers a cut left
   // of solids it should have taken whole (removeStrayShells).
   auto partFrom = [&](const auto& mesh) {
     PartMesh made = partOf(mesh, evaluator.materials);
+    stopIfCancelled();
     counts.strayShells = removeStrayShells(made, solid, tolerance);
     return made;
   };

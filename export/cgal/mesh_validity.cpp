@@ -259,7 +259,11 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstCrossing(const Trian
   std::mutex lock;
   std::optional<std::pair<std::uint32_t, std::uint32_t>> first;
   std::atomic<std::size_t> found = 0;
+  // The longest step of an export's last test (a second for a million
+  // faces): the caller's cancel is read at each pair, on every thread.
+  const std::atomic<bool>* cancel = cancelFlag();
   forEachMeetingPair(boxes, [&](std::uint32_t x, std::uint32_t y) {
+    stopIfCancelled(cancel);
     // A broken mesh may cross itself millions of times: some are enough.
     if (found.load(std::memory_order_relaxed) > 64) return;
     const std::uint32_t f = std::min(x, y), g = std::max(x, y);
@@ -303,7 +307,9 @@ MeshDefect meshDefect(const TriangleMesh& mesh) {
                                           " and " + vertexText(mesh, t[2]) + " are on one line");
   }
   std::vector<std::uint32_t> across;
+  stopIfCancelled();
   if (MeshDefect found = checkEdges(mesh, across); !found.valid()) return found;
+  stopIfCancelled();
   if (MeshDefect found = checkVertices(mesh, across); !found.valid()) return found;
 
   stopIfCancelled();

@@ -39,8 +39,9 @@ struct ExportOptions {
   std::optional<MeshFormat> format = MeshFormat::Stl;
   bool ascii = false;  // text STL or PLY (give writeMesh the same)
   // Set by another thread, stops the export: exportMesh throws Error with
-  // ErrorCode::Cancelled at its next step: a primitive's mesh, a boolean,
-  // a step of CGAL's corefinement, the final test of the mesh.
+  // ErrorCode::Cancelled at its next step: a primitive's mesh, a step of a
+  // boolean, a step of the final test of the mesh (docs/library.md: within
+  // a fraction of a second on large parts).
   const std::atomic<bool>* cancel = nullptr;
 };
 

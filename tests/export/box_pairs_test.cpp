@@ -7,11 +7,14 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <mutex>
 #include <random>
 #include <set>
 #include <tuple>
 #include <utility>
+
+#include "engine/cancellation.h"
 
 namespace csgray::detail {
 namespace {
@@ -86,6 +89,25 @@ TEST(BoxPairs, BetweenTwoSetsEveryPairThatMeetsOnceInOrder) {
       EXPECT_EQ(again, order) << threads << " threads, " << na << " against " << nb;
     }
   }
+}
+
+// The pairs between two sets read the caller's cancel (the boolean in
+// doubles asks for them on large meshes): set, they stop, split or few
+// against many alike; clear, they are found.
+TEST(BoxPairs, BetweenTwoSetsTheyStopWhenCancelled) {
+  std::mt19937 random(20261129);
+  const std::vector<FaceBox> a = randomBoxes(5000, 60, 3, 0, random);
+  const std::vector<FaceBox> b = randomBoxes(4000, 60, 3, 1, random);
+  const std::vector<FaceBox> few = randomBoxes(12, 60, 40, 1, random);
+  std::atomic<bool> cancel = true;
+  const CancelScope scope(&cancel);
+  for (const std::vector<FaceBox>* other : {&b, &few}) {
+    std::vector<FaceBox> workA = a, workB = *other;
+    EXPECT_THROW(meetingPairs(workA, workB), Cancelled);
+  }
+  cancel = false;
+  std::vector<FaceBox> workA = a, workB = b;
+  EXPECT_FALSE(meetingPairs(workA, workB).empty());
 }
 
 TEST(BoxPairs, BoxesThatShareOneLowerSideAreNotSplitForever) {

@@ -164,6 +164,18 @@ TEST(ExactBoolean, StopsInsideCgalsCorefinementWhenCancelled) {
   EXPECT_NEAR(trianglesOf(c).volume(), 1000 + 7.0 / 8.0 * ball8, kTolerance * 4 * kPi * 16);
 }
 
+// The boolean in doubles reads the caller's cancel as it finds the
+// crossings and cuts the faces: set, it stops; clear, it is made.
+TEST(DoubleBoolean, StopsWhenCancelled) {
+  const DoubleMesh a = meshOf("return sphere{r=10}");
+  const DoubleMesh b = meshOf("return sphere{r=10}:translate(12, 0, 0)");
+  std::atomic<bool> cancel = true;
+  const CancelScope scope(&cancel);
+  EXPECT_THROW(doubleBoolean(a, b, Op::Union), Cancelled);
+  cancel = false;
+  EXPECT_TRUE(doubleBoolean(a, b, Op::Union).has_value());
+}
+
 TEST(DoubleBoolean, TopologyCountsShellsAndHandles) {
   // Two balls apart: two spheres (χ = 2 each). A box less a rod through
   // it: a torus (χ = 0).
