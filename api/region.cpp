@@ -235,8 +235,7 @@ void writeOutline(const Region& region, const std::string& path, double toleranc
     throw Error(ErrorCode::InvalidArgument,
                 "writeOutline: tolerance must be a number from 1e-6 to 1000 (model units)");
   if (!detail::outlineFormatFor(path))
-    throw Error(ErrorCode::InvalidArgument, std::filesystem::path(path).filename().string() +
-                                                ": unknown outline format; use .svg or .dxf");
+    throw Error(ErrorCode::InvalidArgument, path + ": unknown outline format; use .svg or .dxf");
   const detail::Profile outline =
       guarded([&] { return detail::evaluate(*Access::of(region), tolerance); });
   if (outline.loops.empty())

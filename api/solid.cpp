@@ -281,11 +281,13 @@ Solid Solid::heightMapFile(const std::string& path, bool center, bool invert) {
   } catch (const std::exception& e) {
     throw Error(ErrorCode::IoError, "height_map: " + std::string(e.what()));
   }
-  return guarded([&] {
+  // A file of too few rows or of heights that are not finite holds no grid
+  // to build: the file's fault, as one that is not numbers.
+  return guarded(ErrorCode::IoError, [&] {
     try {
       return wrap(detail::heightMapSolid(map, center));
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("height_map: " + name + ": " + e.what());
+      throw Error(ErrorCode::IoError, "height_map: " + name + ": " + e.what());
     }
   });
 }

@@ -60,6 +60,9 @@ Bounds Primitive::objectBoundsUnder(const Affine& worldFromObject) const {
 }
 
 bool Primitive::contains(const dvec3& p) const {
+  // A point that is no point is in no solid (a sweep's grid of cells
+  // would file a NaN somewhere).
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
   return objectContains(frame_.isIdentity() ? p : frame_.pointToObject(p));
 }
 

@@ -43,6 +43,7 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
   const double grown = std::max({1.0, scale_.x, scale_.y});
   SweepLoops loops = sweepLoops(*swept_->region(), 0.5 * tolerance / grown, "linear_extrude",
                                 prism() ? rims_ : std::vector<CircleRim>{}, tolerance, &pinched);
+  if (loops.empty()) return {};  // a region without points: no solid
   auto measure = [&](double& reach, double& longest, std::size_t& points) {
     reach = longest = 0.0;
     points = 0;

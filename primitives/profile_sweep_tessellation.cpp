@@ -220,6 +220,9 @@ SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,
   // flattened: loops that neither cross nor share an edge, outer ones
   // counter-clockwise, holes clockwise.
   const Profile evaluated = evaluate(region, tolerance);
+  // A boolean that leaves nothing (a disc less a larger one) sweeps into
+  // nothing: a cutter of nothing cuts nothing, as the render shows.
+  if (evaluated.loops.empty()) return {};
   if (pinched) *pinched = touchesItself(evaluated);
   auto loopsOf = [&](std::span<const CircleRim> on) {
     SweepLoops loops;

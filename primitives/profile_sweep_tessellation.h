@@ -21,8 +21,10 @@ using SweepLoops = std::vector<std::vector<dvec2>>;
 // The region evaluated (profile/region_evaluation.h) and flattened into
 // loops within `tolerance` of its edges (arcs by the sagitta rule; arcs on
 // `rims`, on a cylinder's rim polygon at rimTolerance: flatten()), outer
-// loops counter-clockwise, holes clockwise, none crossing another. Throws
-// std::invalid_argument naming kind for a region without area. pinched,
+// loops counter-clockwise, holes clockwise, none crossing another; none
+// for a region without points. Throws std::invalid_argument naming kind
+// for a region whose loops all flatten to nothing (thinner than the
+// tolerance). pinched,
 // if given, is set to whether the region touches itself at a point
 // (profile/pinch_points.h).
 SweepLoops sweepLoops(const Region& region, double tolerance, const char* kind,

@@ -43,6 +43,7 @@ Revolution::Turned Revolution::turned(double tolerance) const {
   bool pinched = false;
   SweepLoops loops =
       sweepLoops(*swept_->region(), 0.5 * tolerance, "rotate_extrude", {}, 0.0, &pinched);
+  if (loops.empty()) return {{}, 0, pinched};  // a region without points: no solid
   const double axisSlack = 1e-12 * swept_->size();
   double reach = 0.0;
   std::size_t points = 0;
@@ -83,6 +84,7 @@ Revolution::Turned Revolution::turned(double tolerance) const {
 
 TriangleMesh Revolution::objectTessellate(double tolerance, const Bounds&) const {
   const Turned made = turned(tolerance);
+  if (made.loops.empty()) return {};
   TriangleMesh mesh = revolvedLoops(made.loops, angleDegrees_, made.steps, fullTurn_);
   mesh.pinched = made.pinched;
   return mesh;

@@ -2,6 +2,8 @@
 
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>
+
+#include "profile/shapes.h"
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 #include <hb-ot.h>
@@ -318,6 +320,13 @@ RegionPtr textRegion(const TextLayout& layout) {
   if (!std::isfinite(layout.size) || !(layout.size > 0.0)) {
     std::ostringstream msg;
     msg << "size must be a positive number (got " << layout.size << ")";
+    fail(msg.str());
+  }
+  // (A line of letters reaches far past its size: a hundredth of the
+  // coordinates' limit leaves room for about a hundred of them.)
+  if (layout.size > kLargestCoordinate / 100.0) {
+    std::ostringstream msg;
+    msg << "size is too large (at most 1e148; got " << layout.size << ")";
     fail(msg.str());
   }
   if (!std::isfinite(layout.spacing) || !(layout.spacing > 0.0)) {

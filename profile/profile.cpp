@@ -127,6 +127,9 @@ void ProfileBounds::include(const ProfileBounds& b) {
 }
 
 bool Profile::contains(const dvec2& p) const {
+  // (A NaN or infinite point fails every comparison of the crossing tests
+  // alike, which can make an arc count it in.)
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
   bool inside = false;
   for (const ProfileLoop& loop : loops)
     for (const ProfileEdge& e : loop.edges) {

@@ -7,6 +7,7 @@
 
 #include "engine/degrees.h"
 #include "profile/region_evaluation.h"
+#include "profile/shapes.h"
 
 namespace csgray::detail {
 
@@ -20,9 +21,10 @@ RegionPtr mappedRegion(const Region& region, const Affine2& map, const char* fun
                                 ": the map squashes the plane (it is singular)");
   RegionPtr mapped = region.transformed(map);
   const ProfileBounds& b = mapped->bounds();
-  if (!b.empty() && !(std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.hi.x) &&
-                      std::isfinite(b.hi.y)))
-    throw std::invalid_argument(std::string(function) + ": the region's coordinates overflow");
+  if (!b.empty() && !(std::max({std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.hi.x),
+                                std::abs(b.hi.y)}) <= kLargestCoordinate))
+    throw std::invalid_argument(std::string(function) +
+                                ": the region's coordinates would pass 1e150");
   return mapped;
 }
 
@@ -61,6 +63,9 @@ RegionPtr offsetRegion(const Region& region, std::optional<double> r, std::optio
     throw std::invalid_argument("offset: needs r= (rounded) or delta= (with chamfer=true or not)");
   if (r && chamfer)
     throw std::invalid_argument("offset: chamfer goes with delta=, not with r= (which rounds)");
+  if (const double by = r ? *r : *delta; std::isfinite(by) && std::abs(by) > kLargestCoordinate)
+    throw std::invalid_argument(std::string("offset: ") + (r ? "r" : "delta") +
+                                " is too large (at most 1e150 either way)");
   const double tolerance = evaluationTolerance(region);
   return Region::leaf(r ? offsetRounded(region, *r, tolerance)
                         : offsetDelta(region, *delta, chamfer.value_or(false), tolerance));

@@ -12,9 +12,7 @@ namespace csgray::detail {
 
 namespace {
 
-// Coordinates past this would overflow in the squares of the evaluation
-// and the sweeps; no part is that large.
-constexpr double kLargest = 1e150;
+constexpr double kLargest = kLargestCoordinate;
 
 std::string shown(double v) {
   std::ostringstream s;

@@ -13,6 +13,11 @@
 
 namespace csgray::detail {
 
+// Coordinates past this would overflow in the squares of the evaluation
+// and the sweeps; no part is that large. Shapes, maps, offsets and text
+// are refused past it.
+inline constexpr double kLargestCoordinate = 1e150;
+
 // A width × height rectangle from the origin, or centred on it with
 // center; kind names it in messages ("square", "rectangle").
 RegionPtr rectangleRegion(const char* kind, double width, double height, bool center);

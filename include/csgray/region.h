@@ -1,8 +1,10 @@
 // 2D regions: the shapes of the plane that sweeps turn into solids
 // (Solid::linearExtrude, Solid::rotateExtrude), as a part script's 2D
-// regions are (docs/script.md, "2D regions"). Circles and arcs stay exact;
-// booleans of them are exact. A Region is an immutable value, cheap to
-// copy, as a Solid is. Invalid parameters throw csgray::Error with code
+// regions are (docs/script.md, "2D regions"). Circles and circular arcs
+// stay exact, and so do booleans, offsets and areas of them; an ellipse's
+// arcs (and a circle scaled unevenly) are evaluated as polygons within a
+// ten-millionth of the region's size. Coordinates are limited to 1e150. A Region is an immutable
+// value, cheap to copy, as a Solid is. Invalid parameters throw csgray::Error with code
 // InvalidArgument and the message the script function of the same name
 // gives.
 #pragma once
@@ -74,8 +76,10 @@ class CSGRAY_API Region {
   static Region fromDrawingFile(const std::string& path);
   // A solid's section by the plane z = 0 (cut), or its shadow on that plane,
   // as OpenSCAD's projection(): taken from its meshes, within a
-  // ten-thousandth of its size (at most 0.001) of the exact one. Error
-  // NotPrintable when its booleans cannot be meshed.
+  // ten-thousandth of its size (at most 0.001) of the exact one (a shadow
+  // of a difference or an intersection, meshed by the export's booleans
+  // first, within ten times that). Error InvalidArgument for an unbounded
+  // solid, NotPrintable when its booleans cannot be meshed.
   static Region projection(const Solid& solid, bool cut = false);
 
   // ---- Booleans, hulls, offsets -----------------------------------------------
@@ -123,7 +127,10 @@ class CSGRAY_API Region {
 
 // Writes the region's outline as SVG or DXF (by the extension), as `csgray
 // export part.svg` writes a script's regions: circular arcs as arcs, an
-// ellipse's arcs as lines within tolerance in DXF. Atomic, as writeImage.
+// ellipse's arcs as lines within tolerance. Atomic, as writeImage. DXF
+// keeps the coordinates; an SVG's page is the outline's box, so a drawing
+// read back from it (fromDrawingFile, OpenSCAD's import) has that box's
+// lower left corner at the origin.
 CSGRAY_API void writeOutline(const Region& region, const std::string& path,
                              double tolerance = 0.01);
 

@@ -95,18 +95,20 @@ class CSGRAY_API Solid {
   static Solid fromMeshFile(const std::string& path, bool repair = false,
                             std::string* repairReport = nullptr);
 
-  // ---- Hull and Minkowski (docs/script.md, "Hull and Minkowski") -------------
-  // The convex hull of shapes and unions of them.
   // OpenSCAD's surface(): a grid of heights as a solid (docs/script.md,
   // "Height maps"), rows[r][c] the height at x = c, y = r, one unit apart;
   // rows shorter than the longest are filled up with 0. center: centred on
   // the origin in x and y.
   static Solid heightMap(const std::vector<std::vector<double>>& rows, bool center = false);
   // The same from a text file of numbers or a PNG image's grey levels, as
-  // the script's height_map{file=} reads it (invert: the image's negative,
-  // as OpenSCAD's invert=true). A file that cannot be read, or is not
-  // numbers or a PNG image, is IoError.
+  // the script's height_map{file=} reads it (invert: heights 100/255 · (1 −
+  // luminance), from 0.39 down to −99.6, as OpenSCAD computes them). A
+  // file that cannot be read, or that holds no grid of numbers or PNG
+  // image, is IoError.
   static Solid heightMapFile(const std::string& path, bool center = false, bool invert = false);
+
+  // ---- Hull and Minkowski (docs/script.md, "Hull and Minkowski") -------------
+  // The convex hull of shapes and unions of them.
   static Solid hull(const std::vector<Solid>& solids);
   // The Minkowski sum, pair by pair from the first.
   static Solid minkowski(const std::vector<Solid>& solids);
@@ -171,7 +173,8 @@ class CSGRAY_API Solid {
   // The box of the solid's own points, found by rays through it, as
   // `csgray info` prints it: tighter than bounds() where a boolean's
   // operands reach past it. A feature narrower than a 64th of the box
-  // along the axis may be missed. An unbounded solid's is bounds().
+  // along the axis may be missed. Where the rays meet nothing (an
+  // unbounded or an empty solid) it is bounds().
   Bounds ownBounds() const;
   // "sphere", "union", ...
   std::string kind() const;

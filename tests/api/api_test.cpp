@@ -574,6 +574,9 @@ TEST_F(ApiFiles, HeightMapsFromRowsAndFilesAreOpenScadsSurfaces) {
   EXPECT_EQ(code, ErrorCode::IoError);
   EXPECT_EQ(message.rfind("height_map: bad.dat:2:", 0), 0u) << message;
   EXPECT_EQ(errorOf([&] { Solid::heightMapFile(path("none.dat")); }).first, ErrorCode::IoError);
+  // A file without a grid (empty, one row) holds nothing to build: IoError too.
+  std::ofstream(path("row.dat")) << "1 2 3\n";
+  EXPECT_EQ(errorOf([&] { Solid::heightMapFile(path("row.dat")); }).first, ErrorCode::IoError);
 }
 
 TEST_F(ApiFiles, ImagesAreTheCommandsPixelForPixel) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -99,6 +100,13 @@ TEST(ApiRegion, MapsMoveTheRegionExactly) {
   EXPECT_NEAR(Region::circle(1).resize({4, 0}).area(), 2 * kPi, 1e-5);
   EXPECT_NEAR(Region::circle(1).resize({4, 0}, {false, true}).area(), 4 * kPi, 1e-5);
   EXPECT_TRUE(bar.translate({10, 10}).contains({12, 11}));
+  // A point that is no point is in no region (an arc's crossing test
+  // counted it in).
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Region& r : {Region::circle(5), Region::circle(5) - Region::square(1), bar})
+    for (const Vec2& p : {Vec2{inf, 0}, Vec2{std::nan(""), 0}, Vec2{0, -inf}})
+      EXPECT_FALSE(r.contains(p));
+  EXPECT_FALSE(Solid::linearExtrude(Region::circle(5), 2).contains({std::nan(""), 0, 1}));
   EXPECT_FALSE(bar.translate({10, 10}).contains({1, 1}));
 }
 
@@ -132,6 +140,23 @@ TEST(ApiRegion, SweepsHaveTheVolumesOfTheirFormulas) {
   const csgray::Mesh mesh = csgray::exportMesh(plate);
   EXPECT_NEAR(mesh.volume(), (400 - 16 * kPi) * 3, 0.01 * 2 * (400 + 8 * kPi));
   EXPECT_EQ(csgray::meshDefect(mesh).kind, csgray::MeshDefect::Kind::None);
+}
+
+// A boolean of regions that leaves nothing sweeps into nothing: a cutter
+// of nothing cuts nothing, in the export as in the render; alone it is an
+// empty part.
+TEST(ApiRegion, ARegionWithoutPointsSweepsIntoNothing) {
+  const Region none = Region::circle(1) - Region::circle(2);
+  EXPECT_EQ(none.area(), 0.0);
+  const Solid box = Solid::box(10);
+  for (const Solid& cutter :
+       {Solid::linearExtrude(none, 2), Solid::rotateExtrude(none.translate({5, 0}))}) {
+    const csgray::Mesh mesh = csgray::exportMesh(box - cutter);
+    EXPECT_NEAR(mesh.volume(), 1000.0, 1e-9);
+    EXPECT_NEAR(Region::projection(box - cutter, true).area(), 100.0, 1e-9);
+  }
+  EXPECT_EQ(errorOf([&] { csgray::exportMesh(Solid::linearExtrude(none, 2)); }),
+            std::make_pair(ErrorCode::NotPrintable, std::string("the part is empty")));
 }
 
 TEST(ApiRegion, TextIsTheFontsLetters) {
