@@ -251,9 +251,7 @@ Solid Solid::linearExtrude(const Region& region, double height, const ExtrudeOpt
 }
 
 Solid Solid::rotateExtrude(const Region& region, double angle) {
-  return guarded([&] {
-    return Access::solid(detail::Primitive::create<detail::Revolution>(Access::of(region), angle));
-  });
+  return guarded([&] { return Access::solid(detail::revolutionSolid(Access::of(region), angle)); });
 }
 
 }  // namespace csgray

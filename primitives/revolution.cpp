@@ -158,6 +158,18 @@ SolidPtr Revolution::sweepOf(RegionPtr region) const {
   return placedAs(std::make_shared<Revolution>(std::move(region), angleDegrees_));
 }
 
+SolidPtr revolutionSolid(RegionPtr region, double angleDegrees) {
+  if (!std::isfinite(angleDegrees) || angleDegrees == 0.0 || std::abs(angleDegrees) > 360.0) {
+    std::ostringstream msg;
+    msg << "rotate_extrude: angle must be in [-360, 0) or (0, 360] degrees (got " << angleDegrees
+        << ")";
+    throw std::invalid_argument(msg.str());
+  }
+  SolidPtr solid = Primitive::create<Revolution>(std::move(region), std::abs(angleDegrees));
+  if (angleDegrees < 0.0) solid = solid->transformed(Affine::mirror(dvec3(0.0, 1.0, 0.0)));
+  return solid;
+}
+
 Revolution::Revolution(RegionPtr region, double angleDegrees)
     : angleDegrees_(angleDegrees),
       angle_(angleDegrees * std::numbers::pi / 180.0),

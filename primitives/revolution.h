@@ -22,6 +22,13 @@
 
 namespace csgray::detail {
 
+// rotate_extrude as users give it: an angle in (0, 360] turns the region
+// counter-clockwise seen from +z; one in [−360, 0) clockwise, as
+// OpenSCAD's does (the turn of its size mirrored in the xz plane). Throws
+// std::invalid_argument for an angle of 0 or past a turn either way, and
+// what Revolution throws.
+SolidPtr revolutionSolid(RegionPtr region, double angleDegrees);
+
 class Revolution : public PrimitiveShape<Revolution>, public RegionSweep {
  public:
   // Throws std::invalid_argument for an angle not in (0, 360], or a

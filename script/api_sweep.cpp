@@ -112,7 +112,7 @@ int rotateExtrude(lua_State* L) {
   LuaArgs args(L, lua_gettop(L), "rotate_extrude");
   const double angle = args.number("angle").value_or(360.0);
   args.finish();
-  pushSolid(L, Primitive::create<Revolution>(std::move(region), angle));
+  pushSolid(L, revolutionSolid(std::move(region), angle));
   return 1;
 }
 

@@ -120,7 +120,9 @@ class CSGRAY_API Solid {
   static Solid linearExtrude(const Region& region, double height,
                              const ExtrudeOptions& options = {});
   // The region, in the half-plane x >= 0 taken as the xz plane, turned
-  // about z by angle degrees from the x axis (OpenSCAD's rotate_extrude).
+  // about z by angle degrees from the x axis (OpenSCAD's rotate_extrude):
+  // counter-clockwise seen from +z, or clockwise for a negative angle;
+  // 0 < |angle| <= 360.
   static Solid rotateExtrude(const Region& region, double angle = 360.0);
 
   // A cylinder along +z whose rims are rounded with radius fillet: height

@@ -134,6 +134,12 @@ TEST(ApiRegion, SweepsHaveTheVolumesOfTheirFormulas) {
   const Region ring = Region::rectangle({1, 1}).translate({2, 0});
   EXPECT_NEAR(Solid::rotateExtrude(ring).volume(), 2 * kPi * 2.5, 1e-3 * 5 * kPi);
   EXPECT_NEAR(Solid::rotateExtrude(ring, 90).volume(), kPi * 2.5 / 2, 1e-3 * 5 * kPi);
+  // A negative angle turns clockwise, as OpenSCAD's: the quarter below +x.
+  const Solid clockwise = Solid::rotateExtrude(ring, -90);
+  EXPECT_NEAR(clockwise.volume(), kPi * 2.5 / 2, 1e-3 * 5 * kPi);
+  EXPECT_TRUE(clockwise.contains({0.1, -2.5, 0.5}));
+  EXPECT_FALSE(clockwise.contains({0.1, 2.5, 0.5}));
+  EXPECT_TRUE(Solid::rotateExtrude(ring, 90).contains({0.1, 2.5, 0.5}));
   // A swept part exports closed, near the exact volume.
   const Solid plate =
       Solid::linearExtrude(Region::square(20) - Region::circle(4).translate({10, 10}), 3);

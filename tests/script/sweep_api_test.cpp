@@ -91,9 +91,11 @@ TEST(SweepApi, BadInputIsAOneLineErrorNamingTheLine) {
               "rotate_extrude: the region lies on the side x < 0 of the axis (from x = -4), and "
               "every point must have x >= 0: mirror it first, r:mirror(1, 0)");
   expectError("return rotate_extrude{square(1):translate(1, 0), angle=0}",
-              "rotate_extrude: angle must be in (0, 360]");
+              "rotate_extrude: angle must be in [-360, 0) or (0, 360] degrees (got 0)");
   expectError("return rotate_extrude{square(1):translate(1, 0), angle=400}",
-              "angle must be in (0, 360]");
+              "angle must be in [-360, 0) or (0, 360]");
+  expectError("return rotate_extrude{square(1):translate(1, 0), angle=-400}",
+              "angle must be in [-360, 0) or (0, 360]");
   expectError("return rotate_extrude{42}", "rotate_extrude");
   expectError("return rotate_extrude()", "rotate_extrude: needs a region");
 }
