@@ -77,9 +77,12 @@ void setCheckOption(CheckOptions& options, const std::string& key, double value)
       throw std::invalid_argument("check: " + key + " must be a whole number from " +
                                   std::to_string(static_cast<long long>(option.lo)) + " to " +
                                   std::to_string(static_cast<long long>(option.hi)));
-    if (!inRange)
-      throw std::invalid_argument("check: " + key + " must be from " + std::to_string(option.lo) +
-                                  " to " + std::to_string(option.hi));
+    if (!inRange) {
+      // %g: "1e-06 to 1000", not std::to_string's "0.000001 to 1000.000000".
+      char range[64];
+      std::snprintf(range, sizeof range, "%g to %g", option.lo, option.hi);
+      throw std::invalid_argument("check: " + key + " must be from " + range);
+    }
     option.set(options, value);
     return;
   }
