@@ -209,14 +209,8 @@ Region Region::mirror(const Vec2& normal) const {
 }
 
 Region Region::resize(const Vec2& size, const std::array<bool, 2>& autoAxes) const {
-  return mapped(*this, "resize", [&] {
-    const detail::ProfileBounds b = detail::tightBounds(*impl_);
-    detail::Bounds box;
-    if (!b.empty()) box = detail::Bounds{detail::dvec3(b.lo, 0.0), detail::dvec3(b.hi, 0.0)};
-    const detail::dvec3 factors = detail::resizeFactors(box, detail::dvec3(size.x, size.y, 0.0),
-                                                        {autoAxes[0], autoAxes[1], false}, 2);
-    return detail::scaleMap({factors.x, factors.y}, "resize");
-  });
+  return mapped(*this, "resize",
+                [&] { return detail::regionResizeMap(*impl_, toDetail(size), autoAxes); });
 }
 
 double Region::area() const {

@@ -672,11 +672,8 @@ class Importer {
       return {s.solid->transformed(
                   Affine::scaling(resizeFactors(tightBounds(*s.solid), size, autoAxes))),
               nullptr};
-    const ProfileBounds b = tightBounds(*s.region);
-    const dvec3 f = resizeFactors(Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)}, size, autoAxes, 2);
-    Affine2 map;
-    map.linear = dmat2(f.x, 0.0, 0.0, f.y);
-    return {nullptr, s.region->transformed(map)};
+    return {nullptr, s.region->transformed(
+                         regionResizeMap(*s.region, dvec2(size), {autoAxes[0], autoAxes[1]}))};
   }
 
   Shape hullOf(const CsgNode& node) {

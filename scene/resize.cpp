@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "profile/region_evaluation.h"
+
 namespace csgray::detail {
 
 dvec3 resizeFactors(const Bounds& box, const dvec3& newSize, const std::array<bool, 3>& autoAxes,
@@ -32,6 +34,18 @@ dvec3 resizeFactors(const Bounds& box, const dvec3& newSize, const std::array<bo
   for (int i = 0; i < dims; ++i)
     if (newSize[i] == 0.0 && autoAxes[i]) factors[i] = largest;
   return factors;
+}
+
+Affine2 regionResizeMap(const Region& region, const dvec2& newSize,
+                        const std::array<bool, 2>& autoAxes) {
+  const ProfileBounds b = tightBounds(region);
+  Bounds box;
+  if (!b.empty()) box = Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)};
+  const dvec3 factors =
+      resizeFactors(box, dvec3(newSize, 0.0), {autoAxes[0], autoAxes[1], false}, 2);
+  Affine2 map;
+  map.linear = dmat2(factors.x, 0.0, 0.0, factors.y);
+  return map;
 }
 
 }  // namespace csgray::detail

@@ -6,6 +6,7 @@
 #include <array>
 
 #include "engine/bounds.h"
+#include "profile/region.h"
 
 namespace csgray::detail {
 
@@ -17,5 +18,11 @@ namespace csgray::detail {
 // that is to be resized.
 dvec3 resizeFactors(const Bounds& box, const dvec3& newSize, const std::array<bool, 3>& autoAxes,
                     int dims = 3);
+
+// The map of the plane that resizes the region: its own box
+// (tightBounds) scaled about the origin by resizeFactors in two
+// dimensions; autoAxes as there, for x and y.
+Affine2 regionResizeMap(const Region& region, const dvec2& newSize,
+                        const std::array<bool, 2>& autoAxes);
 
 }  // namespace csgray::detail

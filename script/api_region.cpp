@@ -393,13 +393,9 @@ int scale(lua_State* L) {
 int resize(lua_State* L) {
   const RegionPtr& region = receiver(L, "resize");
   const ResizeArgs args = resizeArgs(L, 2);
-  const ProfileBounds b = tightBounds(*region);
-  Bounds box;
-  if (!b.empty()) box = Bounds{dvec3(b.lo, 0.0), dvec3(b.hi, 0.0)};
-  const dvec3 factors = resizeFactors(box, args.size, args.autoAxes, 2);
-  Affine2 map;
-  map.linear = dmat2(factors.x, 0.0, 0.0, factors.y);
-  return pushMapped(L, "resize", map);
+  return pushMapped(
+      L, "resize",
+      regionResizeMap(*region, dvec2(args.size), {args.autoAxes[0], args.autoAxes[1]}));
 }
 
 // mirror(x, y): the reflection in the line through the origin with that
