@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -11,6 +12,98 @@
 #include "tessellation/tessellation.h"
 
 namespace csgray::detail {
+
+namespace {
+
+// The top of a sweep scaled by 0 on one axis is a segment along the other
+// (the seam), and each loop's top ring folds onto it. The mesh is a closed
+// 2-manifold only where every ring runs once along the seam and once back
+// (a loop monotone along that axis, as every convex one is: its two chains
+// meet face to face there) and no two rings share a piece of it.
+void requireSeamLoops(const TriangleMesh& mesh,
+                      const std::vector<std::vector<std::uint32_t>>& rings, int along) {
+  std::vector<std::pair<double, double>> spans;
+  for (const auto& ring : rings) {
+    // The senses of its steps along the seam, steps in place left out;
+    // a ring that runs once along and once back turns twice, cyclically.
+    std::vector<bool> forward;
+    double lo = kInfinity, hi = -kInfinity;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const double a = mesh.points[ring[i]][along];
+      const double b = mesh.points[ring[(i + 1) % ring.size()]][along];
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+      if (a != b) forward.push_back(b > a);
+    }
+    int turns = 0;
+    for (std::size_t i = 0; i < forward.size(); ++i)
+      turns += forward[i] != forward[(i + 1) % forward.size()];
+    if (turns != 2)
+      throw std::invalid_argument(
+          "linear_extrude: a scale of 0 on one axis folds the top onto a segment, and an outline "
+          "of this region runs back and forth along it (it must run once along and once back, as "
+          "a convex one does); use a small positive scale");
+    spans.emplace_back(lo, hi);
+  }
+  std::sort(spans.begin(), spans.end());
+  for (std::size_t i = 1; i < spans.size(); ++i)
+    if (spans[i].first <= spans[i - 1].second)
+      throw std::invalid_argument(
+          "linear_extrude: a scale of 0 on one axis folds the top onto a segment, and two of the "
+          "region's outlines (or an outline and its hole) would meet there; use a small positive "
+          "scale");
+}
+
+// The caps of a folded top have no area: dropped. The two chains of each
+// ring meet along the seam at different points; each side triangle with an
+// edge there is fanned from its third corner through the points of the
+// seam within that edge, so that the chains share every edge of the seam.
+void closeSeam(TriangleMesh& mesh, const std::vector<std::vector<std::uint32_t>>& rings,
+               int along) {
+  std::vector<bool> onSeam(mesh.points.size(), false);
+  std::vector<std::pair<double, std::uint32_t>> seam;
+  for (const auto& ring : rings)
+    for (const std::uint32_t v : ring)
+      if (!onSeam[v]) {
+        onSeam[v] = true;
+        seam.emplace_back(mesh.points[v][along], v);
+      }
+  std::sort(seam.begin(), seam.end());
+  std::vector<TriangleMesh::Triangle> kept;
+  kept.reserve(mesh.triangles.size());
+  for (const TriangleMesh::Triangle& t : mesh.triangles) {
+    int edge = -1, count = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (onSeam[t[i]]) ++count;
+      if (onSeam[t[i]] && onSeam[t[(i + 1) % 3]]) edge = i;
+    }
+    if (count == 3) continue;  // a cap's
+    if (edge < 0) {
+      kept.push_back(t);
+      continue;
+    }
+    const std::uint32_t from = t[edge], to = t[(edge + 1) % 3], apex = t[(edge + 2) % 3];
+    const double a = mesh.points[from][along], b = mesh.points[to][along];
+    std::uint32_t previous = from;
+    auto step = [&](std::uint32_t v) {
+      kept.push_back({apex, previous, v});
+      previous = v;
+    };
+    if (a < b) {
+      for (auto it = std::upper_bound(seam.begin(), seam.end(), std::make_pair(a, ~0u));
+           it != seam.end() && it->first < b; ++it)
+        step(it->second);
+    } else {
+      for (auto it = std::lower_bound(seam.begin(), seam.end(), std::make_pair(a, 0u));
+           it != seam.begin() && std::prev(it)->first > b; --it)
+        step(std::prev(it)->second);
+    }
+    step(to);
+  }
+  mesh.triangles = std::move(kept);
+}
+
+}  // namespace
 
 // The region's loops (within half the tolerance; circles on rims_, within
 // the whole, where nothing else uses it) placed at slices
@@ -64,10 +157,9 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
         "linear_extrude: scale 0 makes every loop of the region end in one point at the top, "
         "which no closed 2-manifold mesh can have with more than one loop; use a small "
         "positive scale");
-  if (!apex && (scale_.x == 0.0 || scale_.y == 0.0))
-    throw std::invalid_argument(
-        "linear_extrude: a scale of 0 on one axis flattens the top to a segment, which cannot be "
-        "exported; use scale 0 on both axes or a small positive scale");
+  // A scale of 0 on one axis flattens the top onto a segment of the other
+  // axis (the seam): the axis along it, or −1.
+  const int along = apex ? -1 : scale_.x == 0.0 ? 1 : scale_.y == 0.0 ? 0 : -1;
   const double half = 0.5 * tolerance;
   // A non-uniform scale bends a side quad over an edge of length ℓ out of
   // its plane by |sx − sy|·ℓ/(4N) between slices N apart.
@@ -156,6 +248,8 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
     // The apex is one point, not a ring.
     const bool top = apex && k == slices;
     if (top) mesh.points.emplace_back(0.0, 0.0, z);
+    // On the seam, points of one place are one point.
+    std::map<double, std::uint32_t> seam;
     levels[k].resize(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l)
       for (const dvec2& u : loops[l]) {
@@ -163,12 +257,22 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
           levels[k][l].push_back(std::uint32_t(mesh.points.size() - 1));
           continue;
         }
-        levels[k][l].push_back(std::uint32_t(mesh.points.size()));
         const dvec2 turned(c * u.x - s * u.y, s * u.x + c * u.y);
-        mesh.points.emplace_back(sigma.x * turned.x, sigma.y * turned.y, z);
+        dvec3 point(sigma.x * turned.x, sigma.y * turned.y, z);
+        if (along >= 0 && k == slices) {
+          point[1 - along] = 0.0;  // not −0
+          const auto [at, fresh] = seam.emplace(point[along], std::uint32_t(mesh.points.size()));
+          levels[k][l].push_back(at->second);
+          if (fresh) mesh.points.push_back(point);
+          continue;
+        }
+        levels[k][l].push_back(std::uint32_t(mesh.points.size()));
+        mesh.points.push_back(point);
       }
+    if (along >= 0 && k == slices) requireSeamLoops(mesh, levels[k], along);
   }
   addSweepFaces(mesh, loops, levels, false, false);
+  if (along >= 0) closeSeam(mesh, levels.back(), along);
   return mesh;
 }
 

@@ -314,6 +314,53 @@ TEST(LinearExtrusion, MeshesAreValidSolids) {
                   test::polygonArea(star));
 }
 
+// A scale of 0 on one axis folds the top onto a segment (OpenSCAD's
+// wedge, linear_extrude with scale [1, 0]): each loop's two chains meet
+// face to face along it, sharing every point of the seam. Volumes from
+// ∫σx·σy dζ; regions that would fold onto one piece of the seam more than
+// twice (a C, whose arms run back along it; a hole; two islands side by
+// side along it) are refused with a message saying so.
+TEST(LinearExtrusion, TopsFoldedOntoASegmentAreValidSolids) {
+  const RegionPtr square = test::rectangle({-1, -1}, {1, 1});
+  expectValidMesh(*extrude(square, 2.0, 0.0, dvec2(1.0, 0.0)), 0.001, 4.0 * 2.0 * 0.5);
+  expectVolume(extrude(square, 2.0, 0.0, dvec2(1.0, 0.0)), 4.0);
+  // Off the axis, flared along the seam, twisted, centred.
+  const RegionPtr offset = test::rectangle({3, 8}, {7, 14});
+  expectValidMesh(*extrude(offset, 10.0, 45.0, dvec2(2.0, 0.0), true), 0.001,
+                  24.0 * 10.0 * scaleFactor(dvec2(2.0, 0.0)));
+  expectValidMesh(*extrude(test::circle({0.5, 0.2}, 1.0), 2.0, 60.0, dvec2(0.0, 0.5)), 0.001,
+                  kPi * 2.0 * scaleFactor(dvec2(0.0, 0.5)));
+  // An L runs once along x and once back: its long side and its short
+  // arms meet the seam at different points.
+  const RegionPtr l =
+      test::regionOf({test::polygonLoop({{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 8}, {0, 8}})});
+  expectValidMesh(*extrude(l, 10.0, 0.0, dvec2(1.0, 0.0)), 0.001, 32.0 * 10.0 * 0.5);
+  expectValidMesh(*extrude(l, 10.0, 0.0, dvec2(0.0, 1.0)), 0.001, 32.0 * 10.0 * 0.5);
+  // Two islands apart along the seam.
+  const RegionPtr islands = Region::boolean(
+      Region::Op::Union, {test::rectangle({-10, 0}, {-6, 4}), test::circle({8, 0}, 2.0)});
+  expectValidMesh(*extrude(islands, 10.0, 0.0, dvec2(1.0, 0.0)), 0.001,
+                  (16.0 + 4.0 * kPi) * 10.0 * 0.5);
+  auto refusal = [](const std::shared_ptr<LinearExtrusion>& s) {
+    try {
+      s->tessellate(0.001, Bounds::everything());
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const RegionPtr c = test::regionOf(
+      {test::polygonLoop({{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 6}, {10, 6}, {10, 8}, {0, 8}})});
+  EXPECT_NE(refusal(extrude(c, 10.0, 0.0, dvec2(1.0, 0.0))).find("back and forth"),
+            std::string::npos);
+  // Folded the other way, the C runs once up and once down.
+  expectValidMesh(*extrude(c, 10.0, 0.0, dvec2(0.0, 1.0)), 0.001, 48.0 * 10.0 * 0.5);
+  EXPECT_NE(refusal(extrude(squareWithHole(), 2.0, 0.0, dvec2(1.0, 0.0))).find("would meet"),
+            std::string::npos);
+  EXPECT_NE(refusal(extrude(islands, 10.0, 0.0, dvec2(0.0, 1.0))).find("would meet"),
+            std::string::npos);
+}
+
 // Holes are joined to the outline by bridges, each from a hole's
 // rightmost point to a corner it sees; a later hole's bridge may meet an
 // earlier bridge and end at its corner, which the polygon then holds
