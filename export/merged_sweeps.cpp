@@ -136,11 +136,30 @@ SolidPtr merged(const SolidPtr& solid, bool evenTouching) {
           }
         }
     }
+    // The pairs whose boxes meet, by a sweep along x over the boxes in
+    // order of their left sides (all pairs were n²/2 tests whatever the
+    // operands: 5·10¹¹ for the million tetrahedra of a Sierpinski
+    // tetrahedron of level 10, none of them a sweep).
+    std::vector<std::size_t> order;
+    std::vector<ProfileBounds> boxes(n);
+    double reach = 0.0;  // the largest hair meet() allows
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (regions[i] && regions[j] && classOf[i] == classOf[j] &&
-            meet(regions[i]->bounds(), regions[j]->bounds()))
+      if (regions[i]) {
+        order.push_back(i);
+        const ProfileBounds& box = boxes[i] = regions[i]->bounds();
+        reach = std::max(reach, kHair * std::max({1.0, std::abs(box.lo.x), std::abs(box.lo.y),
+                                                  std::abs(box.hi.x), std::abs(box.hi.y)}));
+      }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::pair(boxes[a].lo.x, a) < std::pair(boxes[b].lo.x, b);
+    });
+    for (std::size_t k = 0; k < order.size(); ++k)
+      for (std::size_t m = k + 1; m < order.size(); ++m) {
+        const std::size_t i = std::max(order[k], order[m]), j = std::min(order[k], order[m]);
+        if (boxes[order[m]].lo.x > boxes[order[k]].hi.x + reach) break;
+        if (classOf[i] == classOf[j] && meet(boxes[i], boxes[j]))
           parent[rootOf(parent, i)] = rootOf(parent, j);
+      }
     // Each set of two or more, swept as one, takes the place of its first.
     std::vector<std::vector<std::size_t>> members(n);
     for (std::size_t i = 0; i < n; ++i)

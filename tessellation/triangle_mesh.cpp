@@ -8,7 +8,11 @@ namespace csgray::detail {
 void TriangleMesh::append(const TriangleMesh& other) {
   const auto offset = static_cast<std::uint32_t>(points.size());
   points.insert(points.end(), other.points.begin(), other.points.end());
-  triangles.reserve(triangles.size() + other.triangles.size());
+  // Grown geometrically, as push_back grows it: a reserve of exactly the
+  // sum copied the whole mesh at every append, and 10 000 pegs joined one
+  // by one copied gigabytes.
+  const std::size_t needed = triangles.size() + other.triangles.size();
+  if (needed > triangles.capacity()) triangles.reserve(std::max(needed, 2 * triangles.capacity()));
   for (const Triangle& t : other.triangles)
     triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   pinched = pinched || other.pinched;

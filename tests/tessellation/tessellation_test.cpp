@@ -280,6 +280,27 @@ void expectMeshOf(const Case& c, const TriangleMesh& mesh, double tolerance, dou
 // a face of the other: a pyramid's tip 10⁻⁴ over a box's top. Vertex to
 // vertex they are 5 apart; the shells are 10⁻⁴ apart, and nearestShells
 // (the check's "separate shells" warning) says so.
+// Shells appended one by one (an export joins thousands of parts whose
+// boxes are apart) keep their points and faces, renumbered, and the faces'
+// storage grows geometrically: 10 000 appends move it a few dozen times,
+// not at every append (which copied the whole mesh each time).
+TEST(Tessellation, AppendedShellsKeepTheirFacesAndGrowGeometrically) {
+  const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  TriangleMesh all;
+  int moves = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const auto* before = all.triangles.data();
+    all.append(tetrahedron);
+    moves += all.triangles.data() != before;
+  }
+  ASSERT_EQ(all.points.size(), 40000u);
+  ASSERT_EQ(all.triangles.size(), 40000u);
+  EXPECT_EQ(all.triangles[4 * 9999 + 3], (TriangleMesh::Triangle{39997, 39998, 39999}));
+  EXPECT_NEAR(all.volume(), 10000.0 / 6.0, 1e-9);
+  EXPECT_LE(moves, 40);
+}
+
 TEST(Tessellation, NearestShellsMeetVertexToFace) {
   TriangleMesh mesh = Primitive::create<Box>(dvec3(10.0))->tessellate(0.01, Bounds());
   const std::uint32_t base = std::uint32_t(mesh.points.size());
