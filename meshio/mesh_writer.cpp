@@ -210,19 +210,23 @@ MeshFormat meshFormatFor(const std::string& path) {
 
 namespace {
 
-double asFloat(double x) { return float(x); }
+// Each stores a zero as +0: CGAL's interval arithmetic takes other steps
+// where the compiler may use AVX, and a vertex its exact boolean puts on
+// z = 0 came out −0 in the x86-64-v3 build and +0 in the portable one
+// (−0 + 0 is +0 when rounding to nearest).
+double asFloat(double x) { return double(float(x)) + 0.0; }
 // OpenMesh prints a coordinate of an ASCII STL file as the float with ten
 // significant digits.
 double asTenDigits(double x) {
   char text[64];
   std::snprintf(text, sizeof text, "%.10g", double(float(x)));
-  return std::strtod(text, nullptr);
+  return std::strtod(text, nullptr) + 0.0;
 }
 // lib3mf 1.8 prints a coordinate as the float with "%f": six decimals.
 double asSixDecimals(double x) {
   char text[64];
   std::snprintf(text, sizeof text, "%f", double(float(x)));
-  return std::strtof(text, nullptr);
+  return double(std::strtof(text, nullptr)) + 0.0;
 }
 
 }  // namespace

@@ -363,6 +363,26 @@ TEST(Export, BinaryStlHoldsEachTriangleAsLittleEndianFloats) {
       EXPECT_EQ(back.points[back.triangles[f][k]], part.mesh.points[part.mesh.triangles[f][k]]);
 }
 
+// A coordinate as each format stores it: rounded to a float (and printed
+// so for ASCII STL and 3MF), and a zero of either sign stored as +0, so
+// that a vertex that one build's arithmetic puts at −0 and another's at +0
+// is written the same (an OBJ file read "v 4 4 -0").
+TEST(Export, StoredCoordinatesAreFloatsAndZeroIsPositive) {
+  for (const MeshFormat format :
+       {MeshFormat::Stl, MeshFormat::Obj, MeshFormat::Off, MeshFormat::Ply, MeshFormat::ThreeMf})
+    for (const bool ascii : {false, true}) {
+      const StoredCoordinate stored = storedCoordinate(format, ascii);
+      SCOPED_TRACE(int(format) * 2 + ascii);
+      EXPECT_NE(stored(0.1), 0.1);  // rounded, as a float is
+      EXPECT_NEAR(stored(0.1), 0.1, 1e-8);
+      EXPECT_EQ(stored(-2.5), -2.5);
+      for (const double zero : {0.0, -0.0, -1e-50}) {
+        EXPECT_EQ(stored(zero), 0.0);
+        EXPECT_FALSE(std::signbit(stored(zero))) << zero;
+      }
+    }
+}
+
 // A part turned or mirrored as a whole has the turn rounded into every
 // primitive's frame; flush faces (a hole as deep as the plate, a boss on
 // it) must still export, with the volume of the unturned part.
