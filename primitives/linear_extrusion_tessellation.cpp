@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/cancellation.h"
 #include "primitives/linear_extrusion.h"
 #include "primitives/profile_sweep_tessellation.h"
 #include "tessellation/tessellation.h"
@@ -240,7 +241,9 @@ TriangleMesh LinearExtrusion::objectTessellate(double tolerance, const Bounds&) 
   TriangleMesh mesh;
   mesh.pinched = pinched;
   SweepLevels levels(slices + 1);
+  const std::atomic<bool>* cancel = cancelFlag();  // read at each slice, as the sides are
   for (int k = 0; k <= slices; ++k) {
+    stopIfCancelled(cancel);
     const double zeta = double(k) / slices;
     const dvec2 sigma(1.0 + (scale_.x - 1.0) * zeta, 1.0 + (scale_.y - 1.0) * zeta);
     const double angle = -twist_ * zeta, c = std::cos(angle), s = std::sin(angle);

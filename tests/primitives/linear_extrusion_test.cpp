@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -15,6 +16,7 @@
 
 #include "check_support.h"
 #include "engine/boolean.h"
+#include "engine/cancellation.h"
 #include "export/cgal/mesh_validity.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
@@ -406,6 +408,17 @@ TEST(LinearExtrusion, CapsAreCutIntoLocalTriangles) {
   EXPECT_EQ(capTriangles, 1198);  // n − 2
   EXPECT_LE(*std::max_element(uses.begin(), uses.end()), 24);
   EXPECT_LE(boxes, 4.0 * test::polygonArea(star));
+}
+
+// A large sweep's mesh reads the caller's cancel at each slice and level
+// of sides: set, it stops; clear, it is made.
+TEST(LinearExtrusion, AMeshStopsWhenCancelled) {
+  const auto twisted = extrude(squareWithHole(), 2.0, 720.0);
+  std::atomic<bool> cancel = true;
+  const CancelScope scope(&cancel);
+  EXPECT_THROW(twisted->tessellate(0.001, Bounds::everything()), Cancelled);
+  cancel = false;
+  EXPECT_GT(twisted->tessellate(0.001, Bounds::everything()).size(), 1000u);
 }
 
 TEST(LinearExtrusion, RefusesBadParameters) {
