@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/watchdog.h"
 #include "engine/solid.h"
 #include "scene/scene.h"
 
@@ -55,7 +56,11 @@ Command infoCommand(CLI::App& app, ScriptArguments& script) {
       addScriptCommand(app, "info", "Print the bounds and tree size of a part script", script);
   addScriptOptions(*info, script);
   return {info, [](const PartScript& part) {
-            printInfo(part.path(), part.run());
+            const Scene scene = part.run();
+            // The bounds by rays of a large part take long (400 letters:
+            // 20 s): --timeout covers them too.
+            const Watchdog limit(part.timeLeft(), part.timedOut());
+            printInfo(part.path(), scene);
             return 0;
           }};
 }

@@ -838,6 +838,11 @@ fi
 expect_exit 1 "check past --timeout" "" check "$work/holes.lua" --tolerance 0.001 --timeout 1
 expect_in_stderr "check past --timeout" "holes.lua: the check took longer than --timeout 1 s"
 if [ ! -s "$work/stdout" ]; then pass; else fail "a check past --timeout printed a report"; fi
+# info's bounds by rays of a part of 400 letters take about 20 s; --timeout
+# ends them too.
+printf 'return linear_extrude{text{string.rep("W", 400)}, height=1}\n' > "$work/letters.lua"
+expect_exit 1 "info past --timeout" "" info "$work/letters.lua" --timeout 1
+expect_in_stderr "info past --timeout" "letters.lua: the info command took longer than --timeout 1 s"
 # The script's time counts: --timeout ends it even below --script-timeout.
 expect_exit 1 "script past --timeout" "" info "$work/pattern.lua" --timeout 0.5
 expect_in_stderr "script past --timeout" "pattern.lua: the info command took longer than --timeout 0.5 s"
