@@ -86,7 +86,11 @@ CheckReport checkMeshAgainstSolid(const Solid& solid, const TriangleMesh& mesh,
 CheckReport checkPrintedPart(const Scene& scene, const std::string& script,
                              const CheckOptions& options,
                              const std::function<void(const std::string& message)>& warn) {
-  return checkPart(*printedPart(scene, script, "check", warn), options);
+  const SolidPtr part = printedPart(scene, script, "check", warn);
+  // Refused as the export refuses it, before a mesh that floats cannot
+  // hold is made (a ball of radius 10¹⁸: 20 s and 1.3 GB to learn so).
+  checkFloatPrecision(*part, options.tolerance, script);
+  return checkPart(*part, options);
 }
 
 CheckReport checkPart(const Solid& solid, const CheckOptions& options) {

@@ -838,6 +838,13 @@ fi
 expect_exit 1 "check past --timeout" "" check "$work/holes.lua" --tolerance 0.001 --timeout 1
 expect_in_stderr "check past --timeout" "holes.lua: the check took longer than --timeout 1 s"
 if [ ! -s "$work/stdout" ]; then pass; else fail "a check past --timeout printed a report"; fi
+# A part past where 32-bit floats hold the tolerance: export and check
+# refuse it alike, before any mesh (the check made one of 1.3 GB first).
+printf 'return sphere(1e18)\n' > "$work/far.lua"
+expect_exit 1 "export of a far part" "" export "$work/far.lua" -o "$work/far.stl" --timeout 10
+expect_in_stderr "export of a far part" "far.lua: the part reaches 1e+18 from the origin"
+expect_exit 1 "check of a far part" "" check "$work/far.lua" --timeout 10
+expect_in_stderr "check of a far part" "far.lua: the part reaches 1e+18 from the origin"
 # info's bounds by rays of a part of 400 letters take about 20 s; --timeout
 # ends them too.
 printf 'return linear_extrude{text{string.rep("W", 400)}, height=1}\n' > "$work/letters.lua"
