@@ -26,8 +26,13 @@ namespace mesh_reading {
 std::string shown(std::string_view token) { return "\"" + printableToken(token, 32) + "\""; }
 
 std::string numberText(double value) {
+  // Whole numbers (counts, indices) in full: %g wrote index 2147483648 as
+  // 2.14748e+09.
   char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
+  if (value == std::floor(value) && std::abs(value) < 1e18)
+    std::snprintf(text, sizeof text, "%.0f", value);
+  else
+    std::snprintf(text, sizeof text, "%g", value);
   return text;
 }
 

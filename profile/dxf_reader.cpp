@@ -209,11 +209,12 @@ class DxfReader {
     std::string_view s = g.value;
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
     auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (error != std::errc() || end != s.data() + s.size() || s.empty())
+    if (error != std::errc() || end != s.data() + s.size() || s.empty() || std::isnan(v))
       fail(g.line + 1, "expected a number for group code " + std::to_string(g.code) + ", found '" +
                            printableToken(g.value, 40) + "'");
     if (!std::isfinite(v) || std::abs(v) > 1e15)
-      fail(g.line + 1, "the number " + printableToken(g.value, 40) + " is too large");
+      fail(g.line + 1,
+           "the number " + printableToken(g.value, 40) + " is too large (at most 1e15 either way)");
     return v;
   }
 

@@ -22,7 +22,8 @@ std::shared_ptr<MeshSolid> heightMapSolid(const HeightMap& map, bool center) {
   double lowest = 0.0;  // OpenSCAD's base is never above z = -1 + the lowest, nor above 0
   for (double h : map.heights) {
     if (!std::isfinite(h) || std::abs(h) > 1e15)
-      throw std::invalid_argument("a height map's heights must be finite numbers");
+      throw std::invalid_argument(
+          "a height map's heights must be finite numbers of at most 1e15 either way");
     lowest = std::min(lowest, h - 1.0);
   }
   const double base = lowest;

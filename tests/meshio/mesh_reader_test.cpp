@@ -199,6 +199,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "of the file holds (truncated?)"},
         BadFile{"out_of_range_ascii.ply",
                 "out_of_range_ascii.ply:29: face 5: vertex index 70 is out of range (8 vertices)"},
+        // A whole number in full, not as 3e+09.
+        BadFile{"huge_index_ascii.ply",
+                "huge_index_ascii.ply:29: face 5: vertex index 3000000000 is out of range (8 "
+                "vertices)"},
         BadFile{"inf_be.ply", "inf_be.ply: byte 499: vertex 7: coordinate inf is not finite"},
         BadFile{"no_faces.ply", "no_faces.ply: the file has no faces"}),
     [](const auto& info) {

@@ -228,6 +228,10 @@ TEST(DxfReader, BadFilesAreOneLineErrors) {
             "part.dxf:5: expected a group code (a whole number), found 'LINE'");
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1.5x\n"),
             "part.dxf:8: expected a number for group code 10, found '1.5x'");
+  EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nnan\n"),
+            "part.dxf:8: expected a number for group code 10, found 'nan'");
+  EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1e16\n"),
+            "part.dxf:8: the number 1e16 is too large (at most 1e15 either way)");
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n"),
             "part.dxf:7: group code 10 has no value");
   EXPECT_EQ(error("0\nSECTION\n2\nENTITIES\n" + line(0, 0, 1, 1)),
