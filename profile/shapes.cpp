@@ -12,8 +12,6 @@ namespace csgray::detail {
 
 namespace {
 
-constexpr double kLargest = kLargestCoordinate;
-
 std::string shown(double v) {
   std::ostringstream s;
   s << v;
@@ -26,7 +24,7 @@ void requirePositive(const std::string& function, const char* what, double v) {
     throw std::invalid_argument(function + ": " + what + " must be finite (got " + shown(v) + ")");
   if (!(v > 0.0))
     throw std::invalid_argument(function + ": " + what + " must be > 0 (got " + shown(v) + ")");
-  if (v > kLargest)
+  if (v > kLargestCoordinate)
     throw std::invalid_argument(function + ": " + what + " is too large (got " + shown(v) + ")");
 }
 
@@ -78,7 +76,7 @@ RegionPtr rectangleRegion(const char* kind, double width, double height, bool ce
     throw std::invalid_argument(function + ": size must be finite" + given);
   if (!(width > 0.0) || !(height > 0.0))
     throw std::invalid_argument(function + ": size must be > 0" + given);
-  if (width > kLargest || height > kLargest)
+  if (width > kLargestCoordinate || height > kLargestCoordinate)
     throw std::invalid_argument(function + ": size is too large" + given);
   const dvec2 lo = center ? dvec2(-width / 2, -height / 2) : dvec2(0.0);
   const dvec2 hi = lo + dvec2(width, height);
@@ -108,8 +106,8 @@ RegionPtr polygonRegion(const std::vector<dvec2>& points,
                         const std::vector<std::vector<std::size_t>>& paths) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const dvec2& p = points[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kLargest ||
-        std::abs(p.y) > kLargest)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kLargestCoordinate ||
+        std::abs(p.y) > kLargestCoordinate)
       throw std::invalid_argument("polygon: points[" + std::to_string(i + 1) +
                                   "] must be finite and at most 1e150 (got " + shown(p.x) + ", " +
                                   shown(p.y) + ")");

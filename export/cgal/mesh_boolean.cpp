@@ -923,7 +923,7 @@ class Evaluator {
     // among its neighbours: the earlier pieces whose boxes, grown by what
     // meetInUnion and hairApart allow, meet its own (a scan of every
     // group's members for each piece was n² for a union of n parts that
-    // touch, 10¹² for the million tetrahedra of a Sierpinski tetrahedron of
+    // touch, 5·10¹¹ for the million tetrahedra of a Sierpinski tetrahedron of
     // level 10).
     const std::vector<std::vector<std::uint32_t>> earlier = earlierNeighbours(pieces);
     std::vector<std::vector<std::size_t>> groups;
