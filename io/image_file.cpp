@@ -6,12 +6,12 @@
 #include <array>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/file_bytes.h"
 #include "io/image_formats.h"
 #include "io/input_file.h"
 #include "io/png_file.h"
@@ -89,10 +89,7 @@ void writeImageUncommitted(AtomicFile& file, const std::string& path, int width,
   std::optional<PngEncoder> own;
   PngEncoder& encoder = started ? *started : own.emplace(width, height);
   std::string png = encoder.finish(pngRows(rgb, width, data), threads);
-  std::ofstream out(file.tempPath(), std::ios::binary);
-  out.write(png.data(), std::streamsize(png.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path + ": write failed");
+  writeFileBytes(file.tempPath(), path, png.data(), png.size());
 }
 
 TextureImage readTextureImage(const std::string& path) {

@@ -3,6 +3,7 @@
 // other than PNG is written or read: Debian's OpenImageIO pulls
 // in about 260 shared libraries, whose loading would otherwise cost every
 // run ~0.2 s and ~100 MB before any work.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
@@ -18,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/file_bytes.h"
 #include "io/image_formats.h"
 #include "io/srgb.h"
 
@@ -91,6 +93,43 @@ class CapturedStderr {
   std::size_t size_ = 0;
 };
 
+// An image file in memory, written at any position as a file is (TIFF
+// seeks back to patch offsets in its header; OpenImageIO's own vector
+// proxy appends every write whatever the position, which breaks it).
+class MemoryFile : public OIIO::Filesystem::IOProxy {
+ public:
+  MemoryFile() : IOProxy("", Write) {}
+  const char* proxytype() const override { return "csgray memory"; }
+  std::size_t write(const void* data, std::size_t size) override {
+    const std::size_t written = pwrite(data, size, m_pos);
+    m_pos += int64_t(written);
+    return written;
+  }
+  std::size_t pwrite(const void* data, std::size_t size, int64_t offset) override {
+    if (offset < 0) return 0;
+    const std::size_t end = std::size_t(offset) + size;
+    if (end > bytes_.size()) bytes_.resize(end);
+    std::copy_n(static_cast<const char*>(data), size, bytes_.begin() + offset);
+    return size;
+  }
+  std::size_t read(void* data, std::size_t size) override {
+    const std::size_t got = pread(data, size, m_pos);
+    m_pos += int64_t(got);
+    return got;
+  }
+  std::size_t pread(void* data, std::size_t size, int64_t offset) override {
+    if (offset < 0 || std::size_t(offset) >= bytes_.size()) return 0;
+    const std::size_t got = std::min(size, bytes_.size() - std::size_t(offset));
+    std::copy_n(bytes_.begin() + offset, got, static_cast<char*>(data));
+    return got;
+  }
+  std::size_t size() const override { return bytes_.size(); }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
 bool keepsFloat(const std::string& formatName) {
   return formatName == "openexr" || formatName == "hdr" || formatName == "pfm";
 }
@@ -112,6 +151,16 @@ void write(const std::string& tempPath, const std::string& path, int width, int 
            const float* rgb, ImageData data) {
   auto out = OIIO::ImageOutput::create(tempPath);
   if (!out) throw std::runtime_error("cannot write " + path + ": " + oneLine(OIIO::geterror()));
+  // Encoded into memory, then written by csgray, where the format allows:
+  // libjpeg, failing to write a file (a full disk), prints its own line
+  // and ends the process, which leaves the temporary file behind; the BMP
+  // and Targa writers do not notice, and report a file with holes as
+  // written; others name the temporary instead of the file asked for.
+  // Not TIFF: OpenImageIO 2.4 writes it to memory without its last
+  // directory (unreadable), and it reports a failed write to a file itself.
+  MemoryFile memory;
+  const bool inMemory = out->format_name() != std::string("tiff") && out->supports("ioproxy") &&
+                        out->set_ioproxy(&memory);
   bool linear = keepsFloat(out->format_name());
   OIIO::ImageSpec spec(width, height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   bool encode = !linear && data == ImageData::LinearColor;
@@ -119,12 +168,14 @@ void write(const std::string& tempPath, const std::string& path, int width, int 
   std::vector<float> pixels(rgb, rgb + static_cast<size_t>(width) * height * 3);
   if (encode)
     for (float& v : pixels) v = encodeSrgb(v);
-  if (!out->open(tempPath, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
-      !out->close()) {
+  // (In memory, the name is the file's own: DPX keeps it in its header.)
+  if (!out->open(inMemory ? path : tempPath, spec) ||
+      !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
     std::string why = out->geterror();
     throw std::runtime_error("cannot write " + path + ": " +
                              (why.empty() ? "write failed" : oneLine(why)));
   }
+  if (inMemory) writeFileBytes(tempPath, path, memory.bytes().data(), memory.bytes().size());
 }
 
 TextureImage read(const std::string& path) {

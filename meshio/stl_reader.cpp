@@ -117,6 +117,10 @@ TriangleMesh readAsciiStl(std::string_view bytes, const std::string& name,
             if (!tokens.next(token)) fail(where, "a vertex needs x, y and z");
             p[axis] = coordinate(token, where);
           }
+          // A fourth number is no part of STL: a mangled line, or a file
+          // of another kind, whose points would be read wrong.
+          if (tokens.next(token))
+            fail(where, "a vertex has x, y and z only; this line has more (" + shown(token) + ")");
           corner[corners++] = builder.vertex(p);
         }
         break;
@@ -131,6 +135,19 @@ TriangleMesh readAsciiStl(std::string_view bytes, const std::string& name,
   if (state == State::InSolid) fail(atEnd, "the file ends without endsolid (truncated?)");
   if (state != State::Outside) fail(atEnd, "the file ends inside a facet (truncated?)");
   return builder.finish();
+}
+
+// Are at least three bytes in four printable ASCII or white space? In a
+// binary STL's floats, NULs and bytes past 0x7e are about half (0.5f is
+// 00 00 00 3F, -2.75f 00 00 30 C0), and 61 % of random bytes; in an ASCII
+// STL they are the odd stray byte, or a name in UTF-8.
+bool mostlyText(std::string_view bytes) {
+  std::size_t other = 0;
+  for (char c : bytes) {
+    const auto byte = static_cast<unsigned char>(c);
+    other += !(std::isprint(byte) || std::isspace(byte));
+  }
+  return other * 4 <= bytes.size();
 }
 
 }  // namespace
@@ -155,8 +172,9 @@ TriangleMesh readStl(std::string_view bytes, const std::string& name,
       return readAsciiStl(bytes, name, limits);
     } catch (const std::invalid_argument& e) {
       // Binary data after a "solid" header: say so rather than only what
-      // the ASCII reader tripped on.
-      if (sized && bytes.find('\0') != std::string_view::npos)
+      // the ASCII reader tripped on. (Not for a text file with a stray
+      // control byte: its line says more than a count read from its text.)
+      if (sized && !mostlyText(bytes.substr(84, 4096)))
         fail(name, "a binary STL whose header begins with \"solid\", declaring " +
                        std::to_string(declared) + " triangles (" + std::to_string(binarySize) +
                        " bytes) in a file of " + std::to_string(bytes.size()) + " bytes");

@@ -63,10 +63,15 @@ std::optional<double> svgNumber(std::string_view text) {
 std::string svgExcerpt(std::string_view text) {
   std::string out;
   for (char c : text.substr(0, 30))
-    if (!isSpace(c))
-      out += c;
-    else if (out.empty() || out.back() != ' ')
-      out += ' ';
+    if (isSpace(c)) {
+      if (out.empty() || out.back() != ' ') out += ' ';
+    } else {
+      // Another control byte as '?': a NUL would end the message there
+      // (an exception's text is a C string), an escape would reach the
+      // terminal.
+      const auto byte = static_cast<unsigned char>(c);
+      out += byte < 0x20 || byte == 0x7f ? '?' : c;
+    }
   return text.size() > 30 ? out + "..." : out;
 }
 

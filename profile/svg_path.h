@@ -48,7 +48,8 @@ std::size_t svgNumberEnd(std::string_view text, std::size_t at);
 // The value of a number so scanned; nullopt past ±10¹⁵ or not finite.
 std::optional<double> svgNumber(std::string_view text);
 // A piece of the file's text as messages quote it: on one line (its white
-// space made single spaces), at most 30 characters (then "...").
+// space made single spaces, other control bytes shown as "?"), at most 30
+// characters (then "...").
 std::string svgExcerpt(std::string_view text);
 
 // A list of numbers separated by white space and commas (the points of

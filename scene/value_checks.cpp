@@ -60,13 +60,20 @@ int checkWhole(const std::string& function, const char* key, double value, int l
 }
 
 std::string shownValue(std::string_view text, std::size_t length) {
-  if (text.size() <= length) return std::string(text);
-  // The cuts move off UTF-8 continuation bytes, not to split a character.
-  auto continues = [&](std::size_t i) { return (text[i] & 0xC0) == 0x80; };
-  std::size_t head = length * 2 / 3, tail = text.size() - (length - head - 3);
-  while (head > 0 && continues(head)) --head;
-  while (tail < text.size() && continues(tail)) ++tail;
-  return std::string(text.substr(0, head)) + "..." + std::string(text.substr(tail));
+  std::string shown;
+  if (text.size() <= length) {
+    shown = text;
+  } else {
+    // The cuts move off UTF-8 continuation bytes, not to split a character.
+    auto continues = [&](std::size_t i) { return (text[i] & 0xC0) == 0x80; };
+    std::size_t head = length * 2 / 3, tail = text.size() - (length - head - 3);
+    while (head > 0 && continues(head)) --head;
+    while (tail < text.size() && continues(tail)) ++tail;
+    shown = std::string(text.substr(0, head)) + "..." + std::string(text.substr(tail));
+  }
+  // A message is an exception's text, a C string: a NUL would end it here.
+  std::replace(shown.begin(), shown.end(), '\0', '?');
+  return shown;
 }
 
 std::size_t editDistance(std::string_view a, std::string_view b) {

@@ -36,7 +36,7 @@ int checkWhole(const std::string& function, const char* key, double value, int l
 // A value a user gave, as a message shows it: at most 60 characters (or
 // `length`), the middle of a longer one left out ("..."), so that a value
 // of 100 000 characters does not fill the screen while a long path keeps
-// its start and its file name.
+// its start and its file name; a NUL byte shown as '?'.
 std::string shownValue(std::string_view text, std::size_t length = 60);
 
 }  // namespace csgray::detail

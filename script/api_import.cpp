@@ -92,11 +92,10 @@ int heightMap(lua_State* L) {
   args.finish();
   if (!file)
     throw std::invalid_argument("height_map: needs file=\"terrain.dat\" (numbers) or a PNG image");
-  const ScriptOptions& options = scriptOptionsOf(L);
   const std::string path = scriptFile(L, "height_map", *file);
   std::shared_ptr<MeshSolid> solid;
   try {
-    const HeightMap map = readHeightMap(path, *file, invert, options.loadImage);
+    const HeightMap map = readHeightMap(path, *file, invert, scriptImageLoader(L, *file));
     // Charged at what building the mesh takes before it is built (about
     // 800 bytes a triangle at the peak, measured on maps of 256 and 512
     // squared), so that a map past the memory limit stops at once rather

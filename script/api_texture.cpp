@@ -111,11 +111,16 @@ int imageTexture(lua_State* L) {
         "image_texture: mapping must be \"planar\", \"spherical\", "
         "\"cylindrical\" or \"box\", got \"" +
         shortened(mappingName) + "\"");
-  const ScriptOptions& options = scriptOptionsOf(L);
-  if (!options.loadImage)
-    throw std::invalid_argument("image_texture: this program cannot read images");
-  std::string path = scriptFile(L, "image_texture", *file);
-  auto image = std::make_shared<TextureImage>(options.loadImage(path));
+  const auto load = scriptImageLoader(L, *file);
+  if (!load) throw std::invalid_argument("image_texture: this program cannot read images");
+  const std::string path = scriptFile(L, "image_texture", *file);
+  TextureImage loaded;
+  try {
+    loaded = load(path);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("image_texture: " + std::string(e.what()));
+  }
+  auto image = std::make_shared<TextureImage>(std::move(loaded));
   Sandbox::of(L).charge(L, image->rgb.size() * sizeof(float));
   TexturePtr texture = placedImage(std::move(image), mapping, placement);
   args.finish();

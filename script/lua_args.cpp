@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string_view>
 
 #include "scene/color_names.h"
 #include "scene/value_checks.h"
@@ -69,6 +70,12 @@ std::optional<std::string> LuaArgs::string(const char* key) {
   const char* text = lua_tolstring(L_, -1, &length);
   std::string v(text, length);
   lua_pop(L_, 1);
+  // What reads these strings (the file system, fontconfig, HarfBuzz'
+  // languages) would stop at a NUL byte and take the rest for the whole.
+  if (v.find('\0') != std::string::npos)
+    throw std::invalid_argument(function_ + ": " + key +
+                                (std::string_view(key) == "file" ? " name" : "") +
+                                " contains a NUL byte");
   return v;
 }
 

@@ -576,9 +576,14 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
     // An abort raised as a memory error carries Lua's generic text.
     message = abortWhere_ + abortReason_;
   } else {
-    message = lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER
-                  ? lua_tostring(L_, -1)
-                  : std::string("error(") + luaL_typename(L_, -1) + ") without a message";
+    if (lua_type(L_, -1) == LUA_TSTRING || lua_type(L_, -1) == LUA_TNUMBER) {
+      // With its length: a message may hold NUL bytes (error("a\0b")).
+      std::size_t length = 0;
+      const char* text = lua_tolstring(L_, -1, &length);
+      message.assign(text, length);
+    } else {
+      message = std::string("error(") + luaL_typename(L_, -1) + ") without a message";
+    }
     std::string hint = unknownCallHint(L_, message);
     // Else what an OpenSCAD user may have meant on the line of the error.
     if (hint.empty() || hint.starts_with("; did you mean"))
@@ -593,9 +598,14 @@ int Sandbox::run(const std::string& source, const std::string& chunkName) {
   // position (binary chunks, C stack overflow, non-string errors).
   if (message.rfind(chunkName + ":", 0) != 0) message = chunkName + ": " + message;
   // One line: a message with line breaks of its own is folded, and one
-  // that the script made endless is cut.
+  // that the script made endless is cut. A NUL byte would end the
+  // exception's text (a C string) there: shown as '?', as the terminal's
+  // line shows other control bytes.
   for (char& c : message)
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r')
+      c = ' ';
+    else if (c == '\0')
+      c = '?';
   throw ScriptError(shortened(message, kLongestMessage));
 }
 

@@ -14,6 +14,27 @@ std::string scriptFile(lua_State* L, const std::string& function, const std::str
   return allowedFile(function, name, options.folder, options);
 }
 
+std::function<TextureImage(const std::string& path)> scriptImageLoader(lua_State* L,
+                                                                       const std::string& name) {
+  const ScriptOptions& options = scriptOptionsOf(L);
+  if (!options.loadImage) return {};
+  return [load = options.loadImage, name](const std::string& path) {
+    try {
+      return load(path);
+    } catch (const std::runtime_error& e) {
+      // csgray's loader says "cannot read texture image <path>: why";
+      // another program's may say anything about the path.
+      std::string message = e.what();
+      const std::string own = "cannot read texture image " + path + ": ";
+      if (message.starts_with(own)) message = name + ": " + message.substr(own.size());
+      for (std::size_t at = message.find(path); !path.empty() && at != std::string::npos;
+           at = message.find(path, at + name.size()))
+        message.replace(at, path.size(), name);
+      throw std::invalid_argument(message);
+    }
+  };
+}
+
 std::string allowedFile(const std::string& function, const std::string& name,
                         const std::string& relativeTo, const ScriptOptions& options) {
   namespace fs = std::filesystem;

@@ -2,6 +2,7 @@
 // untrusted, so they may not read /etc/passwd as a texture.
 #pragma once
 
+#include <functional>
 #include <lua.hpp>
 #include <string>
 
@@ -13,6 +14,14 @@ namespace csgray::detail {
 // script's folder, and not outside it or the --allow-path folders; throws
 // std::invalid_argument otherwise.
 std::string scriptFile(lua_State* L, const std::string& function, const std::string& name);
+
+// The script's image loader (ScriptOptions::loadImage) for the image the
+// script named `name`, found at path (scriptFile): its
+// errors name the file as the script did, "name: why", not by the
+// absolute path the loader is given (std::invalid_argument). Empty if the
+// program has none.
+std::function<TextureImage(const std::string& path)> scriptImageLoader(lua_State* L,
+                                                                       const std::string& name);
 
 // The same rule without a script running: name relative to the folder
 // `relativeTo`, which must lead into options.folder or one of

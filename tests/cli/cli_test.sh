@@ -22,6 +22,7 @@ printf 'return box(1) +\n' > "$work/syntax.lua"
 printf 'error({})\n' > "$work/table_error.lua"
 printf 'error("first\\nsecond")\n' > "$work/multiline.lua"
 printf 'error("\\27[2J\\27[31mred")\n' > "$work/escape.lua"
+printf 'error("before\\0after")\n' > "$work/nul.lua"
 printf 'return half_space{normal={0, 0, 1}}\n' > "$work/unbounded.lua"
 # Backtracking in C, where no Lua instruction is counted: only the
 # script time limit ends it.
@@ -127,6 +128,8 @@ expect_in_stderr "multi-line error" "multiline.lua:1: first second"
 # An escape sequence in a script's error cannot clear the terminal.
 expect_failure "escape in an error" "$work/out.png" render "$work/escape.lua" -o "$work/out.png"
 expect_in_stderr "escape in an error" "escape.lua:1: ?[2J?[31mred"
+expect_failure "NUL in an error" "$work/out.png" render "$work/nul.lua" -o "$work/out.png"
+expect_in_stderr "NUL in an error" "nul.lua:1: before?after"
 expect_failure "unbounded without camera" "$work/out.png" render "$work/unbounded.lua" -o "$work/out.png"
 expect_in_stderr "unbounded without camera" "unbounded.lua: cannot frame an unbounded solid"
 # OpenSCAD's source is not run as Lua: the message says how to make a .csg.
@@ -597,6 +600,31 @@ if [ "$failed" -eq "$failed_before" ]; then
   expect_exit 1 "export to /dev/full" "" export "$work/part.lua" -o /dev/full
   if [ -c /dev/full ] && [ ! -L /dev/full ]; then pass; else fail "/dev/full is no longer a device"; fi
 fi
+# A write that fails part way (a full disk; here the shell's file size
+# limit of 8 KiB, with SIGXFSZ ignored so that write() fails with EFBIG):
+# one line naming the file, the old file as it was, no temporary left.
+# libjpeg ended the process on a failed write, leaving its temporary; the
+# BMP and Targa writers reported a file with holes as written.
+mkdir "$work/limited"
+for format in png jpg exr bmp tga hdr tif stl obj off ply 3mf; do
+  case $format in
+    stl | obj | off | ply | 3mf) command=(export "$work/part.lua" --tolerance 0.01) ;;
+    *) command=(render "$work/part.lua" --size 1024x768) ;;
+  esac
+  target=$work/limited/out.$format
+  printf 'old\n' > "$target"
+  (ulimit -f 8; trap '' XFSZ; "$csgray" "${command[@]}" -o "$target" >"$work/stdout" 2>"$work/stderr")
+  code=$?
+  if [ $code -ne 1 ] || [ "$(wc -l <"$work/stderr")" -ne 1 ] ||
+     ! grep -qF "csgray: error: cannot write $target: " "$work/stderr"; then
+    fail "$format past the file size limit: exit $code, stderr:"; cat "$work/stderr"
+  elif [ "$(cat "$target")" != old ] || [ "$(ls -A "$work/limited" | wc -l)" -ne 1 ]; then
+    fail "$format past the file size limit: $(ls -lA "$work/limited")"
+  else
+    pass
+  fi
+  rm -f "$target"
+done
 mkfifo "$sp/out.png" "$sp/out.stl" "$sp/out.obj" "$sp/aov2.normal.exr"
 expect_exit 1 "render to a FIFO" "" render "$work/part.lua" -o "$sp/out.png"
 expect_in_stderr "render to a FIFO" "cannot write $sp/out.png: it is a FIFO, not a regular file"
@@ -680,7 +708,7 @@ done
 for image in half.png head.png junk.png half.jpg head.jpg; do
   printf 'return box(1):material{color=image_texture{file="%s"}}\n' "$image" > "$cr/tex.lua"
   expect_exit 1 "corrupt texture $image" "$cr/out.png" render "$cr/tex.lua" -o "$cr/out.png"
-  expect_in_stderr "corrupt texture $image" "tex.lua:1: cannot read texture image $cr/$image: "
+  expect_in_stderr "corrupt texture $image" "tex.lua:1: image_texture: $image: "
 done
 csgray=$plain_csgray
 # ---- options refused, and the limits of a run (docs/cli.md, "What is refused

@@ -384,6 +384,18 @@ TEST(MeshReader, TwoCoordinatesAreRefusedAtTheirLine) {
             "t.ply:11: vertex 1: the line has more values than the header declares");
   // Not even a number: the token is named.
   EXPECT_EQ(readTetrahedronError("obj", "1 0 z"), "t.obj:2: \"z\" is not a number");
+  // STL's vertex has three numbers, no more (OBJ's may have a w and a
+  // colour, OFF's a colour).
+  EXPECT_EQ(readTetrahedronError("stl", "1 0 0 1"),
+            "t.stl:6: a vertex has x, y and z only; this line has more (\"1\")");
+}
+
+// An ASCII STL with a stray NUL byte is refused at its line, as text: not
+// taken for a binary file because its bytes hold a NUL.
+TEST(MeshReader, AStrayNulInAnAsciiStlIsNamedAtItsLine) {
+  const std::string e = readTetrahedronError("stl", std::string("1 0\0 0", 7));
+  EXPECT_EQ(e.rfind("t.stl:6: ", 0), 0u) << e;
+  EXPECT_EQ(e.find("binary"), std::string::npos) << e;
 }
 
 // Denormal coordinates are finite, and read.

@@ -351,6 +351,12 @@ TEST(SvgReader, BadDrawingsAreOneLineErrors) {
             "part.svg:1: width: \"mm CAD and more words than ...\" is not a unit of length");
   EXPECT_EQ(error(page("<rect width='10' height='10' transform='turn(3)'/>")),
             "part.svg:2: transform: \"turn\" is not a transform");
+  // A NUL byte (or another control byte) quoted as '?': it would end the
+  // message there, or reach the terminal.
+  constexpr char kControlBytes[] = "<rect width='10' height='10' transform='tu\0rn\x1b(3)'/>";
+  EXPECT_EQ(error(page(std::string(kControlBytes, sizeof kControlBytes - 1))),
+            "part.svg:2: transform: expected matrix(...), translate(...), scale(...), rotate(...), "
+            "skewX(...) or skewY(...), found \"tu?rn?(3)\"");
   EXPECT_EQ(error(page("<rect width='10' height='10' transform='rotate(1 2)'/>")),
             "part.svg:2: transform: rotate takes 1 or 3 numbers, not 2");
   EXPECT_EQ(error(page("<line x2='10' stroke-width='2mm'/>")),

@@ -992,5 +992,20 @@ TEST(ScriptScene, HugeListsAreCharged) {
       "(no error)");
 }
 
+// A NUL byte in a string parameter would end it early where fontconfig,
+// HarfBuzz or the file system read it: refused. In a value a message
+// quotes (or an error's own text), it shows as '?' rather than ending
+// the message there.
+TEST(ScriptStrings, ANulByteIsRefusedOrShown) {
+  EXPECT_EQ(scriptError("return linear_extrude{text{'Hi', font='DejaVu Sans\\0Bold'}, height=1}"),
+            "part.lua:1: text: font contains a NUL byte");
+  EXPECT_EQ(scriptError("return linear_extrude{text{'H\\0i'}, height=1}"),
+            "part.lua:1: text: text contains a NUL byte");
+  EXPECT_EQ(scriptError("return import_svg{file='a.svg\\0.png'}"),
+            "part.lua:1: import_svg: file name contains a NUL byte");
+  expectError("return box(1):material{color='red\\0x'}", "color 'red?x' is not a colour name");
+  EXPECT_EQ(scriptError("error('before\\0after')"), "part.lua:1: before?after");
+}
+
 }  // namespace
 }  // namespace csgray::detail
