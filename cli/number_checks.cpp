@@ -42,6 +42,9 @@ const CLI::Validator toleranceRange =
 
 const CLI::Validator lengthRange = numberRange(0.0, 1e6, "0 to 1e6", "model units", "LENGTH");
 
+const CLI::Validator timeoutRange =
+    numberRange(0.0, 1e6, "0 to 1e6", "seconds; 0: no limit", "SECONDS");
+
 const CLI::Validator rayCountRange =
     numberRange(0.0, 1e18, "0 to 1e18", "rays; 0: no limit", "RAYS");
 

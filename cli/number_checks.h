@@ -13,6 +13,8 @@ extern const CLI::Validator decimal;
 extern const CLI::Validator toleranceRange;
 // A wall or gap: 0 to 10⁶ model units.
 extern const CLI::Validator lengthRange;
+// A time limit: 0 (no limit) to 10⁶ seconds, about eleven days.
+extern const CLI::Validator timeoutRange;
 // A count of rays: 0 (no limit) to 10¹⁸.
 extern const CLI::Validator rayCountRange;
 

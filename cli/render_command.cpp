@@ -8,9 +8,9 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/aov_images.h"
@@ -24,6 +24,7 @@
 #include "io/image_formats.h"
 #include "raytrace/ray_estimate.h"
 #include "raytrace/renderer.h"
+#include "scene/value_checks.h"
 #include "view/file_watcher.h"
 
 namespace csgray::detail {
@@ -68,15 +69,26 @@ void checkRayBound(const Scene& scene, const RenderOptions& options, double maxR
 
 // "1024x768" to width and height; throws CLI::ValidationError.
 std::pair<int, int> parseSize(const std::string& text) {
-  std::smatch m;
-  if (!std::regex_match(text, m, std::regex(R"((\d{1,6})[xX](\d{1,6}))")))
-    throw CLI::ValidationError("--size",
-                               "expected WIDTHxHEIGHT, e.g. 1024x768, got '" + text + "'");
-  int w = std::stoi(m[1]), h = std::stoi(m[2]);
+  // Digits, x, digits (scanned by hand: std::regex recurses per character,
+  // and a size of a million digits would overflow the stack).
+  const std::size_t x = text.find_first_of("xX");
+  auto digits = [](std::string_view s) {
+    return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+  };
+  const std::string_view all(text);
+  if (x == std::string::npos || !digits(all.substr(0, x)) || !digits(all.substr(x + 1)))
+    throw CLI::ValidationError(
+        "--size", "expected WIDTHxHEIGHT, e.g. 1024x768, got '" + shownValue(text) + "'");
+  // A side of more than 6 digits is out of range, whatever its value.
+  auto side = [](std::string_view s) {
+    return s.size() > 6 ? kMaxSide + 1 : std::stoi(std::string(s));
+  };
+  const int w = side(all.substr(0, x)), h = side(all.substr(x + 1));
   if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide || long(w) * h > kMaxPixels)
-    throw CLI::ValidationError("--size", "image size " + text + " is out of range (1 to " +
-                                             std::to_string(kMaxSide) + " per side, at most " +
-                                             std::to_string(kMaxPixels) + " pixels)");
+    throw CLI::ValidationError("--size", "image size " + shownValue(text) +
+                                             " is out of range (1 to " + std::to_string(kMaxSide) +
+                                             " per side, at most " + std::to_string(kMaxPixels) +
+                                             " pixels)");
   return {w, h};
 }
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cli/mesh_tools.h"
+#include "cli/number_checks.h"
 #include "cli/warning.h"
 #include "cli/watchdog.h"
 #include "io/image_file.h"
@@ -13,14 +14,6 @@
 namespace csgray::detail {
 
 namespace {
-
-// 0 (no limit) up to about eleven days; NaN is refused.
-const CLI::Validator timeoutRange(
-    [](const std::string& text) -> std::string {
-      double v = std::strtod(text.c_str(), nullptr);
-      return v >= 0.0 && v <= 1e6 ? "" : "must be a number of seconds from 0 to 1e6";
-    },
-    "SECONDS");
 
 // -D name=value pairs.
 std::vector<std::pair<std::string, std::string>> parseDefines(

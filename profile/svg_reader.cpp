@@ -276,9 +276,14 @@ class SvgReader {
     const XmlAttribute* a = e.attribute(name);
     if (!a) return std::nullopt;
     const std::optional<Length> l = splitLength(a->value);
-    if (!l)
-      fail(a->line,
-           a->name + ": expected a length, found \"" + svgExcerpt(trimmed(a->value)) + "\"");
+    if (!l) {
+      // A number past the range (1e20) is not "not a length".
+      const std::string value = trimmed(a->value);
+      if (const std::size_t end = svgNumberEnd(value, 0); end > 0)
+        fail(a->line, a->name + ": the number " + svgExcerpt(value.substr(0, end)) +
+                          " is out of range");
+      fail(a->line, a->name + ": expected a length, found \"" + svgExcerpt(value) + "\"");
+    }
     if (l->unit == "em" || l->unit == "ex")
       fail(a->line, a->name + ": lengths in " + l->unit +
                         " depend on a font; give them in mm, cm, in, pt, pc or px");

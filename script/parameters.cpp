@@ -311,8 +311,14 @@ ParameterValue plainDefineValue(const std::string& name, const std::string& text
     return value;
   }
   const std::string refused = "-D " + shownValue(name) + "=" + shownValue(text) + ": ";
-  if (text.size() >= 2 && text.front() == '{' && text.back() == '}') {
-    auto numbers = numberList(std::string_view(text).substr(1, text.size() - 2));
+  // A value that opens a brace is a vector, one that lacks its closing
+  // brace a typo rather than a string; a string may start with a brace in
+  // quotes ("{a}").
+  if (!text.empty() && (text.front() == '{' || text.back() == '}')) {
+    auto numbers =
+        text.size() >= 2 && text.front() == '{' && text.back() == '}'
+            ? numberList(std::string_view(text).substr(1, text.size() - 2))
+            : std::nullopt;
     if (!numbers)
       throw DefineError(refused + "a vector is finite numbers between braces, e.g. {90,60,30}");
     value.kind = ParameterKind::Vector;

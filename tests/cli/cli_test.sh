@@ -142,6 +142,9 @@ expect_failure "plane without camera" "$work/out.png" render "$work/plane_only.l
 expect_in_stderr "plane without camera" "plane_only.lua: cannot frame an unbounded surface such as a plane"
 expect_failure "NaN timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout nan
 expect_failure "huge timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --script-timeout 1e10
+# A word is refused in csgray's words, as a number out of range is.
+expect_exit 2 "word for a timeout" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --timeout abc
+expect_in_stderr "word for a timeout" "--timeout: must be a number from 0 to 1e6 (seconds; 0: no limit)"
 expect_failure "output is a folder" "" render "$work/part.lua" -o "$work"
 mkdir -p "$work/dir.png"
 expect_failure "output is a folder named like an image" "" render "$work/part.lua" -o "$work/dir.png"
@@ -170,6 +173,9 @@ expect_failure "zero size" "$work/out.png" render "$work/part.lua" -o "$work/out
 expect_failure "absurd size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 100000x100000
 expect_failure "too many pixels" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 16000x16000
 expect_failure "malformed size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size big
+# A side of many digits is a size out of range, not a malformed one.
+expect_exit 2 "size of many digits" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 1x67108864
+expect_in_stderr "size of many digits" "--size: image size 1x67108864 is out of range"
 expect_failure "negative threads" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --threads -1
 expect_failure "unknown format" "$work/out.xyz" render "$work/part.lua" -o "$work/out.xyz"
 expect_in_stderr "unknown format" "unknown image format '.xyz'"

@@ -344,6 +344,9 @@ TEST(SvgReader, BadDrawingsAreOneLineErrors) {
   EXPECT_EQ(error("<svg width='1em' height='1mm'/>"),
             "part.svg:1: width: lengths in em depend on a font; give them in mm, cm, in, pt, pc or "
             "px");
+  EXPECT_EQ(error("<svg width='1e400mm'/>"), "part.svg:1: width: the number 1e400 is out of range");
+  EXPECT_EQ(error(page("<rect width='1e20' height='1'/>")),
+            "part.svg:2: width: the number 1e20 is out of range");
   EXPECT_EQ(error("<svg width='10furlongs'/>"),
             "part.svg:1: width: \"furlongs\" is not a unit of length");
   // What the file says is quoted on one line, and cut short.

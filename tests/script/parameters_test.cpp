@@ -143,6 +143,13 @@ TEST(Parameters, DefineTakesVectors) {
             "-D size={1,,2}: a vector is finite numbers between braces, e.g. {90,60,30}");
   EXPECT_EQ(defineError("return box(1)", "size", "{1,inf}"),
             "-D size={1,inf}: a vector is finite numbers between braces, e.g. {90,60,30}");
+  // A brace left open (or a closing one alone) is a typo, not a string;
+  // in quotes it is one.
+  EXPECT_EQ(defineError("return box(1)", "size", "{1,2"),
+            "-D size={1,2: a vector is finite numbers between braces, e.g. {90,60,30}");
+  EXPECT_EQ(defineError("return box(1)", "size", "1,2}"),
+            "-D size=1,2}: a vector is finite numbers between braces, e.g. {90,60,30}");
+  EXPECT_EQ(defineError("assert(size == '{1,2') return box(1)", "size", "'{1,2'"), "(no error)");
 }
 
 TEST(Parameters, LinesKeepTheirNumbersWhenADefineReplacesADefault) {
