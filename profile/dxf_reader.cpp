@@ -59,6 +59,10 @@ struct Drawing {
   struct Insert {
     std::string block;
     Affine2 map;  // block coordinates (less the block's base point) to ours
+    // An array of copies (MINSERT): columns × rows, each moved by
+    // column·columnStep + row·rowStep from the first.
+    int columns = 1, rows = 1;
+    dvec2 columnStep{0.0}, rowStep{0.0};
     int line = 0;
   };
   std::vector<ProfileEdge> edges;
@@ -221,6 +225,20 @@ class DxfReader {
   double number(const Record& r, int code, double fallback) const {
     const Group* g = find(r, code);
     return g ? number(*g) : fallback;
+  }
+
+  // A count of copies (an INSERT's columns or rows): a whole number, by
+  // default 1; 0, as some writers put it for no array, is 1 too. (Past
+  // kMaxInserts, collect stops at the limit.)
+  int count(const Record& r, int code) const {
+    const Group* g = find(r, code);
+    if (!g) return 1;
+    const double v = number(*g);
+    if (!(v >= 0.0) || v != std::floor(v))
+      fail(g->line + 1, "group code " + std::to_string(code) +
+                            ": a count of copies must be a whole number, found " +
+                            printableToken(g->value, 40));
+    return int(std::clamp(v, 1.0, double(kMaxInserts) + 1.0));
   }
 
   dvec2 point(const Record& r, int xCode, int yCode) const {
@@ -452,12 +470,21 @@ class DxfReader {
     if (scale.x == 0.0 || scale.y == 0.0) fail(r.line, "an INSERT's scale is 0");
     // Scaled, turned, moved to the insertion point (in object coordinates,
     // mirrored with them).
-    insert.map.linear = dmat2(c, s, -s, c) * dmat2(scale.x, 0.0, 0.0, scale.y);
+    const dmat2 turned(c, s, -s, c);
+    insert.map.linear = turned * dmat2(scale.x, 0.0, 0.0, scale.y);
     insert.map.offset = point(r, 10, 20);
+    // An array: column and row counts (70, 71) and spacings (44, 45),
+    // along the turned axes and not scaled (the DXF Reference's INSERT).
+    insert.columns = count(r, 70);
+    insert.rows = count(r, 71);
+    insert.columnStep = turned * dvec2(number(r, 44, 0.0), 0.0);
+    insert.rowStep = turned * dvec2(0.0, number(r, 45, 0.0));
     if (mirrored(r)) {
       Affine2 flip;
       flip.linear = dmat2(-1.0, 0.0, 0.0, 1.0);
       insert.map = insert.map.then(flip);
+      insert.columnStep = flip.linear * insert.columnStep;
+      insert.rowStep = flip.linear * insert.rowStep;
     }
     into.inserts.push_back(std::move(insert));
   }
@@ -467,10 +494,6 @@ class DxfReader {
                std::size_t& inserted) const {
     for (const ProfileEdge& e : d.edges) out.push_back(e.transformed(map));
     for (const Drawing::Insert& insert : d.inserts) {
-      if (out.size() > kMaxEdges || ++inserted > kMaxInserts)
-        fail(insert.line, "more than " + std::to_string(kMaxEdges) + " edges or " +
-                              std::to_string(kMaxInserts) +
-                              " inserted blocks (with the copies INSERT makes)");
       auto it = blocks_.find(insert.block);
       if (it == blocks_.end())
         fail(insert.line,
@@ -480,7 +503,16 @@ class DxfReader {
                               " (a block that inserts itself?)");
       Affine2 toBase;
       toBase.offset = -it->second.base;
-      collect(it->second, toBase.then(insert.map).then(map), depth + 1, out, inserted);
+      for (int row = 0; row < insert.rows; ++row)
+        for (int column = 0; column < insert.columns; ++column) {
+          if (out.size() > kMaxEdges || ++inserted > kMaxInserts)
+            fail(insert.line, "more than " + std::to_string(kMaxEdges) + " edges or " +
+                                  std::to_string(kMaxInserts) +
+                                  " inserted blocks (with the copies INSERT makes)");
+          Affine2 copy = insert.map;
+          copy.offset += double(column) * insert.columnStep + double(row) * insert.rowStep;
+          collect(it->second, toBase.then(copy).then(map), depth + 1, out, inserted);
+        }
     }
   }
 

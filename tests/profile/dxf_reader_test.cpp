@@ -166,6 +166,24 @@ TEST(DxfReader, LayersOriginScaleAndBlocks) {
   EXPECT_NEAR(region->bounds().hi.y, 2.0, 1e-12);
   EXPECT_NEAR(areaOf(drawing(inserts, blocks)), 6.0, 1e-9);
   EXPECT_NEAR(areaOf(drawing(entity("INSERT", {{2, "two"}}), blocks)), 2.0, 1e-9);
+  // An array of 3 columns 4 apart and 2 rows 5 apart, turned by 90° with
+  // the squares scaled by 2: six squares of 2 × 2 (the spacing is not
+  // scaled), the columns along y, the rows along −x.
+  const std::string array = entity(
+      "INSERT",
+      {{2, "sq"}, {41, "2"}, {42, "2"}, {50, "90"}, {70, "3"}, {71, "2"}, {44, "4"}, {45, "5"}});
+  region = readDxf(drawing(array, blocks), "part.dxf", {});
+  EXPECT_NEAR(areaOf(drawing(array, blocks)), 6 * 4.0, 1e-9);
+  EXPECT_NEAR(region->bounds().lo.x, -5.0 - 2.0, 1e-12);
+  EXPECT_NEAR(region->bounds().hi.x, 0.0, 1e-12);
+  EXPECT_NEAR(region->bounds().lo.y, 0.0, 1e-12);
+  EXPECT_NEAR(region->bounds().hi.y, 8.0 + 2.0, 1e-12);
+  // Counts of 0 (no array, from some writers) and 1 are one copy.
+  EXPECT_NEAR(areaOf(drawing(entity("INSERT", {{2, "sq"}, {70, "0"}, {71, "1"}, {44, "9"}}),
+                             blocks)),
+              1.0, 1e-9);
+  EXPECT_EQ(error(drawing(entity("INSERT", {{2, "sq"}, {70, "2.5"}}), blocks)),
+            "part.dxf:92: group code 70: a count of copies must be a whole number, found 2.5");
 }
 
 // A SPLINE entity: degree (71), knots (40) and control points (10/20).
