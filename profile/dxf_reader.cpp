@@ -146,10 +146,18 @@ class DxfReader {
     collect(drawing_, map, 0, edges, inserted);
     Profile profile = joined(edges);
     if (profile.loops.empty()) {
-      std::string which =
-          options_.layer.empty() ? "the drawing" : "layer \"" + options_.layer + "\"";
+      std::string which = options_.layer.empty()
+                              ? "the drawing"
+                              : "layer \"" + printableToken(options_.layer, 40) + "\"";
+      // Names as the file has them, each cut short, the first ten only: the
+      // message stays one line of a terminal's width or a few.
+      constexpr std::size_t kShownLayers = 10;
       std::string layers;
-      for (const std::string& l : layers_) layers += (layers.empty() ? "" : ", ") + l;
+      std::size_t shown = 0;
+      for (const std::string& l : layers_)
+        if (shown++ < kShownLayers) layers += (layers.empty() ? "" : ", ") + printableToken(l, 40);
+      if (layers_.size() > kShownLayers)
+        layers += " and " + std::to_string(layers_.size() - kShownLayers) + " more";
       throw std::invalid_argument(file_ + ": " + which + " draws no closed outline" +
                                   (layers.empty() ? "" : " (its layers: " + layers + ")"));
     }

@@ -179,9 +179,9 @@ TEST(DxfReader, LayersOriginScaleAndBlocks) {
   EXPECT_NEAR(region->bounds().lo.y, 0.0, 1e-12);
   EXPECT_NEAR(region->bounds().hi.y, 8.0 + 2.0, 1e-12);
   // Counts of 0 (no array, from some writers) and 1 are one copy.
-  EXPECT_NEAR(areaOf(drawing(entity("INSERT", {{2, "sq"}, {70, "0"}, {71, "1"}, {44, "9"}}),
-                             blocks)),
-              1.0, 1e-9);
+  EXPECT_NEAR(
+      areaOf(drawing(entity("INSERT", {{2, "sq"}, {70, "0"}, {71, "1"}, {44, "9"}}), blocks)), 1.0,
+      1e-9);
   EXPECT_EQ(error(drawing(entity("INSERT", {{2, "sq"}, {70, "2.5"}}), blocks)),
             "part.dxf:92: group code 70: a count of copies must be a whole number, found 2.5");
 }
@@ -290,6 +290,14 @@ TEST(DxfReader, BadFilesAreOneLineErrors) {
   }
   EXPECT_EQ(error(drawing(line(0, 0, 1, 0))),
             "part.dxf: the drawing draws no closed outline (its layers: 0)");
+  // Layer names are cut short, and at most ten listed.
+  std::string lines;
+  for (int i = 0; i < 12; ++i)
+    lines += line(0, 0, 1, 0, "L" + std::to_string(i) + std::string(50, 'x'));
+  const std::string many = error(drawing(lines));
+  EXPECT_NE(many.find("(its layers: L0" + std::string(38, 'x') + "..., L10x"), std::string::npos)
+      << many;
+  EXPECT_TRUE(many.ends_with("x... and 2 more)")) << many;
 }
 
 TEST(DxfReader, CutShortOrGarbledFilesNeverCrash) {
