@@ -1,3 +1,8 @@
+// CGAL's conversion of a circle to doubles (Epic_converter) copies a tuple
+// that GCC 12 takes for uninitialised where it inlines it: a false alarm
+// inside CGAL's and Boost's headers, silenced for this file only.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include "profile/cgal/polygon_set.h"
 
 #include <CGAL/Arr_curve_data_traits_2.h>

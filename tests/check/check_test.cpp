@@ -548,7 +548,9 @@ TEST(Check, SurfacesTangentAlongALineDoNotShareAFace) {
   ASSERT_TRUE(hasWarning(flush, "coincident faces")) << checkReportText(flush, "flush");
   for (const CheckWarning& w : flush.warnings) {
     EXPECT_EQ(w.message.find("intersection"), std::string::npos) << w.message;
-    if (w.kind == "coincident faces") EXPECT_NEAR(w.location.z, 10.0, 1e-9);
+    if (w.kind == "coincident faces") {
+      EXPECT_NEAR(w.location.z, 10.0, 1e-9);
+    }
   }
   // Operands of an intersection that meet face to face still warn: a
   // hair's overlap would leave a sliver. (A block clipped by two posts in

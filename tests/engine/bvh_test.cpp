@@ -302,7 +302,9 @@ TEST(BooleanBvh, ContainsEqualsThePlainFoldAtRandomPoints) {
       }
       // (The union's half-spaces may fill the whole box.)
       EXPECT_GT(inside, 0);
-      if (op == Boolean::Op::Difference) EXPECT_LT(inside, 2000);
+      if (op == Boolean::Op::Difference) {
+        EXPECT_LT(inside, 2000);
+      }
     }
   }
 }

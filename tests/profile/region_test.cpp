@@ -466,7 +466,9 @@ TEST(Region, AnOffsetsCornersAreArcsOfTheCircleOfItsRadius) {
   ASSERT_EQ(p.loops.size(), 1u);
   EXPECT_NEAR(area(p), 1900.0 - 75.0 * kPi, 1e-9);
   for (const ProfileEdge& e : p.loops[0].edges)
-    if (e.kind == ProfileEdge::Kind::Arc) EXPECT_EQ(glm::length(e.axes[0]), 5.0);
+    if (e.kind == ProfileEdge::Kind::Arc) {
+      EXPECT_EQ(glm::length(e.axes[0]), 5.0);
+    }
 }
 
 TEST(Region, NonFiniteInputIsRefused) {
@@ -860,10 +862,18 @@ TEST(RegionOffset, OffsetsOfFramesAndNotchesHoldWhatIsNear) {
           << round << ": " << p.x << ", " << p.y << " at " << square << " of " << r;
       ASSERT_EQ(mitreIn.contains(p), in && square > r)
           << round << ": " << p.x << ", " << p.y << " at " << square << " of " << r;
-      if (grown.contains(p)) ASSERT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
-      if (chamferOut.contains(p)) ASSERT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
-      if (mitreIn.contains(p)) ASSERT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
-      if (chamferIn.contains(p)) ASSERT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+      if (grown.contains(p)) {
+        ASSERT_TRUE(chamferOut.contains(p)) << p.x << ", " << p.y;
+      }
+      if (chamferOut.contains(p)) {
+        ASSERT_TRUE(mitreOut.contains(p)) << p.x << ", " << p.y;
+      }
+      if (mitreIn.contains(p)) {
+        ASSERT_TRUE(chamferIn.contains(p)) << p.x << ", " << p.y;
+      }
+      if (chamferIn.contains(p)) {
+        ASSERT_TRUE(shrunk.contains(p)) << p.x << ", " << p.y;
+      }
     }
   }
 }
@@ -906,9 +916,12 @@ TEST(RegionOffset, AGrowthShrunkAgainKeepsItsArcs) {
   std::uniform_real_distribution<double> x(-3.0, 37.0), y(-3.0, 63.0);
   for (int i = 0; i < 3000; ++i) {
     const dvec2 p(x(random), y(random));
-    if (region.contains(p)) EXPECT_TRUE(rounded.contains(p)) << p.x << ", " << p.y;
-    if (rounded.contains(p) || mitred.contains(p))
+    if (region.contains(p)) {
+      EXPECT_TRUE(rounded.contains(p)) << p.x << ", " << p.y;
+    }
+    if (rounded.contains(p) || mitred.contains(p)) {
       EXPECT_TRUE(outer.contains(p)) << p.x << ", " << p.y;
+    }
   }
 }
 
