@@ -218,6 +218,15 @@ void pushTransformed(lua_State* L, const char* method, const Affine& worldFromOb
 }
 
 int translate(lua_State* L) {
+  // OpenSCAD's translate([x, y]) of a solid: z is 0. (Two numbers, or a
+  // list of two, can mean nothing else.)
+  const int n = lua_gettop(L) - 1;
+  if (n == 2 || (n == 1 && lua_type(L, 2) == LUA_TTABLE && lua_rawlen(L, 2) == 2)) {
+    const dvec2 xy = n == 2 ? dvec2(toNumber(L, 2, "translate: x"), toNumber(L, 3, "translate: y"))
+                            : toVec2(L, 2, "translate: offset");
+    pushTransformed(L, "translate", Affine::translation(dvec3(xy, 0.0)));
+    return 1;
+  }
   dvec3 offset = vectorArgs(L, 2, "translate", "offset");
   pushTransformed(L, "translate", Affine::translation(offset));
   return 1;
@@ -247,15 +256,22 @@ int resize(lua_State* L) {
 
 // rotate(x, y, z) or rotate{x, y, z}: degrees about x, then y, then z
 // (OpenSCAD's rotate([x, y, z])); rotate{angle=a, axis={...}}: a degrees
-// about the axis.
+// about the axis, by default z. rotate(a), one number, turns about z, as
+// OpenSCAD's rotate(a) does and as a region's rotate(a) does here: not a
+// degrees about each axis in turn, as a vector's one number would say.
 int rotate(lua_State* L) {
+  constexpr dvec3 kZ(0.0, 0.0, 1.0);
+  if (lua_gettop(L) == 2 && lua_type(L, 2) == LUA_TNUMBER) {
+    pushTransformed(L, "rotate", rotationDegrees(dvec3(0.0, 0.0, toNumber(L, 2, "rotate: angle"))));
+    return 1;
+  }
   if (lua_gettop(L) == 2 && lua_type(L, 2) == LUA_TTABLE && lua_rawlen(L, 2) == 0) {
     LuaArgs args(L, 2, "rotate");
     std::optional<double> angle = args.number("angle");
     std::optional<dvec3> axis = args.vec3("axis");
     args.finish();
-    if (!angle || !axis) throw std::invalid_argument("rotate: needs angle= and axis=, or x, y, z");
-    pushTransformed(L, "rotate", rotationDegrees(*angle, *axis));
+    if (!angle) throw std::invalid_argument("rotate: needs angle= (and axis=), or x, y, z");
+    pushTransformed(L, "rotate", rotationDegrees(*angle, axis.value_or(kZ)));
     return 1;
   }
   pushTransformed(L, "rotate", rotationDegrees(vectorArgs(L, 2, "rotate", "angles")));

@@ -58,9 +58,9 @@ void registerProjectionApi(lua_State* L);
 void registerTextApi(lua_State* L);
 // kind: what the region was made as, for messages ("region", "text").
 void pushRegion(lua_State* L, RegionPtr region, const std::string& kind = "region");
-// The region at index, or a Lua error that names the function and the
-// argument's position.
-RegionPtr regionArg(lua_State* L, int index, const char* function);
+// The region at index, or a Lua error that names the place it was given
+// (`what`: "linear_extrude: argument 1").
+RegionPtr regionArg(lua_State* L, int index, const std::string& what);
 
 // The solids a boolean-like function is given: f(a, b, c) or f{a, b, c},
 // an operand also a list of solids, as in difference(a, holes) (the form

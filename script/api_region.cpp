@@ -552,8 +552,8 @@ void pushRegion(lua_State* L, RegionPtr region, const std::string& kind) {
   pushRegionAs(L, std::move(region), kind);
 }
 
-RegionPtr regionArg(lua_State* L, int index, const char* function) {
-  return regionAt(L, index, std::string(function) + ": argument " + std::to_string(index));
+RegionPtr regionArg(lua_State* L, int index, const std::string& what) {
+  return regionAt(L, index, what);
 }
 
 void registerRegionApi(lua_State* L) {

@@ -27,7 +27,7 @@ RegionPtr regionAndOptions(lua_State* L, const char* function) {
   if (given > 2)
     throw std::invalid_argument(std::string(function) + ": takes a region and a table of options");
   if (lua_type(L, 1) == LUA_TUSERDATA) {
-    RegionPtr region = regionArg(L, 1, function);
+    RegionPtr region = regionArg(L, 1, std::string(function) + ": argument 1");
     if (given == 2 && !lua_isnil(L, 2) && lua_type(L, 2) != LUA_TTABLE)
       throw std::invalid_argument(std::string(function) +
                                   ": the second argument must be a table of options, got " +
@@ -49,7 +49,8 @@ RegionPtr regionAndOptions(lua_State* L, const char* function) {
   if (lua_isnil(L, -1))
     throw std::invalid_argument(std::string(function) +
                                 ": needs a region as the table's first value");
-  RegionPtr region = regionArg(L, lua_gettop(L), function);
+  RegionPtr region =
+      regionArg(L, lua_gettop(L), std::string(function) + ": the table's first value");
   lua_pop(L, 1);
   lua_newtable(L);
   const int copy = lua_gettop(L);
@@ -100,6 +101,7 @@ int linearExtrude(lua_State* L) {
   const bool center = args.boolean("center").value_or(false);
   const double twist = args.number("twist").value_or(0.0);
   const dvec2 scale = scaleArg(L, args);
+  args.number("convexity");  // OpenSCAD's hint for its preview; rays need none
   args.finish();
   if (!height) throw std::invalid_argument("linear_extrude: needs height");
   pushSolid(L,
@@ -111,6 +113,7 @@ int rotateExtrude(lua_State* L) {
   RegionPtr region = regionAndOptions(L, "rotate_extrude");
   LuaArgs args(L, lua_gettop(L), "rotate_extrude");
   const double angle = args.number("angle").value_or(360.0);
+  args.number("convexity");  // as linear_extrude's
   args.finish();
   pushSolid(L, revolutionSolid(std::move(region), angle));
   return 1;

@@ -86,12 +86,19 @@ namespace {
 // one a typo or two away.
 std::string parameterHint(const std::string& key, const std::set<std::string>& known) {
   static const std::multimap<std::string, std::string> kOtherNames = {
-      {"angle", "fov"},        {"location", "eye"},       {"location", "pos"}, {"position", "pos"},
-      {"point_at", "look_at"}, {"tightness", "exponent"}, {"colour", "color"}, {"rgb", "color"},
-      {"radius", "r"},         {"diameter", "d"},         {"radius1", "r1"},   {"radius2", "r2"},
+      {"angle", "fov"},    {"location", "eye"},     {"location", "pos"},
+      {"position", "pos"}, {"point_at", "look_at"}, {"tightness", "exponent"},
+      {"colour", "color"}, {"rgb", "color"},        {"radius", "r"},
+      {"diameter", "d"},   {"radius1", "r1"},       {"radius2", "r2"},
+      {"a", "angle"},      {"v", "axis"},  // OpenSCAD's rotate(a=, v=)
   };
   for (auto [it, end] = kOtherNames.equal_range(key); it != end; ++it)
     if (known.count(it->second)) return "; did you mean '" + it->second + "'?";
+  // OpenSCAD's facet counts have nothing to set here.
+  if (key == "slices" || key == "segments" || key == "fn")
+    return "; OpenSCAD's " + key +
+           " is not needed here: shapes are exact, and an export's facets "
+           "follow --tolerance (leave it out)";
   std::string nearest;
   std::size_t best = key.size() >= 5 ? 3 : 2;
   for (const std::string& name : known)

@@ -132,8 +132,11 @@ std::string openscadLineHint(const std::string& sourceLine, bool syntaxError) {
     add(R"(\b(linear_extrude|rotate_extrude)\s*\(\s*\w+\s*=[^=])",
         "sweeps take the region and named parameters in braces here: "
         "linear_extrude{region, height=5}, rotate_extrude{region, angle=360}");
-    add(R"(\b\w+\s*\(\s*\w+\s*=[^=])",
-        "named parameters go in braces here: f{name=value} (as sphere{r=2})");
+    // Named parameters first (sphere(r=2)) or after a value (text("hi",
+    // size=5)).
+    add(R"(\b\w+\s*\((?:[^()=]*,)?\s*\w+\s*=[^=])",
+        "named parameters go in braces here: f{name=value} (as sphere{r=2}, text{\"hi\", "
+        "size=5})");
     add(R"(\[\s*[-+.\d\w])", "vectors are Lua tables in braces here: {1, 2, 3}");
     add(R"(!=)", "not equal is ~= in Lua");
     add(R"(&&|\|\|)", "Lua writes and, or and not for &&, || and !");

@@ -83,6 +83,12 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
         return std::string("; ") + closed +
                " is not available: scripts run in a sandbox, without files, processes or "
                "loaded code (docs/script.md, \"The sandbox\")";
+  // OpenSCAD's constant, and its vector arithmetic ([1, 2, 3] + v, v * 2).
+  if (message.find("a nil value (global 'PI')") != std::string::npos)
+    return "; OpenSCAD's PI is math.pi here";
+  if (message.find("attempt to perform arithmetic on a table value") != std::string::npos)
+    return "; vectors are Lua tables here, which have no arithmetic: add or scale them number by "
+           "number ({a[1] + b[1], a[2] + b[2], a[3] + b[3]})";
   static const std::string kNil = "attempt to call a nil value (";
   const std::size_t at = message.find(kNil);
   if (at == std::string::npos) return "";

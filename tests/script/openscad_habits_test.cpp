@@ -57,6 +57,12 @@ TEST(OpenScadHabits, EachHabitNamesTheCsgrayWay) {
              "here: # is s:highlight(), % s:ghost()");
   expectHint("local a = box(1)\n!box(2)", "part.lua:2: unexpected symbol near '!'; modifiers are");
   expectHint("return sphere(r=2)", "named parameters go in braces here: f{name=value}");
+  expectHint("return text(\"hi\", size=5)", "as sphere{r=2}, text{\"hi\", size=5}");
+  expectHint("return cylinder{r=5, h=2 * PI}",
+             "part.lua:1: attempt to perform arithmetic on a nil "
+             "value (global 'PI'); OpenSCAD's PI is math.pi here");
+  expectHint("local v = {1, 2, 3} + {4, 5, 6}",
+             "vectors are Lua tables here, which have no arithmetic");
   expectHint("if 1 != 2 then end", "not equal is ~= in Lua");
   expectHint("return sphere(abs(-1))", "OpenSCAD's abs is math.abs(...) here");
   expectHint("return sphere(sin(30) + 1)", "OpenSCAD's sin is math.sin(...) here (radians)");

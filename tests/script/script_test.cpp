@@ -107,6 +107,15 @@ TEST(Script, BooleansAndOperators) {
   EXPECT_EQ(treeStats(*nary).booleans, 1);
 }
 
+// OpenSCAD's convexity, a hint for its preview, is taken and changes
+// nothing, on sweeps as on polyhedra.
+TEST(Script, ConvexityIsAcceptedAndIgnored) {
+  EXPECT_EQ(solidOf("return linear_extrude{circle(5), height=10, convexity=10}")->bounds().hi,
+            solidOf("return linear_extrude{circle(5), height=10}")->bounds().hi);
+  EXPECT_EQ(solidOf("return rotate_extrude{circle(1):translate(5, 0), convexity=4}")->bounds().hi,
+            solidOf("return rotate_extrude{circle(1):translate(5, 0)}")->bounds().hi);
+}
+
 TEST(Script, TransformsCompose) {
   // Rotate 90° about z, then translate: (1, 0, 0) goes to (0, 1, 0) + (10, 0, 0).
   SolidPtr s =
@@ -115,6 +124,19 @@ TEST(Script, TransformsCompose) {
   EXPECT_FALSE(s->contains(dvec3(11, 0, 0)));
   SolidPtr axis = solidOf("return box(1):rotate{angle=180, axis={0, 0, 1}}");
   EXPECT_TRUE(axis->contains(dvec3(-0.5, -0.5, 0.5)));
+  // One angle turns about z, as OpenSCAD's rotate(a) and a region's
+  // rotate(a) do (a flat plate stays flat), and so does angle= alone.
+  for (const char* turn : {"rotate(90)", "rotate{angle=90}"}) {
+    SolidPtr plate = solidOf(std::string("return box{size={20, 10, 2}}:") + turn);
+    EXPECT_TRUE(plate->contains(dvec3(-5, 15, 1))) << turn;
+    EXPECT_FALSE(plate->contains(dvec3(15, 5, 1))) << turn;
+    EXPECT_EQ(plate->bounds().hi.z, 2.0) << turn;
+  }
+  // OpenSCAD's translate([x, y]): z is 0.
+  for (const char* move : {"translate(3, 4)", "translate{3, 4}"}) {
+    SolidPtr moved = solidOf(std::string("return box(1):") + move);
+    EXPECT_EQ(moved->bounds().lo, dvec3(3, 4, 0)) << move;
+  }
   SolidPtr mirrored = solidOf("return box(1):mirror(1, 0, 0)");
   EXPECT_TRUE(mirrored->contains(dvec3(-0.5, 0.5, 0.5)));
   SolidPtr scaled = solidOf("return sphere(1):scale(2, 1, 1)");
@@ -189,6 +211,11 @@ TEST(Script, ErrorsNameFileAndLine) {
        "part.lua:1: camera: unknown parameter 'angle'; did you mean 'fov'?"},
       {"return spot_light{pos={0, 0, 1}, tightness=2}",
        "spot_light: unknown parameter 'tightness'; did you mean 'exponent'?"},
+      {"return linear_extrude{circle(5), height=10, slices=20}",
+       "linear_extrude: unknown parameter 'slices'; OpenSCAD's slices is not needed here"},
+      {"return linear_extrude{box(3), height=2}",
+       "linear_extrude: the table's first value must be a region, not a solid"},
+      {"return box(1):rotate{a=45}", "rotate: unknown parameter 'a'; did you mean 'angle'?"},
       {"return sphere(1):material{colour={1, 0, 0}}",
        "material: unknown parameter 'colour'; did you mean 'color'?"},
       {"return cylinder{r=1, h=1, centre=true}",
