@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -17,11 +18,22 @@ namespace csgray::detail {
 
 namespace {
 
+// A number of a -D value: a whole one as a Lua integer, as the literal
+// written in the script would be (-D size=20 makes "20 mm" of
+// size .. " mm", not "20.0 mm"); past 2⁵³, where doubles skip integers, a
+// float.
+void pushDefineNumber(lua_State* L, double number) {
+  if (number == std::floor(number) && std::abs(number) <= 0x1p53)
+    lua_pushinteger(L, lua_Integer(number));
+  else
+    lua_pushnumber(L, number);
+}
+
 // A -D value as a global.
 void pushDefine(lua_State* L, const ParameterValue& value) {
   switch (value.kind) {
     case ParameterKind::Number:
-      lua_pushnumber(L, value.number);
+      pushDefineNumber(L, value.number);
       return;
     case ParameterKind::Boolean:
       lua_pushboolean(L, value.boolean);
@@ -32,7 +44,7 @@ void pushDefine(lua_State* L, const ParameterValue& value) {
     case ParameterKind::Vector:
       lua_createtable(L, int(value.vector.size()), 0);
       for (std::size_t i = 0; i < value.vector.size(); ++i) {
-        lua_pushnumber(L, value.vector[i]);
+        pushDefineNumber(L, value.vector[i]);
         lua_rawseti(L, -2, lua_Integer(i + 1));
       }
       return;

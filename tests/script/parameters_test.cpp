@@ -152,6 +152,21 @@ TEST(Parameters, DefineTakesVectors) {
   EXPECT_EQ(defineError("assert(size == '{1,2') return box(1)", "size", "'{1,2'"), "(no error)");
 }
 
+// A whole number arrives as a Lua integer, as the same literal in the
+// script would: a label made of it reads "20 mm", not "20.0 mm".
+TEST(Parameters, WholeNumbersAreIntegers) {
+  EXPECT_EQ(defineError("assert(size .. ' mm' == '20 mm') return box(1)", "size", "20"),
+            "(no error)");
+  EXPECT_EQ(defineError("size = 10 -- [5:50]\nassert(size .. ' mm' == '20 mm') return box(1)",
+                        "size", "20"),
+            "(no error)");
+  EXPECT_EQ(defineError("assert(math.type(x) == 'float' and x == 2.5) return box(1)", "x", "2.5"),
+            "(no error)");
+  EXPECT_EQ(defineError("assert(math.type(v[1]) == 'integer' and v[2] == 0.5) return box(1)", "v",
+                        "{2, 0.5}"),
+            "(no error)");
+}
+
 TEST(Parameters, LinesKeepTheirNumbersWhenADefineReplacesADefault) {
   const std::string source = "width = 40 -- [10:100]\nerror('here')\n";
   ScriptOptions options;
