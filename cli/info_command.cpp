@@ -28,10 +28,16 @@ void printInfo(const std::string& script, const Scene& scene) {
   }
   // The part's box (its ghosts are no part of it); a scene of open
   // surfaces alone, theirs.
-  const Bounds b = scene.objects.empty() ? scene.bounds() : scene.partBounds();
+  bool metNothing = false;
+  const Bounds b = scene.objects.empty() ? scene.bounds() : scene.partBounds(&metNothing);
   std::cout << script << "\n";
   if (b.empty()) {
     std::cout << "  bounds:        empty\n";
+  } else if (metNothing) {
+    // (A part all of whose pieces are narrower than the rays' spacing, a
+    // 64th of the box, would be missed too: hence the box.)
+    std::cout << "  bounds:        empty (no ray through " << formatPoint(b.lo) << " .. "
+              << formatPoint(b.hi) << " meets the part)\n";
   } else {
     std::cout << "  bounds:        " << formatPoint(b.lo) << " .. " << formatPoint(b.hi) << "\n";
     if (b.finite()) std::cout << "  size:          " << formatPoint(b.size()) << "\n";

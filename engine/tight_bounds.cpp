@@ -138,13 +138,17 @@ class Lines {
 
 }  // namespace
 
-Bounds tightBounds(const Solid& solid) {
+Bounds tightBounds(const Solid& solid, bool* metNothing) {
+  if (metNothing) *metNothing = false;
   const Bounds& given = solid.bounds();
   if (given.empty() || !given.finite()) return given;
   // The rays' box: bounds() within the parts' box.
   std::size_t budget = kPartsVisits;
   const Bounds loose = given.intersected(partsBox(solid, Affine(), budget));
-  if (loose.empty()) return given;
+  if (loose.empty()) {  // no primitive within the box (an intersection of apart parts)
+    if (metNothing) *metNothing = true;
+    return given;
+  }
   // Rays across a box thinner than this cannot be placed finely enough
   // (a ball of radius 10⁻³²³).
   const dvec3 size = loose.size();
@@ -156,7 +160,10 @@ Bounds tightBounds(const Solid& solid) {
   for (int a = 0; a < 3; ++a) {
     Lines lines(*rays, loose, a);
     const std::optional<std::array<double, 2>> found = lines.extremes();
-    if (!found) return loose;  // the rays met nothing: the solid is empty
+    if (!found) {  // the rays met nothing: the solid is empty
+      if (metNothing) *metNothing = true;
+      return loose;
+    }
     const double hi = (*found)[0], lo = -(*found)[1];
     // Within the loose box; where the shapes' arithmetic overflowed (a
     // ball of radius 10³⁰⁰: its square is infinite), the loose box.

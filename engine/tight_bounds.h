@@ -19,7 +19,8 @@ namespace csgray::detail {
 // (engine/parts_box.h, with a larger budget than bounds() has). Where
 // the rays meet nothing (an empty solid), for one too small for them
 // (under 10⁻¹⁰⁰ across) and for an unbounded solid, the box is that
-// loose box.
-Bounds tightBounds(const Solid& solid);
+// loose box; `metNothing`, if given, says whether the rays met nothing
+// (the solid is empty, or all of it narrower than their spacing).
+Bounds tightBounds(const Solid& solid, bool* metNothing = nullptr);
 
 }  // namespace csgray::detail

@@ -107,21 +107,28 @@ bool letsLightThrough(const Solid& solid, std::unordered_set<const Solid*>& opaq
   return false;
 }
 
-CameraSpec cameraFor(const Scene& scene, const RenderOptions& options) {
+// Does the scene need the box of what it shows (Scene::framedBounds, some
+// rays)? A camera without a place, the CAD look's ground, an orthographic
+// camera without a width.
+bool needsFraming(const Scene& scene) {
+  return !scene.camera || scene.cadLook ||
+         (scene.camera->orthographic && !(scene.camera->orthoWidth > 0.0));
+}
+
+// framed: the scene's framedBounds, where it needsFraming.
+CameraSpec cameraFor(const Scene& scene, const RenderOptions& options, const Bounds& framed) {
   // Only unbounded surfaces (planes) and no solid of any size: the bounds
   // are empty, but not because a solid is.
   if (!scene.camera && scene.bounds().empty() && !scene.surfaces.empty())
     throw std::invalid_argument(
         "cannot frame an unbounded surface such as a plane: return scene{objects=..., "
         "camera=camera{...}}");
-  CameraSpec camera = scene.camera
-                          ? *scene.camera
-                          : frameBounds(scene.bounds(), double(options.width) / options.height);
+  CameraSpec camera =
+      scene.camera ? *scene.camera : frameBounds(framed, double(options.width) / options.height);
   // An orthographic camera without a width shows the whole scene.
-  if (camera.orthographic && !(camera.orthoWidth > 0.0)) {
-    Bounds b = scene.bounds();
-    camera.orthoWidth = b.finite() ? 1.1 * glm::length(b.size()) : 10.0;
-  }
+  if (camera.orthographic && !(camera.orthoWidth > 0.0))
+    camera.orthoWidth =
+        framed.finite() && !framed.empty() ? 1.1 * glm::length(framed.size()) : 10.0;
   return camera;
 }
 
@@ -228,11 +235,14 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options)
         return Bvh(boxes);
       }()),
       options_(options),
-      cameraSpec_(cameraFor(scene, options)),
+      framed_(!needsFraming(scene) ? Bounds()
+              : scene.framedBox    ? *scene.framedBox
+                                   : scene.framedBounds()),
+      cameraSpec_(cameraFor(scene, options, framed_)),
       camera_(cameraSpec_, options.width, options.height),
       lights_(scene.lights) {
   if (scene.cadLook) {
-    cadLook_.emplace(cameraSpec_, double(options.width) / options.height, scene.bounds());
+    cadLook_.emplace(cameraSpec_, double(options.width) / options.height, framed_);
     if (lights_.empty() && scene.defaultLight) lights_ = cadLook_->lights();
     // The ground shadow's cells: a few pixels wide where the camera looks.
     dvec3 lo, hi;

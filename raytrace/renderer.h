@@ -195,6 +195,7 @@ class Renderer {
   // Over the objects_ (items 0 .. n−1) and then the surfaces.
   Bvh bvh_;
   RenderOptions options_;
+  Bounds framed_;  // what the camera frames, where it needs it (needsFraming)
   CameraSpec cameraSpec_;
   Camera camera_;
   std::vector<Light> lights_;

@@ -23,10 +23,30 @@ Bounds Scene::bounds() const {
   return b;
 }
 
-Bounds Scene::partBounds() const {
-  Bounds b;
-  for (const SolidPtr& s : objects) b.include(tightBounds(*s));
+Bounds Scene::framedBounds(const std::optional<Bounds>& part) const {
+  bool metNothing = false;
+  Bounds b = part ? *part : partBounds(&metNothing);
+  if (metNothing) b = Bounds();
+  for (const SolidPtr& s : ghosts) {
+    const Bounds own = tightBounds(*s, &metNothing);
+    if (!metNothing) b.include(own);
+  }
+  for (const SurfacePtr& s : surfaces)
+    if (s->bounds().finite()) b.include(s->bounds());
   return b;
+}
+
+Bounds Scene::partBounds(bool* metNothing) const {
+  // The objects the rays meet; an empty one (a difference of a solid less
+  // all of it) has no place in the part's box.
+  Bounds met, missed;
+  for (const SolidPtr& s : objects) {
+    bool none = false;
+    const Bounds own = tightBounds(*s, &none);
+    (none ? missed : met).include(own);
+  }
+  if (metNothing) *metNothing = met.empty() && !missed.empty();
+  return met.empty() ? missed : met;
 }
 
 void Scene::resolveModifiers() {
@@ -37,7 +57,9 @@ void Scene::resolveModifiers() {
 }
 
 CameraSpec frameBounds(const Bounds& box, double aspect, double fovDegrees) {
-  if (box.empty()) throw std::invalid_argument("nothing to frame: the solid is empty");
+  if (box.empty())
+    throw std::invalid_argument(
+        "nothing to frame: the part is empty (no ray through its box meets it)");
   if (!box.finite())
     throw std::invalid_argument(
         "cannot frame an unbounded solid: return scene{objects=..., camera=camera{...}}");

@@ -77,12 +77,24 @@ struct Scene {
   IndirectLight indirect;
   AmbientOcclusion ambientOcclusion;
 
-  // The union of the objects', the ghosts' and the bounded surfaces' bounds:
-  // what the camera frames.
+  // The union of the objects', the ghosts' and the bounded surfaces' bounds.
   Bounds bounds() const;
-  // The objects' alone, each its own points' box (tightBounds, some
-  // 50 000 rays): the part an export writes, without ghosts.
-  Bounds partBounds() const;
+  // What a camera without a place frames, and what the CAD look's ground
+  // lies under: bounds() with each object and ghost by its own points' box
+  // (tightBounds, some 50 000 rays each), so that a part cut flat by a
+  // difference stands on its ground; one the rays meet nothing of (an
+  // empty difference) is left out. part: the objects' partBounds, where
+  // found already and the rays met them.
+  Bounds framedBounds(const std::optional<Bounds>& part = std::nullopt) const;
+  // framedBounds() found once for a scene rendered many times (csgray
+  // view's frames), or none: the renderer finds it.
+  std::optional<Bounds> framedBox;
+  // The objects' alone, each its own points' box (tightBounds): the part an
+  // export writes, without ghosts, nor objects the rays meet nothing of.
+  // metNothing, if given, says whether they met none (the part is empty,
+  // or all of it narrower than their spacing), the box then being the
+  // objects' loose one.
+  Bounds partBounds(bool* metNothing = nullptr) const;
   // Takes the modifiers' marks out of the objects (resolveModifiers of
   // scene/modifiers.h), filling ghosts and highlights.
   void resolveModifiers();

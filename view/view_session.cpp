@@ -57,10 +57,15 @@ std::string ViewSession::run(const std::vector<std::pair<std::string, std::strin
   Bounds bounds;
   try {
     parameters = scriptFileParameters(script_);
-    scene = std::make_shared<const Scene>(runner_(script_, options));
-    checkHasObjects(*scene);
-    volume = sceneVolume(*scene);
-    bounds = scene->partBounds();
+    Scene ran = runner_(script_, options);
+    checkHasObjects(ran);
+    volume = sceneVolume(ran);
+    bool metNothing = false;
+    bounds = ran.partBounds(&metNothing);
+    if (metNothing) bounds = Bounds();  // an empty part has no box to show
+    // Once, not at each frame: some 50 000 rays a solid.
+    ran.framedBox = ran.framedBounds(bounds);
+    scene = std::make_shared<const Scene>(std::move(ran));
   } catch (const DefineError& e) {
     return e.what();  // nothing changes
   } catch (const std::exception& e) {

@@ -72,6 +72,18 @@ else
   fail "good render"; cat "$work/stdout"
 fi
 
+# An empty difference: info says no ray meets it, render has nothing to
+# frame (it wrote a blank image).
+printf 'return box(10) - box(10)\n' > "$work/empty.lua"
+if "$csgray" info "$work/empty.lua" >"$work/stdout" 2>&1 &&
+   grep -q 'bounds: *empty (no ray through \[0, 0, 0\] \.\. \[10, 10, 10\] meets the part)' "$work/stdout"; then
+  pass
+else
+  fail "info of an empty part"; cat "$work/stdout"
+fi
+expect_exit 1 "render of an empty part" "$work/empty.png" render "$work/empty.lua" -o "$work/empty.png"
+expect_in_stderr "render of an empty part" "empty.lua: nothing to frame: the part is empty"
+
 # info prints the part's bounds: a ghost is no part of it.
 printf 'return union{box(10), sphere(5):translate(30, 0, 0):ghost()}\n' > "$work/ghost.lua"
 if "$csgray" info "$work/ghost.lua" >"$work/stdout" 2>&1 &&

@@ -44,6 +44,34 @@ TEST(CadLook, OnlyForWhatIsNotAScene) {
   EXPECT_TRUE(sceneOf("return scene{objects={box(1)}, edges=true}").edges);
 }
 
+// The camera frames the part's own box, and the ground lies under it: a
+// ball cut flat by a difference stands on the ground at its cut, not at
+// the bottom of the whole ball that bounds() gives. An empty difference
+// has nothing to frame.
+TEST(CadLook, FramesThePartsOwnBox) {
+  const Scene cut = sceneOf("return sphere(10) - box(40):translate(-20, -20, -40)");
+  EXPECT_EQ(cut.bounds().lo.z, -10.0);
+  const Renderer renderer(cut, RenderOptions(64, 48));
+  EXPECT_NEAR(renderer.camera().lookAt.z, 5.0, 1e-6);
+  EXPECT_NEAR(CadLook(renderer.camera(), 4.0 / 3.0, cut.framedBounds()).groundZ(), 0.0, 1e-6);
+  try {
+    Renderer(sceneOf("return box(10) - box(10)"), RenderOptions(64, 48));
+    ADD_FAILURE() << "an empty part was framed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "nothing to frame: the part is empty (no ray through its box meets it)");
+  }
+  bool metNothing = false;
+  sceneOf("return box(10) - box(10)").partBounds(&metNothing);
+  EXPECT_TRUE(metNothing);
+  // An empty object beside a real one is no part of the box.
+  const Bounds both =
+      sceneOf("return scene{objects={box(1), box(10) - box(10)}}").partBounds(&metNothing);
+  EXPECT_EQ(both.lo, dvec3(0.0));
+  EXPECT_EQ(both.hi, dvec3(1.0));
+  EXPECT_FALSE(metNothing);
+}
+
 TEST(CadLook, KeyFillAndRimAboutTheCamera) {
   Scene scene = sceneOf("return box(10)");
   Renderer renderer(scene, {320, 240, 1});
