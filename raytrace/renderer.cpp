@@ -118,11 +118,16 @@ bool needsFraming(const Scene& scene) {
 // framed: the scene's framedBounds, where it needsFraming.
 CameraSpec cameraFor(const Scene& scene, const RenderOptions& options, const Bounds& framed) {
   // Only unbounded surfaces (planes) and no solid of any size: the bounds
-  // are empty, but not because a solid is.
-  if (!scene.camera && scene.bounds().empty() && !scene.surfaces.empty())
+  // are empty, but not because a solid is. (Or only surfaces of nothing:
+  // a region offset inwards past its width.)
+  if (!scene.camera && scene.bounds().empty() && !scene.surfaces.empty()) {
+    const bool unbounded = std::any_of(scene.surfaces.begin(), scene.surfaces.end(),
+                                       [](const SurfacePtr& s) { return !s->bounds().empty(); });
+    if (!unbounded) throw std::invalid_argument("nothing to frame: the region is empty");
     throw std::invalid_argument(
         "cannot frame an unbounded surface such as a plane: return scene{objects=..., "
         "camera=camera{...}}");
+  }
   CameraSpec camera =
       scene.camera ? *scene.camera : frameBounds(framed, double(options.width) / options.height);
   // An orthographic camera without a width shows the whole scene.

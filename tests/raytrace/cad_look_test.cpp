@@ -61,6 +61,13 @@ TEST(CadLook, FramesThePartsOwnBox) {
     EXPECT_EQ(std::string(e.what()),
               "nothing to frame: the part is empty (no ray through its box meets it)");
   }
+  // A region of nothing is not an unbounded surface.
+  try {
+    Renderer(sceneOf("return square(2):offset{r=-3}"), RenderOptions(64, 48));
+    ADD_FAILURE() << "an empty region was framed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "nothing to frame: the region is empty");
+  }
   bool metNothing = false;
   sceneOf("return box(10) - box(10)").partBounds(&metNothing);
   EXPECT_TRUE(metNothing);
