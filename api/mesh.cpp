@@ -15,6 +15,7 @@
 #include "engine/cancellation.h"
 #include "export/cgal/mesh_boolean.h"
 #include "export/cgal/mesh_validity.h"
+#include "export/printed_part.h"
 #include "io/atomic_file.h"
 #include "meshio/mesh_reader.h"
 #include "meshio/mesh_writer.h"
@@ -72,19 +73,8 @@ void checkIndices(const Mesh& mesh) {
 // fewer digits) cannot hold the tolerance: half its spacing at |x| is
 // |x|·2⁻²⁴. As `csgray export` refuses it.
 void checkPrecision(const detail::Solid& solid, double tolerance) {
-  const detail::Bounds box = solid.bounds();
-  if (!box.finite()) return;  // meshOfSolid says so
-  double reach = 0.0;
-  for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});
-  const double precision = std::ldexp(reach, -24);
-  if (precision <= 0.5 * tolerance) return;
-  char text[300];
-  std::snprintf(text, sizeof text,
-                "the part reaches %g from the origin, where the file's 32-bit floats are good to "
-                "%.2g only, coarser than half the tolerance %g; move it nearer the origin or give "
-                "a larger tolerance",
-                reach, precision, tolerance);
-  throw Error(ErrorCode::NotPrintable, text);
+  if (std::string problem = detail::floatPrecisionProblem(solid, tolerance); !problem.empty())
+    throw Error(ErrorCode::NotPrintable, problem);
 }
 
 MeshDefect::Kind kindOf(detail::MeshDefect::Kind kind) {

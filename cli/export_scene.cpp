@@ -70,7 +70,16 @@ void checkExportOutput(const ExportOptions& options) {
   // of), then its format: meshFormatFor throws for an unknown extension.
   if (std::string problem = outputPathProblem(options.output); !problem.empty())
     throw std::runtime_error("cannot write " + options.output + ": " + problem);
-  if (!outlineFormatFor(options.output)) meshFormatFor(options.output);
+  if (outlineFormatFor(options.output)) return;
+  try {
+    meshFormatFor(options.output);
+  } catch (const std::invalid_argument& e) {
+    // export writes 2D outlines too: the list says so.
+    std::string message = e.what();
+    if (message.ends_with(" or .3mf)"))
+      message.insert(message.size() - 1, "; .svg or .dxf for a 2D outline");
+    throw std::invalid_argument(message);
+  }
 }
 
 void exportScene(const Scene& scene, const ExportOptions& options, double scriptSeconds) {

@@ -29,23 +29,27 @@ SolidPtr printedPart(const Scene& scene, const std::string& script, const char* 
   return scene.objects.size() == 1 ? scene.objects[0] : unionOf(scene.objects);
 }
 
-void checkFloatPrecision(const Solid& part, double tolerance, const std::string& script) {
+std::string floatPrecisionProblem(const Solid& part, double tolerance) {
   // Far from the origin a 32-bit float (every format here stores floats)
   // cannot hold the tolerance: half its spacing at |x| is |x|·2⁻²⁴.
   const Bounds box = part.bounds();
-  if (!box.finite()) return;
+  if (!box.finite()) return "";
   double reach = 0.0;
   for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});
   const double precision = std::ldexp(reach, -24);
-  if (precision > 0.5 * tolerance) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "%s: the part reaches %g from the origin, where the file's 32-bit floats are "
-                  "good to %.2g only, coarser than half the tolerance %g; move it nearer the "
-                  "origin or give a larger tolerance",
-                  script.c_str(), reach, precision, tolerance);
-    throw std::runtime_error(text);
-  }
+  if (precision <= 0.5 * tolerance) return "";
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "the part reaches %g from the origin, where the file's 32-bit floats are good to "
+                "%.2g only, more than half the tolerance (%g); move it nearer the origin or give "
+                "a larger tolerance",
+                reach, precision, 0.5 * tolerance);
+  return text;
+}
+
+void checkFloatPrecision(const Solid& part, double tolerance, const std::string& script) {
+  if (std::string problem = floatPrecisionProblem(part, tolerance); !problem.empty())
+    throw std::runtime_error(script + ": " + problem);
 }
 
 }  // namespace csgray::detail

@@ -17,9 +17,11 @@ namespace csgray::detail {
 SolidPtr printedPart(const Scene& scene, const std::string& script, const char* verb,
                      const std::function<void(const std::string& message)>& warn);
 
-// Throws std::runtime_error, naming the script, when the part reaches so
-// far from the origin that a mesh file's 32-bit floats cannot hold it to
-// half the tolerance.
+// Why a mesh file's 32-bit floats cannot hold the part to half the
+// tolerance (it reaches too far from the origin), or "".
+std::string floatPrecisionProblem(const Solid& part, double tolerance);
+
+// Throws std::runtime_error, naming the script, for floatPrecisionProblem.
 void checkFloatPrecision(const Solid& part, double tolerance, const std::string& script);
 
 }  // namespace csgray::detail

@@ -316,7 +316,14 @@ SolidPtr minkowskiPair(const SolidPtr& a, const SolidPtr& b) {
                   "the polyhedron is not convex: give it as a union of convex pieces, "
                   "whose sums are joined");
     }
-    throw error(function, "the " + p->kind() + " is not convex; its sum is not supported");
+    // What to do instead: pieces, and for an extruded profile its offset,
+    // which is OpenSCAD's usual way to round one.
+    throw error(function, "the " + p->kind() +
+                              " is not convex; its sum is not supported: give it as a " +
+                              "union of convex pieces, whose sums are joined" +
+                              (p->kind() == "linear_extrude"
+                                   ? ", or round the profile with offset{r=...} before extruding it"
+                                   : ""));
   }
   double size = sizeOf(leaves);
   if (ballB) return plusBall(pa, pb, *ballB, size);

@@ -42,6 +42,10 @@ dvec3 vectorArgs(lua_State* L, int first, const std::string& function, const cha
 // (sphere(5), box{10, 20, 30}) that stands for the named one.
 LuaArgs shapeArgs(lua_State* L, const char* function, const char* mainKey) {
   checkArgumentCount(L, function, 1);
+  // sphere(radius) with radius never set: say so, not "needs r".
+  if (lua_gettop(L) == 1 && lua_isnil(L, 1))
+    throw std::invalid_argument(std::string(function) + ": got nil (a variable without a value?) " +
+                                "where " + mainKey + " or a table of parameters goes");
   bool bare = lua_type(L, 1) == LUA_TNUMBER ||
               (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) > 0 && !hasStringKey(L, 1));
   if (bare) {
@@ -195,7 +199,13 @@ std::vector<SolidPtr> solidOperands(lua_State* L, const std::string& function) {
   } else {
     for (int i = 1; i <= n; ++i) take(i, function + ": operand " + std::to_string(i));
   }
-  return operands;  // booleanShape refuses an empty list
+  // A list given, and left empty (a loop that added nothing, a count of 0
+  // from -D): there is no empty solid to stand for it.
+  if (operands.empty() && n >= 1 && lua_type(L, 1) == LUA_TTABLE)
+    throw std::invalid_argument(function +
+                                ": the list is empty; there is no empty solid, so leave the " +
+                                function + " out when the list is (if #list > 0 then ... end)");
+  return operands;  // booleanShape refuses no operands
 }
 
 namespace {

@@ -226,8 +226,14 @@ namespace {
 // The list of n numbers at index (a table, its length checked) into out.
 void readList(lua_State* L, int index, int n, double* out, const std::string& what,
               const char* shape) {
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != lua_Unsigned(n))
-    throw std::invalid_argument(what + " must be " + shape);
+  if (lua_type(L, index) != LUA_TTABLE)
+    throw std::invalid_argument(what + " must be " + shape + ", got " + shownType(L, index));
+  // A list one short: often a value that is nil (a variable never set),
+  // which ends a Lua list where it stands.
+  if (const lua_Unsigned length = lua_rawlen(L, index); length != lua_Unsigned(n))
+    throw std::invalid_argument(what + " must be " + shape + ", got a list of " +
+                                std::to_string(length) +
+                                (length < lua_Unsigned(n) ? " (is a value in it nil?)" : ""));
   for (int k = 0; k < n; ++k) {
     lua_rawgeti(L, index, k + 1);
     out[k] = toNumber(L, -1, what + "[" + std::to_string(k + 1) + "]");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "io/input_file.h"
 #include "scene/value_checks.h"
@@ -68,6 +69,49 @@ bool isIdentifier(const std::string& name) {
 
 }  // namespace
 
+namespace {
+
+// The names a script's text holds (its identifiers, keywords too; words in
+// strings and comments count as well), for telling a -D that no line
+// reads.
+std::set<std::string, std::less<>> namesIn(std::string_view source) {
+  std::set<std::string, std::less<>> names;
+  auto starts = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  auto goes = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < source.size();) {
+    if (starts(source[i])) {
+      std::size_t end = i;
+      while (end < source.size() && goes(source[end])) ++end;
+      names.emplace(source.substr(i, end - i));
+      i = end;
+    } else if (std::isdigit(static_cast<unsigned char>(source[i]))) {
+      while (i < source.size() && goes(source[i])) ++i;  // 1e5, 0x1F: a number
+    } else {
+      ++i;
+    }
+  }
+  return names;
+}
+
+// A -D whose name the script never writes sets a global nothing reads: a
+// typo (-D Width=50 for width) would change nothing, silently.
+void warnOfUnreadDefines(std::string_view source, const ScriptOptions& options,
+                         const std::string& chunkName) {
+  if (!options.warn || options.defines.empty()) return;
+  const auto names = namesIn(source);
+  for (const auto& [name, text] : options.defines) {
+    if (names.contains(name)) continue;
+    std::string nearest;
+    std::size_t best = 3;
+    for (const std::string& n : names)
+      if (const std::size_t d = editDistance(name, n); d < best) best = d, nearest = n;
+    options.warn("-D " + shownValue(name) + ": " + chunkName + " never names " + shownValue(name) +
+                 (nearest.empty() ? "" : "; did you mean " + nearest + "?"));
+  }
+}
+
+}  // namespace
+
 Scene runScript(const std::string& source, const std::string& chunkName,
                 const ScriptOptions& options) {
   Sandbox sandbox(options.limits);
@@ -95,6 +139,7 @@ Scene runScript(const std::string& source, const std::string& chunkName,
     lua_setglobal(L, name.c_str());
     defined.push_back(name);
   }
+  warnOfUnreadDefines(source, options, chunkName);
   int results = sandbox.run(withDefinedDefaults(source, parameters, defined), chunkName);
   if (results == 0)
     throw ScriptError(chunkName +

@@ -372,8 +372,16 @@ TEST(HullScript, ErrorsNameTheLine) {
             "part.lua:2: minkowski: takes shapes and unions of them, not a difference");
   EXPECT_EQ(scriptError("return hull(box(2) * sphere(1.2), sphere(1))"),
             "part.lua:1: hull: takes shapes and unions of them, not an intersection");
-  EXPECT_EQ(scriptError("return\nminkowski(torus{R=3, r=1}, sphere(1))"),
-            "part.lua:2: minkowski: the torus is not convex; its sum is not supported");
+  EXPECT_EQ(
+      scriptError("return\nminkowski(torus{R=3, r=1}, sphere(1))"),
+      "part.lua:2: minkowski: the torus is not convex; its sum is not supported: give it as a "
+      "union of convex pieces, whose sums are joined");
+  EXPECT_EQ(
+      scriptError("local L = linear_extrude{square(2) - square(1):translate(1, 1), height=1}\n"
+                  "return minkowski(L, sphere(0.2))"),
+      "part.lua:2: minkowski: the linear_extrude is not convex; its sum is not supported: "
+      "give it as a union of convex pieces, whose sums are joined, or round the profile "
+      "with offset{r=...} before extruding it");
   EXPECT_EQ(scriptError("return rounded_box{size={4, 3, 2}, r=1.5}"),
             "part.lua:1: rounded_box: r must be at most half the smallest side, 1 (got 1.5)");
   EXPECT_EQ(scriptError("return rounded_cylinder{r=1, h=4, fillet=2}"),

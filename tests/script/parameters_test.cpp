@@ -167,6 +167,18 @@ TEST(Parameters, WholeNumbersAreIntegers) {
             "(no error)");
 }
 
+// A -D of a name the script never writes is a typo, told but not refused.
+TEST(Parameters, ADefineNoLineNamesIsWarnedOf) {
+  ScriptOptions options;
+  std::vector<std::string> warnings;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  options.defines = {{"Width", "50"}, {"width", "60"}, {"height", "1"}};
+  runScript("width = 40 -- [10:100]\nreturn box{size={width, 10, 10}}", "part.lua", options);
+  EXPECT_EQ(warnings,
+            (std::vector<std::string>{"-D Width: part.lua never names Width; did you mean width?",
+                                      "-D height: part.lua never names height"}));
+}
+
 TEST(Parameters, LinesKeepTheirNumbersWhenADefineReplacesADefault) {
   const std::string source = "width = 40 -- [10:100]\nerror('here')\n";
   ScriptOptions options;

@@ -236,6 +236,16 @@ TEST(Script, ErrorsNameFileAndLine) {
       {"return box(1):scale(1, 0, 1)", "part.lua:1: transform is singular"},
       {"return sphere(1) + 3", "part.lua:1: operand of '+' must be a solid, got number"},
       {"return union()", "part.lua:1: union: needs at least one solid"},
+      // A variable never set is nil: named as such.
+      {"return sphere(radius_mm)",
+       "part.lua:1: sphere: got nil (a variable without a value?) where r or a table of "
+       "parameters goes"},
+      {"local w = 2\nreturn box{size={w, 2 * w, depth}}",
+       "part.lua:2: box: size must be a list of three numbers {x, y, z}, got a list of 2 (is a "
+       "value in it nil?)"},
+      {"local bosses = {}\nreturn box(10) + union(bosses)",
+       "part.lua:2: union: the list is empty; there is no empty solid, so leave the union out "
+       "when the list is (if #list > 0 then ... end)"},
       {"return quadric{matrix={{1,2,0,0},{0,1,0,0},{0,0,1,0},{0,0,0,-1}}}",
        "part.lua:1: quadric: matrix must be symmetric"},
       {"return camera{eye={0,0,0}, look_at={0,0,0}}", "part.lua:1: camera: eye and look_at"},
