@@ -323,7 +323,7 @@ dvec3 Renderer::normalAt(const SurfaceHit& hit, const Ray& ray, std::uintptr_t* 
   return s.normal;
 }
 
-dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
+dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to, const Media& inside) const {
   Ray ray(from, to - from, 0.0, 1.0);
   dvec3 pass(1.0);
   SpanList spans;
@@ -353,6 +353,20 @@ dvec3 Renderer::transmittance(const dvec3& from, const dvec3& to) const {
     // light by a transparency of 0: to nothing.) A transparent solid dims
     // it by every stretch.
     if (!seeThrough_[i]) {
+      if (inside.holds(int(i))) {
+        // From within: stopped where the way first leaves the solid
+        // before the light (POV-Ray's rule, that surfaces cast shadows;
+        // the camera in the same solid sees its inner walls).
+        objects_[i]->spansToFirstBoundary(ray, spans);
+        for (const Span& s : spans) {
+          const Boundary& b = s.in.t > 0.0 ? s.in : s.out;
+          if (!(b.t > 0.0)) continue;
+          if (!(b.primitive && b.t < 1.0)) return true;
+          pass = dvec3(0.0);
+          return false;
+        }
+        return true;
+      }
       if (!objects_[i]->meetsWindow(ray, spans)) return true;
       pass = dvec3(0.0);
       return false;
@@ -384,7 +398,8 @@ double Renderer::offOf(const dvec3& point) const {
   return 1e-9 * scale_ + 1e-13 * glm::length(point);
 }
 
-dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const {
+dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, const Media& media,
+                       TraceContext& ctx) const {
   const Material& m = *sp.material;
   dvec3 origin = sp.point + offOf(sp.point) * sp.normal;
   // I = Koh·O + Σ Fᵢ·(Kod·O·cos α + r·cos^f β) over the light that shadow
@@ -410,7 +425,7 @@ dvec3 Renderer::direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContex
     dvec3 pass(1.0);
     if (light.castsShadows) {
       ++ctx.counts.shadow;
-      pass = transmittance(origin, s);
+      pass = transmittance(origin, s, media);
       if (largest(pass) <= 0.0) return;
     }
     double highlight = 0.0;
@@ -623,7 +638,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   // (A surface that passes all light shows none of its own: no shadow rays.)
   dvec3 color(0.0);
   if (!leaving && kt < 1.0) {
-    color = direct(sp, ray.dir, ctx) + m.emission;
+    color = direct(sp, ray.dir, media, ctx) + m.emission;
     if (scene_.indirect.samples > 0 && m.diffuse > 0.0)
       color += m.diffuse * sp.color * indirect(sp, media, depth, weight, ctx);
     color *= 1.0 - kt;

@@ -6,6 +6,7 @@
 // ray, traced the same way up to a depth and weight limit.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -115,6 +116,7 @@ struct Media {
   double current() const { return count ? material[count - 1]->ior : 1.0; }
   Media entered(int solid, const Material& m) const;
   Media left(int solid) const;
+  bool holds(int solid) const { return std::find(object, object + count, solid) != object + count; }
 };
 
 class Renderer {
@@ -144,8 +146,11 @@ class Renderer {
   // The share of light that passes from one point to another: 0 where
   // something opaque lies between, the transparency and filter colour of
   // each stretch of a transparent solid (and each transparent surface)
-  // on the way multiplied otherwise. Rays are not bent on the way.
-  dvec3 transmittance(const dvec3& from, const dvec3& to) const;
+  // on the way multiplied otherwise. Rays are not bent on the way. An
+  // opaque solid that `from` is inside of (one of `inside`'s: a room the
+  // camera stands in) stops the light only where the way leaves it, as
+  // its walls would.
+  dvec3 transmittance(const dvec3& from, const dvec3& to, const Media& inside = {}) const;
 
   const CameraSpec& camera() const { return cameraSpec_; }
   const std::vector<Light>& lights() const { return lights_; }
@@ -155,7 +160,9 @@ class Renderer {
   // raysLeft: how many rays the tree below this one may trace.
   dvec3 trace(const Ray& ray, int depth, double weight, const Media& media, TraceContext& ctx,
               int raysLeft = kRaysPerCameraRay - 1) const;
-  dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, TraceContext& ctx) const;
+  // media: those the point is in (transmittance's `inside`).
+  dvec3 direct(const ShadingPoint& sp, const dvec3& viewDir, const Media& media,
+               TraceContext& ctx) const;
   // Hall's transmitted highlight: the lights beyond a transparent face
   // seen through it, about `onward`, the way the eye ray goes on past it.
   dvec3 transmittedHighlight(const ShadingPoint& sp, const dvec3& onward, TraceContext& ctx) const;

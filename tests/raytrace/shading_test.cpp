@@ -1111,5 +1111,37 @@ TEST(Shading, DiscAndTriangleRenderWhereTheirFormulasSay) {
   EXPECT_NEAR(green * pixelArea, 0.5 * std::abs(tn.z), 0.05);
 }
 
+// ------------------------------------------------------------- inside a solid
+
+// A room made as one opaque box with the camera and the light inside it:
+// its inner walls are lit (a wall casts a shadow, the solid's inside does
+// not), the ball on the floor shadows the floor under it, and a light
+// outside the room is stopped by its walls.
+TEST(Shading, ALightInsideAnOpaqueSolidLightsItsInnerWalls) {
+  auto renderOf = [](const dvec3& light) {
+    Scene scene;
+    scene.objects = {
+        boxFromTo(dvec3(-5), dvec3(5))->withDefaultMaterial(matte(dvec3(1), 0.1, 0.9)),
+        sphereAt(dvec3(0, 0, -4), 0.5)->withDefaultMaterial(matte(dvec3(1), 0.1, 0.9))};
+    scene.camera = CameraSpec{dvec3(0, -3, 0), dvec3(0, 0, -2), dvec3(0, 0, 1), 60.0};
+    Light l;
+    l.position = light;
+    scene.lights = {l};
+    return scene;
+  };
+  const dvec3 eye(0, -3, 0);
+  auto toward = [&](const dvec3& p) { return Ray(eye, p - eye); };
+  const Scene inside = renderOf(dvec3(0, 0, 3));
+  const Renderer renderer(inside, {8, 8, 1});
+  // Lambert at the floor point (2, 0, −5): ambient + diffuse · cos α.
+  const double cosAlpha = 8.0 / std::sqrt(68.0);
+  EXPECT_NEAR(renderer.trace(toward(dvec3(2, 0, -5))).x, 0.1 + 0.9 * cosAlpha, 1e-9);
+  // Under the ball (on the camera's side of it), in its shadow: ambient alone.
+  EXPECT_NEAR(renderer.trace(toward(dvec3(0, -0.4, -5))).x, 0.1, 1e-9);
+  // A light above the room: its ceiling is between.
+  const Scene outside = renderOf(dvec3(0, 0, 8));
+  EXPECT_NEAR(Renderer(outside, {8, 8, 1}).trace(toward(dvec3(2, 0, -5))).x, 0.1, 1e-9);
+}
+
 }  // namespace
 }  // namespace csgray::detail
