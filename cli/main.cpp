@@ -61,6 +61,16 @@ const char* unknownCommand(const CLI::App& app, int argc, char** argv) {
   return argv[1];
 }
 
+// CLI11's words where they are hard to read: an option given twice is
+// "--output: At Most 1 required but received 2".
+std::string readableParseError(const std::string& message) {
+  const std::string twice = ": At Most 1 required but received ";
+  if (const std::size_t at = message.find(twice); at != std::string::npos)
+    return message.substr(0, at) + ": given " + message.substr(at + twice.size()) +
+           " times; give it once";
+  return message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,7 +103,7 @@ int main(int argc, char** argv) {
           "unknown command '" + std::string(name) +
               "'; the commands are render, export, check, info and view (see csgray --help)",
           2, true);
-    return error(std::string(e.what()) + " (see csgray --help)", 2, true);
+    return error(readableParseError(e.what()) + " (see csgray --help)", 2, true);
   }
 
   try {

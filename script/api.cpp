@@ -80,9 +80,8 @@ int box(lua_State* L) {
   LuaArgs args = shapeArgs(L, "box", "size");
   std::optional<dvec3> size = args.vec3("size");
   bool center = args.boolean("center").value_or(false);
-  SolidPtr solid = boxShape(size, center);
-  args.finish();
-  pushSolid(L, solid);
+  args.finish();  // an unknown name (corner1=) before "needs size"
+  pushSolid(L, boxShape(size, center));
   return 1;
 }
 
@@ -99,9 +98,8 @@ int cylinderOrCone(lua_State* L, const char* function) {
   p.r2 = args.number("r2");
   p.d2 = args.number("d2");
   p.center = args.boolean("center").value_or(false);
-  SolidPtr solid = cylinderShape(function, p);
-  args.finish();
-  pushSolid(L, solid);
+  args.finish();  // an unknown name (base=) before "needs h"
+  pushSolid(L, cylinderShape(function, p));
   return 1;
 }
 

@@ -19,8 +19,6 @@ int light(lua_State* L) {
   LightParams p;
   p.kind = kind;
   std::optional<dvec3> position = args.vec3("pos");
-  if (!position) throw std::invalid_argument(args.function() + ": needs pos={x, y, z}");
-  p.position = *position;
   if (kind == Light::Kind::Spot) {
     p.lookAt = args.vec3("look_at");
     p.direction = args.vec3("direction");
@@ -36,10 +34,20 @@ int light(lua_State* L) {
     p.samples = args.number("samples").value_or(p.samples);
   p.color = args.color("color").value_or(p.color);
   p.intensity = args.number("intensity").value_or(p.intensity);
+  // POV-Ray's spot falloff is an angle, where csgray's is a switch.
+  if (args.push("falloff")) {
+    const bool number = lua_type(L, -1) == LUA_TNUMBER;
+    lua_pop(L, 1);
+    if (number)
+      throw std::invalid_argument(args.function() +
+                                  ": falloff must be true or false (divide by the squared "
+                                  "distance); POV-Ray's falloff angle of a spot is angle= here");
+  }
   p.falloff = args.boolean("falloff").value_or(false);
-  Light made = makeLight(p);
-  args.finish();
-  pushValue(L, made);
+  args.finish();  // an unknown name (location=) before "needs pos"
+  if (!position) throw std::invalid_argument(args.function() + ": needs pos={x, y, z}");
+  p.position = *position;
+  pushValue(L, makeLight(p));
   return 1;
 }
 

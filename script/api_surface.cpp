@@ -94,9 +94,11 @@ int surfaceBooleanError(lua_State* L) {
   SurfacePtr* s = toValue<SurfacePtr>(L, 1);
   if (!s) s = toValue<SurfacePtr>(L, 2);
   std::string kind = s ? (*s)->kind() : "surface";
-  throw std::invalid_argument("a " + kind +
-                              " is a surface, not a solid: it encloses no volume, so it cannot "
-                              "take part in a boolean (put it in scene{objects=...} instead)");
+  throw std::invalid_argument(
+      "a " + kind +
+      " is a surface, not a solid: it encloses no volume, so it cannot take part in a boolean "
+      "(put it in scene{objects=...} instead)" +
+      halfSpaceHint(kind));
 }
 
 }  // namespace

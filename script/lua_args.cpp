@@ -86,14 +86,44 @@ namespace {
 // one a typo or two away.
 std::string parameterHint(const std::string& key, const std::set<std::string>& known) {
   static const std::multimap<std::string, std::string> kOtherNames = {
-      {"angle", "fov"},    {"location", "eye"},     {"location", "pos"},
-      {"position", "pos"}, {"point_at", "look_at"}, {"tightness", "exponent"},
-      {"colour", "color"}, {"rgb", "color"},        {"radius", "r"},
-      {"diameter", "d"},   {"radius1", "r1"},       {"radius2", "r2"},
-      {"a", "angle"},      {"v", "axis"},  // OpenSCAD's rotate(a=, v=)
+      {"angle", "fov"},
+      {"location", "eye"},
+      {"location", "pos"},
+      {"position", "pos"},
+      {"point_at", "look_at"},
+      {"tightness", "exponent"},
+      {"colour", "color"},
+      {"rgb", "color"},
+      {"radius", "r"},
+      {"diameter", "d"},
+      {"radius1", "r1"},
+      {"radius2", "r2"},
+      {"a", "angle"},
+      {"v", "axis"},  // OpenSCAD's rotate(a=, v=)
+      // POV-Ray's.
+      {"pigment", "color"},
+      {"phong", "specular"},
+      {"phong_size", "shininess"},
+      {"roughness", "shininess"},
+      {"transmit", "transparency"},
+      {"interior", "ior"},
+      {"sky", "up"},
+      {"radius", "angle"},
+      {"axis1", "u"},
+      {"axis2", "v"},
+      {"fade_distance", "falloff"},
+      {"fade_power", "falloff"},
+      {"max_trace_level", "max_depth"},
+      {"turbulence", "strength"},
   };
   for (auto [it, end] = kOtherNames.equal_range(key); it != end; ++it)
     if (known.count(it->second)) return "; did you mean '" + it->second + "'?";
+  // POV-Ray's shapes placed by their points: here a shape is made about
+  // the origin and then moved.
+  if ((key == "center" || key == "base" || key == "cap" || key == "corner1" || key == "corner2") &&
+      !known.count(key))
+    return "; shapes are made at the origin here and placed with :translate(x, y, z) (and "
+           ":rotate for a cylinder's axis)";
   // OpenSCAD's facet counts have nothing to set here.
   if (key == "slices" || key == "segments" || key == "fn")
     return "; OpenSCAD's " + key +
@@ -259,6 +289,13 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
 
 dvec3 toColor(lua_State* L, int index, const std::string& what) {
   const int type = lua_type(L, index);
+  // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: the fourth number has a
+  // parameter of its own.
+  if (type == LUA_TTABLE && lua_rawlen(L, index) == 4)
+    throw std::invalid_argument(what +
+                                " must be {r, g, b}: a fourth number (OpenSCAD's alpha, POV-Ray's "
+                                "filter or transmit) is transparency= here, with filter={r, g, b} "
+                                "for a tint");
   if (type == LUA_TNUMBER || (type == LUA_TTABLE && lua_rawlen(L, index) == 3))
     return toVec3(L, index, what);
   if (type != LUA_TSTRING)

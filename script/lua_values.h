@@ -111,6 +111,12 @@ inline std::string regionShown(lua_State* L, int index) {
   return kind == "region" ? std::string() : " (a " + kind + ")";
 }
 
+// For a plane where a solid was wanted: its solid side is a half-space
+// (POV-Ray's plane in CSG). "" for another surface.
+inline std::string halfSpaceHint(const std::string& surfaceKind) {
+  return surfaceKind == "plane" ? "; the solid side of a plane is half_space{normal=...}" : "";
+}
+
 // The value at index, or an error "<what> must be a <type>". A surface
 // given for a solid is told apart: what it cannot do is `solidUse`; so is
 // a 2D region.
@@ -121,8 +127,10 @@ inline const T& checkValue(
   if (T* v = toValue<T>(L, index)) return *v;
   if constexpr (std::is_same_v<T, SolidPtr>) {
     if (SurfacePtr* s = toValue<SurfacePtr>(L, index))
-      throw std::invalid_argument(what + " must be a solid, but a " + (*s)->kind() +
-                                  " is a surface: it encloses no volume, so it cannot " + solidUse);
+      throw std::invalid_argument(
+          what + " must be a solid, but a " + (*s)->kind() +
+          " is a surface: it encloses no volume, so it cannot " + solidUse +
+          (solidUse.starts_with("take part in a boolean") ? halfSpaceHint((*s)->kind()) : ""));
     if (toValue<RegionPtr>(L, index))
       throw std::invalid_argument(what + " must be a solid, not a 2D region" +
                                   regionShown(L, index) +

@@ -34,7 +34,7 @@ std::string methodNameHint(const std::string& name, bool isFunction) {
   return "";
 }
 
-std::string openscadNameHint(const std::string& name) {
+std::string otherToolNameHint(const std::string& name) {
   // OpenSCAD's built-in modules and functions that csgray calls otherwise.
   static const std::map<std::string, std::string> kNames = {
       {"cube", "OpenSCAD's cube is box{size={x, y, z}} (or box(s)) here"},
@@ -62,6 +62,21 @@ std::string openscadNameHint(const std::string& name) {
       {"round", "OpenSCAD's round(x) is math.floor(x + 0.5) here"},
       {"sign", "there is no sign(): write x > 0 and 1 or x < 0 and -1 or 0"},
       {"norm", "there is no norm(): write math.sqrt(x^2 + y^2 + z^2)"},
+      // POV-Ray's.
+      {"light_source",
+       "POV-Ray's light_source is point_light{pos={x, y, z}} here (or "
+       "spot_light{}, area_light{}), given in scene{lights={...}}"},
+      {"merge", "POV-Ray's merge is union(a, b) or a + b here (a union has no inner faces)"},
+      {"lathe", "POV-Ray's lathe is rotate_extrude{region} here"},
+      {"sor", "POV-Ray's sor is rotate_extrude{region} here"},
+      {"prism", "POV-Ray's prism is linear_extrude{region, height=h} here"},
+      {"blob", "there are no blobs: hull(a, b) or rounded_box{} round shapes"},
+      {"bozo", "POV-Ray's bozo is perlin{} here"},
+      {"granite", "there is no granite pattern: perlin{}, turbulence{}, marble{} or wood{}"},
+      {"rgb",
+       "POV-Ray's rgb <r, g, b> is {r, g, b} here, linear as in POV-Ray 3.7 (srgb(r, g, "
+       "b) is for sRGB codes such as those of a paint program)"},
+      {"rgbf", "POV-Ray's rgbf is color={r, g, b} with transparency= and filter={r, g, b} here"},
   };
   if (auto it = kNames.find(name); it != kNames.end()) return "; " + it->second;
   // OpenSCAD's maths functions are those of Lua's math table, which take

@@ -9,8 +9,9 @@
 namespace csgray::detail {
 
 // For a call of a global that does not exist: "; <hint>" when name is one
-// of OpenSCAD's (cube, translate, echo, text, abs, ...), else "".
-std::string openscadNameHint(const std::string& name);
+// of OpenSCAD's (cube, translate, echo, text, abs, ...) or POV-Ray's
+// (light_source, merge, lathe, ...), else "".
+std::string otherToolNameHint(const std::string& name);
 
 // For a method that does not exist, called as OpenSCAD's or POV-Ray's
 // habit would call it on a part (s:color(...), s:texture(...),

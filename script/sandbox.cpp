@@ -103,7 +103,7 @@ std::string unknownCallHint(lua_State* L, const std::string& message) {
   std::string nearest;
   std::size_t best = 3;
   if (kind == "global") {
-    if (std::string hint = openscadNameHint(name); !hint.empty()) return hint;
+    if (std::string hint = otherToolNameHint(name); !hint.empty()) return hint;
     lua_pushglobaltable(L);
     nearestFunction(L, name, nearest, best);
     lua_pop(L, 1);

@@ -185,6 +185,9 @@ expect_failure "zero size" "$work/out.png" render "$work/part.lua" -o "$work/out
 expect_failure "absurd size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 100000x100000
 expect_failure "too many pixels" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 16000x16000
 expect_failure "malformed size" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size big
+# An option given twice, in words.
+expect_exit 2 "output given twice" "$work/out.png" render "$work/part.lua" -o "$work/out.png" -o "$work/out2.png"
+expect_in_stderr "output given twice" "--output: given 2 times; give it once"
 # A side of many digits is a size out of range, not a malformed one.
 expect_exit 2 "size of many digits" "$work/out.png" render "$work/part.lua" -o "$work/out.png" --size 1x67108864
 expect_in_stderr "size of many digits" "--size: image size 1x67108864 is out of range"
