@@ -65,7 +65,7 @@ TriangleMesh readMeshFileAsError(const std::string& path) {
   if (!isReadableMeshName(path))
     throw csgray::Error(ErrorCode::InvalidArgument,
                         std::filesystem::path(path).filename().string() +
-                            ": unknown mesh format; use .stl, .obj, .off or .ply");
+                            ": unknown mesh format; use .stl, .obj, .off, .ply or .3mf");
   try {
     return readMeshFile(path);
   } catch (const std::bad_alloc&) {

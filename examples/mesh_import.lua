@@ -1,6 +1,6 @@
 -- mesh_import.lua: a part read from a mesh file, drilled and shown.
 --   csgray render examples/mesh_import.lua -o mesh_import.png
--- mesh{file=...} reads STL, OBJ, OFF or PLY; the path is relative to this
+-- mesh{file=...} reads STL, OBJ, OFF, PLY or 3MF; the path is relative to this
 -- script and may not leave its folder (unless allowed with --allow-path).
 -- The mesh is a solid like any other: here two holes are cut through it.
 -- A file that is not a closed solid is refused, saying where it is open,

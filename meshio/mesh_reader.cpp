@@ -103,7 +103,7 @@ std::string lowerExtension(const std::string& name) {
 
 bool isReadableMeshName(const std::string& name) {
   const std::string ext = lowerExtension(name);
-  return ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply";
+  return ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".3mf";
 }
 
 TriangleMesh readMesh(std::string_view bytes, const std::string& name,
@@ -113,7 +113,8 @@ TriangleMesh readMesh(std::string_view bytes, const std::string& name,
   if (ext == ".obj") return readObj(bytes, name, limits);
   if (ext == ".off") return readOff(bytes, name, limits);
   if (ext == ".ply") return readPly(bytes, name, limits);
-  fail(name, "unknown mesh format " + shown(ext) + "; use .stl, .obj, .off or .ply");
+  if (ext == ".3mf") return read3mf(bytes, name, limits);
+  fail(name, "unknown mesh format " + shown(ext) + "; use .stl, .obj, .off, .ply or .3mf");
 }
 
 TriangleMesh readMeshFile(const std::string& path, const MeshReadLimits& limits) {

@@ -1,5 +1,5 @@
-// Readers of triangle mesh files: STL (ASCII and binary), OBJ, OFF and PLY
-// (ASCII and binary). Our own rather than OpenMesh's, so that a bad file
+// Readers of triangle mesh files: STL (ASCII and binary), OBJ, OFF, PLY
+// (ASCII and binary) and 3MF (through lib3mf). Our own rather than OpenMesh's, so that a bad file
 // gets one line naming the file and the line (text) or byte (binary) where
 // it goes wrong, and so that no declared count is trusted before it is
 // checked against the file's size.
@@ -32,12 +32,15 @@ TriangleMesh readOff(std::string_view bytes, const std::string& name,
                      const MeshReadLimits& limits = {});
 TriangleMesh readPly(std::string_view bytes, const std::string& name,
                      const MeshReadLimits& limits = {});
+// 3MF: the build's objects, placed (threemf_reader.cpp).
+TriangleMesh read3mf(std::string_view bytes, const std::string& name,
+                     const MeshReadLimits& limits = {});
 
 // Whether `name`'s extension is one of the formats read here (.stl, .obj,
-// .off, .ply, in any case).
+// .off, .ply, .3mf, in any case).
 bool isReadableMeshName(const std::string& name);
-// The reader chosen by the extension of `name` (.stl, .obj, .off, .ply, in
-// any case).
+// The reader chosen by the extension of `name` (.stl, .obj, .off, .ply,
+// .3mf, in any case).
 TriangleMesh readMesh(std::string_view bytes, const std::string& name,
                       const MeshReadLimits& limits = {});
 // Reads the file at path (refusing one larger than the limit before reading

@@ -16,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/srgb.h"
 #include "meshio/binary_stl_writer.h"
+#include "meshio/lib3mf_handle.h"
 
 namespace csgray::detail {
 
@@ -77,15 +78,6 @@ void check3mf(LIB3MFRESULT result, const std::string& path, const char* what,
     message += std::string(" (") + text + ")";
   throw std::runtime_error(message);
 }
-
-// Releases a lib3mf object when it goes out of scope. (lib3mf 1.x passes
-// objects as PLib3MFBase*, a pointer to its opaque handle type.)
-struct Released {
-  NMR::PLib3MFBase* object = nullptr;
-  ~Released() {
-    if (object) NMR::lib3mf_release(object);
-  }
-};
 
 // lib3mf 1.8 prints a coordinate by cutting its float after six decimals,
 // not by rounding it. The exporter has already rounded each coordinate to

@@ -55,7 +55,7 @@ CSGRAY_API Mesh exportMesh(const Solid& solid, const ExportOptions& options = {}
 // Atomic, as writeImage. A mesh without triangles is refused
 // (InvalidArgument): no file of it would read back.
 CSGRAY_API void writeMesh(const Mesh& mesh, const std::string& path, bool ascii = false);
-// Reads a mesh file (STL, OBJ, OFF or PLY): polygons are split into
+// Reads a mesh file (STL, OBJ, OFF, PLY or 3MF): polygons are split into
 // triangles and equal vertices merged; it is not checked (see meshDefect).
 CSGRAY_API Mesh readMesh(const std::string& path);
 

@@ -90,7 +90,7 @@ class CSGRAY_API Solid {
   // the fault when it is not such a mesh: open, not a 2-manifold, inside
   // out, or with faces that cross (as fromMeshFile and mesh{} refuse it).
   static Solid fromMesh(const Mesh& mesh);
-  // A mesh file (STL, OBJ, OFF or PLY) as a solid; with repair, what can
+  // A mesh file (STL, OBJ, OFF, PLY or 3MF) as a solid; with repair, what can
   // be mended is, and repairReport (if given) says what was done.
   static Solid fromMeshFile(const std::string& path, bool repair = false,
                             std::string* repairReport = nullptr);

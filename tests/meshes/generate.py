@@ -2,8 +2,10 @@
 """Writes the mesh reader test files: a 2 x 3 x 4 box (volume 24) in every
 format and variant, and the bad files, each broken in one way that
 tests/meshio/mesh_reader_test.cpp names. Run from this folder."""
+import io
 import math
 import struct
+import zipfile
 
 # The box [0,2]x[0,3]x[0,4]: 8 corners, 6 quads counter-clockwise seen
 # from outside.
@@ -73,6 +75,35 @@ def ply(fmt, faces=QUADS, points=P, vertex_count=None, face_count=None):
     return data + struct.pack(endian + "i", 42)
 
 
+def threemf(model_body):
+    """A 3MF package (a zip of three parts) holding the model; the box is
+    object 1. Fixed dates, so the bytes are the same each run."""
+    vertices = "".join('<vertex x="%s" y="%s" z="%s"/>' % p for p in P)
+    triangles = "".join('<triangle v1="%d" v2="%d" v3="%d"/>' % t for t in TRIS)
+    model = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+             '<model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
+             f'<resources><object id="1" type="model"><mesh><vertices>{vertices}</vertices>'
+             f'<triangles>{triangles}</triangles></mesh></object>{model_body}</model>')
+    parts = {
+        "[Content_Types].xml":
+            '<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.openxmlformats.org/'
+            'package/2006/content-types"><Default Extension="rels" ContentType="application/'
+            'vnd.openxmlformats-package.relationships+xml"/><Default Extension="model" '
+            'ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>',
+        "_rels/.rels":
+            '<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.'
+            'openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" '
+            'Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>'
+            '</Relationships>',
+        "3D/3dmodel.model": model,
+    }
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, text in parts.items():
+            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), text)
+    return out.getvalue()
+
+
 # Good files: the same box.
 write("box_ascii.stl", ascii_stl(TRIS))
 write("box_binary.stl", binary_stl(TRIS))
@@ -129,3 +160,12 @@ write("shared_edge.obj", obj(QUADS + [tuple(i + 8 for i in q) for q in QUADS], P
 # Two overlapping boxes in one file.
 R = [(x + 1, y + 1, z + 1) for x, y, z in P]
 write("overlapping.obj", obj(QUADS + [tuple(i + 8 for i in q) for q in QUADS], P + R))
+# 3MF: the box in a components object (moved by 5 along x), placed by a
+# build item turned 90 degrees about z and moved by (10, 20, 30); and the
+# box itself mirrored in x (its faces must turn back outward).
+placed = threemf('<object id="2" type="model"><components><component objectid="1" '
+                 'transform="1 0 0 0 1 0 0 0 1 5 0 0"/></components></object></resources>'
+                 '<build><item objectid="2" transform="0 1 0 -1 0 0 0 0 1 10 20 30"/>'
+                 '<item objectid="1" transform="-1 0 0 0 1 0 0 0 1 0 0 0"/></build>')
+write("placed_components.3mf", placed)
+write("truncated.3mf", placed[: len(placed) // 2])

@@ -165,6 +165,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"solid_header_wrong_size.stl",
                 "solid_header_wrong_size.stl: a binary STL whose header begins with \"solid\", "
                 "declaring 12 triangles (684 bytes) in a file of 677 bytes"},
+        BadFile{"truncated.3mf",
+                "truncated.3mf: not a 3MF file lib3mf can read (Could not read ZIP file)"},
         BadFile{"truncated_ascii.stl",
                 "truncated_ascii.stl:40: the file ends inside a facet (truncated?)"},
         BadFile{"no_endsolid.stl",
@@ -226,6 +228,20 @@ std::string errorOf(F f) {
     return e.what();
   }
   return "(no error)";
+}
+
+// A 3MF file's build: the box in a components object moved by 5 along x,
+// placed turned 90° about z and moved by (10, 20, 30), and the box mirrored
+// in x, whose faces the reader turns back outward (tests/meshes/generate.py).
+TEST(MeshReader, ThreeMfBuildItemsAndComponentsArePlaced) {
+  const TriangleMesh mesh = readMeshFile(kMeshes + "placed_components.3mf");
+  EXPECT_EQ(mesh.size(), 24u);
+  EXPECT_NEAR(mesh.volume(), 2 * 24.0, 1e-12);
+  EXPECT_EQ(meshDefect(mesh).text, "");
+  dvec3 lo(kInfinity), hi(-kInfinity);
+  for (const dvec3& p : mesh.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  EXPECT_EQ(lo, dvec3(-2, 0, 0));
+  EXPECT_EQ(hi, dvec3(10, 27, 34));
 }
 
 TEST(MeshReader, UpperCaseAsciiStlIsRead) {
