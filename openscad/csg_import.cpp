@@ -726,8 +726,8 @@ class Importer {
                    [](unsigned char c) { return std::tolower(c); });
     if (ext == ".dxf") return {nullptr, importDxf(node, f->text)};
     if (ext == ".svg") return {nullptr, importSvg(node, f->text)};
-    if (ext != ".stl" && ext != ".off" && ext != ".obj" && ext != ".ply")
-      throw NodeError(f->text + ": not a file csgray reads (STL, OFF, OBJ, PLY, DXF, SVG)");
+    if (ext != ".stl" && ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".3mf")
+      throw NodeError(f->text + ": not a file csgray reads (STL, OFF, OBJ, PLY, 3MF, DXF, SVG)");
     if (!options_.loadMesh) throw NodeError("this program cannot read mesh files");
     SolidPtr solid = meshShape(options_.loadMesh(resolved(f->text)), f->text);
     const double scale = number(node, "scale", 1.0);
