@@ -280,8 +280,8 @@ class SvgReader {
       // A number past the range (1e20) is not "not a length".
       const std::string value = trimmed(a->value);
       if (const std::size_t end = svgNumberEnd(value, 0); end > 0)
-        fail(a->line, a->name + ": the number " + svgExcerpt(value.substr(0, end)) +
-                          " is out of range");
+        fail(a->line,
+             a->name + ": the number " + svgExcerpt(value.substr(0, end)) + " is out of range");
       fail(a->line, a->name + ": expected a length, found \"" + svgExcerpt(value) + "\"");
     }
     if (l->unit == "em" || l->unit == "ex")

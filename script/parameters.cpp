@@ -315,10 +315,9 @@ ParameterValue plainDefineValue(const std::string& name, const std::string& text
   // brace a typo rather than a string; a string may start with a brace in
   // quotes ("{a}").
   if (!text.empty() && (text.front() == '{' || text.back() == '}')) {
-    auto numbers =
-        text.size() >= 2 && text.front() == '{' && text.back() == '}'
-            ? numberList(std::string_view(text).substr(1, text.size() - 2))
-            : std::nullopt;
+    auto numbers = text.size() >= 2 && text.front() == '{' && text.back() == '}'
+                       ? numberList(std::string_view(text).substr(1, text.size() - 2))
+                       : std::nullopt;
     if (!numbers)
       throw DefineError(refused + "a vector is finite numbers between braces, e.g. {90,60,30}");
     value.kind = ParameterKind::Vector;
