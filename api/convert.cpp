@@ -79,6 +79,7 @@ LightParams toDetail(const csgray::Light& light) {
   p.lookAt = toDetail(light.lookAt);
   p.direction = toDetail(light.direction);
   p.angle = light.angle;
+  p.inner = light.inner;
   p.exponent = light.exponent;
   p.u = toDetail(light.u);
   p.v = toDetail(light.v);
@@ -96,6 +97,8 @@ csgray::Light toPublic(const Light& light) {
   made.falloff = light.inverseSquare;
   if (light.kind == Light::Kind::Spot) made.direction = toPublic(light.direction);
   made.angle = light.coneDegrees;
+  if (light.kind == Light::Kind::Spot && light.innerDegrees < light.coneDegrees)
+    made.inner = light.innerDegrees;
   made.exponent = light.exponent;
   made.u = toPublic(light.edgeU);
   made.v = toPublic(light.edgeV);

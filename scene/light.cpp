@@ -51,8 +51,17 @@ dvec3 Light::radianceAt(const dvec3& p, const dvec3& s) const {
   if (inverseSquare) scale /= std::max(d2, 1e-300);
   if (kind == Kind::Spot) {
     double cosine = glm::dot(toPoint, direction) / std::sqrt(d2 * glm::dot(direction, direction));
-    if (!(cosine >= std::cos(coneDegrees * std::numbers::pi / 180.0))) return dvec3(0.0);
+    const double cosCone = std::cos(coneDegrees * std::numbers::pi / 180.0);
+    if (!(cosine >= cosCone)) return dvec3(0.0);
     scale *= std::pow(cosine, exponent);
+    // The soft edge: smoothstep (3t² − 2t³) of the cosine between the
+    // cone's and the inner angle's, as POV-Ray fades a spotlight between
+    // its falloff and radius angles.
+    const double cosInner = std::cos(innerDegrees * std::numbers::pi / 180.0);
+    if (cosine < cosInner) {
+      const double t = (cosine - cosCone) / (cosInner - cosCone);
+      scale *= t * t * (3.0 - 2.0 * t);
+    }
   }
   return scale * color;
 }
@@ -94,6 +103,10 @@ Light makeLight(const LightParams& p) {
       if (!(p.angle > 0.0 && p.angle < 90.0))
         throw std::invalid_argument("spot_light: angle must be between 0 and 90 degrees");
       light.coneDegrees = p.angle;
+      light.innerDegrees = p.inner.value_or(p.angle);
+      if (!(light.innerDegrees > 0.0 && light.innerDegrees <= p.angle))
+        throw std::invalid_argument(
+            "spot_light: inner must be more than 0 degrees and at most angle");
       checkNonNegative(f, "exponent", p.exponent);
       light.exponent = p.exponent;
       break;

@@ -24,9 +24,12 @@ struct Light {
   bool castsShadows = true;
 
   // Spot (Warn, "Lighting Controls for Synthetic Images", 1983): light along direction,
-  // cos^exponent of the angle off the axis, nothing beyond coneDegrees off it.
+  // cos^exponent of the angle off the axis, nothing beyond coneDegrees off it;
+  // from innerDegrees out to the cone's edge it fades to nothing (a soft
+  // edge, POV-Ray's radius and falloff; innerDegrees ≥ coneDegrees: none).
   dvec3 direction{0.0, 0.0, -1.0};
   double coneDegrees = 30.0;
+  double innerDegrees = 90.0;
   double exponent = 1.0;
 
   // Rectangle: position ± edgeU/2 ± edgeV/2. Sphere: radius about position.
@@ -58,7 +61,8 @@ struct LightParams {
   bool falloff = false;  // divide by the squared distance
   // Spot: aimed at lookAt or along direction (not both); neither: down -z.
   std::optional<dvec3> lookAt, direction;
-  double angle = 30.0;  // degrees off the axis the cone reaches
+  double angle = 30.0;          // degrees off the axis the cone reaches
+  std::optional<double> inner;  // where its edge starts to fade; none: angle, a hard edge
   double exponent = 1.0;
   dvec3 u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0};  // Rectangle: its edges
   double radius = 1.0;                       // Sphere

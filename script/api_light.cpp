@@ -23,6 +23,7 @@ int light(lua_State* L) {
     p.lookAt = args.vec3("look_at");
     p.direction = args.vec3("direction");
     p.angle = args.number("angle").value_or(p.angle);
+    p.inner = args.number("inner");
     p.exponent = args.number("exponent").value_or(p.exponent);
   }
   if (kind == Light::Kind::Rectangle) {
@@ -41,7 +42,7 @@ int light(lua_State* L) {
     if (number)
       throw std::invalid_argument(args.function() +
                                   ": falloff must be true or false (divide by the squared "
-                                  "distance); POV-Ray's falloff angle of a spot is angle= here");
+                                  "distance); POV-Ray's falloff angle of a spot is angle= here, its radius inner=");
   }
   p.falloff = args.boolean("falloff").value_or(false);
   args.finish();  // an unknown name (location=) before "needs pos"

@@ -108,7 +108,7 @@ std::string parameterHint(const std::string& key, const std::set<std::string>& k
       {"transmit", "transparency"},
       {"interior", "ior"},
       {"sky", "up"},
-      {"radius", "angle"},
+      {"radius", "inner"},
       {"axis1", "u"},
       {"axis2", "v"},
       {"fade_distance", "falloff"},

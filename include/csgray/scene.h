@@ -80,6 +80,9 @@ struct Light {
   // -z), lighting angle degrees off its axis (0 to 90) by cos^exponent.
   std::optional<Vec3> lookAt, direction;
   double angle = 30.0;
+  // Spot: full light within inner degrees, fading smoothly to none at
+  // angle (POV-Ray's radius and falloff); none: a hard edge at angle.
+  std::optional<double> inner;
   double exponent = 1.0;
   Vec3 u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0};  // Area: the rectangle's edges
   double radius = 1.0;                      // Sphere

@@ -787,13 +787,16 @@ TEST(ApiCheck, ASoundPartPasses) {
 
 TEST(ApiScript, AnExampleGivesItsScene) {
   const csgray::Scene scene = csgray::runScript(CSGRAY_SOURCE_DIR "/examples/spot_light.lua");
-  // spot_light.lua: a floor, a part, a camera, a spot and a point light.
+  // spot_light.lua: a floor, a part, a camera, two spots (the second with
+  // a soft edge) and a point light.
   EXPECT_EQ(scene.objects().size(), 1u);
   EXPECT_EQ(scene.surfaces().size(), 1u);
-  ASSERT_EQ(scene.lights().size(), 2u);
+  ASSERT_EQ(scene.lights().size(), 3u);
   EXPECT_EQ(scene.lights()[0].kind, csgray::Light::Kind::Spot);
   EXPECT_EQ(scene.lights()[0].angle, 20.0);
-  EXPECT_EQ(scene.lights()[1].kind, csgray::Light::Kind::Point);
+  EXPECT_FALSE(scene.lights()[0].inner);
+  EXPECT_EQ(scene.lights()[1].inner, 6.0);
+  EXPECT_EQ(scene.lights()[2].kind, csgray::Light::Kind::Point);
   ASSERT_TRUE(scene.camera());
   EXPECT_EQ(scene.camera()->eye, (Vec3{0, -9, 6}));
   EXPECT_EQ(scene.background(), (Vec3{0.01, 0.01, 0.02}));

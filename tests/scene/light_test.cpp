@@ -48,6 +48,39 @@ TEST(Light, SpotConeEdgeAndCosineFalloff) {
   EXPECT_DOUBLE_EQ(spot.radianceAt(dvec3(0), spot.position).x, 1.0);
 }
 
+// A soft edge (POV-Ray's radius and falloff): full light within inner,
+// none at the cone's edge, smoothstep of the cosine between.
+TEST(Light, SpotSoftEdgeFadesBySmoothstep) {
+  LightParams p;
+  p.kind = Light::Kind::Spot;
+  p.position = dvec3(0, 0, 10);
+  p.angle = 30.0;
+  p.inner = 20.0;
+  p.exponent = 0.0;
+  const Light spot = makeLight(p);
+  const double pi = std::numbers::pi;
+  auto at = [&](double degrees) {
+    return spot.radianceAt(dvec3(10.0 * std::tan(degrees * pi / 180.0), 0, 0), spot.position).x;
+  };
+  EXPECT_DOUBLE_EQ(at(0.0), 1.0);
+  EXPECT_DOUBLE_EQ(at(19.9), 1.0);
+  EXPECT_EQ(at(30.1), 0.0);
+  const double c20 = std::cos(20.0 * pi / 180.0), c30 = std::cos(30.0 * pi / 180.0);
+  for (double degrees : {21.0, 25.0, 29.0}) {
+    const double t = (std::cos(degrees * pi / 180.0) - c30) / (c20 - c30);
+    EXPECT_NEAR(at(degrees), t * t * (3.0 - 2.0 * t), 1e-12) << degrees;
+  }
+  EXPECT_GT(at(21.0), at(25.0));
+  EXPECT_GT(at(25.0), at(29.0));
+  // Without inner, the edge is hard, as before.
+  p.inner.reset();
+  EXPECT_DOUBLE_EQ(
+      makeLight(p).radianceAt(dvec3(10.0 * std::tan(29.9 * pi / 180.0), 0, 0), spot.position).x,
+      1.0);
+  p.inner = 40.0;
+  EXPECT_THROW(makeLight(p), std::invalid_argument);
+}
+
 TEST(Light, RectangleSamplesAreStratifiedOverTheRectangle) {
   Light area;
   area.kind = Light::Kind::Rectangle;
