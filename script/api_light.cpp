@@ -40,9 +40,10 @@ int light(lua_State* L) {
     const bool number = lua_type(L, -1) == LUA_TNUMBER;
     lua_pop(L, 1);
     if (number)
-      throw std::invalid_argument(args.function() +
-                                  ": falloff must be true or false (divide by the squared "
-                                  "distance); POV-Ray's falloff angle of a spot is angle= here, its radius inner=");
+      throw std::invalid_argument(
+          args.function() +
+          ": falloff must be true or false (divide by the squared "
+          "distance); POV-Ray's falloff angle of a spot is angle= here, its radius inner=");
   }
   p.falloff = args.boolean("falloff").value_or(false);
   args.finish();  // an unknown name (location=) before "needs pos"
