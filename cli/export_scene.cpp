@@ -73,12 +73,12 @@ void checkExportOutput(const ExportOptions& options) {
   if (outlineFormatFor(options.output)) return;
   try {
     meshFormatFor(options.output);
-  } catch (const std::invalid_argument& e) {
-    // export writes 2D outlines too: the list says so.
-    std::string message = e.what();
-    if (message.ends_with(" or .3mf)"))
-      message.insert(message.size() - 1, "; .svg or .dxf for a 2D outline");
-    throw std::invalid_argument(message);
+  } catch (const std::invalid_argument&) {
+    // export writes 2D outlines too, which the mesh writer's list leaves out.
+    throw std::invalid_argument(
+        "cannot write " + options.output + ": unknown mesh format '" +
+        std::filesystem::path(options.output).extension().string() +
+        "' (use .stl, .obj, .off, .ply or .3mf; .svg or .dxf for a 2D outline)");
   }
 }
 

@@ -477,6 +477,7 @@ if [ -s "$work/same1.obj" ] && cmp -s "$work/same1.obj" "$work/same2.obj" &&
 # Bad exports: one line, exit 1 (2 for the command line), no file.
 expect_failure "export of an unknown format" "$work/part.xyz" export "$work/part.lua" -o "$work/part.xyz"
 expect_in_stderr "export of an unknown format" "unknown mesh format '.xyz'"
+expect_in_stderr "export of an unknown format" "; .svg or .dxf for a 2D outline)"
 expect_failure "export into a folder" "" export "$work/part.lua" -o "$work"
 expect_in_stderr "export into a folder" "cannot write $work: it is a folder"
 expect_failure "export of an unbounded part" "$work/unbounded.stl" export "$work/unbounded.lua" -o "$work/unbounded.stl"
