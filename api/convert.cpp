@@ -114,6 +114,9 @@ CameraSpec toDetail(const csgray::Camera& camera) {
   spec.up = toDetail(camera.up);
   spec.fovDegrees = camera.fov;
   spec.orthographic = camera.projection == csgray::Camera::Projection::Orthographic;
+  spec.aperture = camera.aperture;
+  if (camera.focalPoint) spec.focalPoint = toDetail(*camera.focalPoint);
+  spec.blurSamples = camera.blurSamples;
   return checkedCamera(spec, camera.width);
 }
 
@@ -127,6 +130,9 @@ csgray::Camera toPublic(const CameraSpec& spec) {
     camera.projection = csgray::Camera::Projection::Orthographic;
     if (spec.orthoWidth > 0.0) camera.width = spec.orthoWidth;
   }
+  camera.aperture = spec.aperture;
+  if (spec.focalPoint) camera.focalPoint = toPublic(*spec.focalPoint);
+  camera.blurSamples = spec.blurSamples;
   return camera;
 }
 

@@ -116,6 +116,18 @@ Scene& Scene::setAmbientOcclusion(int samples, double distance) {
   return *this;
 }
 
+Scene& Scene::setFog(const std::optional<Fog>& fog) {
+  guarded([&] {
+    detail::Fog made;  // distance 0: off
+    if (fog) {
+      made = detail::Fog{detail::toDetail(fog->color), fog->distance};
+      detail::checkFog(made);
+    }
+    impl_->scene.fog = made;
+  });
+  return *this;
+}
+
 Scene& Scene::setMinWeight(double weight) {
   guarded([&] {
     detail::checkMinWeight(weight);
@@ -162,6 +174,12 @@ int Scene::indirectBounces() const { return impl_->scene.indirect.bounces; }
 int Scene::ambientOcclusionSamples() const { return impl_->scene.ambientOcclusion.samples; }
 
 double Scene::ambientOcclusionDistance() const { return impl_->scene.ambientOcclusion.distance; }
+
+std::optional<Fog> Scene::fog() const {
+  const detail::Fog& fog = impl_->scene.fog;
+  if (fog.distance <= 0.0) return std::nullopt;
+  return Fog{detail::toPublic(fog.color), fog.distance};
+}
 
 Bounds Scene::bounds() const { return detail::toPublic(impl_->scene.bounds()); }
 

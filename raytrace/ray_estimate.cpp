@@ -85,8 +85,12 @@ std::string RayEstimate::factors() const {
 RayEstimate estimateRays(const Scene& scene, const RenderOptions& options) {
   RayEstimate estimate;
   const double pixels = double(options.width) * options.height;
-  const bool refine = options.adaptive && options.samples > 1;
-  estimate.cameraRays = pixels * (options.samples + (refine ? 1 : 0));
+  // As Renderer::renderAll: a lens's blur samples at every pixel, and the
+  // adaptive pass's samples at those on edges (at most every pixel).
+  const int least = scene.camera && scene.camera->blurs() ? scene.camera->blurSamples : 1;
+  const bool refine = options.adaptive && options.samples > least;
+  estimate.cameraRays =
+      pixels * (refine ? options.samples + least : std::max(options.samples, least));
   estimate.raysPerCameraRay = raysPerCameraRay(scene);
   if (!scene.lights.empty()) {
     estimate.lights = scene.lights.size();

@@ -582,10 +582,14 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   // Inside a solid whose filter deepens with depth, what the ray brings
   // back from the next face it meets is dimmed over the way there (the
   // face where it entered applied its transparency alone).
+  // In the air (or inside an opaque solid: a room the camera stands in),
+  // fog takes its share of what the ray brings back over the way.
   const Material* medium = media.innermost();
+  const bool inAir = !medium || medium->transparency == 0.0;
   const auto faded = [&](const dvec3& c) {
-    if (!medium || medium->filterDistance <= 0.0) return c;
-    return c * filterOver(*medium, hit ? hit->t * glm::length(ray.dir) : kInfinity);
+    if (inAir ? scene_.fog.distance <= 0.0 : medium->filterDistance <= 0.0) return c;
+    const double length = hit ? hit->t * glm::length(ray.dir) : kInfinity;
+    return inAir ? fogged(c, length) : c * filterOver(*medium, length);
   };
   if (!hit) return faded(missed(ray, ctx));
 
@@ -697,6 +701,12 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   return faded(color);
 }
 
+dvec3 Renderer::fogged(const dvec3& color, double length) const {
+  const Fog& fog = scene_.fog;
+  if (length == kInfinity) return fog.color;
+  return glm::mix(fog.color, color, std::exp(-length / fog.distance));
+}
+
 dvec3 Renderer::withHighlights(const Ray& ray, const dvec3& color) const {
   std::optional<Boundary> nearest;
   const Solid* nearestSolid = nullptr;
@@ -721,15 +731,29 @@ dvec3 Renderer::pixel(int x, int y, int samples, TraceContext& ctx) const {
     const dvec3 color = trace(ray, 0, 1.0, cameraMedia_, ctx);
     return scene_.highlights.empty() ? color : withHighlights(ray, color);
   };
-  if (samples <= 1) return seen(camera_.ray(x + 0.5, y + 0.5));
+  const bool blurs = camera_.blurs();
+  if (samples <= 1 && !blurs) return seen(camera_.ray(x + 0.5, y + 0.5));
   // Jittered supersampling: one random point in each cell of a k × k grid
-  // over the pixel; samples beyond k² fall anywhere in it.
-  int k = int(std::sqrt(double(samples)));
+  // over the pixel; samples beyond k² fall anywhere in it. Through a lens,
+  // each ray also takes a point of the lens from a cell of its own k × k
+  // grid: cell i + a shift drawn for the pixel, so that the lens is
+  // covered evenly but not in step with the pixel's cells.
+  const int k = int(std::sqrt(double(samples))), cells = k * k;
+  const int shift = blurs ? int(ctx.rng.next() * cells) : 0;
   dvec3 sum(0.0);
   for (int i = 0; i < samples; ++i) {
     double u = ctx.rng.next(), v = ctx.rng.next();
-    if (i < k * k) u = (i % k + u) / k, v = (i / k + v) / k;
-    sum += seen(camera_.ray(x + u, y + v));
+    if (i < cells) u = (i % k + u) / k, v = (i / k + v) / k;
+    if (!blurs) {
+      sum += seen(camera_.ray(x + u, y + v));
+      continue;
+    }
+    double lx = ctx.rng.next(), ly = ctx.rng.next();
+    if (i < cells) {
+      const int cell = (i + shift) % cells;
+      lx = (cell % k + lx) / k, ly = (cell / k + ly) / k;
+    }
+    sum += seen(camera_.ray(x + u, y + v, 2.0 * lx - 1.0, 2.0 * ly - 1.0));
   }
   return sum / double(samples);
 }
@@ -740,7 +764,9 @@ RenderResult Renderer::renderAll() const {
   result.color = Image::uninitialized(w, h);  // the first pass sets every pixel
   if (options_.depthAov) result.depth = Image(w, h);
   if (options_.normalAov) result.normal = Image(w, h);
-  bool refine = options_.adaptive && options_.samples > 1;
+  // A lens needs its blur samples at every pixel, the first pass's too.
+  const int least = cameraSpec_.blurs() ? cameraSpec_.blurSamples : 1;
+  bool refine = options_.adaptive && options_.samples > least;
   // Edge lines need what each pixel's centre ray meets first, all of it,
   // before the last pass draws them.
   const bool edges = options_.edges || scene_.edges;
@@ -815,7 +841,7 @@ RenderResult Renderer::renderAll() const {
     sum.shadow += more.shadow;
     sum.secondary += more.secondary;
   };
-  const int samples = refine ? 1 : options_.samples;
+  const int samples = refine ? least : std::max(options_.samples, least);
   // What each pixel's centre ray met, for the edge lines and the depth and
   // normal images.
   const bool centre = options_.depthAov || options_.normalAov || edges;
@@ -829,7 +855,7 @@ RenderResult Renderer::renderAll() const {
     }
     // One sample is the centre ray, whose trace keeps what it met.
     std::optional<CameraHit> kept;
-    if (samples <= 1) ctx.cameraHit = &kept.emplace();
+    if (samples <= 1 && !camera_.blurs()) ctx.cameraHit = &kept.emplace();
     result.color.set(x, y, pixel(x, y, samples, ctx));
     add(tile.counts, ctx.counts);
     Ray ray = camera_.ray(x + 0.5, y + 0.5);

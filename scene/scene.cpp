@@ -112,6 +112,11 @@ void checkIndirectLight(const IndirectLight& indirect) {
   checkWhole("scene: indirect", "bounces", indirect.bounces, 0, 64);
 }
 
+void checkFog(const Fog& fog) {
+  checkColor("scene: fog", "color", fog.color);
+  checkPositive("scene: fog", "distance", fog.distance);
+}
+
 void checkAmbientOcclusion(const AmbientOcclusion& occlusion) {
   checkWhole("scene: ambient_occlusion", "samples", occlusion.samples, 0, 4096);
   checkNonNegative("scene: ambient_occlusion", "distance", occlusion.distance);

@@ -17,6 +17,10 @@ namespace csgray::detail {
 // perspective camera is the pinhole with a horizontal
 // view angle in degrees; an orthographic one sends parallel rays along the
 // view direction from a screen orthoWidth wide (what a CAD preview shows).
+// A perspective camera with an aperture is a thin lens instead: sharp on
+// the plane through focalPoint square to the view, blurred before and
+// behind it (raytrace/renderer.cpp), each pixel taking at least
+// blurSamples rays through points of the lens.
 struct CameraSpec {
   dvec3 eye{0.0, -10.0, 0.0};
   dvec3 lookAt{0.0};
@@ -24,6 +28,11 @@ struct CameraSpec {
   double fovDegrees = 45.0;
   bool orthographic = false;
   double orthoWidth = 10.0;
+  double aperture = 0.0;                           // the lens's diameter; 0: a pinhole
+  std::optional<dvec3> focalPoint = std::nullopt;  // none: lookAt
+  int blurSamples = 16;
+
+  bool blurs() const { return aperture > 0.0; }
 };
 
 // Bounds on recursion (two mirrors facing each other would reflect
@@ -48,6 +57,15 @@ struct IndirectLight {
 // `distance` (0: a tenth of the scene's size). Off while samples is 0.
 struct AmbientOcclusion {
   int samples = 0;
+  double distance = 0.0;
+};
+
+// Fog in the air between surfaces (POV-Ray's fog of constant density):
+// along a stretch of length d a ray keeps exp(−d / distance) of what it
+// sees and takes the rest from the fog's colour, so a ray that meets
+// nothing sees the colour alone. Off while distance is 0.
+struct Fog {
+  dvec3 color{0.5};
   double distance = 0.0;
 };
 
@@ -76,6 +94,7 @@ struct Scene {
   bool edges = false;
   IndirectLight indirect;
   AmbientOcclusion ambientOcclusion;
+  Fog fog;
 
   // The union of the objects', the ghosts' and the bounded surfaces' bounds.
   Bounds bounds() const;
@@ -127,6 +146,7 @@ class ObjectTally {
 // Each throws std::invalid_argument with the script's message.
 void checkBackground(const dvec3& color);                // components >= 0
 void checkIndirectLight(const IndirectLight& indirect);  // samples 0 to 4096, bounces 0 to 64
+void checkFog(const Fog& fog);  // colour components >= 0, distance > 0 and finite
 void checkAmbientOcclusion(const AmbientOcclusion& occlusion);  // samples 0 to 4096, distance >= 0
 int checkedMaxDepth(double depth);                              // a whole number from 0 to 64
 void checkMinWeight(double weight);                             // in [0, 1]

@@ -26,6 +26,10 @@ int camera(lua_State* L) {
   c.fovDegrees = args.number("fov").value_or(c.fovDegrees);
   std::string projection = args.string("projection").value_or("perspective");
   std::optional<double> width = args.number("width");
+  c.aperture = args.number("aperture").value_or(c.aperture);
+  c.focalPoint = args.vec3("focal_point");
+  c.blurSamples = checkWhole("camera", "blur_samples",
+                             args.number("blur_samples").value_or(c.blurSamples), 1, 1024);
   args.finish();
   if (projection != "perspective" && projection != "orthographic")
     throw std::invalid_argument("camera: projection must be \"perspective\" or \"orthographic\"");
@@ -125,6 +129,22 @@ int scene(lua_State* L) {
                                             a.number("samples").value_or(16), 1, 4096);
     s.ambientOcclusion.distance = a.number("distance").value_or(0.0);
   });
+  // fog={color=, distance=}: both needed, as POV-Ray's fog needs both.
+  if (args.push("fog")) {
+    LuaArgs fog(L, -1, "scene: fog");
+    const std::optional<dvec3> color = fog.color("color");
+    const std::optional<double> distance = fog.number("distance");
+    fog.finish();
+    if (!color || !distance)
+      throw std::invalid_argument(std::string("scene: fog needs ") +
+                                  (color      ? "distance"
+                                   : distance ? "color"
+                                              : "color and distance") +
+                                  " (fog={color={0.7, 0.7, 0.8}, distance=50})");
+    s.fog = Fog{*color, *distance};
+    checkFog(s.fog);
+    lua_pop(L, 1);
+  }
   checkIndirectLight(s.indirect);
   checkAmbientOcclusion(s.ambientOcclusion);
   args.finish();

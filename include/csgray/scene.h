@@ -124,7 +124,21 @@ struct Camera {
   Projection projection = Projection::Perspective;
   // Orthographic only: the width of the view in model units; none fits
   // the scene.
-  std::optional<double> width;
+  std::optional<double> width = std::nullopt;
+  // Perspective only: focal blur. A lens `aperture` wide (0: a pinhole,
+  // sharp everywhere) in focus on the plane through focalPoint (none:
+  // lookAt) square to the view; each pixel takes at least blurSamples rays
+  // (1 to 1024) through the lens.
+  double aperture = 0.0;
+  std::optional<Vec3> focalPoint = std::nullopt;
+  int blurSamples = 16;
+};
+
+// Fog of constant density in the air: along a way of length d a ray keeps
+// exp(-d / distance) of what it sees and takes the rest from the colour.
+struct Fog {
+  Vec3 color{0.5, 0.5, 0.5};
+  double distance = 1.0;  // > 0
 };
 
 class CSGRAY_API Scene {
@@ -167,6 +181,9 @@ class CSGRAY_API Scene {
   // rays that meet something within `distance` (0: a tenth of the scene's
   // size); samples 0 turns it off.
   Scene& setAmbientOcclusion(int samples, double distance = 0.0);
+  // Fog between the camera and the surfaces, and between surfaces (not
+  // inside transparent solids); none turns it off.
+  Scene& setFog(const std::optional<Fog>& fog);
 
   std::vector<Solid> objects() const;
   std::vector<Surface> surfaces() const;
@@ -183,6 +200,7 @@ class CSGRAY_API Scene {
   int indirectBounces() const;
   int ambientOcclusionSamples() const;
   double ambientOcclusionDistance() const;
+  std::optional<Fog> fog() const;
   // Of the objects and the bounded surfaces.
   Bounds bounds() const;
   // What would be printed: the objects, their union when there are several.

@@ -317,6 +317,17 @@ TEST(ApiScene, BadValuesGiveTheScriptsMessages) {
          c.eye = {0, -5, 0};
          s.setCamera(c);
        }},
+      {objects + "camera=camera{aperture=1, focal_point={0, -20, 0}}}",
+       [](csgray::Scene& s) {
+         csgray::Camera c;
+         c.aperture = 1;
+         c.focalPoint = Vec3{0, -20, 0};
+         s.setCamera(c);
+       }},
+      {objects + "fog={color={1, 1, 1}, distance=-2}}",
+       [](csgray::Scene& s) {
+         s.setFog(csgray::Fog{{1, 1, 1}, -2});
+       }},
       {objects + "lights=spot_light{pos={0, 0, 1}, look_at={0, 0, 0}, angle=90}}",
        [](csgray::Scene& s) {
          s.add(csgray::Light::spot({0, 0, 1}, {0, 0, 0}, 90));
@@ -364,6 +375,8 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   camera.projection = csgray::Camera::Projection::Orthographic;
   camera.width = 4;
   scene.setCamera(camera).setBackground({0.1, 0.2, 0.3}).setMaxDepth(3);
+  EXPECT_FALSE(scene.fog());
+  scene.setFog(csgray::Fog{{0.5, 0.6, 0.7}, 30});
   const csgray::Scene copy = scene;
   scene.add(Solid::box(1));
   EXPECT_EQ(scene.objects().size(), 2u);
@@ -377,8 +390,22 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   EXPECT_EQ(*copy.lights()[0].direction, (Vec3{0, 0, -5}));
   ASSERT_TRUE(copy.camera());
   EXPECT_EQ(copy.camera()->width, 4.0);
+  EXPECT_EQ(copy.camera()->aperture, 0.0);
+  camera.projection = csgray::Camera::Projection::Perspective;
+  camera.width.reset();
+  camera.aperture = 0.25;
+  camera.focalPoint = Vec3{0, 3, 0};
+  camera.blurSamples = 9;
+  const csgray::Camera lens = *csgray::Scene(scene).setCamera(camera).camera();
+  EXPECT_EQ(lens.aperture, 0.25);
+  EXPECT_EQ(lens.focalPoint, (Vec3{0, 3, 0}));
+  EXPECT_EQ(lens.blurSamples, 9);
   EXPECT_EQ(copy.background(), (Vec3{0.1, 0.2, 0.3}));
   EXPECT_EQ(copy.maxDepth(), 3);
+  ASSERT_TRUE(copy.fog());
+  EXPECT_EQ(copy.fog()->color, (Vec3{0.5, 0.6, 0.7}));
+  EXPECT_EQ(copy.fog()->distance, 30.0);
+  EXPECT_FALSE(scene.setFog(std::nullopt).fog());
   EXPECT_EQ(copy.part().kind(), "sphere");
   EXPECT_EQ(scene.part().kind(), "union");
   EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);

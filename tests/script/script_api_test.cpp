@@ -916,11 +916,58 @@ TEST(ScriptScene, CameraProjection) {
       {"camera{fov=180}", "camera: fov must be between 0 and 180"},
       {"camera{fov=0}", "camera: fov must be between 0 and 180"},
       {"camera{up={0, 1, 0}, eye={0, -5, 0}}", "camera: up must not be parallel"},
+      {"camera{aperture=-1}", "camera: aperture must be >= 0"},
+      {"camera{projection='orthographic', aperture=1}",
+       "camera: aperture (focal blur) is for a perspective camera"},
+      {"camera{aperture=1, focal_point={0, -12, 0}}",
+       "camera: focal_point must lie in front of the eye"},
+      {"camera{aperture=1, blur_samples=0}",
+       "camera: blur_samples must be a whole number from 1 to 1024"},
+      {"camera{aperture=1, blur_samples=8.5}", "camera: blur_samples must be a whole number"},
+      {"camera{aperture=1, focal_point='near'}", "camera: focal_point must be"},
   };
   for (const Case& c : cases)
     expectError(std::string("local a = 1\nlocal c = ") + c.expression +
                     "\nreturn scene{objects=sphere(1), camera=c}",
                 std::string("part.lua:2: ") + c.expected);
+}
+
+// A lens: focal blur as POV-Ray's camera gives it (aperture, focal_point,
+// blur_samples).
+TEST(ScriptScene, CameraLens) {
+  Scene s = sceneOf(
+      "return scene{objects=sphere(1), camera=camera{aperture=0.5, focal_point={1, 2, 3}, "
+      "blur_samples=36}}");
+  ASSERT_TRUE(s.camera);
+  EXPECT_EQ(s.camera->aperture, 0.5);
+  EXPECT_EQ(s.camera->focalPoint, dvec3(1, 2, 3));
+  EXPECT_EQ(s.camera->blurSamples, 36);
+  EXPECT_TRUE(s.camera->blurs());
+  s = sceneOf("return scene{objects=sphere(1), camera=camera{}}");
+  EXPECT_FALSE(s.camera->blurs());
+  EXPECT_FALSE(s.camera->focalPoint);
+  EXPECT_EQ(s.camera->blurSamples, 16);
+}
+
+TEST(ScriptScene, Fog) {
+  Scene s = sceneOf("return scene{objects=sphere(1), fog={color={0.7, 0.8, 0.9}, distance=40}}");
+  EXPECT_EQ(s.fog.color, dvec3(0.7, 0.8, 0.9));
+  EXPECT_EQ(s.fog.distance, 40.0);
+  EXPECT_EQ(sceneOf("return scene{objects=sphere(1)}").fog.distance, 0.0);  // off
+  s = sceneOf("return scene{objects=sphere(1), fog={color='white', distance=1}}");
+  EXPECT_EQ(s.fog.color, dvec3(1.0));
+  const char* source = "local a = 1\nreturn scene{objects=sphere(1), fog=";
+  expectError(std::string(source) + "{distance=10}}", "part.lua:2: scene: fog needs color (");
+  expectError(std::string(source) + "{color={1, 1, 1}}}",
+              "part.lua:2: scene: fog needs distance (");
+  expectError(std::string(source) + "{}}", "part.lua:2: scene: fog needs color and distance");
+  expectError(std::string(source) + "{color={1, 1, 1}, distance=0}}",
+              "part.lua:2: scene: fog: distance must be > 0");
+  expectError(std::string(source) + "{color={-1, 1, 1}, distance=3}}",
+              "part.lua:2: scene: fog: color components must be >= 0");
+  expectError(std::string(source) + "{color={1, 1, 1}, distance=3, density=2}}",
+              "part.lua:2: scene: fog: unknown parameter 'density'");
+  expectError(std::string(source) + "true}", "part.lua:2: scene: fog: expected a table");
 }
 
 TEST(ScriptScene, LimitsLandInTheScene) {

@@ -1,0 +1,172 @@
+// Fog and focal blur against their formulas: a glowing wall seen through
+// fog keeps exp(−d / distance) of its light over a way of length d (not
+// counting the way inside glass); behind the plane in focus its edge is
+// spread over the circle of confusion that similar triangles give, and
+// on that plane it stays sharp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "primitives/box.h"
+#include "raytrace/renderer.h"
+#include "scene/camera.h"
+
+namespace csgray::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A material that shows exactly its emission, 1: no colour for lights or
+// ambient light to reflect.
+MaterialPtr glowing() {
+  auto m = std::make_shared<Material>();
+  m->color = dvec3(0.0);
+  m->ambient = m->diffuse = 0.0;
+  m->emission = dvec3(1.0);
+  return m;
+}
+
+// The box from lo to hi.
+SolidPtr boxBetween(const dvec3& lo, const dvec3& hi) {
+  return Primitive::create<Box>(hi - lo)->transformed(Affine::translation(lo));
+}
+
+// A thin wall square to the view (+y) at distance `depth` from the eye at
+// the origin, from x = left to x = 1000.
+SolidPtr wall(double depth, double left) {
+  return solidWithMaterial(
+      boxBetween(dvec3(left, depth, -1000.0), dvec3(1000.0, depth + 1e-3, 1000.0)), glowing());
+}
+
+Scene wallScene(double depth, double left) {
+  Scene scene;
+  scene.objects.push_back(wall(depth, left));
+  scene.camera = CameraSpec{dvec3(0.0), dvec3(0, 1, 0), dvec3(0, 0, 1), 60.0};
+  scene.defaultLight = false;
+  scene.background = dvec3(0.0);
+  return scene;
+}
+
+TEST(Fog, AWallKeepsTheShareOfItsLightThatTheWayGives) {
+  Scene scene = wallScene(12.0, -1000.0);
+  scene.fog = Fog{dvec3(0.2, 0.4, 0.6), 15.0};
+  const int w = 40, h = 30;
+  const Image image = Renderer(scene, {w, h, 1}).render();
+  const Camera camera(*scene.camera, w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Ray ray = camera.ray(x + 0.5, y + 0.5);
+      const double kept = std::exp(-(12.0 / ray.dir.y) / 15.0);
+      const dvec3 expected = scene.fog.color + (dvec3(1.0) - scene.fog.color) * kept;
+      const dvec3 seen = image.at(x, y);
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(seen[c], expected[c], 1e-6) << x << ", " << y;
+    }
+}
+
+// A ray that meets nothing has crossed endless fog: it sees the fog's
+// colour, not the background.
+TEST(Fog, ARayThatMeetsNothingSeesTheFog) {
+  Scene scene = wallScene(12.0, 0.0);  // the right half of the view
+  scene.background = dvec3(1.0, 0.0, 0.0);
+  scene.fog = Fog{dvec3(0.3, 0.5, 0.7), 4.0};
+  const Image image = Renderer(scene, {40, 30, 1}).render();
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 20; ++x) {
+      const dvec3 seen = image.at(x, y);
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(seen[c], scene.fog.color[c], 1e-6);
+    }
+  EXPECT_GT(image.at(30, 15).x, 0.3);  // the wall, dimmed
+}
+
+// The fog is in the air: a clear pane 5 thick before the wall (glass that
+// passes all light, not bending it) leaves 7 of the 12 units in fog.
+TEST(Fog, TheWayInsideGlassIsNotFogged) {
+  Scene scene = wallScene(12.0, -1000.0);
+  auto glass = std::make_shared<Material>();
+  glass->transparency = 1.0;
+  scene.objects.push_back(
+      solidWithMaterial(boxBetween(dvec3(-1000, 4, -1000), dvec3(1000, 9, 1000)), glass));
+  scene.fog = Fog{dvec3(0.0), 10.0};
+  const Image image = Renderer(scene, {21, 21, 1}).render();
+  // The centre pixel's ray goes straight along +y.
+  EXPECT_NEAR(image.at(10, 10).x, std::exp(-7.0 / 10.0), 1e-6);
+}
+
+// The share of a disc of radius r that lies past a line at signed
+// distance s from its centre (s > 0: the centre is past it): the
+// circular segment's area (Weisstein, "Circular Segment", MathWorld).
+double discShare(double s, double r) {
+  if (s >= r) return 1.0;
+  if (s <= -r) return 0.0;
+  return 0.5 + (s * std::sqrt(r * r - s * s) + r * r * std::asin(s / r)) / (kPi * r * r);
+}
+
+// A lens of radius R in focus at distance f sees a point at distance z
+// through rays that cross the plane z within R·|f − z| / f of the pinhole
+// ray (similar triangles), a disc of radius R·|f − z| / (f·z·p) pixels for
+// pixels p wide at unit distance. Each pixel of a wall's straight edge
+// then shows the share of that disc on the wall's side, and a pixel
+// farther from the edge than the disc's radius (and half a pixel, the
+// pixel's own spread) shows the wall alone or nothing.
+TEST(FocalBlur, AnEdgeBehindTheFocusSpreadsOverTheCircleOfConfusion) {
+  const double f = 10.0, z = 20.0, lensRadius = 0.5;
+  Scene scene = wallScene(z, 0.0);
+  scene.camera->aperture = 2.0 * lensRadius;
+  scene.camera->focalPoint = dvec3(0, f, 0);
+  scene.camera->blurSamples = 64;
+  const int w = 200, h = 20;
+  const Image image = Renderer(scene, {w, h, 1}).render();
+  const double pixel = 2.0 * std::tan(30.0 * kPi / 180.0) / w;
+  const double r = lensRadius * (z - f) / (f * z * pixel);
+  ASSERT_NEAR(r, 4.33, 0.01);
+  for (int x = 0; x < w; ++x) {
+    const double s = x + 0.5 - 0.5 * w;  // the pixel centre's distance past the edge
+    double mean = 0.0;
+    for (int y = 0; y < h; ++y) {
+      const double seen = image.at(x, y).x;
+      if (s > r + 0.5) {
+        ASSERT_EQ(seen, 1.0) << x;
+      }
+      if (s < -r - 0.5) {
+        ASSERT_EQ(seen, 0.0) << x;
+      }
+      if (std::abs(s) < 0.5 * r) {
+        EXPECT_GT(seen, 0.0) << x;
+        EXPECT_LT(seen, 1.0) << x;
+      }
+      mean += seen / h;
+    }
+    // The disc's share, spread over the pixel's width as its samples are.
+    double expected = 0.0;
+    for (int i = 0; i < 8; ++i) expected += discShare(s - 0.5 + (i + 0.5) / 8.0, r) / 8.0;
+    EXPECT_NEAR(mean, expected, 0.04) << x;
+  }
+}
+
+// On the plane in focus the lens changes nothing: the wall's edge is as
+// sharp as a pinhole's, one pixel of spread from the pixel's own samples.
+TEST(FocalBlur, AnEdgeOnThePlaneInFocusStaysSharp) {
+  Scene scene = wallScene(10.0, 0.0);
+  scene.camera->aperture = 1.0;
+  scene.camera->focalPoint = dvec3(3, 10, 2);  // another point of the wall's plane
+  const int w = 200, h = 20;
+  RenderOptions options(w, h, 1);
+  options.samples = 4;  // fewer than the blur's 16: each pixel takes 16
+  const RenderResult result = Renderer(scene, options).renderAll();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double s = x + 0.5 - 0.5 * w, seen = result.color.at(x, y).x;
+      if (s > 1.0) {
+        ASSERT_NEAR(seen, 1.0, 1e-12) << x;
+      }
+      if (s < -1.0) {
+        ASSERT_NEAR(seen, 0.0, 1e-12) << x;
+      }
+    }
+  EXPECT_EQ(result.rays.primary, std::uint64_t(16) * w * h);
+}
+
+}  // namespace
+}  // namespace csgray::detail
