@@ -102,6 +102,7 @@ std::string parameterHint(const std::string& key, const std::set<std::string>& k
       {"v", "axis"},  // OpenSCAD's rotate(a=, v=)
       // POV-Ray's.
       {"pigment", "color"},
+      {"texture", "color"},  // a texture is given as a material's colour
       {"phong", "specular"},
       {"phong_size", "shininess"},
       {"roughness", "shininess"},

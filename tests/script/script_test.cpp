@@ -218,6 +218,8 @@ TEST(Script, ErrorsNameFileAndLine) {
       // POV-Ray's names.
       {"return sphere(1):material{pigment={1, 0, 0}}",
        "material: unknown parameter 'pigment'; did you mean 'color'?"},
+      {"return sphere(1):material{texture=checker{}}",
+       "material: unknown parameter 'texture'; did you mean 'color'?"},
       {"return sphere(1):material{phong_size=40}",
        "material: unknown parameter 'phong_size'; did you mean 'shininess'?"},
       {"return scene{objects={box(1)}, lights={point_light{location={1, 2, 3}}}}",
