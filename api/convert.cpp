@@ -24,6 +24,7 @@ void copyShared(const From& from, To& to) {
   to.ior = from.ior;
   to.fresnel = from.fresnel;
   to.gloss = from.gloss;
+  to.bumpDepth = from.bumpDepth;
 }
 
 // The kinds of light, public and internal: one table for both directions.
@@ -52,6 +53,7 @@ MaterialPtr toDetail(const csgray::Material& m) {
   auto made = std::make_shared<Material>();
   made->color = toDetail(m.color);
   if (m.texture) made->texture = Access::of(*m.texture);
+  if (m.bumps) made->bumps = Access::of(*m.bumps);
   made->filter = toDetail(m.filter);
   made->emission = toDetail(m.emission);
   copyShared(m, *made);
@@ -63,6 +65,7 @@ csgray::Material toPublic(const Material& m) {
   csgray::Material made;
   made.color = toPublic(m.color);
   if (m.texture) made.texture = Access::texture(m.texture);
+  if (m.bumps) made.bumps = Access::texture(m.bumps);
   made.filter = toPublic(m.filter);
   made.emission = toPublic(m.emission);
   copyShared(m, made);

@@ -25,8 +25,18 @@ BoundarySurface surfaceOf(const Primitive& primitive, const dvec3& point, const 
   if (texture) {
     s.texturePoint = primitive.texturePoint(point);
     s.textureNormal = primitive.textureNormal(point, int(b.face));
+    s.textureFromWorld = primitive.textureFromWorld();
   }
   return s;
+}
+
+// The surface s, found in an instance's child, in the instance's frame
+// (its texture's derivative too, when asked for).
+void bringOut(BoundarySurface& s, const Instance& instance, bool texture) {
+  s.normal = instance.frame().normalToWorld(s.normal);
+  if (texture)
+    s.textureFromWorld = s.textureFromWorld * glm::dmat3(instance.frame().objectFromWorld());
+  s.use = useThrough(s.use, instance);
 }
 
 // The search for the use of b.primitive that the ray met: the candidate
@@ -59,10 +69,7 @@ class UseSearch {
       const bool done = visit(*instance->child(), instance->rayToChild(ray));
       --depth_;
       // A better use below this instance: its normal into this frame.
-      if (distance_ < before) {
-        best_.normal = instance->frame().normalToWorld(best_.normal);
-        best_.use = useThrough(best_.use, *instance);
-      }
+      if (distance_ < before) bringOut(best_, *instance, texture_);
       return done;
     }
     if (const Boolean* boolean = node.asBoolean()) {
@@ -135,10 +142,7 @@ std::optional<BoundarySurface> hintedSurface(const UseHint& hint, const Solid& r
   UseSearch search(b, texture);
   if (!search.offer(*b.primitive, local)) return std::nullopt;
   BoundarySurface s = search.surface();
-  for (int i = hint.instances - 1; i >= 0; --i) {
-    s.normal = hint.chain[i]->frame().normalToWorld(s.normal);
-    s.use = useThrough(s.use, *hint.chain[i]);
-  }
+  for (int i = hint.instances - 1; i >= 0; --i) bringOut(s, *hint.chain[i], texture);
   return s;
 }
 
@@ -154,10 +158,7 @@ std::optional<BoundarySurface> underInstanceChain(const Solid& node, const Ray& 
   if (!instance) return std::nullopt;
   std::optional<BoundarySurface> s =
       underInstanceChain(*instance->child(), instance->rayToChild(ray), b, texture);
-  if (s) {
-    s->normal = instance->frame().normalToWorld(s->normal);
-    s->use = useThrough(s->use, *instance);
-  }
+  if (s) bringOut(*s, *instance, texture);
   return s;
 }
 

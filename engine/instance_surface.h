@@ -18,6 +18,10 @@ struct BoundarySurface {
   dvec3 normal;         // unit, outward from the primitive (a flip is the caller's)
   dvec3 texturePoint;   // Primitive::texturePoint, when asked for
   dvec3 textureNormal;  // Primitive::textureNormal, when asked for
+  // Primitive::textureFromWorld, when asked for, under the frames of the
+  // instances on the way (the derivative of texturePoint by the point
+  // where the ray met the surface).
+  glm::dmat3 textureFromWorld{1.0};
   // Which use of the primitive: 0 where it has one; under instances, a key
   // of the instances on the way to it, the same for the same use (the edge
   // lines tell two uses of one primitive apart by it).

@@ -65,6 +65,11 @@ class Primitive : public Solid {
   dvec3 textureNormal(const dvec3& worldPoint, int face) const {
     return textureFromObject_.normalToWorld(objectNormal(frame_.pointToObject(worldPoint), face));
   }
+  // How texturePoint moves with the world point: its (constant) derivative,
+  // which takes a pattern's gradient in texture space to the world's.
+  glm::dmat3 textureFromWorld() const {
+    return glm::dmat3(textureFromObject_.worldFromObject()) * glm::dmat3(frame_.objectFromWorld());
+  }
 
  protected:
   // Spans of a ray given in object space; boundaries name this primitive.

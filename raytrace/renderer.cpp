@@ -11,6 +11,7 @@
 
 #include "engine/instance_surface.h"
 #include "engine/primitive.h"
+#include "raytrace/bumps.h"
 #include "raytrace/edge_lines.h"
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
@@ -595,6 +596,7 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
 
   ShadingPoint sp;
   sp.point = ray.at(hit->t);
+  double outward = 1.0;  // −1 where the normal was turned to face the ray
   if (hit->surface) {
     const Surface& s = *hit->surface;
     sp.material = &materialOf(s.material());
@@ -602,22 +604,33 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     if (keep) keep->normal = sp.normal;
     // A smooth mesh's normal leans away from its triangle's, which is the
     // one that tells the side the ray comes from (both sides are shaded).
-    if (glm::dot(s.faceNormal(hit->face), ray.dir) > 0.0) sp.normal = -sp.normal;
-    sp.color = sp.material->texture
-                   ? sp.material->texture->colorAt(s.texturePoint(sp.point),
-                                                   s.textureNormal(sp.point, hit->face))
-                   : sp.material->color;
+    if (glm::dot(s.faceNormal(hit->face), ray.dir) > 0.0) sp.normal = -sp.normal, outward = -1.0;
+    const Material& m = *sp.material;
+    sp.color = m.color;
+    if (m.texture || m.bumps) {
+      const dvec3 texturePoint = s.texturePoint(sp.point);
+      const dvec3 textureNormal = s.textureNormal(sp.point, hit->face);
+      if (m.texture) sp.color = m.texture->colorAt(texturePoint, textureNormal);
+      if (m.bumps)
+        sp.normal =
+            bumpedNormal(m, sp.normal, outward, texturePoint, textureNormal, s.textureFromWorld());
+    }
   } else {
     const Boundary& b = hit->boundary;
     sp.material = &materialOf(b);
-    const bool textured = sp.material->texture != nullptr;
+    const Material& m = *sp.material;
+    const bool textured = m.texture || m.bumps;
     const BoundarySurface surface =
         boundarySurface(*objects_[std::size_t(hit->object)], ray, b, textured, ctx.useHint);
     sp.normal = b.flip ? -surface.normal : surface.normal;
     if (keep) keep->normal = surface.normal, keep->use = surface.use;
-    sp.color = textured ? sp.material->texture->colorAt(surface.texturePoint, surface.textureNormal)
-                        : sp.material->color;
-    if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal;
+    sp.color =
+        m.texture ? m.texture->colorAt(surface.texturePoint, surface.textureNormal) : m.color;
+    if (glm::dot(sp.normal, ray.dir) > 0.0) sp.normal = -sp.normal, outward = -1.0;
+    // A subtracted solid's face is raised along the part's outward normal.
+    if (m.bumps)
+      sp.normal = bumpedNormal(m, sp.normal, outward, surface.texturePoint, surface.textureNormal,
+                               surface.textureFromWorld);
   }
   const Material& m = *sp.material;
 

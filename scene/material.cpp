@@ -28,13 +28,16 @@ void checkMaterial(const Material& m) {
     throw std::invalid_argument("material: ior must be from 1 to 10");
   checkUnit(f, "gloss", m.gloss);
   checkColor(f, "emission", m.emission);
+  checkFinite(f, "bump_depth", m.bumpDepth);
 }
 
 SolidPtr solidWithMaterial(const SolidPtr& solid, const MaterialPtr& material) {
   if (auto* p = dynamic_cast<const Primitive*>(solid.get())) return p->withMaterial(material);
-  // A texture lies in the world as it is when given: the uses of a shared
-  // part each get their own piece of it, so instances are multiplied out.
-  if (material && material->texture) return flattened(solid)->withDefaultMaterial(material);
+  // A texture (or bumps) lies in the world as it is when given: the uses of
+  // a shared part each get their own piece of it, so instances are
+  // multiplied out.
+  if (material && (material->texture || material->bumps))
+    return flattened(solid)->withDefaultMaterial(material);
   return solid->withDefaultMaterial(material);
 }
 

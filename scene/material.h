@@ -43,6 +43,12 @@ struct Material {
   // Light the surface gives off (linear RGB, >= 0): added to what it
   // shows, and what indirect light carries to other surfaces.
   dvec3 emission{0.0};
+  // Bumps: the surface shaded as if raised by bumpDepth times the
+  // brightness (luminance) of this pattern at each point, so that its
+  // normal tilts by the height's gradient (Blinn, "Simulation of Wrinkled
+  // Surfaces", SIGGRAPH '78); the shape itself is not changed.
+  TexturePtr bumps;
+  double bumpDepth = 0.1;
 
   // The colour at a point in texture space with the normal there.
   dvec3 colorAt(const dvec3& texturePoint, const dvec3& textureNormal) const {

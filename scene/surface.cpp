@@ -230,6 +230,10 @@ dvec3 Surface::texturePoint(const dvec3& worldPoint) const {
   return textureFromObject_.pointToWorld(frame_.pointToObject(worldPoint));
 }
 
+glm::dmat3 Surface::textureFromWorld() const {
+  return glm::dmat3(textureFromObject_.worldFromObject()) * glm::dmat3(frame_.objectFromWorld());
+}
+
 dvec3 Surface::textureNormal() const { return textureFromObject_.normalToWorld(dvec3(0, 0, 1)); }
 
 dvec3 Surface::textureNormal(const dvec3& worldPoint, int face) const {

@@ -87,6 +87,8 @@ class Surface : public std::enable_shared_from_this<Surface> {
   const MaterialPtr& material() const { return material_; }
   // Texture space: the world as it was when the material was given.
   dvec3 texturePoint(const dvec3& worldPoint) const;
+  // texturePoint's (constant) derivative by the world point.
+  glm::dmat3 textureFromWorld() const;
   dvec3 textureNormal() const;
   // At a point on face `face` (hit's), which a mesh needs.
   dvec3 textureNormal(const dvec3& worldPoint, int face) const;

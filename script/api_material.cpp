@@ -1,6 +1,7 @@
 // material{...} on solids and open surfaces (docs/script.md, Materials):
 // every key is optional, and color may be a texture.
 #include <memory>
+#include <stdexcept>
 
 #include "script/api.h"
 #include "script/lua_args.h"
@@ -33,6 +34,17 @@ MaterialPtr materialArg(lua_State* L, int index) {
   m->fresnel = args.boolean("fresnel").value_or(false);
   m->gloss = args.number("gloss").value_or(m->gloss);
   m->emission = args.color("emission").value_or(m->emission);
+  // bumps=: a pattern (any texture) whose brightness is the height.
+  if (args.push("bumps")) {
+    const TexturePtr* bumps = toValue<TexturePtr>(L, -1);
+    if (!bumps)
+      throw std::invalid_argument(
+          "material: bumps must be a texture, such as perlin{scale=0.2}: its brightness is the "
+          "height, and bump_depth= sets how high");
+    m->bumps = *bumps;
+    lua_pop(L, 1);
+  }
+  m->bumpDepth = args.number("bump_depth").value_or(m->bumpDepth);
   checkMaterial(*m);
   args.finish();
   return m;

@@ -103,6 +103,7 @@ std::string parameterHint(const std::string& key, const std::set<std::string>& k
       // POV-Ray's.
       {"pigment", "color"},
       {"texture", "color"},  // a texture is given as a material's colour
+      {"normal", "bumps"},   // normal { bumps 0.5 }
       {"phong", "specular"},
       {"phong_size", "shininess"},
       {"roughness", "shininess"},

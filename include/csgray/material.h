@@ -84,6 +84,10 @@ struct Material {
   bool fresnel = false;              // weigh reflection and refraction by Fresnel's equations
   double gloss = 0.0;                // [0, 1]: blur of the mirrored and refracted rays
   Vec3 emission{0.0, 0.0, 0.0};      // components >= 0: light the surface gives off
+  // Bumps: shaded as if raised by bumpDepth times the pattern's brightness
+  // (the shape is not changed).
+  std::optional<Texture> bumps = std::nullopt;
+  double bumpDepth = 0.1;  // finite; below 0, dents
 };
 
 }  // namespace csgray

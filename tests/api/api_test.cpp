@@ -654,6 +654,37 @@ TEST(ApiRender, WithoutTheDefaultLightAsTheScriptsEmptyLights) {
   EXPECT_GT(csgray::render(lit, {9, 9}).at(4, 4).x, 0.1f);
 }
 
+// A material's bumps, fog and a lens reach the render as the script's do:
+// the same pixels as the same scene{} of a script.
+TEST(ApiRender, BumpsFogAndALensAsTheScriptsGiveThem) {
+  const csgray::Scene script = csgray::runScriptText(
+      "return scene{objects=sphere(1):material{bumps=perlin{scale=0.3}, bump_depth=0.2}, "
+      "camera=camera{eye={0, -5, 0}, aperture=0.2, focal_point={0, 3, 0}, blur_samples=4}, "
+      "fog={color={0.5, 0.6, 0.7}, distance=8}}",
+      "bumps.lua");
+  csgray::Material m;
+  csgray::Texture::Placement smaller;
+  smaller.scale = Vec3{0.3, 0.3, 0.3};
+  m.bumps = csgray::Texture::noise(csgray::Texture::Noise::Perlin, std::nullopt, 6, 4.0, smaller);
+  m.bumpDepth = 0.2;
+  csgray::Camera camera;
+  camera.eye = {0, -5, 0};
+  camera.aperture = 0.2;
+  camera.focalPoint = Vec3{0, 3, 0};
+  camera.blurSamples = 4;
+  csgray::Scene built;
+  built.add(Solid::sphere(1).material(m)).setCamera(camera);
+  built.setBackground({0.05, 0.05, 0.08}).setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8});
+  const csgray::Image image = csgray::render(built, {24, 18});
+  EXPECT_TRUE(image.rgb == csgray::render(script, {24, 18}).rgb);
+  // Without the bumps the ball shades otherwise.
+  m.bumps.reset();
+  csgray::Scene smooth;
+  smooth.add(Solid::sphere(1).material(m)).setCamera(camera);
+  smooth.setBackground({0.05, 0.05, 0.08}).setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8});
+  EXPECT_FALSE(image.rgb == csgray::render(smooth, {24, 18}).rgb);
+}
+
 // The default samples (0) are the command's: a bare part gets 9, adaptive
 // (spent at its edges); a scene of the script's own one ray a pixel.
 // Scene(part) is what a script that returns the part gives: the default

@@ -109,6 +109,21 @@ TEST(ScriptMaterial, EveryKeyLandsInTheMaterial) {
   EXPECT_TRUE(m->refracts());
 }
 
+// bumps= takes any texture as its height field.
+TEST(ScriptMaterial, Bumps) {
+  MaterialPtr m = materialOf("bumps=perlin{scale=0.2}, bump_depth=-0.05");
+  ASSERT_NE(m, nullptr);
+  ASSERT_NE(m->bumps, nullptr);
+  EXPECT_EQ(m->texture, nullptr);
+  EXPECT_EQ(m->bumpDepth, -0.05);
+  m = materialOf("color=checker{}, bumps=marble{}");
+  ASSERT_NE(m, nullptr);
+  EXPECT_NE(m->bumps, nullptr);
+  EXPECT_NE(m->texture, nullptr);
+  EXPECT_EQ(m->bumpDepth, 0.1);
+  EXPECT_EQ(materialOf("")->bumps, nullptr);
+}
+
 TEST(ScriptMaterial, DefaultsWhenAbsent) {
   MaterialPtr m = materialOf("");
   ASSERT_NE(m, nullptr);
@@ -222,6 +237,9 @@ TEST(ScriptMaterial, OutOfRangeValuesAreErrors) {
       {"fresnel=1", "material: fresnel must be true or false"},
       {"colour={1, 0, 0}", "material: unknown parameter 'colour'"},
       {"ambient=0/0", "material: ambient must be finite"},
+      {"bumps=0.5", "material: bumps must be a texture, such as perlin{scale=0.2}"},
+      {"bumps=perlin{}, bump_depth=1/0", "material: bump_depth must be finite"},
+      {"normal=perlin{}", "material: unknown parameter 'normal'; did you mean 'bumps'?"},
   };
   for (const Case& c : cases)
     expectError(std::string("local s = sphere(1)\n\nreturn s:material{") + c.args + "}",
