@@ -120,7 +120,7 @@ Scene& Scene::setFog(const std::optional<Fog>& fog) {
   guarded([&] {
     detail::Fog made;  // distance 0: off
     if (fog) {
-      made = detail::Fog{detail::toDetail(fog->color), fog->distance};
+      made = detail::Fog{detail::toDetail(fog->color), fog->distance, fog->offset, fog->altitude};
       detail::checkFog(made);
     }
     impl_->scene.fog = made;
@@ -178,7 +178,7 @@ double Scene::ambientOcclusionDistance() const { return impl_->scene.ambientOccl
 std::optional<Fog> Scene::fog() const {
   const detail::Fog& fog = impl_->scene.fog;
   if (fog.distance <= 0.0) return std::nullopt;
-  return Fog{detail::toPublic(fog.color), fog.distance};
+  return Fog{detail::toPublic(fog.color), fog.distance, fog.offset, fog.altitude};
 }
 
 Bounds Scene::bounds() const { return detail::toPublic(impl_->scene.bounds()); }

@@ -13,6 +13,7 @@
 #include "engine/primitive.h"
 #include "raytrace/bumps.h"
 #include "raytrace/edge_lines.h"
+#include "raytrace/fog.h"
 #include "raytrace/optics.h"
 #include "raytrace/sampler.h"
 #include "raytrace/scattering.h"
@@ -590,7 +591,8 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
   const auto faded = [&](const dvec3& c) {
     if (inAir ? scene_.fog.distance <= 0.0 : medium->filterDistance <= 0.0) return c;
     const double length = hit ? hit->t * glm::length(ray.dir) : kInfinity;
-    return inAir ? fogged(c, length) : c * filterOver(*medium, length);
+    if (inAir) return throughFog(scene_.fog, c, ray.origin, glm::normalize(ray.dir), length);
+    return c * filterOver(*medium, length);
   };
   if (!hit) return faded(missed(ray, ctx));
 
@@ -712,12 +714,6 @@ dvec3 Renderer::trace(const Ray& ray, int depth, double weight, const Media& med
     color += kt * tint * trace(onwardRay, depth + 1, weight * kTinted, beyond, ctx, left - 1);
   }
   return faded(color);
-}
-
-dvec3 Renderer::fogged(const dvec3& color, double length) const {
-  const Fog& fog = scene_.fog;
-  if (length == kInfinity) return fog.color;
-  return glm::mix(fog.color, color, std::exp(-length / fog.distance));
 }
 
 dvec3 Renderer::withHighlights(const Ray& ray, const dvec3& color) const {

@@ -184,9 +184,6 @@ class Renderer {
   // points drawn for it (a grid corner: every point) or, unless drawn, to
   // the spiral itself, the probes first (CadLook::skyPointsFor).
   double skyHiddenAt(const dvec3& ground, bool drawn, TraceContext& ctx) const;
-  // What a ray brings back over a way of this length through the scene's
-  // fog (scene.h, Fog), which is on.
-  dvec3 fogged(const dvec3& color, double length) const;
   // The width of a pixel at distance t along a camera ray.
   double footprint(double t) const;
   // The colour a camera ray sees with the scene's highlighted solids laid

@@ -115,6 +115,8 @@ void checkIndirectLight(const IndirectLight& indirect) {
 void checkFog(const Fog& fog) {
   checkColor("scene: fog", "color", fog.color);
   checkPositive("scene: fog", "distance", fog.distance);
+  checkFinite("scene: fog", "offset", fog.offset);
+  checkNonNegative("scene: fog", "altitude", fog.altitude);
 }
 
 void checkAmbientOcclusion(const AmbientOcclusion& occlusion) {

@@ -63,10 +63,17 @@ struct AmbientOcclusion {
 // Fog in the air between surfaces (POV-Ray's fog of constant density):
 // along a stretch of length d a ray keeps exp(−d / distance) of what it
 // sees and takes the rest from the fog's colour, so a ray that meets
-// nothing sees the colour alone. Off while distance is 0.
+// nothing sees the colour alone. Off while distance is 0. With an
+// altitude, ground fog (POV-Ray's fog_type 2): that density up to the
+// height z = offset, thinning above it as 1 / (1 + (z − offset) /
+// altitude)² (raytrace/fog.h).
 struct Fog {
   dvec3 color{0.5};
   double distance = 0.0;
+  double offset = 0.0;
+  double altitude = 0.0;  // 0: of constant density
+
+  bool ground() const { return altitude > 0.0; }
 };
 
 struct Scene {
@@ -146,7 +153,8 @@ class ObjectTally {
 // Each throws std::invalid_argument with the script's message.
 void checkBackground(const dvec3& color);                // components >= 0
 void checkIndirectLight(const IndirectLight& indirect);  // samples 0 to 4096, bounces 0 to 64
-void checkFog(const Fog& fog);  // colour components >= 0, distance > 0 and finite
+// Colour components >= 0, distance > 0, offset finite, altitude >= 0.
+void checkFog(const Fog& fog);
 void checkAmbientOcclusion(const AmbientOcclusion& occlusion);  // samples 0 to 4096, distance >= 0
 int checkedMaxDepth(double depth);                              // a whole number from 0 to 64
 void checkMinWeight(double weight);                             // in [0, 1]

@@ -134,6 +134,8 @@ int scene(lua_State* L) {
     LuaArgs fog(L, -1, "scene: fog");
     const std::optional<dvec3> color = fog.color("color");
     const std::optional<double> distance = fog.number("distance");
+    const std::optional<double> offset = fog.number("offset");
+    const std::optional<double> altitude = fog.number("altitude");
     fog.finish();
     if (!color || !distance)
       throw std::invalid_argument(std::string("scene: fog needs ") +
@@ -141,7 +143,13 @@ int scene(lua_State* L) {
                                    : distance ? "color"
                                               : "color and distance") +
                                   " (fog={color={0.7, 0.7, 0.8}, distance=50})");
-    s.fog = Fog{*color, *distance};
+    // Ground fog: both or neither.
+    if (bool(offset) != bool(altitude))
+      throw std::invalid_argument(std::string("scene: fog: ") + (offset ? "offset" : "altitude") +
+                                  " needs " + (offset ? "altitude" : "offset") +
+                                  " (ground fog: full up to offset, thinning above it)");
+    if (altitude) checkPositive("scene: fog", "altitude", *altitude);
+    s.fog = Fog{*color, *distance, offset.value_or(0.0), altitude.value_or(0.0)};
     checkFog(s.fog);
     lua_pop(L, 1);
   }

@@ -136,9 +136,13 @@ struct Camera {
 
 // Fog of constant density in the air: along a way of length d a ray keeps
 // exp(-d / distance) of what it sees and takes the rest from the colour.
+// With an altitude > 0, ground fog: that density up to the height
+// z = offset, thinning above it as 1 / (1 + (z - offset) / altitude)².
 struct Fog {
   Vec3 color{0.5, 0.5, 0.5};
   double distance = 1.0;  // > 0
+  double offset = 0.0;
+  double altitude = 0.0;  // >= 0; 0: of constant density
 };
 
 class CSGRAY_API Scene {

@@ -405,6 +405,12 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   ASSERT_TRUE(copy.fog());
   EXPECT_EQ(copy.fog()->color, (Vec3{0.5, 0.6, 0.7}));
   EXPECT_EQ(copy.fog()->distance, 30.0);
+  EXPECT_FALSE(copy.fog()->altitude > 0.0);
+  EXPECT_EQ(csgray::Scene(scene).setFog(csgray::Fog{{1, 1, 1}, 5, 2, 3}).fog()->altitude, 3.0);
+  EXPECT_EQ(errorOf([&] {
+              csgray::Scene(scene).setFog(csgray::Fog{{1, 1, 1}, 5, 2, -3});
+            }).first,
+            ErrorCode::InvalidArgument);
   EXPECT_FALSE(scene.setFog(std::nullopt).fog());
   EXPECT_EQ(copy.part().kind(), "sphere");
   EXPECT_EQ(scene.part().kind(), "union");

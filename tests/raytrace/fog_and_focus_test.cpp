@@ -94,6 +94,45 @@ TEST(Fog, TheWayInsideGlassIsNotFogged) {
   EXPECT_NEAR(image.at(10, 10).x, std::exp(-7.0 / 10.0), 1e-6);
 }
 
+// Ground fog: full density up to z = offset, 1 / (1 + (z − offset) /
+// altitude)² above. A level ray at height 3 over an offset of 1 with an
+// altitude of 2 crosses fog of density 1/4; a ray straight down from
+// height 10 to the floor crosses the integral of the density by height,
+// (offset − 0) + altitude·(1 − 1/(1 + (10 − offset)/altitude)); a ray
+// straight up into the sky from the floor all of the fog above it,
+// offset + altitude; one down into endless fog sees its colour.
+TEST(Fog, GroundFogThinsAboveItsOffset) {
+  const Fog ground{dvec3(0.25, 0.5, 0.75), 6.0, 1.0, 2.0};
+  Scene level = wallScene(12.0, -1000.0);
+  level.camera = CameraSpec{dvec3(0, 0, 3), dvec3(0, 1, 3), dvec3(0, 0, 1), 60.0};
+  level.fog = ground;
+  const Image seen = Renderer(level, {21, 21, 1}).render();
+  EXPECT_NEAR(seen.at(10, 10).x, 0.25 + 0.75 * std::exp(-12.0 * 0.25 / 6.0),
+              1e-6);  // the image keeps floats
+
+  Scene down;
+  down.objects.push_back(
+      solidWithMaterial(boxBetween(dvec3(-1000, -1000, -1), dvec3(1000, 1000, 0)), glowing()));
+  down.camera = CameraSpec{dvec3(0, 0, 10), dvec3(0), dvec3(0, 1, 0), 60.0};
+  down.defaultLight = false;
+  down.background = dvec3(0.0);
+  down.fog = Fog{dvec3(0.0), 6.0, 2.0, 3.0};
+  const double depth = (2.0 + 3.0 * (1.0 - 1.0 / (1.0 + 8.0 / 3.0))) / 6.0;
+  EXPECT_NEAR(Renderer(down, {21, 21, 1}).render().at(10, 10).x, std::exp(-depth),
+              1e-6);  // the image keeps floats
+
+  Scene up = down;
+  up.objects.clear();
+  up.objects.push_back(solidWithMaterial(  // something to frame, off to the side
+      boxBetween(dvec3(500, 500, 0), dvec3(501, 501, 1)), glowing()));
+  up.camera = CameraSpec{dvec3(0, 0, 0), dvec3(0, 0, 1), dvec3(0, 1, 0), 60.0};
+  up.fog = Fog{dvec3(1.0), 6.0, 2.0, 3.0};
+  EXPECT_NEAR(Renderer(up, {21, 21, 1}).render().at(10, 10).x, 1.0 - std::exp(-5.0 / 6.0),
+              1e-6);  // the image keeps floats
+  up.camera = CameraSpec{dvec3(0, 0, 0), dvec3(0, 0, -1), dvec3(0, 1, 0), 60.0};
+  EXPECT_EQ(Renderer(up, {21, 21, 1}).render().at(10, 10), dvec3(1.0));
+}
+
 // The share of a disc of radius r that lies past a line at signed
 // distance s from its centre (s > 0: the centre is past it): the
 // circular segment's area (Weisstein, "Circular Segment", MathWorld).

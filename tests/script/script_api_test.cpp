@@ -986,6 +986,17 @@ TEST(ScriptScene, Fog) {
   expectError(std::string(source) + "{color={1, 1, 1}, distance=3, density=2}}",
               "part.lua:2: scene: fog: unknown parameter 'density'");
   expectError(std::string(source) + "true}", "part.lua:2: scene: fog: expected a table");
+  s = sceneOf(
+      "return scene{objects=sphere(1), fog={color={1, 1, 1}, distance=9, offset=-2, altitude=4}}");
+  EXPECT_EQ(s.fog.offset, -2.0);
+  EXPECT_EQ(s.fog.altitude, 4.0);
+  EXPECT_TRUE(s.fog.ground());
+  expectError(std::string(source) + "{color={1, 1, 1}, distance=3, offset=1}}",
+              "part.lua:2: scene: fog: offset needs altitude (ground fog");
+  expectError(std::string(source) + "{color={1, 1, 1}, distance=3, altitude=1}}",
+              "part.lua:2: scene: fog: altitude needs offset");
+  expectError(std::string(source) + "{color={1, 1, 1}, distance=3, offset=1, altitude=0}}",
+              "part.lua:2: scene: fog: altitude must be > 0");
 }
 
 TEST(ScriptScene, LimitsLandInTheScene) {
