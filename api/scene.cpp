@@ -81,8 +81,15 @@ Scene& Scene::setBackground(const Vec3& color) {
   guarded([&] {
     detail::checkBackground(toDetail(color));
     impl_->scene.background = toDetail(color);
+    impl_->scene.sky = nullptr;
     impl_->scene.cadLook = false;  // its background would be drawn over
   });
+  return *this;
+}
+
+Scene& Scene::setBackground(const Texture& sky) {
+  impl_->scene.sky = Access::of(sky);
+  impl_->scene.cadLook = false;
   return *this;
 }
 
@@ -162,6 +169,11 @@ std::optional<Camera> Scene::camera() const {
 }
 
 Vec3 Scene::background() const { return detail::toPublic(impl_->scene.background); }
+
+std::optional<Texture> Scene::backgroundTexture() const {
+  if (!impl_->scene.sky) return std::nullopt;
+  return Access::texture(impl_->scene.sky);
+}
 
 int Scene::maxDepth() const { return impl_->scene.limits.maxDepth; }
 

@@ -62,6 +62,14 @@ Texture Texture::checker(const std::optional<Colors>& colors, double size,
   });
 }
 
+Texture Texture::gradient(const std::optional<Colors>& colors, const Vec3& from, const Vec3& to,
+                          const Placement& placement) {
+  return guarded([&] {
+    return Texture(detail::placedGradient(colorsOf(colors), detail::toDetail(from),
+                                          detail::toDetail(to), placementOf(placement)));
+  });
+}
+
 Texture Texture::noise(Noise kind, const std::optional<Colors>& colors, int octaves,
                        double strength, const Placement& placement) {
   return guarded([&] {

@@ -521,7 +521,11 @@ double Renderer::unoccluded(const ShadingPoint& sp, TraceContext& ctx) const {
 }
 
 dvec3 Renderer::missed(const Ray& ray, TraceContext& ctx) const {
-  if (!cadLook_) return scene_.background;
+  if (!cadLook_) {
+    if (!scene_.sky) return scene_.background;
+    const dvec3 direction = glm::normalize(ray.dir);
+    return scene_.sky->colorAt(direction, -direction);
+  }
   const dvec3 background = cadLook_->background(ray);
   const std::optional<dvec3> ground = cadLook_->groundPoint(ray);
   return ground ? cadLook_->shadowed(background, skyHidden(*ground, ctx)) : background;

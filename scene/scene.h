@@ -92,6 +92,9 @@ struct Scene {
   // only by ambient light and emission.
   bool defaultLight = true;
   dvec3 background{0.05, 0.05, 0.08};
+  // When set, the background by direction instead (POV-Ray's sky_sphere):
+  // a ray that meets nothing sees this texture at its unit direction.
+  TexturePtr sky;
   TraceLimits limits;
   // A bare solid's scene (the script returned a solid, a surface or a
   // region, not scene{}): it gets the look of raytrace/cad_look.h, in place

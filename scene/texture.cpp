@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <numbers>
@@ -196,6 +197,22 @@ int cellIndex(double floorC) {
   return static_cast<int>(floorC - 256.0 * std::floor(floorC / 256.0));
 }
 
+class GradientTexture final : public Texture {
+ public:
+  GradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to)
+      : a_(a), b_(b), from_(from), step_((to - from) / glm::dot(to - from, to - from)) {}
+
+ protected:
+  dvec3 pattern(const dvec3& p, const dvec3&) const override {
+    // The share of the way from `from` to `to` that p's projection lies at.
+    const double t = glm::dot(p - from_, step_);
+    return glm::mix(a_, b_, std::clamp(t, 0.0, 1.0));
+  }
+
+ private:
+  dvec3 a_, b_, from_, step_;
+};
+
 class NoiseTexture final : public Texture {
  public:
   NoiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves, double strength)
@@ -310,6 +327,13 @@ TexturePtr checkerTexture(const dvec3& a, const dvec3& b, double size) {
   return std::make_shared<CheckerTexture>(a, b, size);
 }
 
+TexturePtr gradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to) {
+  const double squared = glm::dot(to - from, to - from);
+  if (!(squared > 0.0 && std::isfinite(squared)))
+    throw std::invalid_argument("gradient from and to must be distinct points, not too far apart");
+  return std::make_shared<GradientTexture>(a, b, from, to);
+}
+
 TexturePtr imageTexture(std::shared_ptr<const TextureImage> image, ImageMapping mapping) {
   if (!image || image->width <= 0 || image->height <= 0)
     throw std::invalid_argument("texture image is empty");
@@ -377,6 +401,19 @@ TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
   checkPositive("checker", "size", size);
   const Affine frame = placementOf("checker", placement);
   return placed(checkerTexture(c.first, c.second, size), frame);
+}
+
+TexturePtr placedGradient(const std::optional<ColorPair>& colors, const dvec3& from,
+                          const dvec3& to, const TexturePlacement& placement) {
+  const ColorPair c = colors.value_or(ColorPair(dvec3(1.0), dvec3(0.1)));
+  checkColors("gradient", c);
+  checkFinite("gradient", "from", from);
+  checkFinite("gradient", "to", to);
+  if (from == to) throw std::invalid_argument("gradient: from and to are the same point");
+  const dvec3 way = to - from;
+  if (!(glm::dot(way, way) > 0.0 && std::isfinite(glm::dot(way, way))))
+    throw std::invalid_argument("gradient: from and to are too close or too far apart");
+  return placed(gradientTexture(c.first, c.second, from, to), placementOf("gradient", placement));
 }
 
 TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,

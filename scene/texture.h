@@ -49,6 +49,10 @@ using TexturePtr = std::shared_ptr<const Texture>;
 // floor(x/size) + floor(y/size) + floor(z/size) is even, else b.
 TexturePtr checkerTexture(const dvec3& a, const dvec3& b, double size);
 
+// A linear gradient: colour a at `from`, b at `to`, blending along the
+// line between them and constant beyond (an SVG linearGradient's "pad").
+TexturePtr gradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to);
+
 // How a bitmap is wrapped onto points (u, v in [0, 1), repeating):
 enum class ImageMapping {
   Planar,       // u = x, v = y: one copy of the image per unit square of the xy plane
@@ -93,6 +97,9 @@ using ColorPair = std::pair<dvec3, dvec3>;
 // size must be > 0"). Perlin noise has one octave: octaves is not used.
 TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
                          const TexturePlacement& placement);
+// The script's gradient{}: from and to default to the origin and +z.
+TexturePtr placedGradient(const std::optional<ColorPair>& colors, const dvec3& from,
+                          const dvec3& to, const TexturePlacement& placement);
 TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,
                        double strength, const TexturePlacement& placement);
 TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,

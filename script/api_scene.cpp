@@ -94,7 +94,15 @@ int scene(lua_State* L) {
     s.camera = checkValue<CameraSpec>(L, -1, "scene: camera");
     lua_pop(L, 1);
   }
-  s.background = args.color("background").value_or(s.background);
+  // A colour, or a texture seen by direction (a sky).
+  if (args.push("background")) {
+    const TexturePtr* sky = toValue<TexturePtr>(L, -1);
+    lua_pop(L, 1);
+    if (sky)
+      s.sky = *sky;
+    else
+      s.background = *args.color("background");
+  }
   checkBackground(s.background);
   s.limits.maxDepth = checkedMaxDepth(args.number("max_depth").value_or(s.limits.maxDepth));
   s.limits.minWeight = args.number("min_weight").value_or(s.limits.minWeight);

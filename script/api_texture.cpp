@@ -1,4 +1,4 @@
-// Textures in the script (docs/script.md, Textures): checker{}, the noises
+// Textures in the script (docs/script.md, Textures): checker{}, gradient{}, the noises
 // perlin{}, turbulence{}, marble{} and wood{}, the fractals mandelbrot{} and
 // julia{}, and image_texture{}.
 #include <memory>
@@ -46,6 +46,18 @@ int checker(lua_State* L) {
   std::optional<ColorPair> colors = colorsArg(L, args);
   double size = args.number("size").value_or(1.0);
   TexturePtr texture = placedChecker(colors, size, placementArgs(args));
+  args.finish();
+  pushShared<TexturePtr>(L, std::move(texture));
+  return 1;
+}
+
+int gradient(lua_State* L) {
+  checkArgumentCount(L, "gradient", 1);
+  LuaArgs args(L, 1, "gradient");
+  std::optional<ColorPair> colors = colorsArg(L, args);
+  const dvec3 from = args.vec3("from").value_or(dvec3(0.0));
+  const dvec3 to = args.vec3("to").value_or(dvec3(0.0, 0.0, 1.0));
+  TexturePtr texture = placedGradient(colors, from, to, placementArgs(args));
   args.finish();
   pushShared<TexturePtr>(L, std::move(texture));
   return 1;
@@ -135,6 +147,7 @@ void registerTextureApi(lua_State* L) {
   lua_pop(L, 1);
   static const luaL_Reg globals[] = {
       {"checker", guarded<checker>},
+      {"gradient", guarded<gradient>},
       {"image_texture", guarded<imageTexture>},
       {"perlin", guarded<noise<NoiseKind::Perlin>>},
       {"turbulence", guarded<noise<NoiseKind::Turbulence>>},

@@ -48,6 +48,11 @@ class CSGRAY_API Texture {
   // dark grey).
   static Texture checker(const std::optional<Colors>& colors = std::nullopt, double size = 1.0,
                          const Placement& placement = {});
+  // The first colour at `from`, the second at `to`, blending along the
+  // line between them and constant beyond (default: white to dark grey).
+  static Texture gradient(const std::optional<Colors>& colors = std::nullopt,
+                          const Vec3& from = {0.0, 0.0, 0.0}, const Vec3& to = {0.0, 0.0, 1.0},
+                          const Placement& placement = {});
   // Fractal noise blending the two colours (defaults depend on the kind);
   // octaves from 1 to 16, strength >= 0.
   static Texture noise(Noise kind, const std::optional<Colors>& colors = std::nullopt,

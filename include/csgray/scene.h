@@ -167,6 +167,9 @@ class CSGRAY_API Scene {
   Scene& setCamera(const Camera& camera);
   // Ends the default look: the scene's own background is drawn.
   Scene& setBackground(const Vec3& color);
+  // A background by direction (a sky): a ray that meets nothing sees the
+  // texture at its unit direction. Ends the default look too.
+  Scene& setBackground(const Texture& sky);
   // The default look of a bare part (Scene(part), a script that returns a
   // solid): a light gradient behind it, three lights about the camera (or
   // the scene's own, when it has some), a shadow on the ground, and 9 rays
@@ -198,6 +201,9 @@ class CSGRAY_API Scene {
   // None: the camera frames the objects' bounds.
   std::optional<Camera> camera() const;
   Vec3 background() const;
+  // The background texture, when setBackground gave one (it is drawn in
+  // place of background()).
+  std::optional<Texture> backgroundTexture() const;
   int maxDepth() const;
   double minWeight() const;
   int indirectSamples() const;

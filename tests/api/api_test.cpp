@@ -412,6 +412,11 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
             }).first,
             ErrorCode::InvalidArgument);
   EXPECT_FALSE(scene.setFog(std::nullopt).fog());
+  EXPECT_FALSE(copy.backgroundTexture());
+  csgray::Scene sky = copy;
+  sky.setBackground(csgray::Texture::gradient());
+  EXPECT_TRUE(sky.backgroundTexture());
+  EXPECT_FALSE(sky.setBackground(Vec3{0, 0, 0}).backgroundTexture());  // a colour replaces it
   EXPECT_EQ(copy.part().kind(), "sphere");
   EXPECT_EQ(scene.part().kind(), "union");
   EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);
@@ -660,13 +665,15 @@ TEST(ApiRender, WithoutTheDefaultLightAsTheScriptsEmptyLights) {
   EXPECT_GT(csgray::render(lit, {9, 9}).at(4, 4).x, 0.1f);
 }
 
-// A material's bumps, fog and a lens reach the render as the script's do:
+// A material's bumps, ground fog, a lens and a sky reach the render as the
+// script's do:
 // the same pixels as the same scene{} of a script.
 TEST(ApiRender, BumpsFogAndALensAsTheScriptsGiveThem) {
   const csgray::Scene script = csgray::runScriptText(
       "return scene{objects=sphere(1):material{bumps=perlin{scale=0.3}, bump_depth=0.2}, "
       "camera=camera{eye={0, -5, 0}, aperture=0.2, focal_point={0, 3, 0}, blur_samples=4}, "
-      "fog={color={0.5, 0.6, 0.7}, distance=8}}",
+      "fog={color={0.5, 0.6, 0.7}, distance=8, offset=0.5, altitude=2}, "
+      "background=gradient{colors={{1, 1, 1}, {0, 0, 1}}, from={0, 0, 0}, to={0, 0, 1}}}",
       "bumps.lua");
   csgray::Material m;
   csgray::Texture::Placement smaller;
@@ -680,14 +687,16 @@ TEST(ApiRender, BumpsFogAndALensAsTheScriptsGiveThem) {
   camera.blurSamples = 4;
   csgray::Scene built;
   built.add(Solid::sphere(1).material(m)).setCamera(camera);
-  built.setBackground({0.05, 0.05, 0.08}).setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8});
+  built.setBackground(csgray::Texture::gradient(csgray::Texture::Colors{{1, 1, 1}, {0, 0, 1}}))
+      .setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8, 0.5, 2});
   const csgray::Image image = csgray::render(built, {24, 18});
   EXPECT_TRUE(image.rgb == csgray::render(script, {24, 18}).rgb);
   // Without the bumps the ball shades otherwise.
   m.bumps.reset();
   csgray::Scene smooth;
   smooth.add(Solid::sphere(1).material(m)).setCamera(camera);
-  smooth.setBackground({0.05, 0.05, 0.08}).setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8});
+  smooth.setBackground(csgray::Texture::gradient(csgray::Texture::Colors{{1, 1, 1}, {0, 0, 1}}))
+      .setFog(csgray::Fog{{0.5, 0.6, 0.7}, 8, 0.5, 2});
   EXPECT_FALSE(image.rgb == csgray::render(smooth, {24, 18}).rgb);
 }
 

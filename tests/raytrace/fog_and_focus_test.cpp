@@ -12,6 +12,7 @@
 #include "primitives/box.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
+#include "scene/texture.h"
 
 namespace csgray::detail {
 namespace {
@@ -131,6 +132,23 @@ TEST(Fog, GroundFogThinsAboveItsOffset) {
               1e-6);  // the image keeps floats
   up.camera = CameraSpec{dvec3(0, 0, 0), dvec3(0, 0, -1), dvec3(0, 1, 0), 60.0};
   EXPECT_EQ(Renderer(up, {21, 21, 1}).render().at(10, 10), dvec3(1.0));
+}
+
+// A texture as the background is seen by direction: a camera looking
+// straight up into a sky that goes from black at the horizon (z = 0) to
+// white at the zenith (z = 1) sees at each pixel the z of its ray's
+// unit direction. A sky also shows through fog as any background does.
+TEST(Sky, ARayThatMeetsNothingSeesTheSkyAtItsDirection) {
+  Scene scene = wallScene(12.0, 500.0);  // off to the side: only sky in view
+  scene.camera = CameraSpec{dvec3(0.0), dvec3(0, 0, 1), dvec3(0, 1, 0), 90.0};
+  scene.sky = placedGradient(ColorPair(dvec3(0.0), dvec3(1.0)), dvec3(0.0), dvec3(0, 0, 1), {});
+  const int w = 31, h = 21;
+  const Image image = Renderer(scene, {w, h, 1}).render();
+  const Camera camera(*scene.camera, w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      ASSERT_NEAR(image.at(x, y).x, camera.ray(x + 0.5, y + 0.5).dir.z, 1e-6) << x << ", " << y;
+  EXPECT_NEAR(image.at(15, 10).x, 1.0, 1e-6);
 }
 
 // The share of a disc of radius r that lies past a line at signed

@@ -46,6 +46,24 @@ TexturePtr placed(TexturePtr texture, const Affine& placement) {
 
 // ------------------------------------------------------------------ checker
 
+// A linear gradient: a at `from`, b at `to`, the share t = (p − from)·(to −
+// from) / |to − from|² of the way between, constant past either end and
+// across the line.
+TEST(GradientTexture, BlendsAlongTheLineAndPadsBeyond) {
+  const dvec3 a(1, 0, 0), b(0, 0, 1), from(1, 2, 3), to(3, 2, 3);
+  const TexturePtr t = placedGradient(ColorPair(a, b), from, to, {});
+  const dvec3 n(0, 0, 1);
+  expectVecNear(t->colorAt(from, n), a, 1e-15);
+  expectVecNear(t->colorAt(to, n), b, 1e-15);
+  expectVecNear(t->colorAt(dvec3(1.5, 2, 3), n), 0.75 * a + 0.25 * b, 1e-15);
+  expectVecNear(t->colorAt(dvec3(1.5, -7, 40), n), 0.75 * a + 0.25 * b, 1e-15);  // across
+  expectVecNear(t->colorAt(dvec3(-5, 2, 3), n), a, 0.0);
+  expectVecNear(t->colorAt(dvec3(50, 2, 3), n), b, 0.0);
+  EXPECT_THROW(placedGradient(std::nullopt, from, from, {}), std::invalid_argument);
+  EXPECT_THROW(placedGradient(std::nullopt, dvec3(-1e300, 0, 0), dvec3(1e300, 0, 0), {}),
+               std::invalid_argument);
+}
+
 TEST(CheckerTexture, CellCentresFollowTheParityOfTheCellIndices) {
   TexturePtr checker = checkerTexture(kA, kB, 1.0);
   for (int i = -3; i <= 2; ++i)

@@ -260,7 +260,8 @@ TEST(ScriptTexture, EveryTextureGivesAMaterialWithATexture) {
        {"checker{}", "checker{size=2, colors={{1, 0, 0}, {0, 0, 1}}}", "perlin{}",
         "perlin{scale=3}", "turbulence{}", "marble{strength=2}", "wood{octaves=16}",
         "checker{scale=3, rotate={10, 20, 30}, translate={1, 2, 3}}", "mandelbrot{}",
-        "julia{c={-0.8, 0.156}, iterations=300}"}) {
+        "julia{c={-0.8, 0.156}, iterations=300}", "gradient{}",
+        "gradient{colors={'white', 'steelblue'}, from={0, 0, -1}, to={0, 0, 1}}"}) {
     TexturePtr t = textureOf(expression);
     EXPECT_NE(t, nullptr) << expression;
   }
@@ -986,6 +987,10 @@ TEST(ScriptScene, Fog) {
   expectError(std::string(source) + "{color={1, 1, 1}, distance=3, density=2}}",
               "part.lua:2: scene: fog: unknown parameter 'density'");
   expectError(std::string(source) + "true}", "part.lua:2: scene: fog: expected a table");
+  expectError("return sphere(1):material{color=gradient{from={1, 1, 1}, to={1, 1, 1}}}",
+              "part.lua:1: gradient: from and to are the same point");
+  expectError("return sphere(1):material{color=gradient{to=3, from=3}}",
+              "part.lua:1: gradient: from and to are the same point");
   s = sceneOf(
       "return scene{objects=sphere(1), fog={color={1, 1, 1}, distance=9, offset=-2, altitude=4}}");
   EXPECT_EQ(s.fog.offset, -2.0);
