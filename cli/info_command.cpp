@@ -52,7 +52,19 @@ void printInfo(const std::string& script, const Scene& scene) {
             << "  surfaces:      " << scene.surfaces.size() << "\n"
             << "  lights:        " << scene.lights.size()
             << (scene.lights.empty() && scene.defaultLight ? " (default)" : "") << "\n"
-            << "  camera:        " << (scene.camera ? "set" : "framed from bounds") << "\n";
+            << "  camera:        " << (scene.camera ? "set" : "framed from bounds");
+  // Focal blur multiplies a render's rays: say by how much.
+  if (scene.camera && scene.camera->blurs())
+    std::cout << " (focal blur: aperture " << scene.camera->aperture << ", at least "
+              << scene.camera->blurSamples << " rays a pixel)";
+  std::cout << "\n";
+  if (scene.fog.distance > 0.0) {
+    std::cout << "  fog:           distance " << scene.fog.distance;
+    if (scene.fog.ground())
+      std::cout << ", ground fog up to z = " << scene.fog.offset << ", thinning over "
+                << scene.fog.altitude;
+    std::cout << "\n";
+  }
 }
 
 }  // namespace

@@ -114,6 +114,19 @@ else
   fail "info with instances"; cat "$work/stdout"
 fi
 
+# info names a lens's blur (it multiplies the rays) and the fog.
+cat >"$work/lens.lua" <<'EOF2'
+return scene{objects = sphere(1), camera = camera{eye = {0, -5, 0}, aperture = 0.5, blur_samples = 25},
+             fog = {color = {1, 1, 1}, distance = 9, offset = 1, altitude = 2}}
+EOF2
+if "$csgray" info "$work/lens.lua" >"$work/stdout" 2>&1 &&
+   grep -q 'camera: *set (focal blur: aperture 0.5, at least 25 rays a pixel)' "$work/stdout" &&
+   grep -q 'fog: *distance 9, ground fog up to z = 1, thinning over 2' "$work/stdout"; then
+  pass
+else
+  fail "info of a lens and fog"; cat "$work/stdout"
+fi
+
 # -D sets a global.
 if "$csgray" info "$work/param.lua" -D radius=3 >"$work/stdout" 2>&1 &&
    grep -q '\[3, 3, 3\]' "$work/stdout"; then
