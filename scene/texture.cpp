@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <numbers>
@@ -206,7 +205,7 @@ class GradientTexture final : public Texture {
   dvec3 pattern(const dvec3& p, const dvec3&) const override {
     // The share of the way from `from` to `to` that p's projection lies at.
     const double t = glm::dot(p - from_, step_);
-    return glm::mix(a_, b_, std::clamp(t, 0.0, 1.0));
+    return mix(a_, b_, std::clamp(t, 0.0, 1.0));
   }
 
  private:
