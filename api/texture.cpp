@@ -18,9 +18,23 @@ detail::TexturePlacement placementOf(const Texture::Placement& p) {
   return {toDetail(p.scale), toDetail(p.rotate), toDetail(p.translate)};
 }
 
+// A checker's two colours.
 std::optional<detail::ColorPair> colorsOf(const std::optional<Texture::Colors>& colors) {
   if (!colors) return std::nullopt;
+  if (!colors->stops.empty())
+    throw std::invalid_argument("checker: colors must be two colours, not stops");
   return detail::ColorPair(toDetail(colors->first), toDetail(colors->second));
+}
+
+// A blending pattern's colours: the stops when given.
+std::optional<detail::ColorMap> colorMapOf(const std::optional<Texture::Colors>& colors,
+                                           const char* function) {
+  if (!colors) return std::nullopt;
+  if (colors->stops.empty())
+    return detail::ColorMap(toDetail(colors->first), toDetail(colors->second));
+  std::vector<detail::ColorStop> stops;
+  for (const Texture::Stop& s : colors->stops) stops.push_back({s.at, toDetail(s.color)});
+  return detail::ColorMap(std::move(stops), function);
 }
 
 detail::NoiseKind noiseOf(Texture::Noise kind) {
@@ -65,7 +79,7 @@ Texture Texture::checker(const std::optional<Colors>& colors, double size,
 Texture Texture::gradient(const std::optional<Colors>& colors, const Vec3& from, const Vec3& to,
                           const Placement& placement) {
   return guarded([&] {
-    return Texture(detail::placedGradient(colorsOf(colors), detail::toDetail(from),
+    return Texture(detail::placedGradient(colorMapOf(colors, "gradient"), detail::toDetail(from),
                                           detail::toDetail(to), placementOf(placement)));
   });
 }
@@ -73,8 +87,9 @@ Texture Texture::gradient(const std::optional<Colors>& colors, const Vec3& from,
 Texture Texture::noise(Noise kind, const std::optional<Colors>& colors, int octaves,
                        double strength, const Placement& placement) {
   return guarded([&] {
-    return Texture(detail::placedNoise(noiseOf(kind), colorsOf(colors), octaves, strength,
-                                       placementOf(placement)));
+    const detail::NoiseKind noise = noiseOf(kind);
+    return Texture(detail::placedNoise(noise, colorMapOf(colors, detail::noiseName(noise)), octaves,
+                                       strength, placementOf(placement)));
   });
 }
 

@@ -7,6 +7,17 @@
 
 namespace csgray::detail {
 
+namespace {
+
+// v over its largest component's size, so that its length neither
+// overflows nor underflows; 0 stays 0.
+dvec3 scaledDown(const dvec3& v) {
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  return largest > 0.0 && std::isfinite(largest) ? v / largest : v;
+}
+
+}  // namespace
+
 double luminance(const dvec3& color) {
   return 0.2126 * color.r + 0.7152 * color.g + 0.0722 * color.b;
 }
@@ -27,12 +38,19 @@ dvec3 bumpedNormal(const Material& m, const dvec3& facing, double outward,
     step[i] = h;
     gradient[i] = (height(texturePoint + step) - height(texturePoint - step)) / (2.0 * h);
   }
-  // In the world: the chain rule through texturePoint's derivative.
-  gradient = glm::transpose(textureFromWorld) * gradient;
-  const dvec3 along = gradient - glm::dot(gradient, facing) * facing;
-  const dvec3 tilted = facing - outward * along;
-  const double length = glm::length(tilted);
-  return length > 0.0 && std::isfinite(length) ? tilted / length : facing;
+  // The raised surface is made in texture space, where the pattern and
+  // its heights were given, so that the bumps scale with the part as it
+  // is scaled afterwards: there the normal of the side raised (the one
+  // the world's outward normal comes from) less the gradient along the
+  // surface. A normal goes to the world by the transpose of the world's
+  // map into texture space (the inverse transpose of the other way).
+  const glm::dmat3 toWorld = glm::transpose(textureFromWorld);
+  dvec3 up = glm::normalize(scaledDown(textureNormal));
+  if (glm::dot(toWorld * up, outward * facing) < 0.0) up = -up;
+  const dvec3 raised = scaledDown(up - (gradient - glm::dot(gradient, up) * up));
+  const dvec3 world = scaledDown(toWorld * raised);
+  const double length = glm::length(world);
+  return length > 0.0 && std::isfinite(length) ? outward * (world / length) : facing;
 }
 
 }  // namespace csgray::detail

@@ -16,8 +16,9 @@ namespace csgray::detail {
 // (m.bumps set). outward: +1 if facing is the surface's outward normal,
 // −1 if its opposite (the height raises the surface outward either way).
 // texturePoint, textureNormal and textureFromWorld are the hit's in texture
-// space (the pattern's gradient is taken there and brought to the world by
-// textureFromWorld's transpose).
+// space: the raised surface is made there, where the heights were given,
+// and its normal brought to the world, so a part scaled after its
+// material has its bumps scaled with it.
 dvec3 bumpedNormal(const Material& m, const dvec3& facing, double outward,
                    const dvec3& texturePoint, const dvec3& textureNormal,
                    const glm::dmat3& textureFromWorld);

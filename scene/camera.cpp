@@ -90,9 +90,15 @@ CameraSpec checkedCamera(CameraSpec c, std::optional<double> width) {
     c.up /= std::max({std::abs(c.up.x), std::abs(c.up.y), std::abs(c.up.z)});
   if (glm::length(glm::cross(view, c.up)) <= 1e-12 * glm::length(view) * glm::length(c.up))
     throw std::invalid_argument("camera: up must not be parallel to the view direction");
-  // The plane in focus must lie ahead, where the pixels' rays go.
-  if (c.focalPoint && !(glm::dot(*c.focalPoint - c.eye, view) > 0.0))
-    throw std::invalid_argument("camera: focal_point must lie in front of the eye");
+  if (c.focalPoint) {
+    // Its distance in doubles (as the look_at's above), and the plane in
+    // focus ahead, where the pixels' rays go.
+    const dvec3 toFocus = *c.focalPoint - c.eye;
+    if (!std::isfinite(glm::dot(toFocus, toFocus)))
+      throw std::invalid_argument("camera: focal_point is too far from the eye");
+    if (!(glm::dot(toFocus, view) > 0.0))
+      throw std::invalid_argument("camera: focal_point must lie in front of the eye");
+  }
   return c;
 }
 

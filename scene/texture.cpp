@@ -198,24 +198,24 @@ int cellIndex(double floorC) {
 
 class GradientTexture final : public Texture {
  public:
-  GradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to)
-      : a_(a), b_(b), from_(from), step_((to - from) / glm::dot(to - from, to - from)) {}
+  GradientTexture(const ColorMap& colors, const dvec3& from, const dvec3& to)
+      : colors_(colors), from_(from), step_((to - from) / glm::dot(to - from, to - from)) {}
 
  protected:
   dvec3 pattern(const dvec3& p, const dvec3&) const override {
     // The share of the way from `from` to `to` that p's projection lies at.
-    const double t = glm::dot(p - from_, step_);
-    return mix(a_, b_, std::clamp(t, 0.0, 1.0));
+    return colors_.at(glm::dot(p - from_, step_));
   }
 
  private:
-  dvec3 a_, b_, from_, step_;
+  ColorMap colors_;
+  dvec3 from_, step_;
 };
 
 class NoiseTexture final : public Texture {
  public:
-  NoiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves, double strength)
-      : kind_(kind), a_(a), b_(b), octaves_(octaves), strength_(strength) {}
+  NoiseTexture(NoiseKind kind, const ColorMap& colors, int octaves, double strength)
+      : kind_(kind), colors_(colors), octaves_(octaves), strength_(strength) {}
 
  protected:
   dvec3 pattern(const dvec3& p, const dvec3&) const override {
@@ -241,21 +241,21 @@ class NoiseTexture final : public Texture {
         break;
       }
     }
-    return mix(a_, b_, t);
+    return colors_.at(t);
   }
 
  private:
   NoiseKind kind_;
-  dvec3 a_, b_;
+  ColorMap colors_;
   int octaves_;
   double strength_;
 };
 
 class FractalTexture final : public Texture {
  public:
-  FractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
-                 int iterations, double cx, double cy)
-      : kind_(kind), a_(a), b_(b), inside_(inside), iterations_(iterations), cx_(cx), cy_(cy) {}
+  FractalTexture(FractalKind kind, const ColorMap& colors, const dvec3& inside, int iterations,
+                 double cx, double cy)
+      : kind_(kind), colors_(colors), inside_(inside), iterations_(iterations), cx_(cx), cy_(cy) {}
 
  protected:
   dvec3 pattern(const dvec3& p, const dvec3&) const override {
@@ -273,7 +273,7 @@ class FractalTexture final : public Texture {
         // fraction of the iterations; its square root spreads the many
         // points that escape early over more of the blend.
         const double smooth = n + 1.0 - std::log2(std::log2(std::sqrt(xx + yy)));
-        return mix(a_, b_, std::sqrt(std::clamp(smooth / iterations_, 0.0, 1.0)));
+        return colors_.at(std::sqrt(std::clamp(smooth / iterations_, 0.0, 1.0)));
       }
       zy = 2.0 * zx * zy + cy;
       zx = xx - yy + cx;
@@ -283,7 +283,8 @@ class FractalTexture final : public Texture {
 
  private:
   FractalKind kind_;
-  dvec3 a_, b_, inside_;
+  ColorMap colors_;
+  dvec3 inside_;
   int iterations_;
   double cx_, cy_;
 };
@@ -326,11 +327,11 @@ TexturePtr checkerTexture(const dvec3& a, const dvec3& b, double size) {
   return std::make_shared<CheckerTexture>(a, b, size);
 }
 
-TexturePtr gradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to) {
+TexturePtr gradientTexture(const ColorMap& colors, const dvec3& from, const dvec3& to) {
   const double squared = glm::dot(to - from, to - from);
   if (!(squared > 0.0 && std::isfinite(squared)))
     throw std::invalid_argument("gradient from and to must be distinct points, not too far apart");
-  return std::make_shared<GradientTexture>(a, b, from, to);
+  return std::make_shared<GradientTexture>(colors, from, to);
 }
 
 TexturePtr imageTexture(std::shared_ptr<const TextureImage> image, ImageMapping mapping) {
@@ -342,24 +343,23 @@ TexturePtr imageTexture(std::shared_ptr<const TextureImage> image, ImageMapping 
   return std::make_shared<ImageTexture>(std::move(image), mapping);
 }
 
-TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves,
-                        double strength) {
+TexturePtr noiseTexture(NoiseKind kind, const ColorMap& colors, int octaves, double strength) {
   if (octaves < 1 || octaves > 16)
     throw std::invalid_argument("noise octaves must be between 1 and 16, not " +
                                 std::to_string(octaves));
   if (!(strength >= 0.0) || !std::isfinite(strength))
     throw std::invalid_argument("noise strength must be a finite number >= 0");
-  return std::make_shared<NoiseTexture>(kind, a, b, octaves, strength);
+  return std::make_shared<NoiseTexture>(kind, colors, octaves, strength);
 }
 
-TexturePtr fractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
+TexturePtr fractalTexture(FractalKind kind, const ColorMap& colors, const dvec3& inside,
                           int iterations, double cx, double cy) {
   if (iterations < 1 || iterations > 10000)
     throw std::invalid_argument("fractal iterations must be between 1 and 10000, not " +
                                 std::to_string(iterations));
   if (!std::isfinite(cx) || !std::isfinite(cy))
     throw std::invalid_argument("a Julia set's c must be finite");
-  return std::make_shared<FractalTexture>(kind, a, b, inside, iterations, cx, cy);
+  return std::make_shared<FractalTexture>(kind, colors, inside, iterations, cx, cy);
 }
 
 // ---- Textures as users give them ------------------------------------------
@@ -369,6 +369,10 @@ namespace {
 void checkColors(const char* function, const ColorPair& colors) {
   checkColor(function, "colors", colors.first);
   checkColor(function, "colors", colors.second);
+}
+
+void checkColors(const char* function, const ColorMap& colors) {
+  for (const ColorStop& stop : colors.stops()) checkColor(function, "colors", stop.color);
 }
 
 // The placement's map, with a singular scale reported under the texture's
@@ -402,9 +406,9 @@ TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
   return placed(checkerTexture(c.first, c.second, size), frame);
 }
 
-TexturePtr placedGradient(const std::optional<ColorPair>& colors, const dvec3& from,
-                          const dvec3& to, const TexturePlacement& placement) {
-  const ColorPair c = colors.value_or(ColorPair(dvec3(1.0), dvec3(0.1)));
+TexturePtr placedGradient(const std::optional<ColorMap>& colors, const dvec3& from, const dvec3& to,
+                          const TexturePlacement& placement) {
+  const ColorMap c = colors.value_or(ColorMap(dvec3(1.0), dvec3(0.1)));
   checkColors("gradient", c);
   checkFinite("gradient", "from", from);
   checkFinite("gradient", "to", to);
@@ -412,20 +416,20 @@ TexturePtr placedGradient(const std::optional<ColorPair>& colors, const dvec3& f
   const dvec3 way = to - from;
   if (!(glm::dot(way, way) > 0.0 && std::isfinite(glm::dot(way, way))))
     throw std::invalid_argument("gradient: from and to are too close or too far apart");
-  return placed(gradientTexture(c.first, c.second, from, to), placementOf("gradient", placement));
+  return placed(gradientTexture(c, from, to), placementOf("gradient", placement));
 }
 
-TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,
+TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorMap>& colors, double octaves,
                        double strength, const TexturePlacement& placement) {
   const char* name = noiseName(kind);
-  const ColorPair c = colors.value_or(
-      kind == NoiseKind::Wood ? ColorPair(dvec3(0.55, 0.33, 0.16), dvec3(0.3, 0.16, 0.07))
-                              : ColorPair(dvec3(0.9, 0.9, 0.88), dvec3(0.2, 0.2, 0.25)));
+  const ColorMap c = colors.value_or(kind == NoiseKind::Wood
+                                         ? ColorMap(dvec3(0.55, 0.33, 0.16), dvec3(0.3, 0.16, 0.07))
+                                         : ColorMap(dvec3(0.9, 0.9, 0.88), dvec3(0.2, 0.2, 0.25)));
   checkColors(name, c);
   const int count = kind == NoiseKind::Perlin ? 1 : checkWhole(name, "octaves", octaves, 1, 16);
   checkNonNegative(name, "strength", strength);
   const Affine frame = placementOf(name, placement);
-  return placed(noiseTexture(kind, c.first, c.second, count, strength), frame);
+  return placed(noiseTexture(kind, c, count, strength), frame);
 }
 
 TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,
@@ -434,17 +438,17 @@ TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping m
   return placed(imageTexture(std::move(image), mapping), frame);
 }
 
-TexturePtr placedFractal(FractalKind kind, const std::optional<ColorPair>& colors,
+TexturePtr placedFractal(FractalKind kind, const std::optional<ColorMap>& colors,
                          const std::optional<dvec3>& inside, double iterations, double cx,
                          double cy, const TexturePlacement& placement) {
   const char* name = kind == FractalKind::Mandelbrot ? "mandelbrot" : "julia";
-  const ColorPair c = colors.value_or(ColorPair(dvec3(0.05, 0.1, 0.4), dvec3(1.0, 0.85, 0.3)));
+  const ColorMap c = colors.value_or(ColorMap(dvec3(0.05, 0.1, 0.4), dvec3(1.0, 0.85, 0.3)));
   checkColors(name, c);
   const dvec3 in = inside.value_or(dvec3(0.0));
   checkColor(name, "inside", in);
   const int count = checkWhole(name, "iterations", iterations, 1, 10000);
   const Affine frame = placementOf(name, placement);
-  return placed(fractalTexture(kind, c.first, c.second, in, count, cx, cy), frame);
+  return placed(fractalTexture(kind, c, in, count, cx, cy), frame);
 }
 
 const char* noiseName(NoiseKind kind) {

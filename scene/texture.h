@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/affine.h"
+#include "scene/color_map.h"
 
 namespace csgray::detail {
 
@@ -51,7 +52,7 @@ TexturePtr checkerTexture(const dvec3& a, const dvec3& b, double size);
 
 // A linear gradient: colour a at `from`, b at `to`, blending along the
 // line between them and constant beyond (an SVG linearGradient's "pad").
-TexturePtr gradientTexture(const dvec3& a, const dvec3& b, const dvec3& from, const dvec3& to);
+TexturePtr gradientTexture(const ColorMap& colors, const dvec3& from, const dvec3& to);
 
 // How a bitmap is wrapped onto points (u, v in [0, 1), repeating):
 enum class ImageMapping {
@@ -69,8 +70,12 @@ enum class NoiseKind {
   Marble,      // veins: sin(x + turbulence(p)·strength)
   Wood,        // rings about the z axis, one per unit of radius, disturbed by turbulence
 };
-TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves = 6,
+TexturePtr noiseTexture(NoiseKind kind, const ColorMap& colors, int octaves = 6,
                         double strength = 4.0);
+inline TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octaves = 6,
+                               double strength = 4.0) {
+  return noiseTexture(kind, ColorMap(a, b), octaves, strength);
+}
 
 // Escape-time fractals in the xy plane of the pattern's frame: each point
 // c = x + iy (Mandelbrot) or start z = x + iy (Julia, with the given c)
@@ -78,7 +83,7 @@ TexturePtr noiseTexture(NoiseKind kind, const dvec3& a, const dvec3& b, int octa
 // steps take `inside`; the others blend a (escaped at once) to b (escaped
 // late) by their smooth escape count.
 enum class FractalKind { Mandelbrot, Julia };
-TexturePtr fractalTexture(FractalKind kind, const dvec3& a, const dvec3& b, const dvec3& inside,
+TexturePtr fractalTexture(FractalKind kind, const ColorMap& colors, const dvec3& inside,
                           int iterations, double cx = 0.0, double cy = 0.0);
 
 // ---- Textures as users give them ------------------------------------------
@@ -89,7 +94,8 @@ struct TexturePlacement {
   std::optional<dvec3> scale, rotate, translate;
 };
 
-// The two colours of a pattern; none: the pattern's own defaults.
+// The two colours of a pattern; none: the pattern's own defaults. The
+// patterns that blend (all but the checker) take a ColorMap of more.
 using ColorPair = std::pair<dvec3, dvec3>;
 
 // The textures of the script's checker{}, perlin{}, turbulence{}, marble{},
@@ -98,14 +104,14 @@ using ColorPair = std::pair<dvec3, dvec3>;
 TexturePtr placedChecker(const std::optional<ColorPair>& colors, double size,
                          const TexturePlacement& placement);
 // The script's gradient{}: from and to default to the origin and +z.
-TexturePtr placedGradient(const std::optional<ColorPair>& colors, const dvec3& from,
-                          const dvec3& to, const TexturePlacement& placement);
-TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorPair>& colors, double octaves,
+TexturePtr placedGradient(const std::optional<ColorMap>& colors, const dvec3& from, const dvec3& to,
+                          const TexturePlacement& placement);
+TexturePtr placedNoise(NoiseKind kind, const std::optional<ColorMap>& colors, double octaves,
                        double strength, const TexturePlacement& placement);
 TexturePtr placedImage(std::shared_ptr<const TextureImage> image, ImageMapping mapping,
                        const TexturePlacement& placement);
 // The script's mandelbrot{} and julia{}: c is Julia's constant.
-TexturePtr placedFractal(FractalKind kind, const std::optional<ColorPair>& colors,
+TexturePtr placedFractal(FractalKind kind, const std::optional<ColorMap>& colors,
                          const std::optional<dvec3>& inside, double iterations, double cx,
                          double cy, const TexturePlacement& placement);
 // The script function of a noise: "perlin", "turbulence", "marble", "wood".

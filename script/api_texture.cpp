@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "script/api.h"
 #include "script/lua_args.h"
@@ -31,6 +32,54 @@ std::optional<ColorPair> colorsArg(lua_State* L, LuaArgs& args) {
   return ColorPair(c[0], c[1]);
 }
 
+// The colours a blending pattern takes: colors={a, b, ...} spaced evenly
+// from 0 to 1, or colors={{t, a}, {u, b}, ...} at stops (POV-Ray's
+// color_map): an entry of two values whose first is a number is a stop (a
+// colour has three, or is a name).
+std::optional<ColorMap> colorMapArg(lua_State* L, LuaArgs& args) {
+  if (!args.push("colors")) return std::nullopt;
+  const std::string what = args.function() + ": colors";
+  if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) < 2)
+    throw std::invalid_argument(what +
+                                " must be a list of two or more colours, or of {place, colour} "
+                                "stops such as {{0, \"white\"}, {0.7, \"steelblue\"}, {1, "
+                                "\"navy\"}}");
+  const lua_Unsigned n = lua_rawlen(L, -1);
+  if (n > ColorMap::kMaxStops)
+    throw std::invalid_argument(what + " must be at most " + std::to_string(ColorMap::kMaxStops) +
+                                " colours, not " + std::to_string(n));
+  std::vector<ColorStop> stops;
+  std::vector<dvec3> plain;
+  for (lua_Unsigned i = 1; i <= n; ++i) {
+    const std::string entry = what + "[" + std::to_string(i) + "]";
+    lua_rawgeti(L, -1, static_cast<lua_Integer>(i));
+    bool stop = false;
+    if (lua_type(L, -1) == LUA_TTABLE && lua_rawlen(L, -1) == 2) {
+      lua_rawgeti(L, -1, 1);
+      stop = lua_type(L, -1) == LUA_TNUMBER;
+      lua_pop(L, 1);
+    }
+    if (stop) {
+      lua_rawgeti(L, -1, 1);
+      const double at = toNumber(L, -1, entry + "'s place");
+      lua_pop(L, 1);
+      lua_rawgeti(L, -1, 2);
+      stops.push_back({at, toColor(L, -1, entry + "'s colour")});
+      lua_pop(L, 1);
+    } else {
+      plain.push_back(toColor(L, -1, entry));
+    }
+    lua_pop(L, 1);
+    if (!stops.empty() && !plain.empty())
+      throw std::invalid_argument(what +
+                                  ": give every entry as a colour, or every one as a {place, "
+                                  "colour} stop");
+  }
+  lua_pop(L, 1);
+  return plain.empty() ? ColorMap(std::move(stops), args.function())
+                       : ColorMap::evenly(plain, args.function());
+}
+
 // scale=, rotate= and translate=, which every texture takes.
 TexturePlacement placementArgs(LuaArgs& args) {
   TexturePlacement placement;
@@ -54,7 +103,7 @@ int checker(lua_State* L) {
 int gradient(lua_State* L) {
   checkArgumentCount(L, "gradient", 1);
   LuaArgs args(L, 1, "gradient");
-  std::optional<ColorPair> colors = colorsArg(L, args);
+  std::optional<ColorMap> colors = colorMapArg(L, args);
   const dvec3 from = args.vec3("from").value_or(dvec3(0.0));
   const dvec3 to = args.vec3("to").value_or(dvec3(0.0, 0.0, 1.0));
   TexturePtr texture = placedGradient(colors, from, to, placementArgs(args));
@@ -67,7 +116,7 @@ template <NoiseKind kind>
 int noise(lua_State* L) {
   checkArgumentCount(L, noiseName(kind), 1);
   LuaArgs args(L, 1, noiseName(kind));
-  std::optional<ColorPair> colors = colorsArg(L, args);
+  std::optional<ColorMap> colors = colorMapArg(L, args);
   // Plain Perlin noise is one octave; the others sum octaves.
   double octaves = kind == NoiseKind::Perlin ? 1.0 : args.number("octaves").value_or(6.0);
   double strength = args.number("strength").value_or(4.0);
@@ -83,7 +132,7 @@ int fractal(lua_State* L) {
   const char* name = kind == FractalKind::Mandelbrot ? "mandelbrot" : "julia";
   checkArgumentCount(L, name, 1);
   LuaArgs args(L, 1, name);
-  std::optional<ColorPair> colors = colorsArg(L, args);
+  std::optional<ColorMap> colors = colorMapArg(L, args);
   std::optional<dvec3> inside = args.color("inside");
   double iterations = args.number("iterations").value_or(100.0);
   dvec2 c(0.0);

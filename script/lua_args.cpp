@@ -104,6 +104,15 @@ std::string parameterHint(const std::string& key, const std::set<std::string>& k
       {"pigment", "color"},
       {"texture", "color"},  // a texture is given as a material's colour
       {"normal", "bumps"},   // normal { bumps 0.5 }
+      {"bump_map", "bumps"},
+      {"bump_size", "bump_depth"},
+      {"fog_offset", "offset"},
+      {"fog_alt", "altitude"},
+      {"sky_sphere", "background"},
+      {"color_map", "colors"},
+      {"colour_map", "colors"},
+      {"confidence", "blur_samples"},
+      {"variance", "blur_samples"},
       {"phong", "specular"},
       {"phong_size", "shininess"},
       {"roughness", "shininess"},
@@ -126,6 +135,8 @@ std::string parameterHint(const std::string& key, const std::set<std::string>& k
       !known.count(key))
     return "; shapes are made at the origin here and placed with :translate(x, y, z) (and "
            ":rotate for a cylinder's axis)";
+  if (key == "fog_type" && known.count("altitude"))
+    return "; ground fog (POV-Ray's fog_type 2) is given by offset= and altitude= here";
   // OpenSCAD's facet counts have nothing to set here.
   if (key == "slices" || key == "segments" || key == "fn")
     return "; OpenSCAD's " + key +
@@ -291,13 +302,19 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
 
 dvec3 toColor(lua_State* L, int index, const std::string& what) {
   const int type = lua_type(L, index);
-  // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: the fourth number has a
-  // parameter of its own.
-  if (type == LUA_TTABLE && lua_rawlen(L, index) == 4)
-    throw std::invalid_argument(what +
-                                " must be {r, g, b}: a fourth number (OpenSCAD's alpha, POV-Ray's "
-                                "filter or transmit) is transparency= here, with filter={r, g, b} "
-                                "for a tint");
+  // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: in a material the fourth
+  // number has a parameter of its own; a light's, a fog's or a pattern's
+  // colour has no such thing.
+  if (type == LUA_TTABLE && lua_rawlen(L, index) == 4) {
+    if (what.rfind("material", 0) == 0)
+      throw std::invalid_argument(
+          what +
+          " must be {r, g, b}: a fourth number (OpenSCAD's alpha, POV-Ray's filter or transmit) "
+          "is transparency= here, with filter={r, g, b} for a tint");
+    throw std::invalid_argument(
+        what +
+        " must be {r, g, b}: a fourth number (alpha, filter or transmit) has no meaning here");
+  }
   if (type == LUA_TNUMBER || (type == LUA_TTABLE && lua_rawlen(L, index) == 3))
     return toVec3(L, index, what);
   if (type != LUA_TSTRING)

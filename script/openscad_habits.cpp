@@ -77,6 +77,17 @@ std::string otherToolNameHint(const std::string& name) {
        "POV-Ray's rgb <r, g, b> is {r, g, b} here, linear as in POV-Ray 3.7 (srgb(r, g, "
        "b) is for sRGB codes such as those of a paint program)"},
       {"rgbf", "POV-Ray's rgbf is color={r, g, b} with transparency= and filter={r, g, b} here"},
+      {"fog", "fog is a scene's: scene{..., fog={color={r, g, b}, distance=d}}"},
+      {"sky_sphere",
+       "POV-Ray's sky_sphere is a scene's background texture here: "
+       "scene{background=gradient{colors={horizon, zenith}}}"},
+      {"color_map", "a pattern's colour map is its colors={{0, c1}, {0.5, c2}, {1, c3}} here"},
+      {"bumps", "bumps are a material's: material{bumps=perlin{scale=s}, bump_depth=d}"},
+      {"wrinkles", "there is no wrinkles pattern: material{bumps=turbulence{}} tilts normals"},
+      {"ripples", "there is no ripples pattern: material{bumps=<any texture>} tilts normals"},
+      {"waves", "there is no waves pattern: material{bumps=<any texture>} tilts normals"},
+      {"dents", "there is no dents pattern: material{bumps=<any texture>, bump_depth=-d}"},
+      {"focal_blur", "focal blur is a camera's: camera{aperture=a, focal_point=p}"},
   };
   if (auto it = kNames.find(name); it != kNames.end()) return "; " + it->second;
   // OpenSCAD's maths functions are those of Lua's math table, which take

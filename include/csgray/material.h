@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "csgray/types.h"
 
@@ -26,9 +27,16 @@ class CSGRAY_API Texture {
   struct Placement {
     std::optional<Vec3> scale, rotate, translate;
   };
-  // The two colours of a pattern.
+  // The colours of a pattern: first at 0 and second at 1, or, for every
+  // pattern but the checker, `stops` when given (2 to 256, places in
+  // [0, 1] in order: POV-Ray's color_map), linear between them.
+  struct Stop {
+    double at;
+    Vec3 color;
+  };
   struct Colors {
     Vec3 first, second;
+    std::vector<Stop> stops = {};
   };
   // How a bitmap wraps onto points (u, v in [0, 1), repeating).
   enum class Mapping {

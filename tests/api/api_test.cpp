@@ -417,6 +417,15 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   sky.setBackground(csgray::Texture::gradient());
   EXPECT_TRUE(sky.backgroundTexture());
   EXPECT_FALSE(sky.setBackground(Vec3{0, 0, 0}).backgroundTexture());  // a colour replaces it
+  // Stops, as the script's colour maps.
+  csgray::Texture::Colors map{
+      {0, 0, 0}, {0, 0, 0}, {{0.0, {1, 0, 0}}, {0.5, {0, 1, 0}}, {1.0, {0, 0, 1}}}};
+  EXPECT_EQ(csgray::Texture::gradient(map).colorAt({0, 0, 0.75}, {0, 0, 1}), (Vec3{0, 0.5, 0.5}));
+  EXPECT_EQ(errorOf([&] { csgray::Texture::checker(map); }).second,
+            "checker: colors must be two colours, not stops");
+  map.stops[2].at = 0.25;
+  EXPECT_EQ(errorOf([&] { csgray::Texture::noise(csgray::Texture::Noise::Marble, map); }).second,
+            "marble: colors[3]: stops must be in order of their places");
   EXPECT_EQ(copy.part().kind(), "sphere");
   EXPECT_EQ(scene.part().kind(), "union");
   EXPECT_EQ(errorOf([] { csgray::Scene().part(); }).first, ErrorCode::InvalidArgument);

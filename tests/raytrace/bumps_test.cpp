@@ -53,10 +53,17 @@ TEST(Bumps, ARampTiltsTheNormalToTheRaisedFaces) {
       bumpedNormal(*m, dvec3(1, 0, 0), 1.0, dvec3(3, 2, 0), dvec3(1, 0, 0), glm::dmat3(1.0)),
       dvec3(1, 0, 0), 1e-8);
   EXPECT_NEAR(luminance(dvec3(1.0)), 1.0, 1e-12);
+  // A depth past the doubles' squares tilts the normal all the way along
+  // the surface, as a steep ramp would, not back to the smooth normal.
+  const dvec3 steep = bumpedNormal(*bumpy(1e200), dvec3(0, 0, 1), 1.0, dvec3(3, 2, 0),
+                                   dvec3(0, 0, 1), glm::dmat3(1.0));
+  test::expectVecNear(steep, dvec3(-1, 0, 0), 1e-9);
 }
 
-// The bumps go with the part: a box given the ramp and then stretched
-// twice along x rises d·x/2 in the world, and a union of it turned a
+// The bumps go with the part, made in the part's frame when the material
+// was given: a box given the ramp and then stretched twice along x rises
+// d·x/2 in the world; scaled twice in every direction, 2d·(x/2), the same
+// slope; stretched three times along z, 3d·x; and a union of it turned a
 // quarter about z (an instance) rises along the turned x, y.
 TEST(Bumps, TheBumpsMoveWithThePart) {
   const double d = 0.5;
@@ -74,6 +81,13 @@ TEST(Bumps, TheBumpsMoveWithThePart) {
   };
   const Ray down(dvec3(1, 1, 5), dvec3(0, 0, -1));
   test::expectVecNear(tilted(*stretched, down), glm::normalize(dvec3(-d / 2, 0, 1)), 1e-7);
+  // Scaled alike in every direction, the bumps are as high as they are
+  // wide, as before: the same slope.
+  const SolidPtr doubled = box->transformed(Affine::scaling({2, 2, 2}));
+  test::expectVecNear(tilted(*doubled, down), glm::normalize(dvec3(-d, 0, 1)), 1e-7);
+  // Stretched across the ramp's rise (along z), the rise is stretched too.
+  const SolidPtr tall = box->transformed(Affine::scaling({1, 1, 3}));
+  test::expectVecNear(tilted(*tall, down), glm::normalize(dvec3(-3 * d, 0, 1)), 1e-7);
   const SolidPtr turned =
       unionOf({box, Primitive::create<Sphere>(0.5)->transformed(Affine::translation({20, 0, 0}))})
           ->transformed(Affine::rotation(std::numbers::pi / 2, dvec3(0, 0, 1)));

@@ -103,6 +103,8 @@ TEST(Camera, LensSettingsAreChecked) {
   EXPECT_EQ(refusal(spec), "camera: focal_point must lie in front of the eye");
   spec.focalPoint = dvec3(0, -10, 5);  // beside it
   EXPECT_EQ(refusal(spec), "camera: focal_point must lie in front of the eye");
+  spec.focalPoint = dvec3(0, 1e200, 0);
+  EXPECT_EQ(refusal(spec), "camera: focal_point is too far from the eye");
   spec.focalPoint = dvec3(0, 3, 0);
   EXPECT_EQ(refusal(spec), "");
   spec.blurSamples = 0;

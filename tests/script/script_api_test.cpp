@@ -987,6 +987,24 @@ TEST(ScriptScene, Fog) {
   expectError(std::string(source) + "{color={1, 1, 1}, distance=3, density=2}}",
               "part.lua:2: scene: fog: unknown parameter 'density'");
   expectError(std::string(source) + "true}", "part.lua:2: scene: fog: expected a table");
+  // Colour maps: colours spaced evenly, or stops at places.
+  TexturePtr three = textureOf("gradient{colors={'red', {0, 1, 0}, 'blue'}}");
+  ASSERT_NE(three, nullptr);
+  EXPECT_EQ(three->colorAt(dvec3(0, 0, 0.5), dvec3(0, 0, 1)), dvec3(0, 1, 0));
+  TexturePtr stops = textureOf("gradient{colors={{0, 'red'}, {0.5, 'red'}, {1, {0, 0, 1}}}}");
+  ASSERT_NE(stops, nullptr);
+  EXPECT_EQ(stops->colorAt(dvec3(0, 0, 0.4), dvec3(0, 0, 1)), dvec3(1, 0, 0));
+  EXPECT_EQ(stops->colorAt(dvec3(0, 0, 0.75), dvec3(0, 0, 1)), dvec3(0.5, 0, 0.5));
+  EXPECT_NE(textureOf("marble{colors={'white', 'grey', 'black', 'white'}}"), nullptr);
+  expectError("return sphere(1):material{color=gradient{colors={{0, 'red'}, 'blue'}}}",
+              "part.lua:1: gradient: colors: give every entry as a colour, or every one as a "
+              "{place, colour} stop");
+  expectError("return sphere(1):material{color=wood{colors={'red'}}}",
+              "part.lua:1: wood: colors must be a list of two or more colours");
+  expectError("return sphere(1):material{color=perlin{colors={{0, 'red'}, {2, 'blue'}}}}",
+              "part.lua:1: perlin: colors[2]: a stop's place must be in [0, 1]");
+  expectError("return sphere(1):material{color=checker{colors={'red', 'green', 'blue'}}}",
+              "part.lua:1: checker: colors must be a list of two colours");
   expectError("return sphere(1):material{color=gradient{from={1, 1, 1}, to={1, 1, 1}}}",
               "part.lua:1: gradient: from and to are the same point");
   expectError("return sphere(1):material{color=gradient{to=3, from=3}}",
