@@ -118,19 +118,22 @@ inline std::string halfSpaceHint(const std::string& surfaceKind) {
 }
 
 // The value at index, or an error "<what> must be a <type>". A surface
-// given for a solid is told apart: what it cannot do is `solidUse`; so is
-// a 2D region.
+// given for a solid is told apart: what it cannot do is `solidUse`, by
+// default take part in a boolean (where a plane gets the half-space
+// hint); so is a 2D region.
 template <class T>
-inline const T& checkValue(
-    lua_State* L, int index, const std::string& what,
-    const std::string& solidUse = "take part in a boolean (put it in scene{objects=...} instead)") {
+inline const T& checkValue(lua_State* L, int index, const std::string& what,
+                           const char* solidUse = nullptr) {
   if (T* v = toValue<T>(L, index)) return *v;
   if constexpr (std::is_same_v<T, SolidPtr>) {
-    if (SurfacePtr* s = toValue<SurfacePtr>(L, index))
-      throw std::invalid_argument(
-          what + " must be a solid, but a " + (*s)->kind() +
-          " is a surface: it encloses no volume, so it cannot " + solidUse +
-          (solidUse.starts_with("take part in a boolean") ? halfSpaceHint((*s)->kind()) : ""));
+    if (SurfacePtr* s = toValue<SurfacePtr>(L, index)) {
+      const std::string cannot =
+          solidUse ? std::string(solidUse)
+                   : "take part in a boolean (put it in scene{objects=...} instead)" +
+                         halfSpaceHint((*s)->kind());
+      throw std::invalid_argument(what + " must be a solid, but a " + (*s)->kind() +
+                                  " is a surface: it encloses no volume, so it cannot " + cannot);
+    }
     if (toValue<RegionPtr>(L, index))
       throw std::invalid_argument(what + " must be a solid, not a 2D region" +
                                   regionShown(L, index) +
