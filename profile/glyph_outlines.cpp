@@ -317,6 +317,9 @@ RegionPtr textRegion(const TextLayout& layout) {
     if (layout.blankMakesNothing) return nullptr;
     fail("the string is empty");
   }
+  // The script's text() and a .csg file's alike.
+  if (layout.text.size() > kMaxTextBytes)
+    fail("the string is longer than " + std::to_string(kMaxTextBytes) + " bytes");
   if (!std::isfinite(layout.size) || !(layout.size > 0.0)) {
     std::ostringstream msg;
     msg << "size must be a positive number (got " << layout.size << ")";

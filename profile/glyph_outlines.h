@@ -12,6 +12,9 @@
 
 namespace csgray::detail {
 
+// Longer strings are refused: each letter costs a shaping and its curves.
+inline constexpr std::size_t kMaxTextBytes = 10000;
+
 struct TextLayout {
   enum class HAlign { Left, Center, Right };
   enum class VAlign { Baseline, Bottom, Center, Top };
@@ -46,7 +49,8 @@ struct TextLayout {
 // do not overlap (each outer contour with the holes inside it), united, so
 // that overlapping strokes fill as the font's non-zero rule says.
 // Throws std::invalid_argument, with a message that starts "text: ", for an
-// empty string, a size that is not a positive finite number, a spacing that
+// empty string, one longer than kMaxTextBytes, a size that is not a positive
+// finite number, a spacing that
 // is not finite or not positive, a font fontconfig does not have (it would
 // fall back to another silently), a font name that names a file, or a
 // string with no outline (only spaces) unless blankMakesNothing.

@@ -14,9 +14,6 @@ namespace csgray::detail {
 
 namespace {
 
-// Longer strings are refused: each letter costs a shaping and its curves.
-constexpr std::size_t kMaxTextBytes = 10000;
-
 // The value of the option the word `given` names, or an error that lists them.
 template <class T>
 T choice(const std::optional<std::string>& given, const char* key,
@@ -54,9 +51,6 @@ int text(lua_State* L) {
   TextLayout layout;
   const std::optional<std::string> string = args.string("text");
   if (!string) throw std::invalid_argument("text: needs the string to write: text{\"csgray\"}");
-  if (string->size() > kMaxTextBytes)
-    throw std::invalid_argument("text: the string is longer than " + std::to_string(kMaxTextBytes) +
-                                " bytes");
   layout.text = *string;
   if (auto v = args.number("size")) layout.size = *v;
   if (auto v = args.string("font")) layout.font = *v;

@@ -546,6 +546,9 @@ TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(importError("text(text = \"hi\", size = -1);"),
             "part.csg:1: text: size must be a positive number (got -1)");
   EXPECT_EQ(importError("text(text = 12);"), "part.csg:1: text: text must be a string");
+  // As long a string as a script's text() takes, no longer.
+  EXPECT_EQ(importError("text(text = \"" + std::string(10001, 'x') + "\");"),
+            "part.csg:1: text: the string is longer than 10000 bytes");
   EXPECT_EQ(importError("\nprojection(cut = false) { cube(size = 1); }"),
             "part.csg:2: projection: this program cannot project solids");
   EXPECT_EQ(importError("surface(file = \"x.dat\");"),

@@ -219,6 +219,8 @@ TEST(TextScript, TextIsARegion) {
 
 TEST(TextScript, BadInputIsOneLine) {
   EXPECT_EQ(scriptError("return text{\"\"}"), "part.lua:1: text: the string is empty");
+  EXPECT_EQ(scriptError("return text{string.rep('x', 10001)}"),
+            "part.lua:1: text: the string is longer than 10000 bytes");
   EXPECT_EQ(scriptError("return text{\"a\", size=-1}"),
             "part.lua:1: text: size must be a positive number (got -1)");
   EXPECT_EQ(scriptError("\nreturn text{\"a\", font=\"Nope\"}"),
