@@ -4,11 +4,13 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "engine/boolean.h"
 #include "engine/degrees.h"
+#include "engine/printable_token.h"
 #include "engine/tight_bounds.h"
 #include "io/height_map_file.h"
 #include "io/input_file.h"
@@ -82,6 +84,7 @@ class Importer {
     try {
       Shape s = marked(node, made(node));
       if (s.solid) placeOrigin(*s.solid, node.line);
+      warnOfUnread(node);
       return s;
     } catch (const CsgError&) {
       throw;
@@ -114,9 +117,31 @@ class Importer {
     return s;
   }
 
+  // A parameter the node's making never read: OpenSCAD's special variables
+  // ($fn, ...) are the nodes' to take or leave, and some parameters that
+  // OpenSCAD writes mean nothing to an exact model (a preview's convexity,
+  // a file's time stamp, an extrusion's slices, the DXF layer and origin
+  // OpenSCAD writes for any import); a node made before (a repeated
+  // offset, whose first copy was read) is not read again.
+  void warnOfUnread(const CsgNode& node) {
+    const auto read = read_.find(&node);
+    if (!options_.warn || read == read_.end()) return;
+    auto meaningless = [&](const std::string& key) {
+      return key.starts_with("$") || key == "convexity" || key == "timestamp" ||
+             (node.name == "linear_extrude" && (key == "slices" || key == "segments")) ||
+             (node.name == "import" && (key == "layer" || key == "origin"));
+    };
+    for (const auto& [key, value] : node.named)
+      if (!meaningless(key) && !read->second.contains(key))
+        options_.warn(file_ + ":" + std::to_string(node.line) + ": " + node.name + ": parameter '" +
+                      printableToken(key, 40) + "' is not known here and was left out");
+    read_.erase(read);
+  }
+
   // ---- Arguments -----------------------------------------------------------
 
   const CsgValue* find(const CsgNode& node, const char* key, int position = -1) const {
+    read_[&node].insert(key);
     if (auto it = node.named.find(key); it != node.named.end()) return &it->second;
     if (position >= 0 && position < int(node.positional.size())) return &node.positional[position];
     return nullptr;
@@ -797,6 +822,8 @@ class Importer {
   std::shared_ptr<const std::string> source_;  // file_, for solids' SourceLine
   const CsgImportOptions& options_;
   std::unordered_map<std::string, Shape> made2D_;  // by csgNodeKey
+  // The parameters each node's making has asked for, until it is made.
+  mutable std::unordered_map<const CsgNode*, std::set<std::string>> read_;
 };
 
 }  // namespace

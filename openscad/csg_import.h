@@ -43,6 +43,10 @@ struct CsgImportOptions {
   // it, projection() is an error. (solidProjection of
   // export/solid_projection.h fits.)
   std::function<Profile(const SolidPtr& solid, bool cut)> project;
+  // Told of a parameter no node here reads ("part.csg:3: cube: parameter
+  // 'foo' is not known here and was left out"): a newer OpenSCAD's, or a
+  // typo in a file written by hand. Without it, such parameters are quiet.
+  std::function<void(const std::string& message)> warn;
 };
 
 // What a file holds: solids (3D) and regions (2D) at the top level, each

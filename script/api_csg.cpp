@@ -33,6 +33,7 @@ CsgImportOptions csgOptions(const std::string& path, const ScriptOptions& option
     };
   csg.loadImage = options.loadImage;
   csg.project = options.projectSolid;
+  csg.warn = options.warn;
   return csg;
 }
 

@@ -537,6 +537,28 @@ TEST(CsgImport, ColourAndModifiers) {
   EXPECT_TRUE(scene.objects[0]->contains({1.0, 1.0, 1.0}));
 }
 
+// A parameter no node reads is told of, with its line: a typo in a file
+// written by hand, or a newer OpenSCAD's. Those OpenSCAD writes that mean
+// nothing to an exact model are not; nor are the special variables (and
+// OpenSCAD's own examples below raise none).
+TEST(CsgImport, ParametersItDoesNotKnowAreWarnedOf) {
+  std::vector<std::string> told;
+  CsgImportOptions options;
+  options.warn = [&](const std::string& message) { told.push_back(message); };
+  const CsgModel model = importCsg(
+      "group() {\n  cube(size = [1, 2, 3], centre = true);\n"
+      "  sphere($fn = 0, $fa = 12, $fs = 2, r = 1, convexity = 2);\n"
+      "  linear_extrude(height = 2, center = false, convexity = 10, twist = 0, slices = 1, "
+      "scale = [1, 1], $fn = 0) {\n    square(size = [1, 1], center = false, roundness = 3);\n"
+      "  }\n}\n",
+      "part.csg", options);
+  EXPECT_EQ(model.solids.size(), 1u);
+  ASSERT_EQ(told.size(), 2u);
+  EXPECT_EQ(told[0], "part.csg:2: cube: parameter 'centre' is not known here and was left out");
+  EXPECT_EQ(told[1],
+            "part.csg:5: square: parameter 'roundness' is not known here and was left out");
+}
+
 TEST(CsgImport, NodesItCannotMakeAreOneLineErrors) {
   EXPECT_EQ(importError("group() {\n  frobnicate(r = 1);\n}"),
             "part.csg:2: frobnicate: unknown node");
@@ -746,10 +768,15 @@ TEST(CsgImport, SvgStrokes) {
   EXPECT_NEAR(box.hi.y, 46.0, 1e-4);
 }
 
+// Every parameter OpenSCAD writes is known: no warnings.
 Scene exampleScene(const std::string& name, bool openscadFacets) {
   ScriptOptions options = test::exampleOptions();
   options.openscadFacets = openscadFacets;
-  return runScriptFile(kData + name + ".csg", options);
+  std::vector<std::string> told;
+  options.warn = [&](const std::string& message) { told.push_back(message); };
+  Scene scene = runScriptFile(kData + name + ".csg", options);
+  EXPECT_TRUE(told.empty()) << told.front();
+  return scene;
 }
 
 // What each example makes here: a solid (imported, rendered and exported,
