@@ -93,6 +93,17 @@ Texture Texture::noise(Noise kind, const std::optional<Colors>& colors, int octa
   });
 }
 
+Texture Texture::fractal(Fractal kind, const std::optional<Colors>& colors, const Vec3& inside,
+                         int iterations, double cx, double cy, const Placement& placement) {
+  return guarded([&] {
+    const bool mandelbrot = kind == Fractal::Mandelbrot;
+    return Texture(detail::placedFractal(
+        mandelbrot ? detail::FractalKind::Mandelbrot : detail::FractalKind::Julia,
+        colorMapOf(colors, mandelbrot ? "mandelbrot" : "julia"), toDetail(inside), iterations, cx,
+        cy, placementOf(placement)));
+  });
+}
+
 Texture Texture::image(const std::string& path, Mapping mapping, const Placement& placement) {
   // readTextureImage's errors (a missing or unreadable file) are IoError.
   auto image = guarded(ErrorCode::IoError, [&] {

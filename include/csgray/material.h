@@ -65,6 +65,14 @@ class CSGRAY_API Texture {
   // octaves from 1 to 16, strength >= 0.
   static Texture noise(Noise kind, const std::optional<Colors>& colors = std::nullopt,
                        int octaves = 6, double strength = 4.0, const Placement& placement = {});
+  // The Mandelbrot set, or the Julia set of c, in the xy plane (the
+  // script's mandelbrot{} and julia{}): points that stay within radius 2
+  // for `iterations` steps (1 to 10000) take `inside`, the others blend the
+  // colours by their smooth escape count.
+  enum class Fractal { Mandelbrot, Julia };
+  static Texture fractal(Fractal kind, const std::optional<Colors>& colors = std::nullopt,
+                         const Vec3& inside = {0.0, 0.0, 0.0}, int iterations = 100,
+                         double cx = -0.123, double cy = 0.745, const Placement& placement = {});
   // An image file (PNG, JPEG, EXR, ...) wrapped by the mapping.
   static Texture image(const std::string& path, Mapping mapping = Mapping::Planar,
                        const Placement& placement = {});

@@ -237,6 +237,10 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
        [] { csgray::Texture::checker(std::nullopt, 0); }},
       {"return sphere(1):material{color=wood{octaves=17}}",
        [] { csgray::Texture::noise(csgray::Texture::Noise::Wood, std::nullopt, 17); }},
+      {"return sphere(1):material{color=julia{iterations=0}}",
+       [] {
+         csgray::Texture::fractal(csgray::Texture::Fractal::Julia, std::nullopt, {0, 0, 0}, 0);
+       }},
       // A NaN or an infinity, as the script refuses one (1/0 and 0/0 there).
       {"return sphere(1/0)", [] { Solid::sphere(kInf); }},
       {"return sphere(0/0)", [] { Solid::sphere(kNaN); }},
@@ -423,6 +427,37 @@ TEST(ApiScene, HoldsWhatItIsGivenAndCopiesAreValues) {
   EXPECT_EQ(csgray::Texture::gradient(map).colorAt({0, 0, 0.75}, {0, 0, 1}), (Vec3{0, 0.5, 0.5}));
   EXPECT_EQ(errorOf([&] { csgray::Texture::checker(map); }).second,
             "checker: colors must be two colours, not stops");
+  // The fractals as the script's mandelbrot{} and julia{} (Douady's rabbit
+  // by default): a floor of each, seen from above, renders the same pixels.
+  const std::string floor =
+      "return scene{objects=plane{}:material{ambient=1, diffuse=0, color=%s}, lights={}, "
+      "camera=camera{eye={0, 0, 3}, look_at={0, 0, 0}, up={0, 1, 0}}}";
+  const csgray::Texture::Colors rgb{
+      {0, 0, 0}, {0, 0, 0}, {{0, {1, 0, 0}}, {0.5, {0, 1, 0}}, {1, {0, 0, 1}}}};
+  const struct {
+    const char* script;
+    csgray::Texture texture;
+  } fractals[] = {
+      {"julia{}", csgray::Texture::fractal(csgray::Texture::Fractal::Julia)},
+      {"mandelbrot{colors={{0, {1, 0, 0}}, {0.5, {0, 1, 0}}, {1, {0, 0, 1}}}, inside={1, 1, 1}, "
+       "iterations=50}",
+       csgray::Texture::fractal(csgray::Texture::Fractal::Mandelbrot, rgb, {1, 1, 1}, 50)},
+  };
+  for (const auto& f : fractals) {
+    std::string source = floor;
+    source.replace(source.find("%s"), 2, f.script);
+    const csgray::Scene scripted = csgray::runScriptText(source, "fractal.lua");
+    csgray::Material m;
+    m.ambient = 1;
+    m.diffuse = 0;
+    m.texture = f.texture;
+    csgray::Scene built;
+    built.add(csgray::Surface::plane({0, 0, 1}, 0).material(m)).setDefaultLight(false);
+    built.setCamera(*scripted.camera()).setBackground(scripted.background());
+    const csgray::Image image = csgray::render(built, {32, 24});
+    EXPECT_TRUE(image.rgb == csgray::render(scripted, {32, 24}).rgb) << f.script;
+    EXPECT_NE(image.at(0, 0), image.at(16, 12)) << f.script;  // not one colour
+  }
   map.stops[2].at = 0.25;
   EXPECT_EQ(errorOf([&] { csgray::Texture::noise(csgray::Texture::Noise::Marble, map); }).second,
             "marble: colors[3]: stops must be in order of their places");
