@@ -150,5 +150,45 @@ TEST(Bumps, LambertSeesTheTiltAndTheSilhouetteStays) {
   EXPECT_GT(shadedOtherwise, 50);
 }
 
+// A part used through instances (a difference turned as a whole, and
+// placed twice) shows the bumps of the same part built from primitives
+// turned one by one: the renderer's way to a shaded use through the
+// instances, the hint of neighbouring pixels included, brings the
+// texture's frame along. (A union of moved unions is flattened for rays;
+// a difference under a turn stays a use.)
+TEST(Bumps, UsesThroughInstancesShowTheSameBumps) {
+  auto m = std::make_shared<Material>();
+  m->bumps =
+      placedNoise(NoiseKind::Perlin, std::nullopt, 1, 0.0, TexturePlacement{dvec3(0.3), {}, {}});
+  m->bumpDepth = 0.4;
+  const SolidPtr box = solidWithMaterial(
+      Primitive::create<Box>(dvec3(2, 2, 2))->transformed(Affine::translation({-1, -1, -1})), m);
+  const SolidPtr ball = solidWithMaterial(
+      Primitive::create<Sphere>(1.0)->transformed(Affine::translation({1, -1, 1})), m);
+  const Affine turn = Affine::rotation(0.7, glm::normalize(dvec3(1, 2, 3)));
+  const Affine place = Affine::translation({0, 0, 3});
+  const SolidPtr part = differenceOf({box, ball})->transformed(turn);
+  ASSERT_NE(part->asInstance(), nullptr);
+  auto moved = [&](const Affine& a) {
+    return differenceOf({box->transformed(a), ball->transformed(a)});
+  };
+  Scene instanced, flat;
+  instanced.objects = {part, part->transformed(place)};
+  flat.objects = {moved(turn), moved(turn.then(place))};
+  for (Scene* s : {&instanced, &flat}) {
+    s->camera = CameraSpec{dvec3(8, -10, 6), dvec3(0, 0, 1.5), dvec3(0, 0, 1), 40.0};
+    s->background = dvec3(0.0);
+  }
+  const Image a = Renderer(instanced, {64, 48, 1}).render();
+  const Image b = Renderer(flat, {64, 48, 1}).render();
+  int lit = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) {
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(a.at(x, y)[c], b.at(x, y)[c], 1e-4) << x << ", " << y;
+      lit += a.at(x, y).x > 0.0;
+    }
+  EXPECT_GT(lit, 300);
+}
+
 }  // namespace
 }  // namespace csgray::detail
