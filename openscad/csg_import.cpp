@@ -30,6 +30,7 @@
 #include "scene/resize.h"
 #include "scene/rotation.h"
 #include "scene/shapes.h"
+#include "scene/value_checks.h"
 
 namespace csgray::detail {
 
@@ -131,10 +132,18 @@ class Importer {
              (node.name == "linear_extrude" && (key == "slices" || key == "segments")) ||
              (node.name == "import" && (key == "layer" || key == "origin"));
     };
-    for (const auto& [key, value] : node.named)
-      if (!meaningless(key) && !read->second.contains(key))
-        options_.warn(file_ + ":" + std::to_string(node.line) + ": " + node.name + ": parameter '" +
-                      printableToken(key, 40) + "' is not known here and was left out");
+    for (const auto& [key, value] : node.named) {
+      if (meaningless(key) || read->second.contains(key)) continue;
+      // The nearest name the node asked for, if it is a slip of a letter
+      // or two (centre for center).
+      std::string nearest;
+      std::size_t best = key.size() >= 5 ? 3 : 2;
+      for (const std::string& asked : read->second)
+        if (const std::size_t d = editDistance(key, asked); d < best) best = d, nearest = asked;
+      options_.warn(file_ + ":" + std::to_string(node.line) + ": " + node.name + ": parameter '" +
+                    printableToken(key, 40) + "' is not known here and was left out" +
+                    (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
+    }
     read_.erase(read);
   }
 

@@ -554,7 +554,9 @@ TEST(CsgImport, ParametersItDoesNotKnowAreWarnedOf) {
       "part.csg", options);
   EXPECT_EQ(model.solids.size(), 1u);
   ASSERT_EQ(told.size(), 2u);
-  EXPECT_EQ(told[0], "part.csg:2: cube: parameter 'centre' is not known here and was left out");
+  EXPECT_EQ(told[0],
+            "part.csg:2: cube: parameter 'centre' is not known here and was left out; did you "
+            "mean 'center'?");
   EXPECT_EQ(told[1],
             "part.csg:5: square: parameter 'roundness' is not known here and was left out");
 }
