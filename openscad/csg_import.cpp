@@ -126,7 +126,7 @@ class Importer {
   // offset, whose first copy was read) is not read again.
   void warnOfUnread(const CsgNode& node) {
     const auto read = read_.find(&node);
-    if (!options_.warn || read == read_.end()) return;
+    if (read == read_.end()) return;
     auto meaningless = [&](const std::string& key) {
       return key.starts_with("$") || key == "convexity" || key == "timestamp" ||
              (node.name == "linear_extrude" && (key == "slices" || key == "segments")) ||
@@ -150,7 +150,7 @@ class Importer {
   // ---- Arguments -----------------------------------------------------------
 
   const CsgValue* find(const CsgNode& node, const char* key, int position = -1) const {
-    read_[&node].insert(key);
+    if (options_.warn) read_[&node].insert(key);  // (only a listener needs them)
     if (auto it = node.named.find(key); it != node.named.end()) return &it->second;
     if (position >= 0 && position < int(node.positional.size())) return &node.positional[position];
     return nullptr;
