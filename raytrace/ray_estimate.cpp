@@ -85,12 +85,13 @@ std::string RayEstimate::factors() const {
 RayEstimate estimateRays(const Scene& scene, const RenderOptions& options) {
   RayEstimate estimate;
   const double pixels = double(options.width) * options.height;
-  // As Renderer::renderAll: a lens's blur samples at every pixel, and the
-  // adaptive pass's samples at those on edges (at most every pixel).
+  // As Renderer::renderAll: a lens's blur samples at every pixel, and with
+  // the adaptive pass --samples in all at those on edges (at most every
+  // pixel); without a lens that pass does not keep the first pass's ray.
   const int least = scene.camera && scene.camera->blurs() ? scene.camera->blurSamples : 1;
   const bool refine = options.adaptive && options.samples > least;
   estimate.cameraRays =
-      pixels * (refine ? options.samples + least : std::max(options.samples, least));
+      pixels * (refine ? options.samples + (least > 1 ? 0 : 1) : std::max(options.samples, least));
   estimate.raysPerCameraRay = raysPerCameraRay(scene);
   if (!scene.lights.empty()) {
     estimate.lights = scene.lights.size();

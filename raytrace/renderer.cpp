@@ -904,7 +904,16 @@ RenderResult Renderer::renderAll() const {
       if (!differs(x, y)) return;
       TraceContext ctx{Sampler(x, y, 1)};
       ctx.useHint = &tile.useHint;
-      result.color.set(x, y, pixel(x, y, options_.samples, ctx));
+      if (least > 1) {
+        // A lens's first rays are samples of the pixel too: kept, and the
+        // pixel takes the rest of its samples now.
+        const int more = options_.samples - least;
+        result.color.set(x, y,
+                         (first.at(x, y) * double(least) + pixel(x, y, more, ctx) * double(more)) /
+                             double(options_.samples));
+      } else {
+        result.color.set(x, y, pixel(x, y, options_.samples, ctx));
+      }
       add(tile.counts, ctx.counts);
     });
   }

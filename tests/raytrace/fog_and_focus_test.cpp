@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "primitives/box.h"
+#include "raytrace/ray_estimate.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
 #include "scene/texture.h"
@@ -223,6 +224,28 @@ TEST(FocalBlur, AnEdgeOnThePlaneInFocusStaysSharp) {
       }
     }
   EXPECT_EQ(result.rays.primary, std::uint64_t(16) * w * h);
+}
+
+// With --adaptive, every pixel first takes the lens's blur samples and a
+// pixel at an edge the rest of --samples after them, its first rays kept:
+// the camera rays are 16 a pixel and 64 − 16 more at each refined one,
+// within the bound the render checks beforehand.
+TEST(FocalBlur, AdaptiveSamplesAtEdgesAddToTheLensSamples) {
+  Scene scene = wallScene(20.0, 0.0);
+  scene.camera->aperture = 1.0;
+  scene.camera->focalPoint = dvec3(0, 10, 0);
+  RenderOptions options(60, 20, 1);
+  options.samples = 64;
+  options.adaptive = true;
+  const RenderResult result = Renderer(scene, options).renderAll();
+  const std::uint64_t first = std::uint64_t(16) * 60 * 20, more = result.rays.primary - first;
+  EXPECT_GT(result.rays.primary, first);
+  EXPECT_EQ(more % 48, 0u);
+  EXPECT_LT(more / 48, 60u * 20u);  // not every pixel: the wall and the empty side are flat
+  EXPECT_LE(double(result.rays.primary), estimateRays(scene, options).cameraRays);
+  // Far from the edge every pixel is the wall or nothing, whichever pass.
+  EXPECT_EQ(result.color.at(59, 10).x, 1.0f);
+  EXPECT_EQ(result.color.at(0, 10).x, 0.0f);
 }
 
 }  // namespace
