@@ -21,7 +21,6 @@ double density(const Fog& fog, double z) {
 // altitude · (1 − 1 / (1 + (z − offset) / altitude)) above, so that the
 // fog above the offset holds as much as `altitude` of full density.
 double heightIntegral(const Fog& fog, double z) {
-  if (z == kInfinity) return fog.altitude;
   if (z <= fog.offset) return z - fog.offset;
   return fog.altitude * (1.0 - 1.0 / (1.0 + (z - fog.offset) / fog.altitude));
 }
@@ -31,17 +30,18 @@ double heightIntegral(const Fog& fog, double z) {
 double fogDepth(const Fog& fog, const dvec3& origin, const dvec3& dir, double length) {
   if (!fog.ground()) return length / fog.distance;
   // Along the way the height is z0 + s·dz, so ∫ density ds is the
-  // integral by height over dz; a way that hardly climbs keeps the
-  // density of its start (the difference would lose its digits).
+  // integral by height over dz.
   const double z0 = origin.z, dz = dir.z;
-  const double climb = length == kInfinity ? kInfinity : length * std::abs(dz);
-  if (!(climb > 1e-9 * (1.0 + std::abs(z0) + fog.altitude))) {
-    if (length == kInfinity) return kInfinity;
-    return length * density(fog, z0 + 0.5 * length * dz) / fog.distance;
+  if (length == kInfinity) {
+    // Level (dz may be −0) or down: endless fog of full density at last.
+    if (!(dz > 0.0)) return kInfinity;
+    return (fog.altitude - heightIntegral(fog, z0)) / dz / fog.distance;
   }
-  if (length == kInfinity && dz < 0.0) return kInfinity;  // down into endless full fog
-  const double z1 = length == kInfinity ? kInfinity : z0 + length * dz;
-  return (heightIntegral(fog, z1) - heightIntegral(fog, z0)) / dz / fog.distance;
+  // A way that hardly climbs takes the density at its middle (the
+  // difference of the integrals would lose its digits).
+  if (!(length * std::abs(dz) > 1e-9 * (1.0 + std::abs(z0) + fog.altitude)))
+    return length * density(fog, z0 + 0.5 * length * dz) / fog.distance;
+  return (heightIntegral(fog, z0 + length * dz) - heightIntegral(fog, z0)) / dz / fog.distance;
 }
 
 dvec3 throughFog(const Fog& fog, const dvec3& color, const dvec3& origin, const dvec3& dir,

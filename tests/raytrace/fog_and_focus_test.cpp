@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "primitives/box.h"
+#include "raytrace/fog.h"
 #include "raytrace/ray_estimate.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
@@ -133,6 +134,14 @@ TEST(Fog, GroundFogThinsAboveItsOffset) {
               1e-6);  // the image keeps floats
   up.camera = CameraSpec{dvec3(0, 0, 0), dvec3(0, 0, -1), dvec3(0, 1, 0), 60.0};
   EXPECT_EQ(Renderer(up, {21, 21, 1}).render().at(10, 10), dvec3(1.0));
+  // Level, with a height step of −0 or +0, into endless fog: its colour,
+  // not the infinities of dividing by a zero step.
+  for (const double dz : {-0.0, 0.0}) {
+    EXPECT_EQ(throughFog(up.fog, dvec3(0.5), dvec3(0, 0, 7), dvec3(1, 0, dz), kInfinity),
+              dvec3(1.0));
+    EXPECT_NEAR(throughFog(up.fog, dvec3(0.0), dvec3(0, 0, 0), dvec3(1, 0, dz), 6.0).x,
+                1.0 - std::exp(-1.0), 1e-12);  // 6 units in full fog of distance 6
+  }
 }
 
 // A texture as the background is seen by direction: a camera looking
