@@ -17,6 +17,12 @@ MaterialPtr materialArg(lua_State* L, int index) {
       m->texture = *texture;
       lua_pop(L, 1);
     } else {
+      // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: in a material the
+      // fourth number has a parameter of its own.
+      if (lua_type(L, -1) == LUA_TTABLE && lua_rawlen(L, -1) == 4)
+        throw std::invalid_argument(
+            "material: color must be {r, g, b}: a fourth number (OpenSCAD's alpha, POV-Ray's "
+            "filter or transmit) is transparency= here, with filter={r, g, b} for a tint");
       lua_pop(L, 1);
       m->color = *args.color("color");
     }

@@ -302,19 +302,13 @@ dvec3 toVec3(lua_State* L, int index, const std::string& what) {
 
 dvec3 toColor(lua_State* L, int index, const std::string& what) {
   const int type = lua_type(L, index);
-  // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: in a material the fourth
-  // number has a parameter of its own; a light's, a fog's or a pattern's
-  // colour has no such thing.
-  if (type == LUA_TTABLE && lua_rawlen(L, index) == 4) {
-    if (what.rfind("material", 0) == 0)
-      throw std::invalid_argument(
-          what +
-          " must be {r, g, b}: a fourth number (OpenSCAD's alpha, POV-Ray's filter or transmit) "
-          "is transparency= here, with filter={r, g, b} for a tint");
+  // OpenSCAD's [r, g, b, a] and POV-Ray's rgbf: a light's, a fog's or a
+  // pattern's colour has no such thing (a material's colour says where it
+  // goes, api_material.cpp).
+  if (type == LUA_TTABLE && lua_rawlen(L, index) == 4)
     throw std::invalid_argument(
         what +
         " must be {r, g, b}: a fourth number (alpha, filter or transmit) has no meaning here");
-  }
   if (type == LUA_TNUMBER || (type == LUA_TTABLE && lua_rawlen(L, index) == 3))
     return toVec3(L, index, what);
   if (type != LUA_TSTRING)
