@@ -143,6 +143,15 @@ Solid Solid::halfSpace(const Vec3& normal, double offset) {
   });
 }
 
+Solid Solid::superellipsoid(const Vec3& radii, double e, double n) {
+  return guarded([&] {
+    finite("superellipsoid", "radii", radii);
+    finite("superellipsoid", "e", e);
+    finite("superellipsoid", "n", n);
+    return wrap(detail::superellipsoidShape(toDetail(radii), e, n));
+  });
+}
+
 Solid Solid::torus(double R, double r) {
   return guarded([&] {
     finite("torus", "R", R);

@@ -171,8 +171,9 @@ done
 # turned vase (a lathe of 200 points), a lattice of 400 tori on a plane
 # (bench/parts/torus_lattice.lua), 200 lens parts of balls, a cylinder and
 # an ellipsoid (lens_field.lua), glass and a mirror to depth 8
-# (glass.lua) and the Sierpinski tetrahedron of level 6 (sierpinski.lua,
-# a mesh in POV-Ray) at 1024x768 on one core, whole
+# (glass.lua), the Sierpinski tetrahedron of level 6 (sierpinski.lua,
+# a mesh in POV-Ray) and a chart of 64 superellipsoids
+# (superellipsoids.lua) at 1024x768 on one core, whole
 # process, against their twins in bench/povray/, alternating PAIRS times;
 # medians compared. POV-Ray's prism cannot twist, so the gear is compared
 # untwisted; the twisted one (30°) is timed beside it, on its own. The
@@ -190,7 +191,8 @@ if command -v povray >/dev/null; then
   echo "|---|---:|---:|---:|---:|---:|---:|"
   for row in gear:bench/parts/gear.lua:twist=0 turned_vase:bench/parts/turned_vase.lua: \
     torus_lattice:bench/parts/torus_lattice.lua: lens_field:bench/parts/lens_field.lua: \
-    glass:bench/parts/glass.lua: sierpinski:bench/parts/sierpinski.lua:; do
+    glass:bench/parts/glass.lua: sierpinski:bench/parts/sierpinski.lua: \
+    superellipsoids:bench/parts/superellipsoids.lua:; do
     IFS=: read -r name script define <<<"$row"
     defines=()
     [ -n "$define" ] && defines=(-D "$define")

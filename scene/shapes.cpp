@@ -8,6 +8,7 @@
 #include "primitives/cylinder.h"
 #include "primitives/half_space.h"
 #include "primitives/sphere.h"
+#include "primitives/superellipsoid.h"
 #include "primitives/torus.h"
 
 namespace csgray::detail {
@@ -91,6 +92,16 @@ SolidPtr torusShape(std::optional<double> R, std::optional<double> r) {
   checkRadius("torus", "R", *R, true);
   checkRadius("torus", "r", *r, false);
   return Primitive::create<Torus>(*R, *r);
+}
+
+SolidPtr superellipsoidShape(const std::optional<dvec3>& radii, std::optional<double> e,
+                             std::optional<double> n) {
+  if (!radii) throw std::invalid_argument("superellipsoid: needs radii={a, b, c} (or one number)");
+  if (!e || !n)
+    throw std::invalid_argument(
+        "superellipsoid: needs e and n, the exponents across and along z "
+        "(1 round, towards 0 square, 2 a diamond)");
+  return Primitive::create<Superellipsoid>(*radii, *e, *n);
 }
 
 const char* booleanName(Boolean::Op op) {

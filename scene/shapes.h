@@ -45,6 +45,10 @@ SolidPtr halfSpaceShape(const std::optional<dvec3>& normal, double offset);
 // About the z axis: R from the axis to the centre of the tube, r the tube's
 // radius. Any R >= 0 is a solid.
 SolidPtr torusShape(std::optional<double> R, std::optional<double> r);
+// About the origin: radii along x, y and z, e the exponent of the sections
+// across z, n of the profile along it (both from 0.001 to 2).
+SolidPtr superellipsoidShape(const std::optional<dvec3>& radii, std::optional<double> e,
+                             std::optional<double> n);
 
 // "union", "intersection" or "difference".
 const char* booleanName(Boolean::Op op);

@@ -126,6 +126,20 @@ int torus(lua_State* L) {
   return 1;
 }
 
+int superellipsoid(lua_State* L) {
+  // POV-Ray's superellipsoid { <e, n> }, written as superellipsoid{e, n}.
+  if (lua_type(L, 1) == LUA_TTABLE && lua_rawlen(L, 1) == 2 && !hasStringKey(L, 1))
+    throw std::invalid_argument(
+        "superellipsoid: the exponents are named here, and the size too: "
+        "superellipsoid{radii=1, e=..., n=...} for POV-Ray's superellipsoid { <e, n> }");
+  LuaArgs args = shapeArgs(L, "superellipsoid", "radii");
+  std::optional<dvec3> radii = args.vec3("radii");
+  std::optional<double> e = args.number("e"), n = args.number("n");
+  args.finish();
+  pushSolid(L, superellipsoidShape(radii, e, n));
+  return 1;
+}
+
 // A 4×4 matrix given as four rows of four numbers; with allowThreeRows the
 // last row may be left out (it is 0 0 0 1).
 glm::dmat4 matrixArg(lua_State* L, int index, const std::string& what, bool allowThreeRows) {
@@ -397,6 +411,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
       {"half_space", guarded<halfSpace>},
       {"quadric", guarded<quadric>},
       {"torus", guarded<torus>},
+      {"superellipsoid", guarded<superellipsoid>},
       {"union", guarded<booleanOf<Boolean::Op::Union>>},
       {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},

@@ -62,6 +62,10 @@ class CSGRAY_API Solid {
   static Solid halfSpace(const Vec3& normal, double offset = 0.0);
   // About the z axis: R from the axis to the centre of the tube of radius r.
   static Solid torus(double R, double r);
+  // About the origin, radii along x, y and z: e shapes the sections
+  // across z, n the profile along z (1 round, towards 0 square, 2 a
+  // diamond; from 0.001 to 2).
+  static Solid superellipsoid(const Vec3& radii, double e, double n);
   // {p : pᵀ M p <= 0} for homogeneous p = (x, y, z, 1); M symmetric.
   static Solid quadric(const Matrix4& m);
   // The named quadrics by their semi-axes (docs/script.md, Named quadrics).

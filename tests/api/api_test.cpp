@@ -54,6 +54,8 @@ TEST(ApiSolid, VolumesOfShapesAreAnalytic) {
   expectVolume(Solid::cone(3, 2, 1), kPi * 3 * (4 + 2 + 1) / 3);
   expectVolume(Solid::ellipsoid({1, 2, 3}), 4.0 / 3.0 * kPi * 6);
   expectVolume(Solid::torus(3, 1), 2 * kPi * kPi * 3);
+  expectVolume(Solid::superellipsoid({1, 2, 3}, 1, 1), 4.0 / 3.0 * kPi * 6);
+  expectVolume(Solid::superellipsoid({1, 1, 1}, 2, 2), 4.0 / 3.0);  // |x| + |y| + |z| <= 1
   expectVolume(Solid::octahedron(2), 4.0 / 3.0 * 8);
   expectVolume(Solid::hexahedron(std::sqrt(3.0)), 8.0, 1e-9);
   // A unit cube from half-spaces, and from a polyhedron's faces.
@@ -199,6 +201,14 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
       {"return cone{h=2, r1=0, r2=0}", [] { Solid::cone(2, 0, 0); }},
       {"return torus{R=-1, r=1}", [] { Solid::torus(-1, 1); }},
       {"return torus{R=2, r=0}", [] { Solid::torus(2, 0); }},
+      {"return superellipsoid{radii=1, e=3, n=1}",
+       [] {
+         Solid::superellipsoid({1, 1, 1}, 3, 1);
+       }},
+      {"return superellipsoid{radii={1, 0, 1}, e=1, n=1}",
+       [] {
+         Solid::superellipsoid({1, 0, 1}, 1, 1);
+       }},
       {"return ellipsoid{radii={1, 0, 1}}",
        [] {
          Solid::ellipsoid({1, 0, 1});
@@ -259,6 +269,10 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
       {"return cone{h=2, r1=1, r2=0/0}", [] { Solid::cone(2, 1, kNaN); }},
       {"return torus{R=1/0, r=1}", [] { Solid::torus(kInf, 1); }},
       {"return torus{R=2, r=0/0}", [] { Solid::torus(2, kNaN); }},
+      {"return superellipsoid{radii=1, e=0/0, n=1}",
+       [] {
+         Solid::superellipsoid({1, 1, 1}, kNaN, 1);
+       }},
       {"return half_space{normal={0, 0, 1/0}}",
        [] {
          Solid::halfSpace({0, 0, kInf});

@@ -210,6 +210,14 @@ const VolumeCase kVolumeCases[] = {
     {"box_with_a_spherical_cavity", "return box(4) - sphere{r=1.5}:translate(2, 2, 2)",
      64.0 - 4.0 / 3.0 * kPi * 3.375},
     {"torus", "return torus{R=3, r=1}", 2.0 * kPi* kPi * 3.0},
+    // 2abc·e·n·B(e/2, e/2)·B(n/2 + 1, n) (Jaklič et al., 2000, §2.3.4).
+    {"superellipsoid", "return superellipsoid{radii={3, 2, 1.5}, e=0.4, n=0.7}",
+     2.0 * 9.0 * 0.4 * 0.7 * std::beta(0.2, 0.2) * std::beta(1.35, 0.7)},
+    // A quadrant cut away along the planes x = 0 and y = 0, which hold
+    // lines of its mesh: three quarters of the whole.
+    {"superellipsoid_less_a_quadrant",
+     "return superellipsoid{radii=2, e=0.25, n=2} - box{size=4}:translate(0, 0, -2)",
+     0.75 * 2.0 * 8.0 * 0.25 * 2.0 * std::beta(0.125, 0.125) * std::beta(2.0, 2.0)},
     {"tetrahedron", "return tetrahedron{r=2}", tetrahedronVolume(2.0)},
     {"cube", "return hexahedron{r=2}", std::pow(4.0 / std::sqrt(3.0), 3.0)},
     {"octahedron", "return octahedron{r=2}", 4.0 / 3.0 * 8.0},
