@@ -27,30 +27,38 @@ constexpr double kConverged = 1e-8;
 // The p-norm (a^p + b^p)^(1/p) of a, b >= 0 (p >= 1) and its partial
 // derivatives (a/h)^(p−1) and (b/h)^(p−1). Computed with the larger of the
 // two factored out, so that neither overflows nor vanishes for p up to
-// 2/kMinExponent; p = 1 and 2 (a diamond, an ellipse) without pow().
+// 2/kMinExponent. pow() is most of a superellipsoid's time, and the
+// exponents people write (e = 1, 0.5, 0.25, 0.2, 0.1, ...) make p a whole
+// number, often a power of two: the power is then taken by squaring and
+// the root by square roots where it can be.
 struct PowerNorm {
   double h, da, db;
 };
 
-PowerNorm powerNorm(double a, double b, double p) {
+PowerNorm powerNorm(double a, double b, const Superellipsoid::Power& p) {
   const double big = std::max(a, b), small = std::min(a, b);
   if (big == 0.0) return {0.0, 0.0, 0.0};
   const double r = small / big;
-  double rp, root;
-  if (p == 1.0) {
-    rp = r;
-    root = 1.0 + r;
-  } else if (p == 2.0) {
-    rp = r * r;
-    root = std::sqrt(1.0 + rp);
+  double rp = 1.0;
+  if (p.whole > 0) {
+    double square = r;
+    for (int k = p.whole; k > 0; k >>= 1) {
+      if (k & 1) rp *= square;
+      square *= square;
+    }
   } else {
-    rp = std::pow(r, p);
-    root = std::pow(1.0 + rp, 1.0 / p);
+    rp = std::pow(r, p.value);
+  }
+  double root = 1.0 + rp;
+  if (p.halvings >= 0) {
+    for (int k = 0; k < p.halvings; ++k) root = std::sqrt(root);
+  } else {
+    root = std::pow(root, 1.0 / p.value);
   }
   // h = big·root; ∂h/∂big = (big/h)^(p−1) = root/(1 + r^p), and
   // ∂h/∂small = (small/h)^(p−1) = r^(p−1)·∂h/∂big (1 at r = 0 when p = 1).
   const double dBig = root / (1.0 + rp);
-  const double dSmall = r > 0.0 ? rp / r * dBig : (p == 1.0 ? dBig : 0.0);
+  const double dSmall = r > 0.0 ? rp / r * dBig : (p.value == 1.0 ? dBig : 0.0);
   return a >= b ? PowerNorm{big * root, dBig, dSmall} : PowerNorm{big * root, dSmall, dBig};
 }
 
@@ -100,8 +108,21 @@ double reachOf(double p, double q) {
 
 }  // namespace
 
+Superellipsoid::Power Superellipsoid::Power::of(double p) {
+  Power power{p, 0, -1};
+  if (p == std::floor(p) && p <= 64.0) power.whole = int(p);
+  for (int k = 0; k <= 6; ++k)
+    if (p == double(1 << k)) power.halvings = k;
+  return power;
+}
+
 Superellipsoid::Superellipsoid(const dvec3& radii, double e, double n)
-    : radii_(radii), e_(e), n_(n), p_(2.0 / e), q_(2.0 / n), reach_(reachOf(p_, q_)) {
+    : radii_(radii),
+      e_(e),
+      n_(n),
+      p_(Power::of(2.0 / e)),
+      q_(Power::of(2.0 / n)),
+      reach_(reachOf(p_.value, q_.value)) {
   requirePositive("superellipsoid", "radii[1]", radii.x);
   requirePositive("superellipsoid", "radii[2]", radii.y);
   requirePositive("superellipsoid", "radii[3]", radii.z);

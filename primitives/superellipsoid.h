@@ -37,6 +37,14 @@ class Superellipsoid : public PrimitiveShape<Superellipsoid> {
   };
   Gauge unitGauge(const dvec3& p) const;
 
+  // A power of the gauge, with what makes it cheaper: the power as a
+  // whole number up to 64 (else 0), and k where it is 2^k (else −1).
+  struct Power {
+    double value;
+    int whole, halvings;
+    static Power of(double p);
+  };
+
  protected:
   void objectSpans(const Ray& ray, SpanList& out) const override;
   void objectSpansToFirstBoundary(const Ray& ray, SpanList& out) const override;
@@ -55,7 +63,7 @@ class Superellipsoid : public PrimitiveShape<Superellipsoid> {
 
   dvec3 radii_;
   double e_, n_;
-  double p_, q_;  // 2/e and 2/n, the powers of the gauge
+  Power p_, q_;   // 2/e and 2/n, the powers of the gauge
   double reach_;  // the radius of a ball about the centre that holds the unit shape
 };
 
