@@ -2,10 +2,13 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <unordered_set>
 
 #include "cli/commands.h"
 #include "cli/watchdog.h"
+#include "engine/primitive.h"
 #include "engine/solid.h"
+#include "scene/material.h"
 #include "scene/scene.h"
 
 namespace csgray::detail {
@@ -16,6 +19,18 @@ std::string formatPoint(const dvec3& p) {
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "[%g, %g, %g]", p.x, p.y, p.z);
   return buffer;
+}
+
+// The stored primitives whose material has bumps (a subtree placed by
+// several instances counted once): a bumped face costs a render several
+// times what a plain one does.
+std::size_t bumpedPrimitives(const Solid& solid, std::unordered_set<const Solid*>& seen) {
+  if (!seen.insert(&solid).second) return 0;
+  if (const auto* primitive = dynamic_cast<const Primitive*>(&solid))
+    return primitive->material() && primitive->material()->bumps ? 1 : 0;
+  std::size_t count = 0;
+  for (const SolidPtr& child : solid.children()) count += bumpedPrimitives(*child, seen);
+  return count;
 }
 
 void printInfo(const std::string& script, const Scene& scene) {
@@ -58,6 +73,13 @@ void printInfo(const std::string& script, const Scene& scene) {
     std::cout << " (focal blur: aperture " << scene.camera->aperture << ", at least "
               << scene.camera->blurSamples << " rays a pixel)";
   std::cout << "\n";
+  std::unordered_set<const Solid*> seen;
+  std::size_t bumped = 0;
+  for (const SolidPtr& object : scene.objects) bumped += bumpedPrimitives(*object, seen);
+  for (const SurfacePtr& surface : scene.surfaces)
+    bumped += surface->material() && surface->material()->bumps ? 1 : 0;
+  if (bumped > 0) std::cout << "  bumps:         on " << bumped << " primitives and surfaces\n";
+  if (scene.sky) std::cout << "  background:    a texture by direction (a sky)\n";
   if (scene.fog.distance > 0.0) {
     std::cout << "  fog:           distance " << scene.fog.distance;
     if (scene.fog.ground())

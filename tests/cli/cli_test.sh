@@ -127,6 +127,23 @@ else
   fail "info of a lens and fog"; cat "$work/stdout"
 fi
 
+# info names bumps (they cost a render several times) and a sky: the two
+# bumped balls and the plane, not the plain box.
+cat >"$work/bumped.lua" <<'EOF2'
+local rough = sphere(1):material{bumps = perlin{scale = 0.2}, bump_depth = 0.05}
+return scene{objects = {union(rough, rough:translate(3, 0, 0)), box(1):translate(0, 3, 0),
+                        plane{}:material{bumps = checker{size = 1}}},
+             background = gradient{colors = {{1, 1, 1}, {0, 0, 1}}}}
+EOF2
+if "$csgray" info "$work/bumped.lua" >"$work/stdout" 2>&1 &&
+   grep -q 'bumps: *on 3 primitives and surfaces' "$work/stdout" &&
+   grep -q 'background: *a texture by direction (a sky)' "$work/stdout" &&
+   "$csgray" info "$work/lens.lua" >"$work/stdout" 2>&1 && ! grep -q 'bumps\|background' "$work/stdout"; then
+  pass
+else
+  fail "info of bumps and a sky"; cat "$work/stdout"
+fi
+
 # -D sets a global.
 if "$csgray" info "$work/param.lua" -D radius=3 >"$work/stdout" 2>&1 &&
    grep -q '\[3, 3, 3\]' "$work/stdout"; then
