@@ -65,8 +65,13 @@ void writeImage(const Image& image, const std::string& path) {
       image.rgb.size() != std::size_t(image.width) * std::size_t(image.height) * 3)
     throw Error(ErrorCode::InvalidArgument,
                 "writeImage: the image must have width · height · 3 values, width and height >= 1");
+  // A name whose extension is no format is a bad argument, as writeMesh's
+  // (asks OpenImageIO about formats other than PNG, loading it).
+  detail::guarded(ErrorCode::InvalidArgument, [&] {
+    if (std::string problem = detail::imageFormatProblem(path); !problem.empty())
+      throw std::invalid_argument("cannot write " + path + ": " + problem);
+  });
   detail::guarded(ErrorCode::IoError, [&] {
-    // (Asks OpenImageIO about formats other than PNG, loading it.)
     if (std::string problem = detail::imageOutputProblem(path); !problem.empty())
       throw std::runtime_error("cannot write " + path + ": " + problem);
     const int threads = std::max(1, int(std::thread::hardware_concurrency()));

@@ -25,6 +25,7 @@ detail::ScriptOptions optionsOf(const ScriptOptions& o) {
   made.checkSolid = detail::checkPart;
   made.projectSolid = detail::solidProjection;
   made.warn = o.onWarning;
+  made.print = o.onPrint;
   return made;
 }
 

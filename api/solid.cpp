@@ -399,7 +399,9 @@ double Solid::volume(int grid) const {
     detail::checkWhole("volume", "grid", grid, 1, 4096);
     const detail::Bounds box = impl_->bounds();
     if (!box.empty() && !box.finite())
-      throw std::invalid_argument("volume: the solid is unbounded");
+      throw std::invalid_argument(
+          "volume: the solid is unbounded, or bounded only by half-spaces, whose reach csgray "
+          "does not work out; clip it with a box (Solid::clip) to measure it");
     const double volume = detail::exactVolume(*impl_, grid);
     // A solid of 10¹⁰³ across has a volume past the largest double.
     if (!std::isfinite(volume))

@@ -53,12 +53,16 @@ SrgbEncoder::SrgbEncoder() {
   }
 }
 
-std::string imageOutputProblem(const std::string& path) {
-  if (std::string problem = outputPathProblem(path); !problem.empty()) return problem;
+std::string imageFormatProblem(const std::string& path) {
   if (std::filesystem::path(path).extension().empty())
     return "no file extension to tell the image format (use .png, .exr, ...)";
   if (isPngFile(path)) return "";
   return imageFormats().outputProblem(path);
+}
+
+std::string imageOutputProblem(const std::string& path) {
+  if (std::string problem = outputPathProblem(path); !problem.empty()) return problem;
+  return imageFormatProblem(path);
 }
 
 PngRowSource pngRows(const float* rgb, int width, ImageData data) {

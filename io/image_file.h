@@ -14,6 +14,9 @@ namespace csgray::detail {
 // writable folder? Returns an empty string if so, else why not; checked
 // before a render so that a long render is not lost at the end.
 std::string imageOutputProblem(const std::string& path);
+// The format's half of that: does the extension name a format csgray can
+// write? Empty if so, else why not.
+std::string imageFormatProblem(const std::string& path);
 
 // Is the file at path a PNG file (by its extension, in any case)? csgray
 // writes those itself, without OpenImageIO.

@@ -471,14 +471,29 @@ int Sandbox::checkedSetmetatable(lua_State* L) {
 
 int Sandbox::printToStderr(lua_State* L) {
   int n = lua_gettop(L);
+  std::string line;
   for (int i = 1; i <= n; ++i) {
     std::size_t len = 0;
     const char* s = luaL_tolstring(L, i, &len);
-    if (i > 1) std::fputc('\t', stderr);
-    std::fwrite(s, 1, len, stderr);
+    if (i > 1) line += '\t';
+    line.append(s, len);
     lua_pop(L, 1);
   }
-  std::fputc('\n', stderr);
+  const Sandbox& sandbox = of(L);
+  if (!sandbox.print) {
+    std::fwrite(line.data(), 1, line.size(), stderr);
+    std::fputc('\n', stderr);
+    return 0;
+  }
+  // A host's callback that throws ends the script with its message; the
+  // exception itself may not cross Lua's C frames.
+  std::string failed;
+  try {
+    sandbox.print(line);
+  } catch (const std::exception& e) {
+    failed = std::string("print: ") + e.what();
+  }
+  if (!failed.empty()) return luaL_error(L, "%s", failed.c_str());
   return 0;
 }
 

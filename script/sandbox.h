@@ -28,6 +28,9 @@ class Sandbox {
   Sandbox& operator=(const Sandbox&) = delete;
 
   lua_State* state() const { return L_; }
+  // Where the script's print() goes: a line of text, without its newline;
+  // standard error when unset (the command's choice).
+  std::function<void(const std::string& line)> print;
   static Sandbox& of(lua_State* L);
 
   // Counts memory held outside Lua against the memory cap. Ends the script

@@ -115,6 +115,7 @@ void warnOfUnreadDefines(std::string_view source, const ScriptOptions& options,
 Scene runScript(const std::string& source, const std::string& chunkName,
                 const ScriptOptions& options) {
   Sandbox sandbox(options.limits);
+  sandbox.print = options.print;
   lua_State* L = sandbox.state();
   registerScriptApi(L, options);
   loadStandardLibrary(L);

@@ -62,6 +62,9 @@ struct ScriptOptions {
   // Receives what the script should be told but does not stop it, such as
   // what mesh{repair=true} repaired; without it these are dropped.
   std::function<void(const std::string& message)> warn;
+  // Receives each line the script prints; without it they go to standard
+  // error.
+  std::function<void(const std::string& line)> print;
 };
 
 // A script that failed: the message names the file and line where known.

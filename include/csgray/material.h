@@ -29,7 +29,8 @@ class CSGRAY_API Texture {
   };
   // The colours of a pattern: first at 0 and second at 1, or, for every
   // pattern but the checker, `stops` when given (2 to 256, places in
-  // [0, 1] in order: POV-Ray's color_map), linear between them.
+  // [0, 1] in order: POV-Ray's color_map), linear between them; first and
+  // second are then not used.
   struct Stop {
     double at;
     Vec3 color;

@@ -25,6 +25,10 @@ struct ScriptOptions {
   // Receives what the script should be told without stopping it (what
   // mesh{repair=true} repaired); none: dropped.
   std::function<void(const std::string& message)> onWarning;
+  // Receives each line the script's print() writes (its values joined by
+  // tabs, without the newline); none: they go to standard error, as the
+  // command's do.
+  std::function<void(const std::string& line)> onPrint;
 };
 
 // Runs the script file; error ScriptError with the message naming its file

@@ -641,6 +641,12 @@ TEST_F(ApiFiles, MeshesAndImagesAreWrittenAndReadBack) {
   EXPECT_EQ(csgray::readMesh(path("open.obj")).triangles.size(), 1u);
   EXPECT_EQ(errorOf([&] { csgray::writeImage(image, path("no/such/folder/x.png")); }).first,
             ErrorCode::IoError);
+  // A name that names no image format is a bad argument, as for writeMesh.
+  for (const char* name : {"x.xyz", "noext"}) {
+    const auto [code, message] = errorOf([&] { csgray::writeImage(image, path(name)); });
+    EXPECT_EQ(code, ErrorCode::InvalidArgument) << name;
+    EXPECT_NE(message.find(name), std::string::npos) << message;
+  }
 }
 
 // render() and writeImage() make the file the csgray command makes, with
@@ -944,6 +950,22 @@ TEST(ApiScript, AnExampleGivesItsScene) {
   options.defines = {{"size", "3"}};
   EXPECT_NEAR(csgray::runScriptText("return box(size)", "part.lua", options).part().volume(), 27,
               1e-9);
+}
+
+// A host takes the script's print() lines; a callback that throws ends the
+// script with its message at the line of the print.
+TEST(ApiScript, PrintGoesToTheHostsCallback) {
+  std::vector<std::string> lines;
+  csgray::ScriptOptions options;
+  options.onPrint = [&](const std::string& line) { lines.push_back(line); };
+  csgray::runScriptText("print('size', 3)\nprint()\nreturn sphere(1)", "part.lua", options);
+  EXPECT_EQ(lines, (std::vector<std::string>{"size\t3", ""}));
+  options.onPrint = [](const std::string&) { throw std::runtime_error("log is full"); };
+  const auto [code, message] = errorOf([&] {
+    csgray::runScriptText("local a = 1\nprint(a)\nreturn sphere(1)", "part.lua", options);
+  });
+  EXPECT_EQ(code, ErrorCode::ScriptError);
+  EXPECT_EQ(message, "part.lua:2: print: log is full");
 }
 
 TEST(ApiError, CodesHaveNames) {
