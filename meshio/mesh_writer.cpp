@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -79,18 +80,35 @@ void check3mf(LIB3MFRESULT result, const std::string& path, const char* what,
   throw std::runtime_error(message);
 }
 
-// lib3mf 1.8 prints a coordinate by cutting its float after six decimals,
-// not by rounding it. The exporter has already rounded each coordinate to
-// the float nearest to a six-decimal number d; where that float lies
-// between 0 and d, the cut would print the number below d, so the next
-// float away from zero is handed over instead: it prints as d, and d reads
-// back as the coordinate checked.
+// lib3mf 1.8 prints a coordinate f as the integer part, cut toward zero,
+// of f · 10⁶ taken in single precision, six digits after the point (so
+// 63.98966 prints as 63.989664: the product is a float, and near 6.4·10⁷
+// floats are 4 apart; seen on 900 000 random floats, every one printed
+// so). Not every float can be written then: the exporter checks the mesh
+// with each coordinate as the print of its float reads back
+// (asSixDecimals), and the writer hands lib3mf a float that prints so.
+// What a float handed to lib3mf reads back as:
+double readBackOfPrint(float f) {
+  const long long scaled = (long long)(f * 1000000.0f);
+  char text[48];
+  std::snprintf(text, sizeof text, "%s%lld.%06lld", scaled < 0 ? "-" : "",
+                std::llabs(scaled) / 1000000, std::llabs(scaled) % 1000000);
+  return double(std::strtof(text, nullptr));
+}
+
+// The float to hand to lib3mf for a coordinate the exporter rounded with
+// asSixDecimals: the nearest one whose print reads back as it, within a
+// few steps either way (the print is at most 5·10⁻⁶ from the float, two
+// steps of a float below 128; the float itself should none do, as before).
 float printsAsSixDecimals(double stored) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6f", stored);
-  const double d = std::strtod(text, nullptr);
   const float f = float(stored);
-  if (std::abs(double(f)) < std::abs(d)) return std::nextafter(f, d < 0 ? -INFINITY : INFINITY);
+  float below = f, above = f;
+  for (int step = 0; step <= 4; ++step) {
+    if (readBackOfPrint(above) == stored) return above;
+    if (readBackOfPrint(below) == stored) return below;
+    above = std::nextafter(above, INFINITY);
+    below = std::nextafter(below, -INFINITY);
+  }
   return f;
 }
 
@@ -214,12 +232,8 @@ double asTenDigits(double x) {
   std::snprintf(text, sizeof text, "%.10g", double(float(x)));
   return std::strtod(text, nullptr) + 0.0;
 }
-// lib3mf 1.8 prints a coordinate as the float with "%f": six decimals.
-double asSixDecimals(double x) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%f", double(float(x)));
-  return double(std::strtof(text, nullptr)) + 0.0;
-}
+// A coordinate as a 3MF file holds it (readBackOfPrint).
+double asSixDecimals(double x) { return readBackOfPrint(float(x)) + 0.0; }
 
 }  // namespace
 
