@@ -14,10 +14,11 @@ namespace csgray::detail {
 
 namespace {
 
-// Holes a ray meets that a difference subtracts one at a time before it
-// unites the rest and subtracts them at once: below it, as before, each
-// narrowing the window; a lens has one.
-constexpr std::size_t kHolesOneByOne = 8;
+// Operands a ray meets that a union unites, or a difference subtracts, one
+// at a time before it gathers the rest and unites them at once: below it,
+// as before (a difference narrowing its window at each); a lens has one
+// hole.
+constexpr std::size_t kOperandsOneByOne = 8;
 
 }  // namespace
 
@@ -184,13 +185,24 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
   };
 
   if (op_ == Op::Union) {
+    // The first operands one by one; past them the rest gathered and
+    // united at once (engine/span_union.h: a row of balls met by a ray
+    // along it).
+    std::size_t met = 0;
+    std::optional<BorrowedSpanUnion> rest;
     auto add = [&](const Solid& s, const Ray& r) {
       if (result->empty()) {
         s.spans(r, *result);
         return;
       }
       s.spans(r, operand);
-      if (!operand.empty()) fold(operand);
+      if (operand.empty()) return;
+      if (met++ < kOperandsOneByOne) {
+        fold(operand);
+        return;
+      }
+      if (!rest) rest.emplace();
+      (*rest)->add(operand);
     };
     if (const Bvh& tree = bvh(); tree.empty()) {
       for (const SolidPtr& s : operands_)
@@ -202,6 +214,7 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
         return true;
       });
     }
+    if (rest && !(*rest)->empty()) fold((*rest)->united());
     finish();
     return;
   }
@@ -247,7 +260,7 @@ void Boolean::spans(const Ray& ray, SpanList& out) const {
   forEachHole(window, [&](const Solid& s) {
     s.spans(window, operand);
     if (operand.empty()) return true;
-    if (cut++ < kHolesOneByOne) {
+    if (cut++ < kOperandsOneByOne) {
       fold(operand);
       return narrow();
     }
