@@ -227,7 +227,7 @@ Sandbox::Sandbox(const ScriptLimits& limits) : limits_(limits) {
   // that standard output stays for csgray's own results.
   lua_register(L_, "pcall", &Sandbox::safePcall);
   lua_register(L_, "xpcall", &Sandbox::safeXpcall);
-  lua_register(L_, "print", &Sandbox::printToStderr);
+  lua_register(L_, "print", &Sandbox::printLine);
   // No finalizers for scripts: Lua runs __gc with hooks off, so a finalizer
   // escapes the instruction budget, and it could hand a collected value
   // back to the script. Lua marks a table for finalization only if its
@@ -469,32 +469,45 @@ int Sandbox::checkedSetmetatable(lua_State* L) {
   return 1;
 }
 
-int Sandbox::printToStderr(lua_State* L) {
-  int n = lua_gettop(L);
-  std::string line;
-  for (int i = 1; i <= n; ++i) {
-    std::size_t len = 0;
-    const char* s = luaL_tolstring(L, i, &len);
-    if (i > 1) line += '\t';
-    line.append(s, len);
-    lua_pop(L, 1);
-  }
+int Sandbox::printLine(lua_State* L) {
+  const int n = lua_gettop(L);
   const Sandbox& sandbox = of(L);
   if (!sandbox.print) {
-    std::fwrite(line.data(), 1, line.size(), stderr);
+    for (int i = 1; i <= n; ++i) {
+      std::size_t len = 0;
+      const char* s = luaL_tolstring(L, i, &len);
+      if (i > 1) std::fputc('\t', stderr);
+      std::fwrite(s, 1, len, stderr);
+      lua_pop(L, 1);
+    }
     std::fputc('\n', stderr);
     return 0;
   }
-  // A host's callback that throws ends the script with its message; the
-  // exception itself may not cross Lua's C frames.
-  std::string failed;
-  try {
-    sandbox.print(line);
-  } catch (const std::exception& e) {
-    failed = std::string("print: ") + e.what();
+  // The values as Lua strings joined on the stack (a __tostring that fails
+  // leaves no C++ object behind), then the host's callback. One that throws
+  // ends the script with its message; the exception itself may not cross
+  // Lua's C frames, and the message is on the stack before Lua jumps.
+  for (int i = 1; i <= n; ++i) {
+    if (i > 1) lua_pushliteral(L, "\t");
+    luaL_tolstring(L, i, nullptr);
   }
-  if (!failed.empty()) return luaL_error(L, "%s", failed.c_str());
-  return 0;
+  lua_concat(L, n > 0 ? 2 * n - 1 : 0);
+  bool failed = false;
+  {
+    std::size_t len = 0;
+    const char* text = lua_tolstring(L, -1, &len);
+    try {
+      sandbox.print(std::string(text, len));
+    } catch (const std::exception& e) {
+      lua_pushfstring(L, "print: %s", e.what());
+      failed = true;
+    }
+  }
+  if (!failed) return 0;
+  luaL_where(L, 1);  // "part.lua:2: " before the message, as luaL_error puts it
+  lua_insert(L, -2);
+  lua_concat(L, 2);
+  return lua_error(L);
 }
 
 SourceLine Sandbox::callerLine(lua_State* L) {

@@ -77,7 +77,8 @@ class Sandbox {
   static int safePcall(lua_State* L);
   static int safeXpcall(lua_State* L);
   static int countUnwinding(lua_State* L);
-  static int printToStderr(lua_State* L);
+  // print(): its values joined by tabs, to the host's callback or stderr.
+  static int printLine(lua_State* L);
   static int positionBareError(lua_State* L);
   static int checkedSetmetatable(lua_State* L);
   static int seededRandomseed(lua_State* L);
