@@ -143,6 +143,15 @@ Solid Solid::halfSpace(const Vec3& normal, double offset) {
   });
 }
 
+Solid Solid::blob(const std::vector<BlobBall>& balls, double threshold) {
+  return guarded([&] {
+    std::vector<detail::BlobBall> made;
+    made.reserve(balls.size());
+    for (const BlobBall& b : balls) made.push_back({toDetail(b.center), b.radius, b.strength});
+    return wrap(detail::blobShape(std::move(made), threshold));
+  });
+}
+
 Solid Solid::superellipsoid(const Vec3& radii, double e, double n) {
   return guarded([&] {
     finite("superellipsoid", "radii", radii);

@@ -8,6 +8,7 @@
 #include "primitives/cylinder.h"
 #include "primitives/half_space.h"
 #include "primitives/sphere.h"
+#include "primitives/blob.h"
 #include "primitives/superellipsoid.h"
 #include "primitives/torus.h"
 
@@ -92,6 +93,10 @@ SolidPtr torusShape(std::optional<double> R, std::optional<double> r) {
   checkRadius("torus", "R", *R, true);
   checkRadius("torus", "r", *r, false);
   return Primitive::create<Torus>(*R, *r);
+}
+
+SolidPtr blobShape(std::vector<BlobBall> balls, std::optional<double> threshold) {
+  return Primitive::create<Blob>(std::move(balls), threshold.value_or(kDefaultBlobThreshold));
 }
 
 SolidPtr superellipsoidShape(const std::optional<dvec3>& radii, std::optional<double> e,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/boolean.h"
+#include "primitives/blob.h"
 #include "primitives/mesh_solid.h"
 #include "tessellation/triangle_mesh.h"
 
@@ -47,6 +48,9 @@ SolidPtr halfSpaceShape(const std::optional<dvec3>& normal, double offset);
 SolidPtr torusShape(std::optional<double> R, std::optional<double> r);
 // About the origin: radii along x, y and z, e the exponent of the sections
 // across z, n of the profile along it (both from 0.001 to 2).
+// Balls whose fields add up (primitives/blob.h): the solid where the sum
+// reaches threshold.
+SolidPtr blobShape(std::vector<BlobBall> balls, std::optional<double> threshold);
 SolidPtr superellipsoidShape(const std::optional<dvec3>& radii, std::optional<double> e,
                              std::optional<double> n);
 

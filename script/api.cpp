@@ -10,6 +10,7 @@
 
 #include "engine/boolean.h"
 #include "engine/tight_bounds.h"
+#include "primitives/blob.h"
 #include "primitives/quadric.h"
 #include "scene/modifiers.h"
 #include "scene/resize.h"
@@ -137,6 +138,46 @@ int superellipsoid(lua_State* L) {
   std::optional<double> e = args.number("e"), n = args.number("n");
   args.finish();
   pushSolid(L, superellipsoidShape(radii, e, n));
+  return 1;
+}
+
+// blob{balls={{center={x, y, z}, r=, strength=1}, ...}, threshold=0.5}.
+int blob(lua_State* L) {
+  checkArgumentCount(L, "blob", 1);
+  LuaArgs args(L, 1, "blob");
+  const std::optional<double> threshold = args.number("threshold");
+  if (!args.push("balls"))
+    throw std::invalid_argument("blob: needs balls={{center={x, y, z}, r=, strength=}, ...}");
+  const int list = lua_gettop(L);
+  if (lua_type(L, list) != LUA_TTABLE || lua_rawlen(L, list) == 0)
+    throw std::invalid_argument(
+        "blob: balls must be a list of balls {center={x, y, z}, r=, strength=}");
+  const lua_Unsigned count = lua_rawlen(L, list);
+  if (count > Blob::kMaxBalls)
+    throw std::invalid_argument("blob: at most " + std::to_string(Blob::kMaxBalls) +
+                                " balls (got " + std::to_string(count) + ")");
+  std::vector<BlobBall> balls;
+  balls.reserve(count);
+  for (lua_Unsigned i = 1; i <= count; ++i) {
+    lua_rawgeti(L, list, static_cast<lua_Integer>(i));
+    const std::string what = "blob: ball " + std::to_string(i);
+    if (lua_type(L, -1) != LUA_TTABLE)
+      throw std::invalid_argument(what + " must be a table {center={x, y, z}, r=, strength=}, got " +
+                                  shownType(L, -1));
+    LuaArgs ball(L, -1, what);
+    const std::optional<dvec3> center = ball.vec3("center");
+    const std::optional<double> r = ball.number("r");
+    const double strength = ball.number("strength").value_or(1.0);
+    ball.finish();
+    if (!r) throw std::invalid_argument(what + ": needs r (its radius of influence)");
+    balls.push_back({center.value_or(dvec3(0.0)), *r, strength});
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  args.finish();
+  SolidPtr solid = blobShape(std::move(balls), threshold);
+  Sandbox::of(L).charge(L, count * sizeof(BlobBall));
+  pushSolid(L, solid);
   return 1;
 }
 
@@ -412,6 +453,7 @@ void registerScriptApi(lua_State* L, const ScriptOptions& options) {
       {"quadric", guarded<quadric>},
       {"torus", guarded<torus>},
       {"superellipsoid", guarded<superellipsoid>},
+      {"blob", guarded<blob>},
       {"union", guarded<booleanOf<Boolean::Op::Union>>},
       {"intersection", guarded<booleanOf<Boolean::Op::Intersection>>},
       {"difference", guarded<booleanOf<Boolean::Op::Difference>>},

@@ -43,6 +43,15 @@ struct Plane {
   double offset = 0.0;
 };
 
+// A ball of a blob: within `radius` of `center` it adds
+// strength · (1 − d²/radius²)² to the field (d the distance from the
+// centre); a negative strength takes away.
+struct BlobBall {
+  Vec3 center;
+  double radius = 1.0;
+  double strength = 1.0;
+};
+
 class CSGRAY_API Solid {
  public:
   // ---- Primitives ------------------------------------------------------------
@@ -66,6 +75,9 @@ class CSGRAY_API Solid {
   // across z, n the profile along z (1 round, towards 0 square, 2 a
   // diamond; from 0.001 to 2).
   static Solid superellipsoid(const Vec3& radii, double e, double n);
+  // The balls' fields added up; the solid where the sum reaches threshold
+  // (POV-Ray's blob): balls near each other melt into one smooth shape.
+  static Solid blob(const std::vector<BlobBall>& balls, double threshold = 0.5);
   // {p : pᵀ M p <= 0} for homogeneous p = (x, y, z, 1); M symmetric.
   static Solid quadric(const Matrix4& m);
   // The named quadrics by their semi-axes (docs/script.md, Named quadrics).
