@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -30,14 +31,7 @@ constexpr double kEdgeMargin = 1e-3;
 
 // What the samples of straying() may be off by, as a part of the
 // tolerance: the farthest point of a triangle lies between them.
-constexpr double kSampledShare = 0.8;
-
-// The six tetrahedra of a cube that share its diagonal from corner 0 to
-// corner 7 (corner bits: x 1, y 2, z 4), one for each order of the axes
-// (Freudenthal's, or Kuhn's, triangulation): neighbouring cubes cut their
-// shared faces along the same diagonal, so the tetrahedra fit face to face.
-constexpr int kTetrahedra[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
-                                   {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+constexpr double kSampledShare = 0.6;
 
 class Grid {
  public:
@@ -53,60 +47,102 @@ class Grid {
 
   double cells() const { return double(count_[0]) * count_[1] * count_[2]; }
 
-  TriangleMesh mesh() const {
+  // Surface nets (Gibson, "Constrained Elastic SurfaceNets", MICCAI 1998;
+  // the naive form): one point in each cell the surface passes, the mean
+  // of the crossings on the cell's edges pulled onto the surface by
+  // Newton's method along the gradient, and for each grid edge the
+  // surface crosses, a quadrilateral of the points of the four cells
+  // around it, cut along its shorter diagonal. Its triangles are about a
+  // cell wide, with no slivers. Empty when some edge of the result is not
+  // shared by exactly two triangles (a cell the surface passes twice):
+  // nothing then, and the caller takes a finer grid.
+  std::optional<TriangleMesh> mesh() const {
     const int nx = count_[0] + 1, ny = count_[1] + 1, nz = count_[2] + 1;
     std::vector<double> value(std::size_t(nx) * ny * nz);
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) value[index(i, j, k)] = blob_.excess(point(i, j, k));
+    auto inside = [&](std::size_t g) { return value[g] >= 0.0; };
 
     TriangleMesh mesh;
-    std::unordered_map<std::uint64_t, std::uint32_t> crossings;
-    // The point where the surface crosses the edge from grid point a
-    // (inside) to b (outside), shared by every tetrahedron with that edge.
-    auto crossing = [&](std::uint32_t a, std::uint32_t b) {
-      const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-      auto [it, added] = crossings.try_emplace(key, std::uint32_t(mesh.points.size()));
-      if (added) mesh.points.push_back(edgeCrossing(a, b));
-      return it->second;
+    std::vector<std::uint32_t> cellPoint(std::size_t(count_[0]) * count_[1] * count_[2],
+                                         std::uint32_t(-1));
+    auto pointOfCell = [&](int i, int j, int k) {
+      const std::size_t c = (std::size_t(k) * count_[1] + j) * count_[0] + i;
+      if (cellPoint[c] != std::uint32_t(-1)) return cellPoint[c];
+      dvec3 sum(0.0);
+      int crossings = 0;
+      for (int a = 0; a < 3; ++a)
+        for (int u = 0; u < 2; ++u)
+          for (int v = 0; v < 2; ++v) {
+            int at[3] = {i, j, k};
+            at[(a + 1) % 3] += u;
+            at[(a + 2) % 3] += v;
+            const std::size_t g0 = index(at[0], at[1], at[2]);
+            ++at[a];
+            const std::size_t g1 = index(at[0], at[1], at[2]);
+            if (inside(g0) == inside(g1)) continue;
+            sum += inside(g0) ? edgeCrossing(g0, g1) : edgeCrossing(g1, g0);
+            ++crossings;
+          }
+      dvec3 p = sum / double(crossings);
+      for (int step = 0; step < 4; ++step) {
+        const dvec3 gradient = blob_.fieldGradient(p);
+        const double g2 = glm::dot(gradient, gradient);
+        if (!(g2 > 0.0)) break;
+        const dvec3 move = (blob_.excess(p) / g2) * gradient;
+        // Not past half a cell: a flat stretch of the field would throw it.
+        if (!(glm::length(move) < 0.5 * cell_)) break;
+        p -= move;
+      }
+      cellPoint[c] = std::uint32_t(mesh.points.size());
+      mesh.points.push_back(p);
+      return cellPoint[c];
     };
-    for (int k = 0; k < count_[2]; ++k)
-      for (int j = 0; j < count_[1]; ++j)
-        for (int i = 0; i < count_[0]; ++i) {
-          std::uint32_t corner[8];
-          for (int c = 0; c < 8; ++c)
-            corner[c] = std::uint32_t(index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)));
-          for (const auto& tet : kTetrahedra) {
-            std::uint32_t in[4], out[4];
-            int nIn = 0, nOut = 0;
-            for (int v : tet) {
-              const std::uint32_t g = corner[v];
-              if (value[g] >= 0.0) {
-                in[nIn++] = g;
-              } else {
-                out[nOut++] = g;
-              }
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      int at[3];
+      for (at[2] = 0; at[2] < nz; ++at[2])
+        for (at[1] = 0; at[1] < ny; ++at[1])
+          for (at[0] = 0; at[0] + (a == 0) < nx && at[1] + (a == 1) < ny && at[2] + (a == 2) < nz;
+               ++at[0]) {
+            const std::size_t g0 = index(at[0], at[1], at[2]);
+            int next[3] = {at[0], at[1], at[2]};
+            ++next[a];
+            const std::size_t g1 = index(next[0], next[1], next[2]);
+            if (inside(g0) == inside(g1)) continue;
+            // The four cells around the edge, counter-clockwise seen from
+            // the edge's +a end: their quadrilateral faces +a.
+            std::uint32_t q[4];
+            const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}};
+            for (int m = 0; m < 4; ++m) {
+              int cell[3] = {at[0], at[1], at[2]};
+              cell[b] += offsets[m][0];
+              cell[c] += offsets[m][1];
+              q[m] = pointOfCell(cell[0], cell[1], cell[2]);
             }
-            if (nIn == 0 || nOut == 0) continue;
-            if (nIn == 1 || nOut == 1) {
-              // One corner apart from the other three: a triangle.
-              const bool alone = nIn == 1;
-              const std::uint32_t tip = alone ? in[0] : out[0];
-              const std::uint32_t* rest = alone ? out : in;
-              std::uint32_t p[3];
-              for (int m = 0; m < 3; ++m)
-                p[m] = alone ? crossing(tip, rest[m]) : crossing(rest[m], tip);
-              addOriented(mesh, {p[0], p[1], p[2]}, tip, alone);
+            // Outward: from the inside end towards the outside one.
+            if (!inside(g0)) std::swap(q[1], q[3]);
+            const dvec3 &p0 = mesh.points[q[0]], &p1 = mesh.points[q[1]],
+                        &p2 = mesh.points[q[2]], &p3 = mesh.points[q[3]];
+            if (glm::length(p2 - p0) <= glm::length(p3 - p1)) {
+              mesh.triangles.push_back({q[0], q[1], q[2]});
+              mesh.triangles.push_back({q[0], q[2], q[3]});
             } else {
-              // Two and two: a quadrilateral through the four crossed edges,
-              // in cyclic order a0b0, a0b1, a1b1, a1b0, cut along a diagonal.
-              const std::uint32_t q[4] = {crossing(in[0], out[0]), crossing(in[0], out[1]),
-                                          crossing(in[1], out[1]), crossing(in[1], out[0])};
-              addOriented(mesh, {q[0], q[1], q[2]}, in[0], true);
-              addOriented(mesh, {q[0], q[2], q[3]}, in[0], true);
+              mesh.triangles.push_back({q[0], q[1], q[3]});
+              mesh.triangles.push_back({q[1], q[2], q[3]});
             }
           }
-        }
+    }
+    // Every edge in both directions once: else a cell held two sheets.
+    std::unordered_map<std::uint64_t, int> directed;
+    for (const auto& t : mesh.triangles)
+      for (int m = 0; m < 3; ++m)
+        ++directed[(std::uint64_t(t[m]) << 32) | t[(m + 1) % 3]];
+    for (const auto& [edge, count] : directed) {
+      const auto opposite = directed.find((edge << 32) | (edge >> 32));
+      if (count != 1 || opposite == directed.end() || opposite->second != 1) return std::nullopt;
+    }
     return mesh;
   }
 
@@ -131,16 +167,6 @@ class Grid {
     };
     const double t = bracketedRoot(f, 0.0, 1.0, false, 1e-12);
     return pa + std::clamp(t, kEdgeMargin, 1.0 - kEdgeMargin) * d;
-  }
-
-  // Adds the triangle facing away from the grid point `from`, which is
-  // inside the blob when fromInside, outside otherwise.
-  void addOriented(TriangleMesh& mesh, std::array<std::uint32_t, 3> t, std::uint32_t from,
-                   bool fromInside) const {
-    const dvec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
-    const double side = glm::dot(glm::cross(b - a, c - a), a - point(from));
-    if ((side < 0.0) == fromInside) std::swap(t[1], t[2]);
-    mesh.triangles.push_back({t[0], t[1], t[2]});
   }
 
   const Blob& blob_;
@@ -193,13 +219,13 @@ TriangleMesh Blob::objectTessellate(double tolerance, const Bounds&) const {
     // balls' own), and the grid itself, sampled whole.
     requireTriangleBudget(kind(), std::max(4.0 * area / (cell * cell), grid.cells() / 10.0),
                           tolerance);
-    TriangleMesh mesh = grid.mesh();
-    if (mesh.empty())
+    std::optional<TriangleMesh> mesh = grid.mesh();
+    if (mesh && mesh->empty())
       throw std::invalid_argument(
           "blob: its field reaches the threshold nowhere (raise a strength or lower the "
           "threshold)");
-    // The samples are not the farthest points: a fifth is kept in hand.
-    if (straying(*this, mesh) <= kSampledShare * tolerance) return mesh;
+    // The samples are not the farthest points: two fifths are kept in hand.
+    if (mesh && straying(*this, *mesh) <= kSampledShare * tolerance) return std::move(*mesh);
     cell *= 0.75;
   }
 }
