@@ -54,7 +54,8 @@ Blob::Blob(std::vector<BlobBall> balls, double threshold)
     requireFinite("blob", (at + ".strength").c_str(), ball.strength);
     if (ball.strength == 0.0)
       throw std::invalid_argument("blob: " + at + ".strength must not be 0");
-    if (ball.strength > 0.0) box.include(Bounds{ball.center - ball.radius, ball.center + ball.radius});
+    if (ball.strength > 0.0)
+      box.include(Bounds{ball.center - ball.radius, ball.center + ball.radius});
   }
   if (box.empty())
     throw std::invalid_argument(
@@ -140,8 +141,7 @@ void Blob::spansOf(const Ray& ray, bool firstOnly, SpanList& out) const {
     events.push_back({m + h, -(int(i) + 1)});
   }
   if (events.empty()) return;
-  std::sort(events.begin(), events.end(),
-            [](const Event& x, const Event& y) { return x.s < y.s; });
+  std::sort(events.begin(), events.end(), [](const Event& x, const Event& y) { return x.s < y.s; });
 
   // 3. The sweep. The spans in s, then mapped to t.
   double sum[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
@@ -207,7 +207,8 @@ dvec3 Blob::objectNormal(const dvec3& p, int) const {
 Bounds Blob::objectBounds() const {
   Bounds box;
   for (const BlobBall& ball : balls_)
-    if (ball.strength > 0.0) box.include(Bounds{ball.center - ball.radius, ball.center + ball.radius});
+    if (ball.strength > 0.0)
+      box.include(Bounds{ball.center - ball.radius, ball.center + ball.radius});
   return box;
 }
 

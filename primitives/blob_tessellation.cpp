@@ -123,8 +123,8 @@ class Grid {
             }
             // Outward: from the inside end towards the outside one.
             if (!inside(g0)) std::swap(q[1], q[3]);
-            const dvec3 &p0 = mesh.points[q[0]], &p1 = mesh.points[q[1]],
-                        &p2 = mesh.points[q[2]], &p3 = mesh.points[q[3]];
+            const dvec3 &p0 = mesh.points[q[0]], &p1 = mesh.points[q[1]], &p2 = mesh.points[q[2]],
+                        &p3 = mesh.points[q[3]];
             if (glm::length(p2 - p0) <= glm::length(p3 - p1)) {
               mesh.triangles.push_back({q[0], q[1], q[2]});
               mesh.triangles.push_back({q[0], q[2], q[3]});
@@ -137,8 +137,7 @@ class Grid {
     // Every edge in both directions once: else a cell held two sheets.
     std::unordered_map<std::uint64_t, int> directed;
     for (const auto& t : mesh.triangles)
-      for (int m = 0; m < 3; ++m)
-        ++directed[(std::uint64_t(t[m]) << 32) | t[(m + 1) % 3]];
+      for (int m = 0; m < 3; ++m) ++directed[(std::uint64_t(t[m]) << 32) | t[(m + 1) % 3]];
     for (const auto& [edge, count] : directed) {
       const auto opposite = directed.find((edge << 32) | (edge >> 32));
       if (count != 1 || opposite == directed.end() || opposite->second != 1) return std::nullopt;

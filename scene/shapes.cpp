@@ -4,11 +4,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "primitives/blob.h"
 #include "primitives/box.h"
 #include "primitives/cylinder.h"
 #include "primitives/half_space.h"
 #include "primitives/sphere.h"
-#include "primitives/blob.h"
 #include "primitives/superellipsoid.h"
 #include "primitives/torus.h"
 

@@ -162,8 +162,8 @@ int blob(lua_State* L) {
     lua_rawgeti(L, list, static_cast<lua_Integer>(i));
     const std::string what = "blob: ball " + std::to_string(i);
     if (lua_type(L, -1) != LUA_TTABLE)
-      throw std::invalid_argument(what + " must be a table {center={x, y, z}, r=, strength=}, got " +
-                                  shownType(L, -1));
+      throw std::invalid_argument(
+          what + " must be a table {center={x, y, z}, r=, strength=}, got " + shownType(L, -1));
     LuaArgs ball(L, -1, what);
     const std::optional<dvec3> center = ball.vec3("center");
     const std::optional<double> r = ball.number("r");

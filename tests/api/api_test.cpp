@@ -56,6 +56,9 @@ TEST(ApiSolid, VolumesOfShapesAreAnalytic) {
   expectVolume(Solid::torus(3, 1), 2 * kPi * kPi * 3);
   expectVolume(Solid::superellipsoid({1, 2, 3}, 1, 1), 4.0 / 3.0 * kPi * 6);
   expectVolume(Solid::superellipsoid({1, 1, 1}, 2, 2), 4.0 / 3.0);  // |x| + |y| + |z| <= 1
+  // A lone ball of a blob: the ball of radius r·√(1 − √(t/s)).
+  expectVolume(Solid::blob({{{1, 2, 3}, 2.0, 1.0}}, 0.5),
+               4.0 / 3.0 * kPi * std::pow(2.0 * std::sqrt(1.0 - std::sqrt(0.5)), 3));
   expectVolume(Solid::octahedron(2), 4.0 / 3.0 * 8);
   expectVolume(Solid::hexahedron(std::sqrt(3.0)), 8.0, 1e-9);
   // A unit cube from half-spaces, and from a polyhedron's faces.
@@ -201,6 +204,10 @@ TEST(ApiSolid, BadParametersGiveTheScriptsMessages) {
       {"return cone{h=2, r1=0, r2=0}", [] { Solid::cone(2, 0, 0); }},
       {"return torus{R=-1, r=1}", [] { Solid::torus(-1, 1); }},
       {"return torus{R=2, r=0}", [] { Solid::torus(2, 0); }},
+      {"return blob{balls={{r=1, strength=0}}}",
+       [] {
+         Solid::blob({{{0, 0, 0}, 1.0, 0.0}});
+       }},
       {"return superellipsoid{radii=1, e=3, n=1}",
        [] {
          Solid::superellipsoid({1, 1, 1}, 3, 1);
