@@ -1,4 +1,4 @@
-// Blob::objectTessellate: marching tetrahedra on a grid (its exact part is
+// Blob::objectTessellate: surface nets on a grid (its exact part is
 // blob.cpp).
 #include <algorithm>
 #include <array>
@@ -22,11 +22,10 @@ namespace {
 // symmetric blob would put grid points exactly on its surface).
 constexpr double kGridShift = 0.3819660112501051;  // 2 − φ
 
-// A crossing is kept this fraction of its edge away from the edge's ends:
-// crossings on edges that meet at a grid point near the surface would
-// otherwise make triangles so thin that rounding to the 32-bit floats of
-// a mesh file folds them over their neighbours. It moves a point off the
-// surface by at most a thousandth of a cell, which straying() sees.
+// A crossing is kept this fraction of its edge away from the edge's ends
+// (a grid point on the surface gives one crossing per edge there, not one
+// point for all); the cell's point that averages them is pulled onto the
+// surface after.
 constexpr double kEdgeMargin = 1e-3;
 
 // What the samples of straying() may be off by, as a part of the
@@ -53,9 +52,9 @@ class Grid {
   // Newton's method along the gradient, and for each grid edge the
   // surface crosses, a quadrilateral of the points of the four cells
   // around it, cut along its shorter diagonal. Its triangles are about a
-  // cell wide, with no slivers. Empty when some edge of the result is not
-  // shared by exactly two triangles (a cell the surface passes twice):
-  // nothing then, and the caller takes a finer grid.
+  // cell wide, with no slivers. Nothing when some edge of the result is
+  // not shared by exactly two triangles (a cell the surface passes twice):
+  // the caller takes a finer grid.
   std::optional<TriangleMesh> mesh() const {
     const int nx = count_[0] + 1, ny = count_[1] + 1, nz = count_[2] + 1;
     std::vector<double> value(std::size_t(nx) * ny * nz);
@@ -193,16 +192,15 @@ double straying(const Blob& blob, const TriangleMesh& mesh) {
 
 }  // namespace
 
-// Marching tetrahedra (Doi and Koide, "An Efficient Method of Triangulating
-// Equi-Valued Surfaces by Using Tetrahedral Cells", IEICE Transactions
-// E74(1), 1991): the field is sampled on a grid over the blob's box, each
-// cube cut into six tetrahedra, and in each tetrahedron whose corners lie
-// on both sides, a triangle or two join the points where the surface
-// crosses its edges, found on each edge by safeguarded Newton. Crossings
-// are shared by their edge, so the surface closes, and each piece lies in
-// its own tetrahedron, so none cross. The cell starts at a quarter of the
-// smallest ball's radius and halves until the triangles' centres and edge
-// midpoints are within kSampledShare of the tolerance of the surface.
+// The mesh of Grid::mesh() (surface nets). Where a cell's point is the
+// mean of its crossings pulled onto the surface, every point of the mesh
+// lies on it; the triangles between them are flat. The cell starts at a
+// quarter of the smallest ball's radius and shrinks by a quarter until
+// the triangles' corners, centres and edge midpoints are within
+// kSampledShare of the tolerance of the surface, and while some cell holds
+// two sheets of it. Marching tetrahedra were tried first: their slivers
+// needed repairs after rounding and three times the triangles
+// (docs/performance.md).
 TriangleMesh Blob::objectTessellate(double tolerance, const Bounds&) const {
   requireTolerance(kind(), tolerance);
   double smallest = kInfinity;
