@@ -1,7 +1,6 @@
 // Blob::objectTessellate: surface nets on a grid (its exact part is
 // blob.cpp).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>

@@ -8,13 +8,12 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <map>
 #include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "export/cgal/mesh_validity.h"
+#include "primitives/sweep_checks.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
 #include "tessellation/triangle_mesh.h"
@@ -134,16 +133,7 @@ TEST(BlobTessellation, ClosedAndWithinTolerance) {
   for (double tolerance : {0.05, 0.01}) {
     SCOPED_TRACE(tolerance);
     TriangleMesh mesh = b->tessellate(tolerance, Bounds::everything());
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
-    for (const auto& t : mesh.triangles)
-      for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-    int bad = 0;
-    for (const auto& [edge, count] : directed) {
-      auto opposite = directed.find({edge.second, edge.first});
-      bad += count != 1 || opposite == directed.end() || opposite->second != 1;
-    }
-    EXPECT_EQ(bad, 0);
-    EXPECT_EQ(meshDefect(mesh).text, "");
+    test::expectClosedMesh(mesh);
     EXPECT_NEAR(mesh.volume(), exact, tolerance * mesh.area());
     double worst = 0.0;
     for (const auto& t : mesh.triangles) {

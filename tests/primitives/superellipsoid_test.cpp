@@ -9,13 +9,12 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "export/cgal/mesh_validity.h"
 #include "primitives/sphere.h"
+#include "primitives/sweep_checks.h"
 #include "raytrace/renderer.h"
 #include "scene/camera.h"
 #include "tessellation/triangle_mesh.h"
@@ -49,22 +48,6 @@ double implicit(const dvec3& p, const dvec3& radii, double e, double n) {
 // §2.3.4, with their ε₂ = e across z and ε₁ = n along it).
 double closedFormVolume(const dvec3& r, double e, double n) {
   return 2.0 * r.x * r.y * r.z * e * n * std::beta(e / 2.0, e / 2.0) * std::beta(n / 2.0 + 1.0, n);
-}
-
-// Closed and consistently oriented (every directed edge once, and its
-// opposite once), and free of crossings by the exporter's exact check.
-void expectClosedMesh(const TriangleMesh& mesh) {
-  ASSERT_FALSE(mesh.empty());
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  int bad = 0;
-  for (const auto& [edge, count] : directed) {
-    auto opposite = directed.find({edge.second, edge.first});
-    bad += count != 1 || opposite == directed.end() || opposite->second != 1;
-  }
-  EXPECT_EQ(bad, 0);
-  EXPECT_EQ(meshDefect(mesh).text, "");
 }
 
 const std::vector<std::pair<double, double>> kExponents = {
@@ -254,7 +237,7 @@ TEST(SuperellipsoidTessellation, ClosedOutwardAndWithinTolerance) {
       SCOPED_TRACE(testing::Message() << "e " << e << " n " << n << " tolerance " << tolerance);
       auto s = superellipsoid(r, e, n);
       TriangleMesh mesh = s->tessellate(tolerance, Bounds::everything());
-      expectClosedMesh(mesh);
+      test::expectClosedMesh(mesh);
       const double area = 8.0 * (r.x * r.y + r.y * r.z + r.z * r.x);  // the box's: more
       const double want = closedFormVolume(r, e, n);
       EXPECT_NEAR(mesh.volume(), want, tolerance * area);

@@ -1,10 +1,13 @@
-// Checks the sweeps' tests share: a volume measured from spans along each
-// axis, and a mesh that is valid and holds the same volume.
+// Checks the primitives' tests share: a volume measured from spans along
+// each axis, a mesh that is closed and oriented, and one that is valid and
+// holds the same volume.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include "engine/primitive.h"
 #include "export/cgal/mesh_validity.h"
@@ -22,6 +25,22 @@ inline void expectVolume(const SolidPtr& s, double exact, double relative = 0.00
     EXPECT_NEAR(gridVolume(*turned, turned->bounds(), 300), exact, relative * exact)
         << "turned about " << axis.x << " " << axis.y;
   }
+}
+
+// Closed and consistently oriented (every directed edge once, and its
+// opposite once), and free of crossings by the exporter's exact check.
+inline void expectClosedMesh(const TriangleMesh& mesh) {
+  ASSERT_FALSE(mesh.empty());
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  int bad = 0;
+  for (const auto& [edge, count] : directed) {
+    auto opposite = directed.find({edge.second, edge.first});
+    bad += count != 1 || opposite == directed.end() || opposite->second != 1;
+  }
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(meshDefect(mesh).text, "");
 }
 
 // The primitive's mesh at the tolerance: valid, and within 1 % of `exact`.
